@@ -1,0 +1,77 @@
+"""Crash-test data: readers, writers and the model's sign convention (see :mod:`.crashtest`)."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from .crashtest import (
+    STANDARD_GRAVITY,
+    THESIS_WINDOW_S,
+    CrashDataError,
+    CrashTest,
+    resample_inputs,
+)
+from .csvio import read_csv, write_csv
+from .isomme import ChannelCodes, read_isomme, write_isomme
+
+__all__ = [
+    "STANDARD_GRAVITY",
+    "THESIS_WINDOW_S",
+    "ChannelCodes",
+    "CrashDataError",
+    "CrashTest",
+    "bundled_campaign",
+    "find_tests",
+    "load_test",
+    "load_tests",
+    "read_csv",
+    "read_isomme",
+    "resample_inputs",
+    "write_csv",
+    "write_isomme",
+]
+
+
+def bundled_campaign() -> Path:
+    """Folder of the example crash tests shipped with the package (24 zipped ISO-MME tests)."""
+    return Path(__file__).resolve().parent.parent / "examples"
+
+
+def _is_test(p: Path) -> bool:
+    if p.is_file():
+        return p.suffix.lower() in (".zip", ".csv", ".mme")
+    return any(c.suffix.lower() == ".mme" for c in p.iterdir() if c.is_file())
+
+
+def find_tests(paths: list[str | Path]) -> list[Path]:
+    """Expand each path to crash tests: a test (folder, zip, csv, .mme) or a folder of tests."""
+    found: list[Path] = []
+    for raw in paths:
+        p = Path(raw)
+        if not p.exists():
+            raise CrashDataError(f"{p}: no such file or folder")
+        if _is_test(p):
+            found.append(p)
+            continue
+        inner = sorted(c for c in p.iterdir() if not c.name.startswith(".") and _is_test(c))
+        if not inner:
+            raise CrashDataError(f"{p}: no crash tests in it (ISO-MME folders, .zip or .csv)")
+        found.extend(inner)
+    return found
+
+
+def load_test(path: str | Path, codes: ChannelCodes | None = None,
+              counts_per_rev: int | None = None, require_outputs: bool = True) -> CrashTest:
+    p = Path(path)
+    if p.suffix.lower() == ".csv":
+        test = read_csv(p, counts_per_rev)
+        if require_outputs and not test.has_outputs:
+            raise CrashDataError(f"{p}: needs cr and cd columns")
+        return test
+    return read_isomme(p, codes, counts_per_rev, require_outputs)
+
+
+def load_tests(paths: list[str | Path], codes: ChannelCodes | None = None,
+               counts_per_rev: int | None = None, require_outputs: bool = True) -> list[CrashTest]:
+    """Read every crash test under ``paths`` (see :func:`find_tests`)."""
+    return [load_test(p, codes, counts_per_rev, require_outputs) for p in find_tests(paths)]

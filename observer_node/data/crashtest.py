@@ -1,0 +1,150 @@
+"""One crash test as the model sees it: four signals on one time base, in model convention.
+
+Model convention (set once at the file-format edge, SAE J211 X is forward):
+
+===========  ======  =========================================================
+signal       unit    positive means
+===========  ======  =========================================================
+``pulse_g``  g       vehicle (sled, tunnel) *deceleration*   (= -J211 X accel)
+``brs``      counts  belt webbing retracted into the retractor (as the BRS)
+``cr_g``     g       chest (thoracic spine) retardation      (= -J211 X accel)
+``cd_mm``    mm      chest compression                        (= -J211 deflection)
+===========  ======  =========================================================
+
+This is the thesis's convention (deceleration positive); the observer publishes CR and CD
+in it too, so a frontal crash gives positive pulse, CR and CD.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field, replace
+
+import numpy as np
+from scipy import signal
+
+STANDARD_GRAVITY = 9.80665  # m/s^2 per g
+
+# The thesis window (section 2.2): before 10 ms the pretensioner still takes slack, after
+# 150 ms the crash is over.
+THESIS_WINDOW_S = (0.01, 0.15)
+
+
+class CrashDataError(ValueError):
+    """A crash test that cannot be used; the message names the file, line and key at fault."""
+
+
+@dataclass
+class CrashTest:
+    """Uniformly sampled crash test in model convention (see module docstring).
+
+    ``t0_s`` is the time of the first sample relative to first contact (t = 0).
+    ``cr_g`` and ``cd_mm`` are ``None`` when the test has no dummy measurement.
+    """
+
+    name: str
+    fs_hz: float
+    t0_s: float
+    pulse_g: np.ndarray
+    brs: np.ndarray
+    cr_g: np.ndarray | None = None
+    cd_mm: np.ndarray | None = None
+    setup: str = ""
+    counts_per_rev: int | None = None
+    source: str = ""
+    meta: dict[str, str] = field(default_factory=dict)
+
+    def __post_init__(self) -> None:
+        n = len(self.pulse_g)
+        for label, arr in (("brs", self.brs), ("cr_g", self.cr_g), ("cd_mm", self.cd_mm)):
+            if arr is not None and len(arr) != n:
+                raise CrashDataError(
+                    f"{self.source or self.name}: {label} has {len(arr)} samples, pulse has {n}"
+                )
+
+    @property
+    def n(self) -> int:
+        return len(self.pulse_g)
+
+    @property
+    def time_s(self) -> np.ndarray:
+        return self.t0_s + np.arange(self.n) / self.fs_hz
+
+    @property
+    def has_outputs(self) -> bool:
+        return self.cr_g is not None and self.cd_mm is not None
+
+    def outputs(self) -> np.ndarray:
+        """Measured outputs as an (n, 2) array [cr_g, cd_mm]."""
+        if not self.has_outputs:
+            raise CrashDataError(f"{self.source or self.name}: no CR/CD channels")
+        return np.column_stack([self.cr_g, self.cd_mm])
+
+    def inputs(self) -> np.ndarray:
+        """Raw inputs as an (n, 2) array [pulse_g, brs counts]."""
+        return np.column_stack([self.pulse_g, self.brs])
+
+    def index_of(self, t_s: float) -> int:
+        """Index of the first sample at or after ``t_s`` (clipped to the record)."""
+        i = int(np.ceil((t_s - self.t0_s) * self.fs_hz - 1e-9))
+        return min(max(i, 0), self.n)
+
+    def crop(self, start_s: float, end_s: float) -> CrashTest:
+        i, j = self.index_of(start_s), self.index_of(end_s) + 1
+        cut = (lambda a: None if a is None else a[i:j].copy())
+        return replace(
+            self, t0_s=self.t0_s + i / self.fs_hz, pulse_g=self.pulse_g[i:j].copy(),
+            brs=self.brs[i:j].copy(), cr_g=cut(self.cr_g), cd_mm=cut(self.cd_mm),
+        )
+
+    def pulse_bias_g(self) -> float:
+        """Accelerometer bias: mean pulse before first contact (0 if no pre-trigger data)."""
+        pre = self.pulse_g[self.time_s < 0.0]
+        return float(pre.mean()) if len(pre) else 0.0
+
+    def resample(self, fs_hz: float) -> CrashTest:
+        """Resample to ``fs_hz`` as the bus would carry it (see :func:`resample_inputs`)."""
+        if abs(fs_hz - self.fs_hz) < 1e-9:
+            return self
+        pulse, brs, step = resample_inputs(self.pulse_g, self.brs, self.fs_hz, fs_hz)
+        ref = (lambda a: None if a is None else resample_reference(a, step))
+        return replace(
+            self, fs_hz=self.fs_hz / step, pulse_g=pulse, brs=brs,
+            cr_g=ref(self.cr_g), cd_mm=ref(self.cd_mm),
+        )
+
+
+def decimation_step(fs_in_hz: float, fs_out_hz: float) -> int:
+    step = fs_in_hz / fs_out_hz
+    if step < 1 or abs(step - round(step)) > 1e-6:
+        raise CrashDataError(
+            f"cannot resample {fs_in_hz:g} Hz to {fs_out_hz:g} Hz: need an integer decimation"
+        )
+    return round(step)
+
+
+def resample_inputs(
+    pulse_g: np.ndarray, brs: np.ndarray, fs_in_hz: float, fs_out_hz: float
+) -> tuple[np.ndarray, np.ndarray, int]:
+    """Inputs as a sensor ECU would put them on the bus at ``fs_out_hz``.
+
+    The pulse goes through a causal 4th-order Butterworth anti-alias filter at 40 % of the
+    output rate (causal, because the ECU cannot look ahead) and is then decimated; the BRS is a
+    step signal and is sampled as held (zero-order hold). Identification and replay both call
+    this so that a model sees the same inputs offline and on the bus.
+    Returns (pulse_g, brs, decimation step).
+    """
+    step = decimation_step(fs_in_hz, fs_out_hz)
+    if step == 1:
+        return pulse_g.copy(), brs.copy(), 1
+    sos = signal.butter(4, 0.4 * fs_out_hz, fs=fs_in_hz, output="sos")
+    # Start the filter settled on the first value so that a bias does not ring at t0.
+    zi = signal.sosfilt_zi(sos) * pulse_g[0]
+    filtered, _ = signal.sosfilt(sos, pulse_g, zi=zi)
+    return filtered[::step].copy(), brs[::step].copy(), step
+
+
+def resample_reference(y: np.ndarray, step: int) -> np.ndarray:
+    """Measured dummy responses (already CFC-filtered): zero-phase decimation, no delay."""
+    if step == 1:
+        return y.copy()
+    return signal.decimate(y, step, ftype="fir", zero_phase=True)

@@ -1,0 +1,140 @@
+"""Plain CSV crash tests: ``# key: value`` comment lines, a header of ``name[unit]`` columns,
+then one row per sample.
+
+Example::
+
+    # name: R16_001
+    # counts_per_rev: 96
+    # signs: model          (or: sae-j211)
+    time[s],pulse[g],brs[counts],cr[g],cd[mm]
+    -0.0200,0.0231,0,-0.011,0.002
+
+Columns are found by name (``time``, ``pulse``, ``brs``, ``cr``, ``cd``; ``cr`` and ``cd`` are
+optional) and converted from their unit (g or m/s^2; counts, deg or rad; mm or m). With
+``signs: sae-j211`` the pulse, CR and CD are negated into model convention on reading.
+"""
+
+from __future__ import annotations
+
+import re
+from pathlib import Path
+
+import numpy as np
+
+from .crashtest import STANDARD_GRAVITY, CrashDataError, CrashTest
+from .isomme import decode_text
+
+_UNITS = {
+    "pulse": {"g": 1.0, "m/s^2": 1 / STANDARD_GRAVITY, "m/s2": 1 / STANDARD_GRAVITY},
+    "cr": {"g": 1.0, "m/s^2": 1 / STANDARD_GRAVITY, "m/s2": 1 / STANDARD_GRAVITY},
+    "cd": {"mm": 1.0, "m": 1000.0},
+    "time": {"s": 1.0, "ms": 1e-3},
+}
+
+
+def write_csv(test: CrashTest, path: str | Path) -> Path:
+    """Write ``test`` in model convention."""
+    path = Path(path)
+    cols = [test.time_s, test.pulse_g, test.brs]
+    names = ["time[s]", "pulse[g]", "brs[counts]"]
+    if test.has_outputs:
+        cols += [test.cr_g, test.cd_mm]
+        names += ["cr[g]", "cd[mm]"]
+    head = [f"# name: {test.name}", f"# setup: {test.setup}", "# signs: model"]
+    if test.counts_per_rev:
+        head.append(f"# counts_per_rev: {test.counts_per_rev}")
+    data = np.column_stack(cols)
+    with path.open("w", encoding="utf-8", newline="\n") as f:
+        f.write("\n".join([*head, ",".join(names)]) + "\n")
+        np.savetxt(f, data, delimiter=",", fmt="%.9g")
+    return path
+
+
+def read_csv(path: str | Path, counts_per_rev: int | None = None) -> CrashTest:
+    path = Path(path)
+    lines = decode_text(path.read_bytes()).splitlines()
+    meta: dict[str, str] = {}
+    k = 0
+    while k < len(lines) and lines[k].lstrip().startswith("#"):
+        if ":" in lines[k]:
+            key, value = lines[k].lstrip("# ").split(":", 1)
+            meta[key.strip().lower()] = value.strip()
+        k += 1
+    if k >= len(lines):
+        raise CrashDataError(f"{path}: no header row")
+    header_line = k + 1
+    columns: dict[str, tuple[int, str]] = {}
+    for i, col in enumerate(lines[k].split(",")):
+        m = re.fullmatch(r"\s*([A-Za-z_]+)\s*(?:\[(.*)\])?\s*", col)
+        if not m:
+            raise CrashDataError(f"{path}:{header_line}: bad column header {col!r}")
+        columns[m.group(1).lower()] = (i, (m.group(2) or "").strip())
+    for need in ("time", "pulse", "brs"):
+        if need not in columns:
+            raise CrashDataError(f"{path}:{header_line}: missing column {need!r}")
+    rows = []
+    for j, line in enumerate(lines[k + 1:], start=header_line + 1):
+        if not line.strip():
+            continue
+        parts = line.split(",")
+        if len(parts) != len(columns):
+            raise CrashDataError(
+                f"{path}:{j}: {len(parts)} values, header has {len(columns)} columns"
+            )
+        try:
+            rows.append([float(p) for p in parts])
+        except ValueError:
+            raise CrashDataError(f"{path}:{j}: non-numeric value in {line.strip()!r}") from None
+    if len(rows) < 2:
+        raise CrashDataError(f"{path}: fewer than two samples")
+    data = np.asarray(rows)
+    if not np.all(np.isfinite(data)):
+        j = int(np.flatnonzero(~np.isfinite(data).all(axis=1))[0])
+        raise CrashDataError(f"{path}: row {j + 1} of data has a value that is not finite")
+
+    def column(name: str) -> np.ndarray | None:
+        if name not in columns:
+            return None
+        i, unit = columns[name]
+        if name == "brs":
+            return _brs(data[:, i], unit, counts_per_rev or _int(meta.get("counts_per_rev")), path)
+        factor = _UNITS[name].get(unit.lower() if unit != "m/s^2" else unit)
+        if factor is None:
+            raise CrashDataError(f"{path}:{header_line}: column {name!r} unit {unit!r} unknown")
+        return data[:, i] * factor
+
+    t = column("time")
+    assert t is not None
+    dt = np.diff(t)
+    if np.any(dt <= 0) or np.ptp(dt) > 1e-3 * np.median(dt):
+        j = int(np.argmax(np.abs(dt - np.median(dt))))
+        raise CrashDataError(f"{path}:{header_line + 2 + j}: inconsistent sampling interval")
+    sign = -1.0 if meta.get("signs", "model").lower().startswith("sae") else 1.0
+    cr, cd = column("cr"), column("cd")
+    pulse = column("pulse")
+    brs = column("brs")
+    assert pulse is not None and brs is not None
+    return CrashTest(
+        name=meta.get("name", path.stem), fs_hz=1.0 / float(np.median(dt)), t0_s=float(t[0]),
+        pulse_g=sign * pulse, brs=brs,
+        cr_g=None if cr is None else sign * cr, cd_mm=None if cd is None else sign * cd,
+        setup=meta.get("setup", path.stem.split("_")[0].upper()),
+        counts_per_rev=counts_per_rev or _int(meta.get("counts_per_rev")),
+        source=str(path), meta=meta,
+    )
+
+
+def _int(v: str | None) -> int | None:
+    return int(v) if v and v.isdigit() else None
+
+
+def _brs(values: np.ndarray, unit: str, per_rev: int | None, path: Path) -> np.ndarray:
+    unit = unit.lower() or "counts"
+    if unit in ("counts", "count"):
+        return values
+    scale = {"deg": 360.0, "rad": 2 * np.pi}.get(unit)
+    if scale is None:
+        raise CrashDataError(f"{path}: brs unit {unit!r} unknown (counts, deg, rad)")
+    if per_rev is None:
+        raise CrashDataError(f"{path}: brs in {unit} needs '# counts_per_rev: N' or --counts-per-rev")
+    return np.round(values * per_rev / scale)

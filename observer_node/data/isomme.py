@@ -1,0 +1,397 @@
+"""ISO-MME (ISO/TS 13499) crash-test reader and writer.
+
+A test is a folder (or a zip holding one)::
+
+    <TEST>/<TEST>.mme            test information, ``key :value`` lines
+    <TEST>/Channel/<TEST>.chn    channel list
+    <TEST>/Channel/<TEST>.NNN    one channel: ``key :value`` header, then one value per line
+
+Keys split on the first colon and are stripped; ``NOVALUE`` means missing. Files may be
+ISO-8859-1, cp1252 or UTF-8 (with or without BOM), with CRLF or LF line ends. Time is implicit
+(``Time of first sample`` + i * ``Sampling interval``) or explicit (``Reference channel
+:explicit`` and ``Reference channel name`` naming the time channel's code).
+
+Every error names the file, the line and the key at fault.
+"""
+
+from __future__ import annotations
+
+import io
+import re
+import zipfile
+from collections.abc import Iterable
+from dataclasses import dataclass
+from pathlib import Path, PurePosixPath
+
+import numpy as np
+
+from .crashtest import STANDARD_GRAVITY, CrashDataError, CrashTest
+
+NOVALUE = "NOVALUE"
+
+
+@dataclass(frozen=True)
+class ChannelCodes:
+    """Channel codes searched for each signal, first match wins; ``?`` matches any character."""
+
+    pulse: tuple[str, ...] = ("S0SLED000000ACXP", "10TUNN000000ACXP")
+    brs: tuple[str, ...] = ("11RETR0000B1AN0P",)
+    cr: tuple[str, ...] = ("11CHST0000H3ACXC",)
+    cd: tuple[str, ...] = ("11CHST0000H3DSXB",)
+
+
+@dataclass
+class Channel:
+    code: str
+    header: dict[str, str]
+    header_lines: dict[str, int]
+    values: np.ndarray
+    path: str
+
+    def get(self, key: str) -> str | None:
+        v = self.header.get(key)
+        return None if v is None or v.upper() == NOVALUE else v
+
+    def where(self, key: str) -> str:
+        line = self.header_lines.get(key)
+        return f"{self.path}:{line}: key '{key}'" if line else f"{self.path}: key '{key}'"
+
+    def number(self, key: str) -> float:
+        v = self.get(key)
+        if v is None:
+            raise CrashDataError(f"{self.where(key)}: missing (or NOVALUE)")
+        try:
+            return float(v)
+        except ValueError:
+            raise CrashDataError(f"{self.where(key)}: not a number: {v!r}") from None
+
+
+# ---------------------------------------------------------------------------------- text files
+
+
+def decode_text(raw: bytes) -> str:
+    """Decode lab export text: UTF-8 (BOM or not) if valid, else cp1252, else ISO-8859-1."""
+    if raw.startswith(b"\xef\xbb\xbf"):
+        return raw[3:].decode("utf-8")
+    for enc in ("utf-8", "cp1252"):
+        try:
+            return raw.decode(enc)
+        except UnicodeDecodeError:
+            pass
+    return raw.decode("iso-8859-1")
+
+
+def parse_header(lines: list[str]) -> tuple[dict[str, str], dict[str, int], int]:
+    """Parse leading ``key :value`` lines; return (values, 1-based line numbers, data start)."""
+    header: dict[str, str] = {}
+    where: dict[str, int] = {}
+    i = 0
+    for i, line in enumerate(lines):
+        if ":" not in line:
+            return header, where, i
+        key, value = line.split(":", 1)
+        key = key.strip()
+        header.setdefault(key, value.strip())
+        where.setdefault(key, i + 1)
+    return header, where, len(lines)
+
+
+class _Source:
+    """Files of one test, from a folder or a zip, looked up case-insensitively."""
+
+    def __init__(self, path: Path):
+        self.path = path
+        self._zip: zipfile.ZipFile | None = None
+        if path.is_file() and path.suffix.lower() == ".zip":
+            try:
+                self._zip = zipfile.ZipFile(path)
+            except zipfile.BadZipFile as e:
+                raise CrashDataError(f"{path}: not a readable zip: {e}") from None
+            self.names = [n for n in self._zip.namelist() if not n.endswith("/")]
+        elif path.is_dir():
+            self.names = [str(p.relative_to(path).as_posix()) for p in path.rglob("*") if p.is_file()]
+        elif path.is_file() and path.suffix.lower() == ".mme":
+            self.path = path.parent
+            self.names = [
+                str(p.relative_to(path.parent).as_posix())
+                for p in path.parent.rglob("*") if p.is_file()
+            ]
+        else:
+            raise CrashDataError(f"{path}: not an ISO-MME test folder, .mme file or .zip")
+
+    def label(self, name: str) -> str:
+        return f"{self.path}!{name}" if self._zip else str(self.path / name)
+
+    def read(self, name: str) -> list[str]:
+        raw = self._zip.read(name) if self._zip else (self.path / name).read_bytes()
+        return decode_text(raw).splitlines()
+
+    def find(self, suffix_pattern: str) -> list[str]:
+        rx = re.compile(suffix_pattern, re.IGNORECASE)
+        return sorted(n for n in self.names if rx.search(n))
+
+    def close(self) -> None:
+        if self._zip:
+            self._zip.close()
+
+
+def _match(code: str, pattern: str) -> bool:
+    return len(code) == len(pattern) and all(p in ("?", c) for c, p in zip(code, pattern))
+
+
+def _read_channel(src: _Source, name: str) -> Channel:
+    label = src.label(name)
+    lines = src.read(name)
+    header, where, start = parse_header(lines)
+    ch = Channel(header.get("Channel code", ""), header, where, np.empty(0), label)
+    values = []
+    for k, line in enumerate(lines[start:], start=start + 1):
+        s = line.strip()
+        if not s:
+            continue
+        try:
+            values.append(float(s))
+        except ValueError:
+            raise CrashDataError(f"{label}:{k}: non-numeric value {s!r}") from None
+    arr = np.asarray(values)
+    if not np.all(np.isfinite(arr)):
+        bad = int(np.flatnonzero(~np.isfinite(arr))[0])
+        raise CrashDataError(f"{label}: sample {bad}: value is not finite")
+    declared = ch.get("Number of samples")
+    if declared is not None:
+        n = int(ch.number("Number of samples"))
+        if n != len(arr):
+            what = "truncated" if len(arr) < n else "longer than declared"
+            raise CrashDataError(
+                f"{ch.where('Number of samples')}: declares {n} samples, file has {len(arr)} "
+                f"({what})"
+            )
+    ch.values = arr
+    return ch
+
+
+def _counts_per_rev(texts: Iterable[str]) -> int | None:
+    for text in texts:
+        m = re.search(r"(\d+)\s*counts?\s*/\s*rev", text, re.IGNORECASE)
+        if m:
+            return int(m.group(1))
+    return None
+
+
+_ACCEL_TO_G = {"g": 1.0, "m/s^2": 1 / STANDARD_GRAVITY, "m/s**2": 1 / STANDARD_GRAVITY,
+               "m/s2": 1 / STANDARD_GRAVITY, "m/s²": 1 / STANDARD_GRAVITY}
+_LENGTH_TO_MM = {"mm": 1.0, "m": 1000.0, "cm": 10.0}
+
+
+def _convert(ch: Channel, table: dict[str, float], quantity: str) -> np.ndarray:
+    unit = (ch.get("Unit") or "").strip()
+    factor = table.get(unit) or table.get(unit.lower())
+    if factor is None:
+        raise CrashDataError(
+            f"{ch.where('Unit')}: unit {unit!r} is not a {quantity} unit "
+            f"(expected one of {', '.join(table)}) for channel {ch.code}"
+        )
+    return ch.values * factor
+
+
+def _brs_counts(ch: Channel, counts_per_rev: int | None) -> np.ndarray:
+    unit = (ch.get("Unit") or "").strip().lower()
+    if unit in ("counts", "count", "cnt", "-", "1"):
+        return ch.values.copy()
+    per_rev = {"deg": 360.0, "°": 360.0, "rad": 2 * np.pi, "rev": 1.0}.get(unit)
+    if per_rev is None:
+        raise CrashDataError(f"{ch.where('Unit')}: unit {unit!r} is not an angle or count unit")
+    if counts_per_rev is None:
+        raise CrashDataError(
+            f"{ch.path}: BRS is in {unit} but counts/rev is unknown: give it on the command line "
+            "(--counts-per-rev) or in the .mme Comments ('96 counts/rev')"
+        )
+    return np.round(ch.values * counts_per_rev / per_rev)
+
+
+def _time_base(ch: Channel, channels: dict[str, Channel]) -> tuple[float, float]:
+    """(t0_s, dt_s) of a channel, checking explicit time channels for a uniform interval."""
+    if (ch.get("Reference channel") or "implicit").lower().startswith("explicit"):
+        ref = ch.get("Reference channel name")
+        tch = channels.get(ref or "")
+        if tch is None:
+            raise CrashDataError(
+                f"{ch.where('Reference channel name')}: explicit time channel {ref!r} not found"
+            )
+        t = tch.values
+        if len(t) != len(ch.values):
+            raise CrashDataError(
+                f"{tch.path}: time channel has {len(t)} samples, {ch.path} has {len(ch.values)}"
+            )
+        dt = np.diff(t)
+        if len(dt) == 0 or np.ptp(dt) > 1e-6 * abs(np.median(dt)) + 1e-12:
+            k = int(np.argmax(np.abs(dt - np.median(dt)))) if len(dt) else 0
+            raise CrashDataError(
+                f"{tch.path}:{k + 1}: inconsistent sampling interval in explicit time channel"
+            )
+        return float(t[0]), float(np.median(dt))
+    return ch.number("Time of first sample"), ch.number("Sampling interval")
+
+
+def read_isomme(
+    path: str | Path,
+    codes: ChannelCodes | None = None,
+    counts_per_rev: int | None = None,
+    require_outputs: bool = True,
+) -> CrashTest:
+    """Read one ISO-MME test (folder, ``.mme`` file or zip) into model convention."""
+    codes = codes or ChannelCodes()
+    src = _Source(Path(path))
+    try:
+        mmes = src.find(r"\.mme$")
+        if not mmes:
+            raise CrashDataError(f"{src.path}: no .mme file")
+        mme_name = mmes[0]
+        mme_lines = src.read(mme_name)
+        mme, _, _ = parse_header(mme_lines)
+        chan_files = src.find(r"\.\d{3}$")
+        if not chan_files:
+            raise CrashDataError(f"{src.label(mme_name)}: no channel files (<TEST>.NNN)")
+        channels: dict[str, Channel] = {}
+        for name in chan_files:
+            ch = _read_channel(src, name)
+            channels.setdefault(ch.code, ch)
+    finally:
+        src.close()
+
+    def pick(label: str, patterns: tuple[str, ...], required: bool) -> Channel | None:
+        for p in patterns:
+            for code, ch in channels.items():
+                if _match(code, p):
+                    return ch
+        if required:
+            raise CrashDataError(
+                f"{src.path}: missing {label} channel (looked for {', '.join(patterns)}; "
+                f"test has {', '.join(sorted(channels)) or 'none'})"
+            )
+        return None
+
+    pulse_ch = pick("crash pulse", codes.pulse, True)
+    brs_ch = pick("BRS", codes.brs, True)
+    cr_ch = pick("CR", codes.cr, require_outputs)
+    cd_ch = pick("CD", codes.cd, require_outputs)
+    assert pulse_ch is not None and brs_ch is not None
+
+    used = [c for c in (pulse_ch, brs_ch, cr_ch, cd_ch) if c is not None]
+    t0, dt = _time_base(pulse_ch, channels)
+    for ch in used[1:]:
+        t0c, dtc = _time_base(ch, channels)
+        if abs(dtc - dt) > 1e-9 * max(dt, 1e-12) + 1e-12:
+            raise CrashDataError(
+                f"{ch.where('Sampling interval')}: inconsistent sampling interval {dtc:g} s, "
+                f"pulse channel {pulse_ch.path} has {dt:g} s"
+            )
+        if abs(t0c - t0) > 0.5 * dt:
+            raise CrashDataError(
+                f"{ch.where('Time of first sample')}: starts at {t0c:g} s, pulse at {t0:g} s"
+            )
+        if len(ch.values) != len(pulse_ch.values):
+            raise CrashDataError(
+                f"{ch.path}: {len(ch.values)} samples, pulse channel has {len(pulse_ch.values)}"
+            )
+    if dt <= 0:
+        raise CrashDataError(f"{pulse_ch.where('Sampling interval')}: must be positive")
+
+    per_rev = counts_per_rev or _counts_per_rev(
+        [mme.get("Comments", ""), brs_ch.get("Name of the channel") or "",
+         *(v for k, v in mme.items() if k.startswith("Name of channel"))]
+    )
+    name = mme.get("Laboratory test ref. number") or PurePosixPath(mme_name).stem
+    if name.upper() == NOVALUE:
+        name = PurePosixPath(mme_name).stem
+    # SAE J211 (X forward) -> model convention (deceleration, retardation, compression positive)
+    return CrashTest(
+        name=name,
+        fs_hz=1.0 / dt,
+        t0_s=t0,
+        pulse_g=-_convert(pulse_ch, _ACCEL_TO_G, "acceleration"),
+        brs=_brs_counts(brs_ch, per_rev),
+        cr_g=None if cr_ch is None else -_convert(cr_ch, _ACCEL_TO_G, "acceleration"),
+        cd_mm=None if cd_ch is None else -_convert(cd_ch, _LENGTH_TO_MM, "length"),
+        setup=setup_of(name, mme),
+        counts_per_rev=per_rev,
+        source=str(path),
+        meta={k: v for k, v in mme.items() if v.upper() != NOVALUE},
+    )
+
+
+def setup_of(name: str, mme: dict[str, str]) -> str:
+    """Setup family (R16, SLED, FULL, ...) from the test name prefix, else the test type."""
+    prefix = re.split(r"[_\-\s]", name)[0].upper()
+    if prefix and not prefix.isdigit():
+        return prefix
+    return (mme.get("Type of the test") or "UNKNOWN").upper()
+
+
+# ---------------------------------------------------------------------------------- writer
+
+_CODES_OUT = {
+    "pulse": ("S0SLED000000ACXP", "SLED X ACCELERATION", "g", "AC"),
+    "brs": ("11RETR0000B1AN0P", "Belt spindle rotation, + = retraction", "deg", "AN"),
+    "cr": ("11CHST0000H3ACXC", "Chest acceleration X", "g", "AC"),
+    "cd": ("11CHST0000H3DSXB", "Chest deflection X", "mm", "DS"),
+}
+
+
+def write_isomme(test: CrashTest, folder: str | Path, zip_it: bool = False) -> Path:
+    """Write ``test`` as an ISO-MME folder ``folder/<name>`` (SAE J211 signs, BRS in deg, CRLF,
+    ISO-8859-1), or as ``folder/<name>.zip`` when ``zip_it``. Returns the path written."""
+    if test.counts_per_rev is None:
+        raise CrashDataError(f"{test.name}: counts_per_rev is needed to write BRS in degrees")
+    files: dict[str, str] = {}
+    signals = {
+        "pulse": -test.pulse_g,
+        "brs": test.brs * 360.0 / test.counts_per_rev,
+        "cr": None if test.cr_g is None else -test.cr_g,
+        "cd": None if test.cd_mm is None else -test.cd_mm,
+    }
+    present = [(k, v) for k, v in signals.items() if v is not None]
+    mme = {
+        "Data format edition number": "1.6",
+        "Laboratory test ref. number": test.name,
+        "Title": test.meta.get("Title", "SIMULATED CRASH TEST"),
+        "Comments": f"BRS resolution {test.counts_per_rev} counts/rev, bidirectional",
+        "Number of channels": str(len(present)),
+    }
+    chn = {}
+    for i, (key, values) in enumerate(present, start=1):
+        code, text, unit, dim = _CODES_OUT[key]
+        mme[f"Name of channel {i:03d}"] = f"{code} / {text}"
+        chn[f"Name of channel {i:03d}"] = f"{code} / {text}"
+        header = {
+            "Channel code": code, "Name of the channel": text, "Reference channel": "implicit",
+            "Sampling interval": f"{1.0 / test.fs_hz:.6E}", "Unit": unit,
+            "Time of first sample": f"{test.t0_s:.6E}", "Number of samples": str(len(values)),
+            "Dimension": dim, "Data status": "ok",
+        }
+        body = "".join(f"{v:.6E}\r\n" for v in values)
+        files[f"Channel/{test.name}.{i:03d}"] = _kv(header) + body
+    files[f"{test.name}.mme"] = _kv(mme)
+    files[f"Channel/{test.name}.chn"] = _kv(chn)
+
+    folder = Path(folder)
+    folder.mkdir(parents=True, exist_ok=True)
+    if zip_it:
+        out = folder / f"{test.name}.zip"
+        with zipfile.ZipFile(out, "w", zipfile.ZIP_DEFLATED) as z:
+            for rel, text in files.items():
+                z.writestr(f"{test.name}/{rel}", text.encode("iso-8859-1"))
+        return out
+    out = folder / test.name
+    for rel, text in files.items():
+        p = out / rel
+        p.parent.mkdir(parents=True, exist_ok=True)
+        p.write_bytes(text.encode("iso-8859-1"))
+    return out
+
+
+def _kv(d: dict[str, str]) -> str:
+    buf = io.StringIO()
+    for k, v in d.items():
+        buf.write(f"{k:<28}:{v}\r\n")
+    return buf.getvalue()

@@ -1,0 +1,137 @@
+"""The one model description that passes between identification, the daemon and replay.
+
+A model file is JSON (never pickle)::
+
+    {"format": "chest-observer-model", "format_version": 1,
+     "kind": "greybox" | "arx" | "n4sid", "name": "...", "software_version": "...",
+     "tick_rate_hz": 1000.0, "input_transform": "velocity_brs_rate" | "raw",
+     "inputs": [...], "outputs": [...],          # names, units, sign conventions
+     "state_space": {"A": [[...]], "B": ..., "C": ..., "D": ...},   # discrete, at tick_rate_hz
+     "parameters": {...},                        # kind-specific, with standard errors
+     "structure": {...},                         # kind-specific orders
+     "fitted_on": {"tests": [...], "window_s": [0.01, 0.15], ...},
+     "fits": {...}}                              # thesis fit (eq. 3.15-3.18) on its tests
+"""
+
+from __future__ import annotations
+
+import hashlib
+import json
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from .. import __version__
+from .observer import LinearObserver
+
+FORMAT = "chest-observer-model"
+FORMAT_VERSION = 1
+KINDS = ("greybox", "arx", "n4sid")
+
+INPUTS = [
+    {"name": "pulse", "unit": "g",
+     "sign": "vehicle deceleration positive (-SAE J211 X); accelerometer bias removed"},
+    {"name": "brs", "unit": "rad",
+     "sign": "spindle angle, + = webbing retracted; counts * 2*pi / counts_per_rev"},
+]
+OUTPUTS = [
+    {"name": "cr", "unit": "g", "sign": "chest (spine) retardation positive (-SAE J211 X)"},
+    {"name": "cd", "unit": "mm", "sign": "chest compression positive (-SAE J211 deflection)"},
+]
+
+
+class ModelFileError(ValueError):
+    """A model file that cannot be used; the message names the file and key."""
+
+
+@dataclass
+class ModelFile:
+    kind: str
+    name: str
+    tick_rate_hz: float
+    input_transform: str
+    A: np.ndarray
+    B: np.ndarray
+    C: np.ndarray
+    D: np.ndarray
+    parameters: dict[str, Any] = field(default_factory=dict)
+    structure: dict[str, Any] = field(default_factory=dict)
+    fitted_on: dict[str, Any] = field(default_factory=dict)
+    fits: dict[str, Any] = field(default_factory=dict)
+    software_version: str = __version__
+
+    def observer(self) -> LinearObserver:
+        return LinearObserver(self.A, self.B, self.C, self.D, self.input_transform,
+                              self.tick_rate_hz)
+
+    def to_dict(self) -> dict[str, Any]:
+        return {
+            "format": FORMAT, "format_version": FORMAT_VERSION, "kind": self.kind,
+            "name": self.name, "software_version": self.software_version,
+            "tick_rate_hz": self.tick_rate_hz, "input_transform": self.input_transform,
+            "inputs": INPUTS, "outputs": OUTPUTS,
+            "state_space": {k: np.asarray(v).tolist() for k, v in
+                            (("A", self.A), ("B", self.B), ("C", self.C), ("D", self.D))},
+            "parameters": self.parameters, "structure": self.structure,
+            "fitted_on": self.fitted_on, "fits": self.fits,
+        }
+
+    def dumps(self) -> str:
+        return json.dumps(self.to_dict(), indent=1, sort_keys=False)
+
+    def model_id(self) -> int:
+        """16-bit id of this model (published in the status frame to tell models apart)."""
+        digest = hashlib.sha256(self.dumps().encode()).digest()
+        return int.from_bytes(digest[:2], "big")
+
+    def save(self, path: str | Path) -> Path:
+        path = Path(path)
+        path.parent.mkdir(parents=True, exist_ok=True)
+        path.write_text(self.dumps() + "\n", encoding="utf-8")
+        return path
+
+    @classmethod
+    def from_dict(cls, d: dict[str, Any], where: str = "<model>") -> ModelFile:
+        if d.get("format") != FORMAT:
+            raise ModelFileError(f"{where}: key 'format' must be {FORMAT!r}")
+        if d.get("format_version") != FORMAT_VERSION:
+            raise ModelFileError(f"{where}: key 'format_version' {d.get('format_version')!r} "
+                                 f"is not supported (this software reads {FORMAT_VERSION})")
+        try:
+            ss = d["state_space"]
+            mf = cls(
+                kind=d["kind"], name=d.get("name", ""), tick_rate_hz=float(d["tick_rate_hz"]),
+                input_transform=d["input_transform"],
+                A=np.asarray(ss["A"], float), B=np.asarray(ss["B"], float),
+                C=np.asarray(ss["C"], float), D=np.asarray(ss["D"], float),
+                parameters=d.get("parameters", {}), structure=d.get("structure", {}),
+                fitted_on=d.get("fitted_on", {}), fits=d.get("fits", {}),
+                software_version=d.get("software_version", "?"),
+            )
+        except KeyError as e:
+            raise ModelFileError(f"{where}: missing key {e.args[0]!r}") from None
+        except (TypeError, ValueError) as e:
+            raise ModelFileError(f"{where}: key 'state_space': {e}") from None
+        if mf.kind not in KINDS:
+            raise ModelFileError(f"{where}: key 'kind' {mf.kind!r} not one of {KINDS}")
+        for k, m in (("A", mf.A), ("B", mf.B), ("C", mf.C), ("D", mf.D)):
+            if not np.all(np.isfinite(m)):
+                raise ModelFileError(f"{where}: key 'state_space.{k}' has non-finite values")
+        try:
+            mf.observer()
+        except ValueError as e:
+            raise ModelFileError(f"{where}: {e}") from None
+        return mf
+
+    @classmethod
+    def load(cls, path: str | Path) -> ModelFile:
+        path = Path(path)
+        try:
+            d = json.loads(path.read_text(encoding="utf-8"))
+        except json.JSONDecodeError as e:
+            raise ModelFileError(f"{path}:{e.lineno}: not valid JSON: {e.msg}") from None
+        except OSError as e:
+            raise ModelFileError(f"{path}: cannot read: {e.strerror}") from None
+        return cls.from_dict(d, str(path))
