@@ -90,7 +90,8 @@ class CrashTest:
 
     def crop(self, start_s: float, end_s: float) -> CrashTest:
         i, j = self.index_of(start_s), self.index_of(end_s) + 1
-        cut = (lambda a: None if a is None else a[i:j].copy())
+        def cut(a):
+            return (None if a is None else a[i:j].copy())
         return replace(
             self, t0_s=self.t0_s + i / self.fs_hz, pulse_g=self.pulse_g[i:j].copy(),
             brs=self.brs[i:j].copy(), cr_g=cut(self.cr_g), cd_mm=cut(self.cd_mm),
@@ -106,7 +107,8 @@ class CrashTest:
         if abs(fs_hz - self.fs_hz) < 1e-9:
             return self
         pulse, brs, step = resample_inputs(self.pulse_g, self.brs, self.fs_hz, fs_hz)
-        ref = (lambda a: None if a is None else resample_reference(a, step))
+        def ref(a):
+            return (None if a is None else resample_reference(a, step))
         return replace(
             self, fs_hz=self.fs_hz / step, pulse_g=pulse, brs=brs,
             cr_g=ref(self.cr_g), cd_mm=ref(self.cd_mm),

@@ -136,5 +136,6 @@ def _brs(values: np.ndarray, unit: str, per_rev: int | None, path: Path) -> np.n
     if scale is None:
         raise CrashDataError(f"{path}: brs unit {unit!r} unknown (counts, deg, rad)")
     if per_rev is None:
-        raise CrashDataError(f"{path}: brs in {unit} needs '# counts_per_rev: N' or --counts-per-rev")
+        raise CrashDataError(
+            f"{path}: brs in {unit} needs '# counts_per_rev: N' or --counts-per-rev")
     return np.round(values * per_rev / scale)

@@ -109,7 +109,7 @@ class _Source:
                 raise CrashDataError(f"{path}: not a readable zip: {e}") from None
             self.names = [n for n in self._zip.namelist() if not n.endswith("/")]
         elif path.is_dir():
-            self.names = [str(p.relative_to(path).as_posix()) for p in path.rglob("*") if p.is_file()]
+            self.names = [p.relative_to(path).as_posix() for p in path.rglob("*") if p.is_file()]
         elif path.is_file() and path.suffix.lower() == ".mme":
             self.path = path.parent
             self.names = [
@@ -136,7 +136,8 @@ class _Source:
 
 
 def _match(code: str, pattern: str) -> bool:
-    return len(code) == len(pattern) and all(p in ("?", c) for c, p in zip(code, pattern))
+    return len(code) == len(pattern) and all(
+        p in ("?", c) for c, p in zip(code, pattern, strict=True))
 
 
 def _read_channel(src: _Source, name: str) -> Channel:

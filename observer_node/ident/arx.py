@@ -169,7 +169,7 @@ def _score(data: Dataset, orders: ArxOrders) -> tuple[float, ArxModel]:
 def search_orders(data: Dataset, nmax: int, max_nk_s: float = 0.01,
                   progress: Progress | None = None) -> tuple[ArxOrders, list[dict]]:
     """The thesis's order search; returns the chosen orders and the iteration history."""
-    max_nk = max(1, int(round(max_nk_s * data.fs_hz)))
+    max_nk = max(1, round(max_nk_s * data.fs_hz))
     nk = np.array([[delayest(data, i, j, max_nk) for j in range(2)] for i in range(2)])
     est, val = _split(data)
     na = np.zeros((2, 2), int)

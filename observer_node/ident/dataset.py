@@ -42,7 +42,7 @@ def make_dataset(tests: list[CrashTest], fs_hz: float = 1000.0,
     if not tests:
         raise CrashDataError("no crash tests given")
     start, end = 0.0, window_s[1]
-    n = int(round((end - start) * fs_hz)) + 1
+    n = round((end - start) * fs_hz) + 1
     pulses, brss, ys = [], [], []
     for t in tests:
         if not t.has_outputs:
@@ -63,6 +63,6 @@ def make_dataset(tests: list[CrashTest], fs_hz: float = 1000.0,
         pulses.append(r.pulse_g[sl] - bias)
         brss.append(r.brs[sl] * (2 * np.pi / t.counts_per_rev))
         ys.append(np.column_stack([r.cr_g[sl], r.cd_mm[sl]]))
-    i0 = int(round((window_s[0] - start) * fs_hz))
+    i0 = round((window_s[0] - start) * fs_hz)
     return Dataset([t.name for t in tests], [t.setup for t in tests], fs_hz, np.array(pulses),
                    np.array(brss), np.array(ys), slice(i0, n), window_s)

@@ -108,7 +108,7 @@ def fit_greybox(data: Dataset, m1_kg: float = DEFAULT_M1_KG, starts=_STARTS,
     best = [np.inf]
 
     def unpack(theta: np.ndarray) -> dict[str, float]:
-        p = dict(zip(FREE, np.exp(theta)))
+        p = dict(zip(FREE, np.exp(theta), strict=False))
         p["m1"] = m1_kg
         return p
 

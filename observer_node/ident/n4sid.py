@@ -73,8 +73,8 @@ def _subspace(data: Dataset, i: int) -> tuple[np.ndarray, np.ndarray]:
     Wp = np.vstack([Up, Yp])
     # Yf = Lw Wp + Lu Uf + noise; the oblique projection is Lw Wp.
     L = np.linalg.lstsq(np.vstack([Wp, Uf]).T, Yf.T, rcond=None)[0].T
-    O = L[:, :Wp.shape[0]] @ Wp
-    U, s, _ = np.linalg.svd(O, full_matrices=False)
+    oblique = L[:, :Wp.shape[0]] @ Wp
+    U, s, _ = np.linalg.svd(oblique, full_matrices=False)
     return U, s
 
 

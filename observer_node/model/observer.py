@@ -24,7 +24,8 @@ from ..data.crashtest import STANDARD_GRAVITY
 TRANSFORMS = ("velocity_brs_rate", "raw")
 
 
-def transform_inputs(kind: str, pulse_g: np.ndarray, brs_rad: np.ndarray, fs_hz: float) -> np.ndarray:
+def transform_inputs(kind: str, pulse_g: np.ndarray, brs_rad: np.ndarray,
+                     fs_hz: float) -> np.ndarray:
     """Apply an input transform to whole records. Arrays may be (n,) or (tests, n);
     returns (..., n, 2). The first sample's previous BRS is taken as itself (at rest)."""
     if kind == "raw":

@@ -1,0 +1,193 @@
+"""observer-node: identify chest models from crash tests, score them as the thesis does,
+and (on a bench) run them as a real-time CAN observer.
+
+Examples::
+
+    observer-node evaluate                          # thesis tables on the bundled campaign
+    observer-node identify --model greybox --data tests/R16 --out model.json
+    observer-node evaluate --model model.json --data tests/R16_002 --out out/
+    observer-node simulate --out sim/ --setup R16 --count 4
+"""
+
+from __future__ import annotations
+
+import argparse
+import sys
+import time
+from pathlib import Path
+
+from . import __version__
+from .data import ChannelCodes, CrashDataError, bundled_campaign, load_tests
+from .data.crashtest import THESIS_WINDOW_S
+from .model.modelfile import ModelFileError
+
+
+def _data_options(p: argparse.ArgumentParser, required: bool) -> None:
+    g = p.add_argument_group("crash-test data")
+    g.add_argument("--data", nargs="+", required=required, metavar="DIR",
+                   help="crash tests: an ISO-MME test folder, .zip or .csv, or a folder of them"
+                   + ("" if required else " (default: the bundled campaign)"))
+    g.add_argument("--pulse-code", action="append", metavar="CODE",
+                   help="channel code of the crash pulse ('?' matches any character; "
+                   "repeatable; default S0SLED000000ACXP, 10TUNN000000ACXP)")
+    g.add_argument("--brs-code", action="append", metavar="CODE",
+                   help="BRS channel code (default 11RETR0000B1AN0P)")
+    g.add_argument("--cr-code", action="append", metavar="CODE",
+                   help="chest acceleration channel code (default 11CHST0000H3ACXC)")
+    g.add_argument("--cd-code", action="append", metavar="CODE",
+                   help="chest deflection channel code (default 11CHST0000H3DSXB)")
+    g.add_argument("--counts-per-rev", type=int, metavar="N",
+                   help="BRS counts per spindle revolution (default: from the test's comments)")
+    g.add_argument("--window", nargs=2, type=float, metavar=("START", "END"),
+                   default=None, help="scoring window in s (default 0.01 0.15, the thesis's)")
+
+
+def _codes(a: argparse.Namespace) -> ChannelCodes:
+    d = ChannelCodes()
+    return ChannelCodes(
+        pulse=tuple(a.pulse_code or d.pulse), brs=tuple(a.brs_code or d.brs),
+        cr=tuple(a.cr_code or d.cr), cd=tuple(a.cd_code or d.cd),
+    )
+
+
+def _tests(a: argparse.Namespace):
+    paths = a.data or [bundled_campaign()]
+    return load_tests(paths, _codes(a), a.counts_per_rev)
+
+
+def cmd_identify(a: argparse.Namespace) -> int:
+    from .evaluation import identify
+    from .ident.dataset import make_dataset
+    from .ident.progress import Progress
+
+    tests = _tests(a)
+    data = make_dataset(tests, a.rate, tuple(a.window or THESIS_WINDOW_S))
+    t0 = time.monotonic()
+    mf = identify(a.model, data, nmax=a.nmax, order=a.order, m1_kg=a.m1,
+                  progress=Progress(f"identify {a.model}", enabled=not a.quiet), name=a.name)
+    mf.save(a.out)
+    f = mf.fits["fit"]
+    print(f"{a.model} model on {len(tests)} tests at {a.rate:g} Hz "
+          f"({time.monotonic() - t0:.1f} s) -> {a.out}")
+    print(f"fit on its estimation tests: CR {f['cr']:.1f} %  CD {f['cd']:.1f} %  "
+          f"TOT {f['total']:.1f} %  (not a validation fit)")
+    if a.model == "greybox":
+        print("parameters (value ± standard error):")
+        for n, p in mf.parameters.items():
+            fixed = "  (fixed: mass scale)" if p["fixed"] else ""
+            print(f"  {n:<3} {p['value']:12.5g} ± {p['std_err']:<10.2g} {p['unit']}{fixed}")
+    elif a.model == "arx":
+        print(f"orders: NA={mf.structure['NA']} NB={mf.structure['NB']} NK={mf.structure['NK']}")
+    return 0
+
+
+def cmd_evaluate(a: argparse.Namespace) -> int:
+    from .evaluation import evaluate_model, format_tables, thesis_comparison
+    from .model.modelfile import ModelFile
+
+    tests = _tests(a)
+    window = tuple(a.window) if a.window else None
+    out = Path(a.out)
+    if a.model:
+        mf = ModelFile.load(a.model)
+        fits = evaluate_model(mf, tests, out, window)  # type: ignore[arg-type]
+        f = fits["fit"]
+        print(f"{mf.kind} model {mf.name!r} on {len(tests)} tests:")
+        for name, v in fits["tests"].items():
+            print(f"  {name:<12} CR {v['cr']:6.1f} %  CD {v['cd']:6.1f} %")
+        print(f"  {'total':<12} CR {f['cr']:6.1f} %  CD {f['cd']:6.1f} %  TOT {f['total']:.1f} %")
+        print(f"wrote {out / 'fits.json'} and plots in {out}")
+        return 0
+    result = thesis_comparison(tests, out, a.rate, window or THESIS_WINDOW_S,
+                               verbose=not a.quiet)
+    print(format_tables(result))
+    print(f"\nwrote {out / 'evaluation.json'}, models in {out / 'models'}, "
+          f"plots in {out / 'plots'}")
+    return 0
+
+
+def cmd_simulate(a: argparse.Namespace) -> int:
+    from .data import write_csv, write_isomme
+    from .simulator import EFFECTS, PlantConfig, simulate_campaign
+
+    effects = {}
+    for spec in a.effect or []:
+        name, _, value = spec.partition("=")
+        if name not in EFFECTS:
+            raise SystemExit(f"unknown effect {name!r}; known: {', '.join(EFFECTS)}")
+        effects[name] = float(value) if value else 1.0
+    tests = simulate_campaign(a.setup, a.count, seed=a.seed,
+                              config=PlantConfig(effects=effects, noise=not a.no_noise))
+    out = Path(a.out)
+    for t in tests:
+        path = write_csv(t, out / f"{t.name}.csv") if a.csv else write_isomme(t, out, a.zip)
+        print(path)
+    return 0
+
+
+def build_parser() -> argparse.ArgumentParser:
+    p = argparse.ArgumentParser(prog="observer-node", description=__doc__,
+                                formatter_class=argparse.RawDescriptionHelpFormatter)
+    p.add_argument("--version", action="version", version=f"%(prog)s {__version__}")
+    sub = p.add_subparsers(dest="command", required=True, metavar="COMMAND")
+
+    s = sub.add_parser("identify", help="fit a grey-box, ARX or N4SID model to crash tests",
+                       description="Fit one model to crash tests and write its JSON model file.")
+    s.add_argument("--model", choices=("greybox", "arx", "n4sid"), required=True)
+    _data_options(s, required=True)
+    s.add_argument("--out", required=True, help="model file to write (JSON)")
+    s.add_argument("--rate", type=float, default=1000.0,
+                   help="tick rate in Hz the model runs at (default 1000, the bus rate)")
+    s.add_argument("--nmax", type=int, default=6, help="ARX: largest order searched (default 6)")
+    s.add_argument("--order", type=int, default=7, help="N4SID: model order (default 7)")
+    s.add_argument("--m1", type=float, default=20.0,
+                   help="grey-box: fixed spine mass in kg that sets the mass scale (default 20)")
+    s.add_argument("--name", help="model name stored in the file")
+    s.add_argument("--quiet", action="store_true", help="no progress display")
+    s.set_defaults(func=cmd_identify)
+
+    s = sub.add_parser(
+        "evaluate", help="score models with the thesis's fit (tables, plots, JSON)",
+        description="Without --model: the thesis's chapter 4 on the data (default: bundled "
+        "campaign): per setup, estimate ARX Nmax 10 and 6, N4SID 16 and 7 and the grey-box on "
+        "the odd-numbered tests, score them on the even-numbered ones, print Tables 4.1-4.3 "
+        "with the thesis's numbers beside them, and write plots and evaluation.json. "
+        "With --model: score that model on the data and write OUT/fits.json and plots.")
+    s.add_argument("--model", help="model file to score (default: identify and compare all)")
+    _data_options(s, required=False)
+    s.add_argument("--out", default="out/evaluate", help="output folder (default out/evaluate)")
+    s.add_argument("--rate", type=float, default=1000.0, help="tick rate in Hz (default 1000)")
+    s.add_argument("--quiet", action="store_true", help="no progress display")
+    s.set_defaults(func=cmd_evaluate)
+
+    s = sub.add_parser("simulate", help="write synthetic crash tests from the plant simulator",
+                       description="Simulate crash tests with known truth (the thesis model, "
+                       "optionally with extra physical effects) and write them as ISO-MME.")
+    s.add_argument("--out", required=True, help="folder to write tests into")
+    s.add_argument("--setup", choices=("R16", "SLED", "FULL"), default="R16")
+    s.add_argument("--count", type=int, default=4)
+    s.add_argument("--seed", type=int, default=1)
+    s.add_argument("--effect", action="append", metavar="NAME[=SCALE]",
+                   help="switch on a physical effect beyond the thesis model (repeatable)")
+    s.add_argument("--no-noise", action="store_true", help="no sensor noise or CFC filtering")
+    s.add_argument("--zip", action="store_true", help="write each test as a .zip")
+    s.add_argument("--csv", action="store_true", help="write CSV instead of ISO-MME")
+    s.set_defaults(func=cmd_simulate)
+    return p
+
+
+def main(argv: list[str] | None = None) -> int:
+    args = build_parser().parse_args(argv)
+    try:
+        return int(args.func(args) or 0)
+    except (CrashDataError, ModelFileError) as e:
+        print(f"observer-node: error: {e}", file=sys.stderr)
+        return 2
+    except KeyboardInterrupt:
+        return 130
+    except BrokenPipeError:
+        return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,216 @@
+"""Identify and score models as the thesis does (chapter 4): five models per setup, estimated on
+one half of the tests and scored with eq. 3.15-3.18 on the other half."""
+
+from __future__ import annotations
+
+import json
+import re
+from pathlib import Path
+
+import numpy as np
+
+from . import plots
+from .data import CrashTest
+from .data.crashtest import THESIS_WINDOW_S
+from .ident import arx, greybox, n4sid
+from .ident.dataset import Dataset, make_dataset
+from .ident.metrics import fit_table
+from .ident.progress import Progress
+from .model.modelfile import ModelFile
+
+# Tables 4.1-4.3 of the thesis: (fit_CR,tot, fit_CD,tot, fit_TOT) on its validation tests.
+THESIS_TABLES = {
+    "R16": {"ARX Nmax=10": (50.5, 49.2, 49.9), "ARX Nmax=6": (44.8, 53.1, 48.9),
+            "SS N=16": (51.4, 49.1, 50.2), "SS N=7": (46.5, 63.8, 55.1),
+            "Grey-Box": (55.0, 74.3, 64.6)},
+    "SLED": {"ARX Nmax=10": (38.8, 45.9, 42.3), "ARX Nmax=6": (25.7, 54.7, 40.2),
+             "SS N=16": (70.7, 82.4, 76.5), "SS N=7": (62.2, 77.8, 70.0),
+             "Grey-Box": (63.1, 59.1, 61.1)},
+    "FULL": {"ARX Nmax=10": (49.0, 40.0, 44.5), "ARX Nmax=6": (42.6, 39.6, 41.1),
+             "SS N=16": (50.0, 59.2, 54.6), "SS N=7": (59.5, 68.8, 64.1),
+             "Grey-Box": (49.1, 47.2, 48.2)},
+}
+THESIS_TABLE_NO = {"R16": "4.1", "SLED": "4.2", "FULL": "4.3"}
+MODELS = ("ARX Nmax=10", "ARX Nmax=6", "SS N=16", "SS N=7", "Grey-Box")
+N4SID_BLOCK_ROWS = 24
+
+
+def split_halves(tests: list[CrashTest]) -> tuple[list[CrashTest], list[CrashTest]]:
+    """Odd-numbered tests estimate, even-numbered validate (alternating if unnumbered)."""
+    def number(t: CrashTest) -> int | None:
+        m = re.search(r"(\d+)\D*$", t.name)
+        return int(m.group(1)) if m else None
+
+    if all(number(t) is not None for t in tests):
+        return ([t for t in tests if number(t) % 2 == 1],  # type: ignore[operator]
+                [t for t in tests if number(t) % 2 == 0])  # type: ignore[operator]
+    return tests[0::2], tests[1::2]
+
+
+def identify(kind: str, data: Dataset, nmax: int = 6, order: int = 7,
+             orders: arx.ArxOrders | None = None, m1_kg: float = greybox.DEFAULT_M1_KG,
+             progress: Progress | None = None, name: str | None = None) -> ModelFile:
+    """Identify one model of ``kind`` (greybox, arx, n4sid) on ``data``."""
+    if kind == "greybox":
+        fit = greybox.fit_greybox(data, m1_kg=m1_kg, progress=progress)
+        return greybox.to_model_file(fit, data, name or "greybox")
+    if kind == "arx":
+        history: list[dict] = []
+        if orders is None:
+            orders, history = arx.search_orders(data, nmax, progress=progress)
+        m = arx.estimate_arx(data, orders)
+        m.fits = fit_table(data.names, data.y[:, data.win], m.simulate(data)[:, data.win])
+        return arx.to_model_file(m, data, name or f"arx-nmax{nmax}", nmax, history)
+    if kind == "n4sid":
+        m = n4sid.n4sid(data, order, N4SID_BLOCK_ROWS)
+        return n4sid.to_model_file(m, data, name or f"n4sid-{order}", N4SID_BLOCK_ROWS)
+    raise ValueError(f"unknown model kind {kind!r} (greybox, arx, n4sid)")
+
+
+def simulate_model(mf: ModelFile, data: Dataset) -> np.ndarray:
+    """Outputs (tests, n, 2) of a model file on a dataset made at the model's tick rate."""
+    if abs(data.fs_hz - mf.tick_rate_hz) > 1e-9:
+        raise ValueError(f"data at {data.fs_hz:g} Hz, model at {mf.tick_rate_hz:g} Hz")
+    return mf.observer().simulate(data.pulse_g, data.brs_rad)
+
+
+def dataset_for(mf: ModelFile, tests: list[CrashTest],
+                window_s: tuple[float, float] | None = None) -> Dataset:
+    window = window_s or tuple(mf.fitted_on.get("window_s", THESIS_WINDOW_S))
+    return make_dataset(tests, mf.tick_rate_hz, window)  # type: ignore[arg-type]
+
+
+def evaluate_model(mf: ModelFile, tests: list[CrashTest], out_dir: Path | None = None,
+                   window_s: tuple[float, float] | None = None, title: str | None = None) -> dict:
+    """Fits (eq. 3.15-3.18) of a model on ``tests``; with ``out_dir``, plots and fits.json."""
+    data = dataset_for(mf, tests, window_s)
+    y_hat = simulate_model(mf, data)
+    fits = fit_table(data.names, data.y[:, data.win], y_hat[:, data.win])
+    if out_dir is not None:
+        out_dir.mkdir(parents=True, exist_ok=True)
+        (out_dir / "fits.json").write_text(json.dumps(fits, indent=1) + "\n")
+        _plot_pair(out_dir, title or f"{mf.kind} {mf.name}", data, y_hat, fits, "fit")
+    return fits
+
+
+def _plot_pair(out_dir: Path, title: str, data: Dataset, y_hat: np.ndarray, fits: dict,
+               stem: str) -> list[str]:
+    t = np.arange(data.y.shape[1])[data.win] / data.fs_hz
+    return [
+        plots.measured_vs_simulated(out_dir / f"{stem}_{key}.png", title, data.names, t,
+                                    data.y[:, data.win], y_hat[:, data.win], fits, k).name
+        for k, key in enumerate(("cr", "cd"))
+    ]
+
+
+def thesis_comparison(tests: list[CrashTest], out_dir: Path, rate_hz: float = 1000.0,
+                      window_s: tuple[float, float] = THESIS_WINDOW_S,
+                      verbose: bool = True) -> dict:
+    """Chapter 4 on ``tests``: per setup, estimate five models on one half, score on the
+    other. ARX orders are searched on R16 estimation data (as the thesis did) when there is
+    any, else per setup. Writes models, plots and evaluation.json to ``out_dir``."""
+    out_dir.mkdir(parents=True, exist_ok=True)
+    setups: dict[str, list[CrashTest]] = {}
+    for t in tests:
+        setups.setdefault(t.setup, []).append(t)
+    prog = Progress("evaluate", enabled=verbose)
+    arx_orders: dict[int, arx.ArxOrders] = {}
+    scans: dict[str, dict] = {}
+    order_setup = "R16" if "R16" in setups else None
+    result: dict = {"rate_hz": rate_hz, "window_s": list(window_s), "setups": {}}
+    order = {"R16": 0, "SLED": 1, "FULL": 2}
+    for setup in sorted(setups, key=lambda s: (order.get(s, 3), s)):
+        est_tests, val_tests = split_halves(setups[setup])
+        if not est_tests or not val_tests:
+            prog.update(f"{setup}: needs at least two tests, skipped")
+            continue
+        est = make_dataset(est_tests, rate_hz, window_s)
+        val = make_dataset(val_tests, rate_hz, window_s)
+        entry: dict = {"estimation": est.names, "validation": val.names, "models": {}}
+        if order_setup in (None, setup):
+            for nmax in (6, 10):
+                prog.update(f"{setup}: ARX order search Nmax={nmax}")
+                arx_orders[nmax], _ = arx.search_orders(est, nmax, progress=prog)
+            scans[setup] = _order_scans(est, val, out_dir, setup, prog)
+        specs = {
+            "ARX Nmax=10": dict(kind="arx", nmax=10, orders=arx_orders[10]),
+            "ARX Nmax=6": dict(kind="arx", nmax=6, orders=arx_orders[6]),
+            "SS N=16": dict(kind="n4sid", order=16),
+            "SS N=7": dict(kind="n4sid", order=7),
+            "Grey-Box": dict(kind="greybox"),
+        }
+        for label, spec in specs.items():
+            prog.update(f"{setup}: {label}")
+            slug = re.sub(r"[^a-z0-9]+", "-", label.lower()).strip("-")
+            mf = identify(data=est, name=f"{setup.lower()}-{slug}", **spec)  # type: ignore[arg-type]
+            mf.save(out_dir / "models" / f"{setup.lower()}-{slug}.json")
+            y_hat = simulate_model(mf, val)
+            fits = fit_table(val.names, val.y[:, val.win], y_hat[:, val.win])
+            pngs = _plot_pair(out_dir / "plots", f"{setup} {label} (validation)", val, y_hat,
+                              fits, f"{setup.lower()}-{slug}")
+            entry["models"][label] = {
+                "validation": fits, "estimation_fit": mf.fits["fit"],
+                "model_file": f"models/{setup.lower()}-{slug}.json", "plots": pngs,
+                **({"parameters": mf.parameters} if spec["kind"] == "greybox" else {}),
+                **({"orders": mf.structure.get("NA") and
+                    {k: mf.structure[k] for k in ("NA", "NB", "NK")}}
+                   if spec["kind"] == "arx" else {}),
+            }
+        if setup in THESIS_TABLES:
+            entry["thesis"] = {m: dict(zip(("cr", "cd", "total"), v, strict=False))
+                               for m, v in THESIS_TABLES[setup].items()}
+        result["setups"][setup] = entry
+    result["order_scans"] = scans
+    prog.done()
+    (out_dir / "evaluation.json").write_text(json.dumps(result, indent=1) + "\n")
+    return result
+
+
+def _order_scans(est: Dataset, val: Dataset, out_dir: Path, setup: str,
+                 prog: Progress) -> dict:
+    """Figures 3.6 (ARX fit against Nmax) and 3.7 (N4SID fit against order)."""
+    arx_rows = []
+    for nmax in range(2, 13):
+        prog.update(f"{setup}: ARX scan Nmax={nmax}")
+        orders, _ = arx.search_orders(est, nmax)
+        m = arx.estimate_arx(est, orders)
+        row = {"nmax": nmax, "estimation_fit": fit_table(
+            est.names, est.y[:, est.win], m.simulate(est)[:, est.win])["fit"]["total"]}
+        row["validation_fit"] = fit_table(val.names, val.y[:, val.win],
+                                          m.simulate(val)[:, val.win])["fit"]["total"]
+        arx_rows.append(row)
+    ss_rows = n4sid.order_scan(est, val, range(1, 21), N4SID_BLOCK_ROWS, prog)
+    plots_dir = out_dir / "plots"
+    plots_dir.mkdir(parents=True, exist_ok=True)
+    plots.order_scan(plots_dir / f"{setup.lower()}-arx-nmax-scan.png",
+                     f"{setup}: iterated ARX, fit_TOT against Nmax (Fig. 3.6)", "Nmax",
+                     arx_rows, "nmax")
+    plots.order_scan(plots_dir / f"{setup.lower()}-n4sid-order-scan.png",
+                     f"{setup}: N4SID, fit_TOT against order (Fig. 3.7)", "order N",
+                     ss_rows, "order")
+    return {"arx": arx_rows, "n4sid": ss_rows}
+
+
+def format_tables(result: dict) -> str:
+    """Tables 4.1-4.3 with the thesis's numbers beside ours."""
+    lines = [f"Validation fit (eq. 3.15-3.18) at {result['rate_hz']:g} Hz, window "
+             f"{result['window_s'][0]:g}..{result['window_s'][1]:g} s; "
+             "thesis = Blåberg (2008) on its own data, for reference"]
+    for setup, entry in result["setups"].items():
+        no = THESIS_TABLE_NO.get(setup)
+        lines.append("")
+        lines.append(f"{setup} setup{f' (thesis Table {no})' if no else ''}: estimated on "
+                     f"{', '.join(entry['estimation'])}; validated on "
+                     f"{', '.join(entry['validation'])}")
+        lines.append(f"  {'model':<13}{'fit_CR':>8}{'fit_CD':>8}{'fit_TOT':>9}   "
+                     f"{'thesis CR':>9}{'CD':>6}{'TOT':>6}")
+        for label in MODELS:
+            m = entry["models"].get(label)
+            if m is None:
+                continue
+            f = m["validation"]["fit"]
+            ref = entry.get("thesis", {}).get(label)
+            ref_s = (f"{ref['cr']:>9.1f}{ref['cd']:>6.1f}{ref['total']:>6.1f}" if ref else "")
+            lines.append(f"  {label:<13}{f['cr']:>8.1f}{f['cd']:>8.1f}{f['total']:>9.1f}   "
+                         f"{ref_s}")
+    return "\n".join(lines)

@@ -1,0 +1,60 @@
+"""PNG plots in the style of the thesis's Appendix A: measured (solid) against simulated
+(dashed) per test, the fit of eq. 3.15 in each title."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt
+import numpy as np
+
+OUTPUT_LABELS = (("cr", "Chest acceleration CR [g]"), ("cd", "Chest deflection CD [mm]"))
+
+
+def measured_vs_simulated(path: Path, title: str, names: list[str], t_s: np.ndarray,
+                          y: np.ndarray, y_hat: np.ndarray, fits: dict, output: int) -> Path:
+    """One figure, one panel per test, for output 0 (CR) or 1 (CD). y, y_hat: (tests, n, 2)."""
+    key, label = OUTPUT_LABELS[output]
+    n = len(names)
+    cols = 2 if n > 1 else 1
+    rows = (n + cols - 1) // cols
+    fig, axes = plt.subplots(rows, cols, figsize=(6 * cols, 2.6 * rows), squeeze=False)
+    for k, name in enumerate(names):
+        ax = axes[k // cols][k % cols]
+        ax.plot(t_s * 1000, y[k, :, output], "k-", lw=1.2, label="measured")
+        ax.plot(t_s * 1000, y_hat[k, :, output], "r--", lw=1.2, label="simulated")
+        ax.set_title(f"{name}: fit {fits['tests'][name][key]:.1f} %", fontsize=9)
+        ax.set_xlabel("t [ms]")
+        ax.set_ylabel(label, fontsize=8)
+        ax.grid(alpha=0.3)
+    for k in range(n, rows * cols):
+        axes[k // cols][k % cols].axis("off")
+    axes[0][0].legend(fontsize=8)
+    fig.suptitle(f"{title} — {label.split(' [')[0]}, fit {fits['fit'][key]:.1f} %")
+    fig.tight_layout()
+    path.parent.mkdir(parents=True, exist_ok=True)
+    fig.savefig(path, dpi=80)
+    plt.close(fig)
+    return path
+
+
+def order_scan(path: Path, title: str, xlabel: str, rows: list[dict], x_key: str) -> Path:
+    """fit_TOT against model order (thesis Figures 3.6 and 3.7)."""
+    fig, ax = plt.subplots(figsize=(6, 3.5))
+    x = [r[x_key] for r in rows]
+    for key, style, label in (("estimation_fit", "o-", "estimation tests"),
+                              ("validation_fit", "s--", "validation tests")):
+        if all(key in r for r in rows):
+            ax.plot(x, [r[key] for r in rows], style, label=label)
+    ax.set_xlabel(xlabel)
+    ax.set_ylabel("fit_TOT [%]")
+    ax.set_title(title)
+    ax.grid(alpha=0.3)
+    ax.legend()
+    fig.tight_layout()
+    fig.savefig(path, dpi=80)
+    plt.close(fig)
+    return path

@@ -1,0 +1,127 @@
+"""The grey-box, ARX and N4SID models against data with known truth."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from observer_node.data import THESIS_WINDOW_S
+from observer_node.ident import arx, greybox, n4sid
+from observer_node.ident.dataset import Dataset, make_dataset
+from observer_node.ident.metrics import fit_percent, fit_table
+from observer_node.model import simulate_ss
+from observer_node.simulator import ChestParams, PlantConfig, simulate_campaign
+
+TRUTH = ChestParams()
+
+
+@pytest.fixture(scope="module")
+def clean_r16() -> list:
+    return simulate_campaign("R16", 6, seed=3, config=PlantConfig(noise=False))
+
+
+def test_fit_measure_eq_3_15():
+    y = np.array([1.0, 2.0, 3.0, 4.0])
+    assert fit_percent(y, y) == 100.0
+    assert fit_percent(y, np.full(4, y.mean())) == pytest.approx(0.0)
+    # ||e|| = 1, ||y - mean|| = sqrt(5)
+    assert fit_percent(y, y + np.array([1.0, 0, 0, 0])) == pytest.approx(100 * (1 - 1 / 5**0.5))
+    t = fit_table(["a", "b"], np.stack([np.stack([y, y], -1)] * 2),
+                  np.stack([np.stack([y, np.full(4, y.mean())], -1)] * 2))
+    assert t["fit"] == {"cr": 100.0, "cd": pytest.approx(0.0), "total": pytest.approx(50.0)}
+
+
+def test_zoh_is_exact_across_tick_rates():
+    p = {**TRUTH.as_dict()}
+    A, B, _, _ = greybox.continuous_matrices(p)
+    Ad1, Bd1 = greybox.zoh(A, B, 1000.0)
+    Ad10, Bd10 = greybox.zoh(A, B, 10_000.0)
+    # Ten steps at 10 kHz with a held input equal one step at 1 kHz.
+    x1 = Ad1 @ np.ones(5) + Bd1 @ np.array([1.0, 2.0])
+    x10 = np.ones(5)
+    for _ in range(10):
+        x10 = Ad10 @ x10 + Bd10 @ np.array([1.0, 2.0])
+    np.testing.assert_allclose(x1, x10, rtol=1e-9, atol=1e-12)
+
+
+def test_overall_mass_scale_is_not_identifiable(clean_r16):
+    data = make_dataset(clean_r16[:2], 1000.0)
+    p = TRUTH.as_dict()
+    scaled = {k: (v * 3.0 if k != "R" else v) for k, v in p.items()}
+    np.testing.assert_allclose(greybox.simulate(p, data), greybox.simulate(scaled, data),
+                               rtol=1e-8, atol=1e-9)
+
+
+def test_greybox_recovers_simulator_parameters(clean_r16):
+    data = make_dataset(clean_r16, 10_000.0)
+    fit = greybox.fit_greybox(data, m1_kg=TRUTH.m1)
+    for name, tol in (("k1", 0.02), ("k2", 0.02), ("c2", 0.03), ("R", 0.02), ("c1", 0.05)):
+        assert fit.params[name] == pytest.approx(getattr(TRUTH, name), rel=tol), name
+        assert 0 < fit.std_err[name] < 0.1 * fit.params[name], name
+    assert fit.fits["fit"]["total"] > 95
+
+
+def test_greybox_fit_drops_with_unmodelled_effects(clean_r16):
+    clean = greybox.fit_greybox(make_dataset(clean_r16, 1000.0))
+    effects = simulate_campaign("R16", 6, seed=3, config=PlantConfig(
+        noise=False, effects={"belt_unloading": 1.0, "chest_stiffening": 1.0}))
+    dirty = greybox.fit_greybox(make_dataset(effects, 1000.0))
+    assert clean.fits["fit"]["total"] - dirty.fits["fit"]["total"] > 5
+
+
+def _random_dataset(seed: int, tests: int = 4, n: int = 151) -> Dataset:
+    rng = np.random.default_rng(seed)
+    # Smooth random inputs, a few crash-like bumps each.
+    t = np.arange(n)
+    pulse = np.stack([sum(rng.uniform(5, 30) * np.exp(-0.5 * ((t - rng.uniform(0, n)) / 8) ** 2)
+                          for _ in range(4)) for _ in range(tests)])
+    pulse += rng.normal(0, 1.0, pulse.shape)  # persistently exciting for the subspace method
+    brs = np.cumsum(rng.normal(0, 0.05, (tests, n)), axis=1)
+    return Dataset([f"T{i}" for i in range(tests)], ["SIM"] * tests, 1000.0, pulse, brs,
+                   np.zeros((tests, n, 2)), slice(10, n), THESIS_WINDOW_S)
+
+
+def test_arx_recovers_known_coefficients():
+    data = _random_dataset(1)
+    orders = arx.ArxOrders(np.array([[2, 1], [1, 2]]), np.array([[2, 1], [1, 2]]),
+                           np.array([[1, 2], [0, 1]]))
+    truth = arx.ArxModel(orders,
+                         [[np.array([-1.5, 0.7]), np.array([0.1])],
+                          [np.array([0.05]), np.array([-1.2, 0.4])]],
+                         [[np.array([0.3, 0.1]), np.array([2.0])],
+                          [np.array([0.5]), np.array([1.0, -0.5])]])
+    data.y = truth.simulate(data)
+    est = arx.estimate_arx(data, orders)
+    for i in range(2):
+        for j in range(2):
+            np.testing.assert_allclose(est.a[i][j], truth.a[i][j], atol=1e-8)
+            np.testing.assert_allclose(est.b[i][j], truth.b[i][j], atol=1e-8)
+
+
+def test_arx_order_search_stays_within_nmax_and_fits():
+    data = _random_dataset(2, tests=6)
+    orders = arx.ArxOrders(np.array([[2, 0], [0, 2]]), np.array([[2, 1], [1, 2]]),
+                           np.array([[1, 1], [1, 1]]))
+    truth = arx.ArxModel(orders, [[np.array([-1.2, 0.5]), np.array([])],
+                                  [np.array([]), np.array([-0.9, 0.3])]],
+                         [[np.array([0.3, 0.1]), np.array([2.0])],
+                          [np.array([0.5]), np.array([1.0, -0.5])]])
+    data.y = truth.simulate(data)
+    found, history = arx.search_orders(data, nmax=4)
+    assert found.na.max() <= 4 and found.nb.max() <= 4 and found.nb.min() >= 1
+    assert history[-1]["fit_total"] > 99
+    assert [h["fit_total"] for h in history] == sorted(h["fit_total"] for h in history)
+
+
+def test_n4sid_identifies_a_known_system():
+    rng = np.random.default_rng(4)
+    data = _random_dataset(3, tests=5)
+    A = np.diag([0.95, 0.8, 0.6]) + 0.02 * rng.normal(size=(3, 3))
+    B, C, D = rng.normal(size=(3, 2)), rng.normal(size=(2, 3)), np.zeros((2, 2))
+    data.y = simulate_ss(A, B, C, D, np.stack([data.pulse_g, data.brs_rad], -1))
+    m = n4sid.n4sid(data, 3, block_rows=10)
+    assert m.fits["fit"]["total"] > 99.5
+    np.testing.assert_allclose(np.sort(np.abs(np.linalg.eigvals(m.A))),
+                               np.sort(np.abs(np.linalg.eigvals(A))), atol=1e-3)
+    rows = n4sid.order_scan(data, None, range(1, 5), block_rows=10)
+    assert rows[2]["estimation_fit"] > rows[0]["estimation_fit"]
