@@ -82,9 +82,9 @@ def main() -> None:
     ap.add_argument("--block-rows", type=int, default=24, help="subspace block rows (all)")
     a = ap.parse_args()
 
+    import pandas as pd
     from nfoursid.nfoursid import NFourSID
     from sippy_unipi import system_identification
-    import pandas as pd
 
     tests = [t for t in load_tests([bundled_campaign()]) if t.setup == a.setup]
     est_t, val_t = split_halves(tests)
