@@ -125,6 +125,59 @@ def cmd_simulate(a: argparse.Namespace) -> int:
     return 0
 
 
+def cmd_run(a: argparse.Namespace) -> int:
+    from dataclasses import fields
+
+    from .daemon.node import NodeConfig, run_daemon
+
+    cfg = NodeConfig.from_toml(a.config) if a.config else NodeConfig()
+    for f in fields(NodeConfig):
+        v = getattr(a, f.name, None)
+        if v is not None and f.name != "core":
+            setattr(cfg, f.name, v)
+    if a.python_can_socketcan:
+        cfg.raw_socketcan = False
+    for name in ("trigger_g", "event_s", "counts_per_rev"):
+        v = getattr(a, name)
+        if v is not None:
+            setattr(cfg.core, name, v)
+    if not cfg.model:
+        raise SystemExit("observer-node run: --model (or model in the config file) is required")
+    return run_daemon(cfg, quiet=a.quiet)
+
+
+def cmd_analyze(a: argparse.Namespace) -> int:
+    from .recording import RecordingError, analyze, read_recording
+
+    try:
+        rec = read_recording(a.recording)
+        out = Path(a.out) if a.out else Path(a.recording).with_suffix("")
+        result = analyze(rec, out_dir=out)
+    except RecordingError as e:
+        print(f"observer-node: error: {e}", file=sys.stderr)
+        return 2
+    meta = rec.metadata.get("chest-observer", {})
+    print(f"{rec.path}: {result['ticks']} ticks, model {meta.get('model_kind', '?')} "
+          f"{meta.get('model_name', '?')!r} at {meta.get('tick_rate_hz', '?')} Hz; "
+          f"valid {100 * result['valid_share']:.1f} % of ticks; "
+          f"max tick processing {result['max_proc_us']:.0f} us")
+    if rec.salvaged:
+        print(f"  salvaged: {rec.salvage_note}")
+    for e in result["events"]:
+        line = (f"  event {e['event']} (onset tick {e['onset_tick']}, {e['ticks']} ticks): "
+                f"max |daemon - offline| CR {e['max_abs_diff_offline']['cr_g']:.2g} g, "
+                f"CD {e['max_abs_diff_offline']['cd_mm']:.2g} mm")
+        print(line)
+        if "fit_vs_reference" in e:
+            f = e["fit_vs_reference"]
+            print(f"    fit vs reference (eq. 3.15): CR {f['cr']:.1f} %  CD {f['cd']:.1f} %  "
+                  f"TOT {f['total']:.1f} %")
+    if not result["events"]:
+        print("  no crash event in the recording (the observer never triggered)")
+    print(f"wrote {out / 'analysis.json'} and plots in {out}")
+    return 0
+
+
 def build_parser() -> argparse.ArgumentParser:
     p = argparse.ArgumentParser(prog="observer-node", description=__doc__,
                                 formatter_class=argparse.RawDescriptionHelpFormatter)
@@ -173,6 +226,35 @@ def build_parser() -> argparse.ArgumentParser:
     s.add_argument("--zip", action="store_true", help="write each test as a .zip")
     s.add_argument("--csv", action="store_true", help="write CSV instead of ISO-MME")
     s.set_defaults(func=cmd_simulate)
+
+    s = sub.add_parser(
+        "run", help="run the real-time observer daemon on a CAN bus",
+        description="Read TunnelAccel and BeltSpindle frames, step the model once per "
+        "accelerometer frame, publish ChestEstimate every tick and the status at 10 Hz, and "
+        "record the run to MCAP. Stops cleanly on SIGINT/SIGTERM.")
+    s.add_argument("--interface", help="python-can interface (default socketcan)")
+    s.add_argument("--channel", help="bus channel (default vcan0)")
+    s.add_argument("--model", help="model file (JSON) from identify or evaluate")
+    s.add_argument("--record", help="MCAP file to record the run to")
+    s.add_argument("--config", help="TOML file with an [observer] table of these options")
+    s.add_argument("--fd", action="store_true", default=None, help="CAN FD bus")
+    s.add_argument("--python-can-socketcan", action="store_true",
+                   help="use python-can's socketcan backend instead of the raw socket port")
+    s.add_argument("--trigger-g", type=float, help="crash trigger threshold in g (default 3)")
+    s.add_argument("--event-s", type=float, help="observer run time after trigger (0.2 s)")
+    s.add_argument("--counts-per-rev", type=int,
+                   help="BRS counts/rev if the BRS frame does not say (default 96)")
+    s.add_argument("--quiet", action="store_true")
+    s.set_defaults(func=cmd_run)
+
+    s = sub.add_parser("analyze", help="read a recording back: fits, offline check, plots",
+                       description="Read an MCAP recording of observer-node run (a truncated "
+                       "one is salvaged), re-run the recorded model offline on the recorded "
+                       "inputs, compute the fit (eq. 3.15) of the estimates against the "
+                       "reference frames, and plot them.")
+    s.add_argument("recording", help="MCAP file")
+    s.add_argument("--out", help="output folder (default: next to the recording)")
+    s.set_defaults(func=cmd_analyze)
     return p
 
 

@@ -1,0 +1,1 @@
+"""The real-time daemon: bus ports, the per-tick core, MCAP recording, the loop."""

@@ -1,0 +1,397 @@
+"""observer-node run: the daemon's loop.
+
+One thread, one loop: receive a frame (kernel-filtered to the input IDs), validate it (DLC,
+E2E CRC, alive counter, range), hand it to :class:`ObserverCore`, publish the estimate,
+record both frames and the tick to the shared-memory rings. Status frames go out every
+``status_period_s``. Receive timeouts drive the watchdog: with no accelerometer frame for two
+tick periods an invalid estimate is published each tick period (for up to ``idle_after_s``);
+with no BRS frame for ``brs_timeout_s`` the estimate is flagged invalid. Bus errors and a
+downed interface are counted and survived: the port is reopened until the bus is back.
+
+Everything per frame is a handful of integer and float operations on values prepared at
+start-up; nothing is logged and nothing looked up by name per frame.
+"""
+
+from __future__ import annotations
+
+import json
+import math
+import signal
+import sys
+import threading
+import time
+from collections.abc import Callable
+from dataclasses import asdict, dataclass, field, fields
+from pathlib import Path
+
+from dbc import DBC_PATH, Codec, e2e_crc
+
+from .. import __version__
+from ..model.modelfile import ModelFile
+from .core import (
+    ACCEL_TIMEOUT,
+    BAD_E2E,
+    BRS_TIMEOUT,
+    BUS_ERROR,
+    OUT_OF_RANGE,
+    RUNNING,
+    SENSOR_FAULT,
+    CoreConfig,
+    ObserverCore,
+)
+from .ports import FLAG_ERROR, Port, PortError, open_port
+from .recorder import TX, Recorder
+
+
+@dataclass
+class NodeConfig:
+    interface: str = "socketcan"
+    channel: str = "vcan0"
+    fd: bool = False
+    raw_socketcan: bool = True
+    model: str = ""
+    record: str = ""
+    status_period_s: float = 0.1
+    brs_timeout_s: float = 0.03
+    idle_after_s: float = 1.0
+    reconnect_s: float = 0.5
+    core: CoreConfig = field(default_factory=CoreConfig)
+
+    @classmethod
+    def from_toml(cls, path: str | Path) -> NodeConfig:
+        """Keys of the ``[observer]`` table are NodeConfig fields; ``[observer.core]`` holds
+        CoreConfig fields. Unknown keys are an error naming the file and key."""
+        import tomllib
+
+        p = Path(path)
+        try:
+            d = tomllib.loads(p.read_text(encoding="utf-8"))
+        except tomllib.TOMLDecodeError as e:
+            raise ValueError(f"{p}: {e}") from None
+        obs = d.get("observer", {})
+        core = obs.pop("core", {})
+        known = {f.name for f in fields(cls)} - {"core"}
+        known_core = {f.name for f in fields(CoreConfig)}
+        for k in obs:
+            if k not in known:
+                raise ValueError(f"{p}: [observer] unknown key {k!r} (known: {sorted(known)})")
+        for k in core:
+            if k not in known_core:
+                raise ValueError(f"{p}: [observer.core] unknown key {k!r}")
+        return cls(**obs, core=CoreConfig(**core))
+
+
+@dataclass
+class Counters:
+    rx: int = 0
+    ticks: int = 0
+    lost: int = 0
+    rejected: int = 0
+    bad_e2e: int = 0
+    unknown_id: int = 0
+    error_frames: int = 0
+    overruns: int = 0
+    tx_dropped: int = 0
+    reconnects: int = 0
+    accel_timeouts: int = 0
+    brs_timeouts: int = 0
+    kernel_dropped: int = 0
+
+
+def _sat16(v: int) -> int:
+    return v if v < 0xFFFF else 0xFFFF
+
+
+class ObserverNode:
+    def __init__(self, cfg: NodeConfig, model: ModelFile, codec: Codec | None = None,
+                 port_factory: Callable[[list[int]], Port] | None = None):
+        self.cfg = cfg
+        self.model = model
+        self.codec = codec or Codec(DBC_PATH)
+        self.core = ObserverCore(model.observer(), cfg.core)
+        self.counters = Counters()
+        self.stop_event = threading.Event()
+        c = self.codec
+        acc, brs, est, ref = (c["TunnelAccel"], c["BeltSpindle"], c["ChestEstimate"],
+                              c["ReferenceChest"])
+        self.input_ids = [acc.frame_id, brs.frame_id, ref.frame_id]
+        self._port_factory = port_factory or (
+            lambda ids: open_port(cfg.interface, cfg.channel, ids, cfg.fd, cfg.raw_socketcan))
+        # Everything the hot path needs, resolved once.
+        self.acc_id, self.acc_len, self.acc_struct = acc.frame_id, acc.length, acc.struct
+        self.acc_scale = acc.scale("TunnelAccelX")
+        self.acc_lo, self.acc_hi = acc.raw_range("TunnelAccelX")
+        self.brs_id, self.brs_len, self.brs_struct = brs.frame_id, brs.length, brs.struct
+        self.ref_id, self.ref_len, self.ref_struct = ref.frame_id, ref.length, ref.struct
+        self.ref_scale_cr = ref.scale("RefChestAccelCR")
+        self.ref_scale_cd = ref.scale("RefChestDeflCD")
+        self.est_id, self.est_struct = est.frame_id, est.struct
+        self.est_valid_bit = 1 << est.bit_shift("ChestEstimate_Valid")
+        self.est_running_bit = 1 << est.bit_shift("ChestEstimate_Running")
+        self.est_scale_cr = est.scale("ChestAccelCR")
+        self.est_scale_cd = est.scale("ChestDeflCD")
+        self.est_lo, self.est_hi = est.raw_range("ChestAccelCR")
+        self.status_codec, self.counters_codec = c["ObserverStatus"], c["ObserverCounters"]
+        self.period_s = 1.0 / model.tick_rate_hz
+        self.model_id = model.model_id()
+        self.recorder: Recorder | None = None
+        self.port: Port | None = None
+
+    # ------------------------------------------------------------------ lifecycle
+    def metadata(self) -> dict[str, str]:
+        cfg = asdict(self.cfg)
+        return {"software_version": __version__, "model_name": self.model.name,
+                "model_kind": self.model.kind, "model_id": str(self.model_id),
+                "tick_rate_hz": str(self.model.tick_rate_hz), "dbc_sha256": self.codec.sha256(),
+                "config": json.dumps(cfg), "started_utc": time.strftime("%Y-%m-%dT%H:%M:%SZ",
+                                                                        time.gmtime())}
+
+    def open(self) -> None:
+        if self.cfg.record:
+            atts = [("model.json", "application/json", self.model.dumps().encode()),
+                    ("chest_observer.dbc", "text/plain", self.codec.path.read_bytes())]
+            self.recorder = Recorder(self.cfg.record, self.metadata(), atts, self.codec.path)
+        self.port = self._port_factory(self.input_ids)
+
+    def close(self) -> None:
+        if self.port is not None:
+            try:
+                self.port.close()
+            except OSError:
+                pass
+            self.port = None
+        if self.recorder is not None:
+            self.recorder.close()
+            self.recorder = None
+
+    def install_signal_handlers(self) -> None:
+        def stop(signum, frame):
+            self.stop_event.set()
+        signal.signal(signal.SIGINT, stop)
+        signal.signal(signal.SIGTERM, stop)
+
+    # ------------------------------------------------------------------ loop
+    def run(self, max_seconds: float | None = None, idle_exit_s: float | None = None) -> Counters:
+        """Run until stopped (signal, ``stop_event``), ``max_seconds`` or, with
+        ``idle_exit_s``, that long without any input frame after the first one."""
+        self.open()
+        try:
+            self._loop(max_seconds, idle_exit_s)
+        finally:
+            self.close()
+        return self.counters
+
+    def _loop(self, max_seconds: float | None, idle_exit_s: float | None) -> None:
+        cnt, core = self.counters, self.core
+        rec_frame = self.recorder.put_frame if self.recorder else None
+        period = self.period_s
+        t_start = time.perf_counter()
+        last_accel = last_brs = last_any = None
+        next_status = t_start
+        next_watchdog = math.inf
+        status_counter = 0
+        acc_id, brs_id, ref_id = self.acc_id, self.brs_id, self.ref_id
+        acc_counter = brs_counter = -1
+        self.ref_cr = self.ref_cd = math.nan
+        stop = self.stop_event
+        while not stop.is_set():
+            now = time.perf_counter()
+            if max_seconds is not None and now - t_start > max_seconds:
+                break
+            if idle_exit_s is not None and last_any is not None and now - last_any > idle_exit_s:
+                break
+            timeout = min(next_status, next_watchdog) - now
+            try:
+                r = self.port.recv(min(max(timeout, 1e-4), 0.05))  # type: ignore[union-attr]
+            except PortError:
+                core.fault(BUS_ERROR)
+                self._reconnect()
+                continue
+            now = time.perf_counter()
+            if r is not None:
+                t, cid, data, flags = r
+                cnt.rx += 1
+                last_any = t
+                if rec_frame:
+                    rec_frame(t, cid, data, flags)
+                if flags & FLAG_ERROR:
+                    cnt.error_frames += 1
+                    core.fault(BUS_ERROR)
+                elif cid == acc_id:
+                    acc_counter = self._on_accel(t, data, acc_counter)
+                    last_accel = t
+                    next_watchdog = t + 2 * period
+                elif cid == brs_id:
+                    brs_counter = self._on_brs(data, brs_counter)
+                    last_brs = t
+                elif cid == ref_id:
+                    self._on_reference(data)
+                else:
+                    cnt.unknown_id += 1
+            # Watchdog: accelerometer silent for two tick periods -> invalid estimate per tick
+            if now >= next_watchdog:
+                if last_accel is not None and now - last_accel < self.cfg.idle_after_s:
+                    if not core.cause & ACCEL_TIMEOUT:
+                        cnt.accel_timeouts += 1  # outages, not ticks
+                    core.fault(ACCEL_TIMEOUT)
+                    self._publish(now, watchdog=True)
+                    next_watchdog = now + period
+                else:
+                    next_watchdog = math.inf
+            if last_brs is not None and now - last_brs > self.cfg.brs_timeout_s and \
+                    last_accel is not None and now - last_accel < self.cfg.idle_after_s:
+                if not core.cause & BRS_TIMEOUT:
+                    cnt.brs_timeouts += 1
+                core.fault(BRS_TIMEOUT)
+            if now >= next_status:
+                self._send_status(now, status_counter)
+                status_counter += 1
+                next_status += self.cfg.status_period_s
+                if next_status < now:
+                    next_status = now + self.cfg.status_period_s
+
+    def _reconnect(self) -> None:
+        cnt = self.counters
+        try:
+            if self.port is not None:
+                self.port.close()
+        except OSError:
+            pass
+        self.port = None
+        while not self.stop_event.is_set():
+            cnt.reconnects += 1
+            try:
+                self.port = self._port_factory(self.input_ids)
+                return
+            except PortError:
+                self.stop_event.wait(self.cfg.reconnect_s)
+
+    # ------------------------------------------------------------------ frames
+    def _on_accel(self, t: float, data: bytes, last_counter: int) -> int:
+        cnt, core = self.counters, self.core
+        if len(data) != self.acc_len:
+            cnt.rejected += 1
+            core.fault(OUT_OF_RANGE)
+            return last_counter
+        crc, b1, raw = self.acc_struct.unpack_from(data)
+        counter = b1 & 0xF
+        if crc != e2e_crc(self.acc_id, data) or counter == last_counter:
+            cnt.bad_e2e += 1
+            core.fault(BAD_E2E)
+            return last_counter
+        if last_counter >= 0:
+            gap = (counter - last_counter - 1) & 0xF
+            if gap:
+                cnt.lost += gap
+                core.bridge(gap)
+        if b1 >> 4 & 1:
+            core.fault(SENSOR_FAULT)
+        if raw <= self.acc_lo or raw >= self.acc_hi:
+            core.fault(OUT_OF_RANGE)  # saturated sensor: used, but flagged
+        accel_g = raw * self.acc_scale
+        core.tick(-accel_g)  # J211 X acceleration -> deceleration positive
+        cnt.ticks += 1
+        self._publish(t, accel_g)
+        cnt.kernel_dropped = self.port.dropped  # type: ignore[union-attr]
+        return counter
+
+    def _on_brs(self, data: bytes, last_counter: int) -> int:
+        cnt = self.counters
+        if len(data) != self.brs_len:
+            cnt.rejected += 1
+            self.core.fault(OUT_OF_RANGE)
+            return last_counter
+        crc, b1, count, per_rev = self.brs_struct.unpack_from(data)
+        counter = b1 & 0xF
+        if crc != e2e_crc(self.brs_id, data) or counter == last_counter:
+            cnt.bad_e2e += 1
+            self.core.fault(BAD_E2E)
+            return last_counter
+        if last_counter >= 0:
+            cnt.lost += (counter - last_counter - 1) & 0xF
+        if b1 >> 4 & 1:
+            self.core.fault(SENSOR_FAULT)
+        self.core.set_brs(float(count), per_rev or self.cfg.core.counts_per_rev)
+        return counter
+
+    def _on_reference(self, data: bytes) -> None:
+        if len(data) != self.ref_len or data[0] != e2e_crc(self.ref_id, data):
+            self.counters.rejected += 1
+            return
+        _, _, cr, cd = self.ref_struct.unpack_from(data)
+        self.ref_cr = cr * self.ref_scale_cr
+        self.ref_cd = cd * self.ref_scale_cd
+
+    def _publish(self, t: float, accel_g: float = math.nan, watchdog: bool = False) -> None:
+        """Send the estimate frame for this tick and record the tick (watchdog publishes,
+        between ticks, are recorded with tick -1)."""
+        core = self.core
+        cr, cd = core.cr_g, core.cd_mm
+        running = core.state == RUNNING
+        valid = core.valid
+        if not (math.isfinite(cr) and math.isfinite(cd)):
+            core.fault(OUT_OF_RANGE)
+            cr = cd = 0.0
+            valid = False
+        lo, hi = self.est_lo, self.est_hi
+        cr_raw = min(max(round(cr / self.est_scale_cr), lo), hi)
+        cd_raw = min(max(round(cd / self.est_scale_cd), lo), hi)
+        b1 = (core.tick_index & 0xF) | (self.est_valid_bit if valid else 0) | \
+            (self.est_running_bit if running else 0)
+        data = bytearray(self.est_struct.pack(0, b1, cr_raw, cd_raw))
+        data[0] = e2e_crc(self.est_id, data)
+        data = bytes(data)
+        if not self.port.send(self.est_id, data):  # type: ignore[union-attr]
+            self.counters.tx_dropped += 1
+        done = time.perf_counter()
+        if done - t > self.period_s:
+            self.counters.overruns += 1
+        rec = self.recorder
+        if rec is not None:
+            rec.put_frame(done, self.est_id, data, TX)
+            rec.put_tick((t, -1 if watchdog else core.tick_index, accel_g, -accel_g, core.bias_g, core.brs_count,
+                          core.brs_ref, core.rad_per_count, cr, cd, valid, running, core.state,
+                          core.cause, core.event, core.onset_tick, self.ref_cr, self.ref_cd,
+                          (done - t) * 1e6))
+
+    def _send_status(self, now: float, counter: int) -> None:
+        cnt, core = self.counters, self.core
+        frames = (
+            (self.status_codec, {"ObserverState": core.state, "ModelId": self.model_id,
+                                 "TickOverruns": _sat16(cnt.overruns),
+                                 "InvalidCause": core.cause if not core.valid else 0,
+                                 "ObserverFault": core.faults}),
+            (self.counters_codec, {"LostFrames": _sat16(cnt.lost + cnt.kernel_dropped),
+                                   "RejectedFrames": _sat16(cnt.rejected + cnt.unknown_id),
+                                   "BadE2EFrames": _sat16(cnt.bad_e2e)}),
+        )
+        for fc, values in frames:
+            data = fc.encode(values, counter)
+            try:
+                ok = self.port.send(fc.frame_id, data)  # type: ignore[union-attr]
+            except PortError:
+                ok = False
+            if not ok:
+                cnt.tx_dropped += 1
+            if self.recorder is not None:
+                self.recorder.put_frame(now, fc.frame_id, data, TX)
+
+
+def run_daemon(cfg: NodeConfig, quiet: bool = False) -> int:
+    """The ``observer-node run`` command."""
+    model = ModelFile.load(cfg.model)
+    node = ObserverNode(cfg, model)
+    node.install_signal_handlers()
+    if not quiet:
+        print(f"observer-node: {model.kind} model {model.name!r} (id {node.model_id:#06x}) at "
+              f"{model.tick_rate_hz:g} Hz on {cfg.interface}:{cfg.channel}"
+              + (f", recording to {cfg.record}" if cfg.record else ""), file=sys.stderr)
+    try:
+        cnt = node.run()
+    except PortError as e:
+        print(f"observer-node: error: {e}", file=sys.stderr)
+        return 2
+    if not quiet:
+        print("observer-node: stopped; " + ", ".join(f"{k} {v}" for k, v in asdict(cnt).items()),
+              file=sys.stderr)
+    return 0

@@ -1,0 +1,204 @@
+"""Reading a daemon's MCAP recording back: ticks, events, the model it ran, and the analysis.
+
+A file cut short (daemon killed, disk full) has no summary; it is read with the non-seeking
+reader up to the last complete chunk and reported as salvaged.
+"""
+
+from __future__ import annotations
+
+import json
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import numpy as np
+
+from .ident.metrics import fit_percent
+from .model.modelfile import ModelFile
+
+
+class RecordingError(ValueError):
+    pass
+
+
+@dataclass
+class Recording:
+    path: Path
+    metadata: dict[str, dict[str, str]]
+    model: ModelFile | None
+    ticks: dict[str, np.ndarray]  # per tick, sorted by tick index
+    frames: list[dict]  # /can/frames messages (raw, in order)
+    reference: dict[int, tuple[float, float]]
+    salvaged: bool = False
+    salvage_note: str = ""
+    topics: dict[str, int] = field(default_factory=dict)
+
+    @property
+    def tick_rate_hz(self) -> float:
+        return float(self.metadata.get("chest-observer", {}).get("tick_rate_hz", "nan"))
+
+
+_INPUT_KEYS = ("accel_x_g", "decel_g", "bias_g", "brs_count", "brs_ref", "rad_per_count")
+_EST_KEYS = ("t", "cr_g", "cd_mm", "valid", "running", "state", "cause", "event", "onset_tick",
+             "proc_us")
+
+
+def read_recording(path: str | Path, frames: bool = True) -> Recording:
+    from mcap.exceptions import McapError
+    from mcap.records import Attachment, Channel, Message, Metadata
+    from mcap.stream_reader import StreamReader
+
+    path = Path(path)
+    if not path.exists():
+        raise RecordingError(f"{path}: no such file")
+    metadata: dict[str, dict[str, str]] = {}
+    model = None
+    inputs: dict[int, dict] = {}
+    est: dict[int, dict] = {}
+    ref: dict[int, tuple[float, float]] = {}
+    raw: list[dict] = []
+    topics: dict[str, int] = {}
+    salvaged, note = False, ""
+    with path.open("rb") as f:
+        channels: dict[int, str] = {}
+        n = 0
+        try:
+            # One sequential pass (no seeking, so a truncated file reads up to where it ends)
+            for rec in StreamReader(f, validate_crcs=True).records:
+                if isinstance(rec, Channel):
+                    channels[rec.id] = rec.topic
+                elif isinstance(rec, Message):
+                    topic = channels.get(rec.channel_id, "?")
+                    topics[topic] = topics.get(topic, 0) + 1
+                    n += 1
+                    if topic == "/observer/estimate":
+                        m = json.loads(rec.data)
+                        if m["tick"] >= 0:  # -1: watchdog publish between ticks
+                            est[m["tick"]] = m
+                    elif topic == "/observer/inputs":
+                        m = json.loads(rec.data)
+                        inputs[m["tick"]] = m
+                    elif topic == "/observer/reference":
+                        m = json.loads(rec.data)
+                        ref[m["tick"]] = (m["cr_g"], m["cd_mm"])
+                    elif topic == "/can/frames" and frames:
+                        raw.append(json.loads(rec.data))
+                elif isinstance(rec, Metadata):
+                    metadata[rec.name] = dict(rec.metadata)
+                elif isinstance(rec, Attachment) and rec.name == "model.json":
+                    model = ModelFile.from_dict(json.loads(rec.data), f"{path}!model.json")
+        except (McapError, EOFError, ValueError, KeyError) as e:
+            salvaged = True
+            note = (f"recording ends early ({type(e).__name__}: {e}); read {n} messages up to "
+                    "the last complete chunk")
+    if "chest-observer-recorder" not in metadata and not salvaged:
+        salvaged, note = True, f"recording has no end record; read {sum(topics.values())} messages"
+    ticks_idx = np.array(sorted(set(est) & set(inputs)), dtype=np.int64)
+    ticks: dict[str, np.ndarray] = {"tick": ticks_idx}
+    for k in _EST_KEYS:
+        ticks[k] = np.array([est[i][k] for i in ticks_idx], dtype=float)
+    for k in _INPUT_KEYS:
+        ticks[k] = np.array([inputs[i][k] for i in ticks_idx], dtype=float)
+    return Recording(path, metadata, model, ticks, raw, ref, salvaged, note, topics)
+
+
+def offline_estimates(rec: Recording, event: int) -> tuple[np.ndarray, np.ndarray]:
+    """Re-run the recorded model offline on the recorded inputs of one event, from the same
+    onset, bias and BRS reference. Returns (ticks, y (n, 2)) for the ticks the daemon ran."""
+    if rec.model is None:
+        raise RecordingError(f"{rec.path}: no model.json attachment")
+    T = rec.ticks
+    run = (T["event"] == event) & (T["running"] > 0)
+    if not run.any():
+        raise RecordingError(f"{rec.path}: event {event} not in the recording")
+    onset = int(T["onset_tick"][run][0])
+    last = int(T["tick"][run][-1])
+    sel = (T["tick"] >= onset) & (T["tick"] <= last)
+    ticks = T["tick"][sel].astype(int)
+    if len(ticks) != last - onset + 1:
+        raise RecordingError(f"{rec.path}: event {event} has gaps in its ticks (lost frames): "
+                             "the offline run would not see the same inputs")
+    first_run = np.flatnonzero(run)[0]
+    bias = T["bias_g"][first_run]
+    brs_ref = T["brs_ref"][first_run]
+    rpc = T["rad_per_count"][first_run]
+    pulse = -T["accel_x_g"][sel] - bias
+    brs_rad = (T["brs_count"][sel] - brs_ref) * rpc
+    y = rec.model.observer().simulate(pulse, brs_rad)
+    return ticks, y
+
+
+def analyze(rec: Recording, window_s: tuple[float, float] = (0.01, 0.15),
+            out_dir: Path | None = None) -> dict:
+    """Per event: the fit (eq. 3.15) of the estimates against the reference and against the
+    offline simulation of the same model, and the largest difference from the offline run."""
+    T = rec.ticks
+    fs = rec.model.tick_rate_hz if rec.model else rec.tick_rate_hz
+    events = sorted({int(e) for e in T["event"][T["running"] > 0]})
+    result: dict = {"file": str(rec.path), "salvaged": rec.salvaged, "note": rec.salvage_note,
+                    "ticks": len(T["tick"]), "topics": rec.topics,
+                    "valid_share": float(T["valid"].mean()) if len(T["tick"]) else 0.0,
+                    "max_proc_us": float(T["proc_us"].max()) if len(T["tick"]) else 0.0,
+                    "events": []}
+    for e in events:
+        ticks, y_off = offline_estimates(rec, e)
+        idx = {int(k): i for i, k in enumerate(T["tick"])}
+        rows = np.array([idx[int(k)] for k in ticks])
+        y_est = np.column_stack([T["cr_g"][rows], T["cd_mm"][rows]])
+        running = T["running"][rows] > 0
+        onset = int(ticks[0])
+        t_rel = (ticks - onset) / fs
+        win = (t_rel >= window_s[0] - 1e-9) & (t_rel <= window_s[1] + 1e-9) & running
+        entry: dict = {"event": e, "onset_tick": onset, "ticks": len(ticks),
+                       "max_abs_diff_offline": {
+                           "cr_g": float(np.max(np.abs(y_est[running, 0] - y_off[running, 0]))),
+                           "cd_mm": float(np.max(np.abs(y_est[running, 1] - y_off[running, 1])))},
+                       "fit_vs_offline": {
+                           "cr": fit_percent(y_off[win, 0], y_est[win, 0]),
+                           "cd": fit_percent(y_off[win, 1], y_est[win, 1])}}
+        have_ref = np.array([int(k) in rec.reference for k in ticks])
+        if (have_ref & win).sum() > 10:
+            r = np.array([rec.reference.get(int(k), (np.nan, np.nan)) for k in ticks])
+            w = win & have_ref
+            entry["fit_vs_reference"] = {"cr": fit_percent(r[w, 0], y_est[w, 0]),
+                                         "cd": fit_percent(r[w, 1], y_est[w, 1])}
+            entry["fit_vs_reference"]["total"] = (entry["fit_vs_reference"]["cr"]
+                                                  + entry["fit_vs_reference"]["cd"]) / 2
+            entry["offline_fit_vs_reference"] = {"cr": fit_percent(r[w, 0], y_off[w, 0]),
+                                                 "cd": fit_percent(r[w, 1], y_off[w, 1])}
+        else:
+            r = None
+        if out_dir is not None:
+            _plot_event(out_dir / f"event{e}.png", rec, e, t_rel, y_est, y_off, r, entry)
+        result["events"].append(entry)
+    if out_dir is not None:
+        out_dir.mkdir(parents=True, exist_ok=True)
+        (out_dir / "analysis.json").write_text(json.dumps(result, indent=1) + "\n")
+    return result
+
+
+def _plot_event(path: Path, rec: Recording, e: int, t: np.ndarray, y_est: np.ndarray,
+                y_off: np.ndarray, ref: np.ndarray | None, entry: dict) -> None:
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    fig, axes = plt.subplots(2, 1, figsize=(8, 6), sharex=True)
+    for k, (ax, label) in enumerate(zip(axes, ("CR [g]", "CD [mm]"), strict=True)):
+        if ref is not None:
+            ax.plot(t * 1000, ref[:, k], "k-", lw=1.2, label="reference (measured)")
+        ax.plot(t * 1000, y_est[:, k], "r--", lw=1.2, label="daemon estimate")
+        ax.plot(t * 1000, y_off[:, k], "b:", lw=1.5, label="offline simulation")
+        ax.set_ylabel(label)
+        ax.grid(alpha=0.3)
+    axes[-1].set_xlabel("t since onset [ms]")
+    axes[0].legend(fontsize=8)
+    fit = entry.get("fit_vs_reference")
+    title = f"{rec.path.name} event {e}"
+    if fit:
+        title += f": fit CR {fit['cr']:.1f} %, CD {fit['cd']:.1f} %"
+    fig.suptitle(title)
+    fig.tight_layout()
+    path.parent.mkdir(parents=True, exist_ok=True)
+    fig.savefig(path, dpi=80)
+    plt.close(fig)

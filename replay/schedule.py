@@ -1,0 +1,96 @@
+"""Crash tests turned into timed CAN frames, as the sensor ECUs would send them.
+
+The accelerometer goes out once per tick at the DBC rate (``rate_hz``), resampled from the lab
+rate with the causal anti-alias filter the identification also uses
+(:func:`observer_node.data.resample_inputs`), in SAE J211 sign. The BRS goes out when its count
+changes (at most once per tick) and every ``brs_heartbeat_s``. With ``reference``, the dummy's
+measured CR and CD go out every tick (zero-phase decimated, model convention). Within a tick
+the BRS and reference frames precede the accelerometer frame, so the observer ticks on fresh
+values. Times are seconds from the first frame.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from dbc import Codec
+from observer_node.data import CrashTest
+from observer_node.data.crashtest import resample_inputs, resample_reference
+
+
+@dataclass
+class Schedule:
+    t_s: np.ndarray  # send times, non-decreasing
+    ids: np.ndarray
+    data: list[bytes]
+    source: str = ""
+
+    def __len__(self) -> int:
+        return len(self.data)
+
+    def shifted(self, dt_s: float) -> Schedule:
+        return Schedule(self.t_s + dt_s, self.ids, self.data, self.source)
+
+
+def concat(schedules: list[Schedule], gap_s: float = 0.5) -> Schedule:
+    """Play schedules one after another with ``gap_s`` between them."""
+    parts, offset = [], 0.0
+    for s in schedules:
+        if len(s):
+            parts.append(s.shifted(offset - s.t_s[0]))
+            offset = parts[-1].t_s[-1] + gap_s
+    if not parts:
+        return Schedule(np.zeros(0), np.zeros(0, int), [])
+    return Schedule(np.concatenate([p.t_s for p in parts]),
+                    np.concatenate([p.ids for p in parts]),
+                    [d for p in parts for d in p.data], "+".join(p.source for p in parts))
+
+
+def crash_test_schedule(test: CrashTest, codec: Codec, rate_hz: float = 1000.0,
+                        reference: bool = False, brs_heartbeat_s: float = 0.01,
+                        start_s: float | None = None, end_s: float | None = None,
+                        pre_s: float = 0.0) -> Schedule:
+    """Frames for one crash test between ``start_s`` and ``end_s`` (test time, default all).
+    ``pre_s`` prepends that much quiet signal (the mean pulse before first contact, held)
+    so a daemon can estimate the accelerometer bias before the crash."""
+    if test.counts_per_rev is None:
+        raise ValueError(f"{test.source or test.name}: BRS counts/rev unknown")
+    pulse, brs, step = resample_inputs(test.pulse_g, test.brs, test.fs_hz, rate_hz)
+    t = test.t0_s + np.arange(len(pulse)) * step / test.fs_hz
+    cr = cd = None
+    if reference and test.has_outputs:
+        cr = resample_reference(test.cr_g, step)[:len(pulse)]  # type: ignore[arg-type]
+        cd = resample_reference(test.cd_mm, step)[:len(pulse)]  # type: ignore[arg-type]
+    lo = 0 if start_s is None else int(np.searchsorted(t, start_s - 1e-9))
+    hi = len(t) if end_s is None else int(np.searchsorted(t, end_s + 1e-9))
+    n_pre = int(round(pre_s * rate_hz))
+    quiet = t < 0
+    pulse = np.append(pulse, pulse[quiet].mean() if quiet.any() else 0.0)  # index -1: padding
+    idx = np.concatenate([np.full(n_pre, -1), np.arange(lo, hi)])
+    acc, bfc, ref = codec["TunnelAccel"], codec["BeltSpindle"], codec["ReferenceChest"]
+    heartbeat = max(1, int(round(brs_heartbeat_s * rate_hz)))
+    times, ids, data = [], [], []
+    last_brs = None
+    n_acc = n_brs = 0
+    for k, i in enumerate(idx):
+        tk = k / rate_hz
+        count = int(brs[max(i, lo)] if i < 0 else brs[i])
+        if count != last_brs or k % heartbeat == 0:
+            times.append(tk)
+            ids.append(bfc.frame_id)
+            data.append(bfc.encode({"BrsCount": count, "BrsCountsPerRev": test.counts_per_rev,
+                                    "BeltSpindle_Status": 2}, n_brs))
+            n_brs += 1
+            last_brs = count
+        if cr is not None and cd is not None:
+            times.append(tk)
+            ids.append(ref.frame_id)
+            j = lo if i < 0 else i
+            data.append(ref.encode({"RefChestAccelCR": cr[j], "RefChestDeflCD": cd[j]}, k))
+        times.append(tk)
+        ids.append(acc.frame_id)
+        data.append(acc.encode({"TunnelAccelX": -pulse[i]}, n_acc))  # model -> J211 sign
+        n_acc += 1
+    return Schedule(np.array(times), np.array(ids), data, test.name)
