@@ -65,15 +65,15 @@ def crash_test_schedule(test: CrashTest, codec: Codec, rate_hz: float = 1000.0,
         cd = resample_reference(test.cd_mm, step)[:len(pulse)]  # type: ignore[arg-type]
     lo = 0 if start_s is None else int(np.searchsorted(t, start_s - 1e-9))
     hi = len(t) if end_s is None else int(np.searchsorted(t, end_s + 1e-9))
-    n_pre = int(round(pre_s * rate_hz))
+    n_pre = round(pre_s * rate_hz)
     quiet = t < 0
     pulse = np.append(pulse, pulse[quiet].mean() if quiet.any() else 0.0)  # index -1: padding
     idx = np.concatenate([np.full(n_pre, -1), np.arange(lo, hi)])
     acc, bfc, ref = codec["TunnelAccel"], codec["BeltSpindle"], codec["ReferenceChest"]
-    heartbeat = max(1, int(round(brs_heartbeat_s * rate_hz)))
+    heartbeat = max(1, round(brs_heartbeat_s * rate_hz))
     times, ids, data = [], [], []
     last_brs = None
-    n_acc = n_brs = 0
+    n_brs = 0
     for k, i in enumerate(idx):
         tk = k / rate_hz
         count = int(brs[max(i, lo)] if i < 0 else brs[i])
@@ -91,6 +91,5 @@ def crash_test_schedule(test: CrashTest, codec: Codec, rate_hz: float = 1000.0,
             data.append(ref.encode({"RefChestAccelCR": cr[j], "RefChestDeflCD": cd[j]}, k))
         times.append(tk)
         ids.append(acc.frame_id)
-        data.append(acc.encode({"TunnelAccelX": -pulse[i]}, n_acc))  # model -> J211 sign
-        n_acc += 1
+        data.append(acc.encode({"TunnelAccelX": -pulse[i]}, k))  # model -> J211 sign
     return Schedule(np.array(times), np.array(ids), data, test.name)

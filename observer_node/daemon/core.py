@@ -13,7 +13,7 @@ HOLD     after the event: outputs 0 until the pulse has been quiet (|pulse| < ``
          for ``rearm_s``; then ARMED again.
 
 Validity: any fault (input timeout, bad CRC/counter, lost frame, value out of range, sensor
-fault, bus error) marks the estimate invalid for ``recover_ticks`` good ticks. Lost
+fault, bus error) marks the estimate invalid for the next ``recover_ticks`` ticks. Lost
 accelerometer frames (alive-counter gaps) are bridged by stepping with the held pulse so the
 observer keeps time.
 """

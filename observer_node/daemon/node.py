@@ -14,6 +14,7 @@ start-up; nothing is logged and nothing looked up by name per frame.
 
 from __future__ import annotations
 
+import contextlib
 import json
 import math
 import signal
@@ -151,14 +152,14 @@ class ObserverNode:
             atts = [("model.json", "application/json", self.model.dumps().encode()),
                     ("chest_observer.dbc", "text/plain", self.codec.path.read_bytes())]
             self.recorder = Recorder(self.cfg.record, self.metadata(), atts, self.codec.path)
+            if not self.recorder.wait_ready():
+                raise PortError(5, f"{self.cfg.record}: the recorder process did not start")
         self.port = self._port_factory(self.input_ids)
 
     def close(self) -> None:
         if self.port is not None:
-            try:
+            with contextlib.suppress(OSError):
                 self.port.close()
-            except OSError:
-                pass
             self.port = None
         if self.recorder is not None:
             self.recorder.close()
@@ -349,10 +350,10 @@ class ObserverNode:
         rec = self.recorder
         if rec is not None:
             rec.put_frame(done, self.est_id, data, TX)
-            rec.put_tick((t, -1 if watchdog else core.tick_index, accel_g, -accel_g, core.bias_g, core.brs_count,
-                          core.brs_ref, core.rad_per_count, cr, cd, valid, running, core.state,
-                          core.cause, core.event, core.onset_tick, self.ref_cr, self.ref_cd,
-                          (done - t) * 1e6))
+            rec.put_tick((t, -1 if watchdog else core.tick_index, accel_g, -accel_g,
+                          core.bias_g, core.brs_count, core.brs_ref, core.rad_per_count, cr,
+                          cd, valid, running, core.state, core.cause, core.event,
+                          core.onset_tick, self.ref_cr, self.ref_cd, (done - t) * 1e6))
 
     def _send_status(self, now: float, counter: int) -> None:
         cnt, core = self.counters, self.core

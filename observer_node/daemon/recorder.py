@@ -36,7 +36,7 @@ TX = 4  # frame flag bit: sent by the daemon (bits 1, 2 are ports.FLAG_ERROR, FL
 TICK_COLS = ("t", "tick", "accel_x_g", "decel_g", "bias_g", "brs_count", "brs_ref",
              "rad_per_count", "cr_g", "cd_mm", "valid", "running", "state", "cause", "event",
              "onset_tick", "ref_cr_g", "ref_cd_mm", "proc_us")
-_CTRL = ("frames_head", "ticks_head", "stop", "done", "frames_lost", "ticks_lost")
+_CTRL = ("frames_head", "ticks_head", "stop", "done", "frames_lost", "ticks_lost", "ready")
 
 
 class Rings:
@@ -134,6 +134,7 @@ def writer_main(names: tuple[str, str, str], capacity: int, path: str, clock: tu
     for name, media, data in attachments:
         w.add_attachment(wall0_ns, wall0_ns, name, media, data)
     w.flush()
+    rings.ctrl[6] = 1
     seq = dict.fromkeys(chan, 0)
 
     def emit(topic: str, t: float, msg: dict) -> None:
@@ -227,6 +228,13 @@ class Recorder:
         self.proc.start()
         self.put_frame = self.rings.put_frame
         self.put_tick = self.rings.put_tick
+
+    def wait_ready(self, timeout_s: float = 30.0) -> bool:
+        """Wait until the writer process has the file open (it buffers meanwhile anyway)."""
+        deadline = time.monotonic() + timeout_s
+        while not self.rings.ctrl[6] and self.proc.is_alive() and time.monotonic() < deadline:
+            time.sleep(0.01)
+        return bool(self.rings.ctrl[6])
 
     @property
     def lost(self) -> tuple[int, int]:

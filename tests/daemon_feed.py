@@ -1,0 +1,86 @@
+"""Test helper: run the daemon on python-can's virtual bus and feed it a crash test.
+
+In-process (``run_with_feed``) for unit tests, or as a script for tests that need a separate
+process to signal or kill:  python -m tests.daemon_feed MODEL RECORD SECONDS
+"""
+
+from __future__ import annotations
+
+import sys
+import threading
+import time
+from pathlib import Path
+
+import can
+
+from dbc import Codec
+from observer_node.daemon.node import NodeConfig, ObserverNode
+from observer_node.daemon.ports import PythonCanPort
+from observer_node.data import bundled_campaign, read_isomme
+from observer_node.model import ModelFile
+from replay.player import play
+from replay.schedule import Schedule, crash_test_schedule
+
+CODEC = Codec()
+
+
+def r16_schedule(name: str = "R16_002", reference: bool = True, pre_s: float = 0.2) -> Schedule:
+    test = read_isomme(bundled_campaign() / f"{name}.zip")
+    return crash_test_schedule(test, CODEC, 1000.0, reference=reference, pre_s=pre_s)
+
+
+class Harness:
+    """A daemon on a virtual channel, a sender and a listener on the same channel."""
+
+    def __init__(self, model: ModelFile, channel: str, record: Path | None = None, **cfg):
+        self.cfg = NodeConfig(interface="virtual", channel=channel, record=str(record or ""),
+                              **cfg)
+        self.node = ObserverNode(self.cfg, model, CODEC, port_factory=lambda ids: PythonCanPort(
+            "virtual", channel, ids))
+        self.tx = can.Bus(interface="virtual", channel=channel)
+        self.rx = can.Bus(interface="virtual", channel=channel)
+        self.thread = threading.Thread(target=self.node.run, kwargs={"idle_exit_s": 0.3})
+
+    def __enter__(self) -> Harness:
+        self.thread.start()
+        deadline = time.monotonic() + 30
+        while self.node.port is None and time.monotonic() < deadline:
+            time.sleep(0.01)
+        return self
+
+    def send(self, can_id: int, data: bytes) -> bool:
+        self.tx.send(can.Message(arbitration_id=can_id, data=data, is_extended_id=False))
+        return True
+
+    def play(self, schedule: Schedule, rate: float = 1.0):
+        return play(schedule, self.send, rate=rate)
+
+    def estimates(self) -> list[tuple[float, dict]]:
+        out = []
+        est = CODEC["ChestEstimate"]
+        while (m := self.rx.recv(0)) is not None:
+            if m.arbitration_id == est.frame_id:
+                out.append((m.timestamp, est.decode(m.data)))
+        return out
+
+    def __exit__(self, *exc) -> None:
+        self.node.stop_event.set()
+        self.thread.join(60)
+        self.tx.shutdown()
+        self.rx.shutdown()
+
+
+def main() -> None:
+    model, record, seconds = ModelFile.load(sys.argv[1]), Path(sys.argv[2]), float(sys.argv[3])
+    sched = r16_schedule(reference=True, pre_s=0.2)
+    with Harness(model, "feed", record) as h:
+        h.node.install_signal_handlers()
+        print("started", flush=True)
+        t_end = time.monotonic() + seconds
+        while time.monotonic() < t_end and not h.node.stop_event.is_set():
+            h.play(sched)
+            print(f"ticks {h.node.counters.ticks}", flush=True)
+
+
+if __name__ == "__main__":
+    main()
