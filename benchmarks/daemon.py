@@ -177,9 +177,10 @@ def main() -> None:
         r = run_rate(model, codec, rate, a.ticks, workdir, not a.no_record)
         lat, proc = r["lat"][~np.isnan(r["lat"])], r["proc"]
         pp = [*np.percentile(proc, [50, 99]), proc.max()]
-        print(f"  {rate:>5.0f}Hz {r['ticks']:>6} {r['missed']:>6} {np.percentile(lat, 50):>6.0f}us "
-              f"{np.percentile(lat, 99):>5.0f}us {lat.max():>5.0f}us   {pp[0]:>6.1f}us "
-              f"{pp[1]:>4.0f}us {pp[2]:>5.0f}us  {100 * r['cpu_share']:>4.0f}%  {r['no_estimate_in_tick']}")
+        p50, p99 = np.percentile(lat, [50, 99])
+        print(f"  {rate:>5.0f}Hz {r['ticks']:>6} {r['missed']:>6} {p50:>6.0f}us {p99:>5.0f}us "
+              f"{lat.max():>5.0f}us   {pp[0]:>6.1f}us {pp[1]:>4.0f}us {pp[2]:>5.0f}us  "
+              f"{100 * r['cpu_share']:>4.0f}%  {r['no_estimate_in_tick']}")
     print("\n  e2e: send call of a TunnelAccel frame -> receipt of its ChestEstimate by the same "
           "thread; late: ticks whose estimate did not arrive within the tick period; tick: "
           "daemon's "
