@@ -53,6 +53,7 @@ class NodeConfig:
     model: str = ""
     record: str = ""
     status_period_s: float = 0.1
+    accel_timeout_s: float = 0.0  # 0: two tick periods
     brs_timeout_s: float = 0.03
     idle_after_s: float = 1.0
     reconnect_s: float = 0.5
@@ -134,6 +135,7 @@ class ObserverNode:
         self.est_lo, self.est_hi = est.raw_range("ChestAccelCR")
         self.status_codec, self.counters_codec = c["ObserverStatus"], c["ObserverCounters"]
         self.period_s = 1.0 / model.tick_rate_hz
+        self.accel_timeout_s = cfg.accel_timeout_s or 2 * self.period_s
         self.model_id = model.model_id()
         self.recorder: Recorder | None = None
         self.port: Port | None = None
@@ -172,10 +174,14 @@ class ObserverNode:
         signal.signal(signal.SIGTERM, stop)
 
     # ------------------------------------------------------------------ loop
-    def run(self, max_seconds: float | None = None, idle_exit_s: float | None = None) -> Counters:
+    def run(self, max_seconds: float | None = None, idle_exit_s: float | None = None,
+            on_ready: Callable[[], None] | None = None) -> Counters:
         """Run until stopped (signal, ``stop_event``), ``max_seconds`` or, with
-        ``idle_exit_s``, that long without any input frame after the first one."""
+        ``idle_exit_s``, that long without any input frame after the first one.
+        ``on_ready`` is called once the bus is open and the recorder is writing."""
         self.open()
+        if on_ready is not None:
+            on_ready()
         try:
             self._loop(max_seconds, idle_exit_s)
         finally:
@@ -221,7 +227,7 @@ class ObserverNode:
                 elif cid == acc_id:
                     acc_counter = self._on_accel(t, data, acc_counter)
                     last_accel = t
-                    next_watchdog = t + 2 * period
+                    next_watchdog = t + self.accel_timeout_s
                 elif cid == brs_id:
                     brs_counter = self._on_brs(data, brs_counter)
                     last_brs = t
@@ -383,12 +389,15 @@ def run_daemon(cfg: NodeConfig, quiet: bool = False) -> int:
     model = ModelFile.load(cfg.model)
     node = ObserverNode(cfg, model)
     node.install_signal_handlers()
-    if not quiet:
-        print(f"observer-node: {model.kind} model {model.name!r} (id {node.model_id:#06x}) at "
-              f"{model.tick_rate_hz:g} Hz on {cfg.interface}:{cfg.channel}"
-              + (f", recording to {cfg.record}" if cfg.record else ""), file=sys.stderr)
+    def ready() -> None:
+        if not quiet:
+            print(f"observer-node: {model.kind} model {model.name!r} (id {node.model_id:#06x}) "
+                  f"at {model.tick_rate_hz:g} Hz listening on {cfg.interface}:{cfg.channel}"
+                  + (f", recording to {cfg.record}" if cfg.record else ""), file=sys.stderr,
+                  flush=True)
+
     try:
-        cnt = node.run()
+        cnt = node.run(on_ready=ready)
     except PortError as e:
         print(f"observer-node: error: {e}", file=sys.stderr)
         return 2
