@@ -178,11 +178,34 @@ def cmd_analyze(a: argparse.Namespace) -> int:
     return 0
 
 
+def cmd_bench(a: argparse.Namespace) -> int:
+    from .bench import DEFAULT_TESTS, run_bench
+
+    run_bench(Path(a.out), a.model, a.interface, a.channel, tuple(a.test or DEFAULT_TESTS),
+              a.rate)
+    return 0
+
+
 def build_parser() -> argparse.ArgumentParser:
     p = argparse.ArgumentParser(prog="observer-node", description=__doc__,
                                 formatter_class=argparse.RawDescriptionHelpFormatter)
     p.add_argument("--version", action="version", version=f"%(prog)s {__version__}")
     sub = p.add_subparsers(dest="command", required=True, metavar="COMMAND")
+
+    s = sub.add_parser(
+        "bench", help="the whole bench: replay bundled tests into the daemon, record, analyse",
+        description="Identify (or load) a model, start the daemon on vcan0 if it exists (else "
+        "on an in-process virtual bus), replay bundled crash tests with reference frames, "
+        "record to MCAP and print the analysis beside the offline evaluation.")
+    s.add_argument("--model", help="model file (default: identify the grey-box on R16)")
+    s.add_argument("--interface", default="auto",
+                   help="auto (socketcan if the channel exists, else virtual), socketcan, ...")
+    s.add_argument("--channel", default="vcan0")
+    s.add_argument("--test", action="append", metavar="NAME",
+                   help="bundled test to replay (repeatable; default R16_002 SLED_002 FULL_002)")
+    s.add_argument("--rate", type=float, default=1.0, help="replay time scale (default 1)")
+    s.add_argument("--out", default="out/bench", help="output folder (default out/bench)")
+    s.set_defaults(func=cmd_bench)
 
     s = sub.add_parser("identify", help="fit a grey-box, ARX or N4SID model to crash tests",
                        description="Fit one model to crash tests and write its JSON model file.")

@@ -7,6 +7,7 @@ reader up to the last complete chunk and reported as salvaged.
 from __future__ import annotations
 
 import json
+import struct
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -86,7 +87,7 @@ def read_recording(path: str | Path, frames: bool = True) -> Recording:
                     metadata[rec.name] = dict(rec.metadata)
                 elif isinstance(rec, Attachment) and rec.name == "model.json":
                     model = ModelFile.from_dict(json.loads(rec.data), f"{path}!model.json")
-        except (McapError, EOFError, ValueError, KeyError) as e:
+        except (McapError, EOFError, ValueError, KeyError, struct.error) as e:
             salvaged = True
             note = (f"recording ends early ({type(e).__name__}: {e}); read {n} messages up to "
                     "the last complete chunk")

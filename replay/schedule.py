@@ -15,7 +15,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from dbc import Codec
+from dbc import Codec, e2e_crc
 from observer_node.data import CrashTest
 from observer_node.data.crashtest import resample_inputs, resample_reference
 
@@ -26,12 +26,32 @@ class Schedule:
     ids: np.ndarray
     data: list[bytes]
     source: str = ""
+    synthetic: bool = False  # encoded here from lab data (not a recorded log)
 
     def __len__(self) -> int:
         return len(self.data)
 
     def shifted(self, dt_s: float) -> Schedule:
-        return Schedule(self.t_s + dt_s, self.ids, self.data, self.source)
+        return Schedule(self.t_s + dt_s, self.ids, self.data, self.source, self.synthetic)
+
+
+def restamp_counters(s: Schedule, codec: Codec) -> Schedule:
+    """Number the E2E alive counters of each frame ID continuously (and redo the CRCs), as
+    one sensor would over several tests played in a row."""
+    counters: dict[int, int] = {}
+    data = []
+    for cid, d in zip(s.ids.tolist(), s.data, strict=True):
+        fc = codec.by_id.get(cid)
+        if fc is None or not fc.has_e2e or len(d) != fc.length:
+            data.append(d)
+            continue
+        k = counters.get(cid, 0)
+        counters[cid] = k + 1
+        b = bytearray(d)
+        b[1] = (b[1] & 0xF0) | (k & 0xF)
+        b[0] = e2e_crc(cid, b)
+        data.append(bytes(b))
+    return Schedule(s.t_s, s.ids, data, s.source, s.synthetic)
 
 
 def concat(schedules: list[Schedule], gap_s: float = 0.5) -> Schedule:
@@ -45,7 +65,8 @@ def concat(schedules: list[Schedule], gap_s: float = 0.5) -> Schedule:
         return Schedule(np.zeros(0), np.zeros(0, int), [])
     return Schedule(np.concatenate([p.t_s for p in parts]),
                     np.concatenate([p.ids for p in parts]),
-                    [d for p in parts for d in p.data], "+".join(p.source for p in parts))
+                    [d for p in parts for d in p.data], "+".join(p.source for p in parts),
+                    all(p.synthetic for p in parts))
 
 
 def crash_test_schedule(test: CrashTest, codec: Codec, rate_hz: float = 1000.0,
@@ -92,4 +113,4 @@ def crash_test_schedule(test: CrashTest, codec: Codec, rate_hz: float = 1000.0,
         times.append(tk)
         ids.append(acc.frame_id)
         data.append(acc.encode({"TunnelAccelX": -pulse[i]}, k))  # model -> J211 sign
-    return Schedule(np.array(times), np.array(ids), data, test.name)
+    return Schedule(np.array(times), np.array(ids), data, test.name, synthetic=True)

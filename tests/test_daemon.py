@@ -216,3 +216,15 @@ def test_killed_daemon_loses_at_most_100_ms(model_path, tmp_path):
     assert recorded >= ticks_done  # everything up to the last report, at least
     # ~1 tick per ms: what was sent in the last 0.3 s minus at most 100 ms
     assert recorded >= ticks_done + 300 * 0.5 - 100
+
+
+def test_bench_main_job_on_the_virtual_bus(tmp_path, capsys):
+    from observer_node.bench import run_bench
+
+    result = run_bench(tmp_path, interface="virtual", tests=("R16_002",))
+    (event,) = result["events"]
+    live, off = event["fit_vs_reference"], result["offline"]["R16_002"]
+    assert abs(live["cr"] - off["cr"]) < 2 and abs(live["cd"] - off["cd"]) < 2
+    assert max(event["max_abs_diff_offline"].values()) < 1e-9
+    assert (tmp_path / "run.mcap").exists() and (tmp_path / "event0.png").exists()
+    assert "daemon ticks" in capsys.readouterr().out

@@ -132,3 +132,33 @@ def test_daemon_survives_interface_down_and_up(model_path, tmp_path):
     assert p.returncode == 0, err
     assert "reconnects 0" not in err
     assert len(read_recording(record).ticks["tick"]) == 20
+
+
+def test_replay_tool_into_daemon_matches_offline_evaluation(model_path, tmp_path):
+    """Issue 5's end to end: crash-replay (a process) -> vcan0 -> observer-node run (a
+    process) -> MCAP -> analyze, against evaluate offline on the same test."""
+    from observer_node.data import bundled_campaign, read_isomme
+    from observer_node.evaluation import evaluate_model
+    from observer_node.model import ModelFile
+
+    record = tmp_path / "run.mcap"
+    p = _start_daemon(model_path, record, tmp_path)
+    test = bundled_campaign() / "R16_004.zip"
+    try:
+        r = subprocess.run([sys.executable, "-m", "replay", str(test), "--reference",
+                            "--interface", "socketcan", "--channel", CHANNEL,
+                            "--rate", str(SLOW), "--quiet"], cwd=ROOT, capture_output=True,
+                           text=True, timeout=600)
+        assert r.returncode == 0, r.stderr
+        time.sleep(1.0)
+    finally:
+        p.send_signal(signal.SIGTERM)
+        _, err = p.communicate(timeout=120)
+    rec = read_recording(record)
+    sent = int(r.stdout.split("sent ")[1].split()[0])
+    assert sent > 600 and "lost 0" in err and "rejected 0" in err
+    (event,) = analyze(rec)["events"]
+    assert max(event["max_abs_diff_offline"].values()) < 1e-9
+    offline = evaluate_model(ModelFile.load(model_path), [read_isomme(test)])["tests"]["R16_004"]
+    for k in ("cr", "cd"):  # onset detection vs the lab's t = 0: within 2 points
+        assert abs(event["fit_vs_reference"][k] - offline[k]) < 2.0, (event, offline)

@@ -1,0 +1,169 @@
+"""crash-replay: feed recorded crash tests onto a CAN bus with accurate timing.
+
+Sources, played one after another: ISO-MME test folders or zips (or a folder of them), CSV
+crash tests, MCAP recordings of observer-node run (their raw frames, exactly), and candump
+-L, ASC, BLF or TRC logs. Every source is read and checked before the first frame is sent.
+
+Examples::
+
+    crash-replay observer_node/examples/R16_002.zip --reference
+    crash-replay run.mcap --interface socketcan --channel vcan0 --rate 0.1
+    crash-replay tests/ --dry-run
+"""
+
+from __future__ import annotations
+
+import argparse
+import sys
+from collections import Counter
+
+from dbc import Codec, frame_bits
+
+from .player import play
+from .schedule import Schedule, concat, restamp_counters
+from .sources import SourceError, filter_remap, load_source
+
+
+def _int(s: str) -> int:
+    return int(s, 0)
+
+
+def _remap(s: str) -> tuple[int, int]:
+    a, _, b = s.partition("=")
+    if not b:
+        raise argparse.ArgumentTypeError(f"--remap wants FROM=TO, got {s!r}")
+    return int(a, 0), int(b, 0)
+
+
+def build_parser() -> argparse.ArgumentParser:
+    p = argparse.ArgumentParser(prog="crash-replay", description=__doc__,
+                                formatter_class=argparse.RawDescriptionHelpFormatter)
+    p.add_argument("sources", nargs="+", metavar="SOURCE")
+    p.add_argument("--interface", default="socketcan", help="python-can interface (socketcan)")
+    p.add_argument("--channel", default="vcan0", help="bus channel (vcan0)")
+    p.add_argument("--fd", action="store_true", help="send as CAN FD frames")
+    p.add_argument("--rate", type=float, default=1.0,
+                   help="time scale: 2 plays twice as fast, 0.1 ten times slower (1)")
+    p.add_argument("--tick-rate", type=float, default=1000.0,
+                   help="accelerometer frames per second for lab data (DBC default 1000 Hz)")
+    p.add_argument("--reference", action="store_true",
+                   help="also send ReferenceChest frames with the measured CR and CD")
+    p.add_argument("--start", type=float, help="start of the window to play, s (test time)")
+    p.add_argument("--end", type=float, help="end of the window to play, s (test time)")
+    p.add_argument("--pre", type=float, default=0.2,
+                   help="quiet signal before a lab test, s, for the daemon's bias (0.2)")
+    p.add_argument("--loop", type=int, default=1, metavar="N", help="play everything N times")
+    p.add_argument("--gap", type=float, default=0.5, help="pause between sources, s (0.5)")
+    p.add_argument("--only", type=_int, action="append", metavar="ID",
+                   help="send only these CAN IDs (repeatable; 0x100 or 256)")
+    p.add_argument("--remap", type=_remap, action="append", metavar="FROM=TO",
+                   help="send frames of one ID under another (repeatable)")
+    p.add_argument("--all-frames", action="store_true",
+                   help="MCAP: also the frames the daemon sent, not only those it received")
+    p.add_argument("--counts-per-rev", type=int, help="BRS counts/rev if a test does not say")
+    p.add_argument("--bitrate", type=float, default=500_000, help="for --dry-run's bus load")
+    p.add_argument("--dry-run", action="store_true",
+                   help="print what would be sent and the bus load, send nothing")
+    p.add_argument("--quiet", action="store_true", help="no progress bar")
+    return p
+
+
+def describe(s: Schedule, bitrate: float) -> str:
+    dur = float(s.t_s[-1] - s.t_s[0]) if len(s) else 0.0
+    lines = [f"{len(s)} frames over {dur:.3f} s from {s.source}"]
+    counts = Counter(s.ids.tolist())
+    sizes = {}
+    for cid, d in zip(s.ids.tolist(), s.data, strict=True):
+        sizes.setdefault(cid, len(d))
+    load = 0.0
+    for cid, n in sorted(counts.items()):
+        bits = frame_bits(sizes[cid])
+        share = n * bits / max(dur, 1e-9) / bitrate
+        load += share
+        lines.append(f"  0x{cid:03X}: {n:6d} frames, DLC {sizes[cid]}, {n / max(dur, 1e-9):7.1f}/s,"
+                     f" {100 * share:5.1f} % of {bitrate / 1000:g} kbit/s")
+    lines.append(f"  bus load (worst-case stuffing): {100 * load:.1f} %")
+    return "\n".join(lines)
+
+
+def main(argv: list[str] | None = None) -> int:
+    a = build_parser().parse_args(argv)
+    codec = Codec()
+    try:
+        parts: list[Schedule] = []
+        for src in a.sources:
+            parts += load_source(src, codec, a.tick_rate, a.reference, a.start, a.end, a.pre,
+                                 counts_per_rev=a.counts_per_rev, all_frames=a.all_frames)
+    except SourceError as e:
+        print(f"crash-replay: error: {e}", file=sys.stderr)
+        return 2
+    only = set(a.only) if a.only else None
+    remap = dict(a.remap or [])
+    sched = concat(parts * a.loop, a.gap)
+    if sched.synthetic and len(parts) * a.loop > 1:
+        sched = restamp_counters(sched, codec)  # one sensor across tests: no counter restart
+    sched = filter_remap(sched, only, remap)
+    if not len(sched):
+        print("crash-replay: nothing to send", file=sys.stderr)
+        return 2
+    if a.dry_run:
+        print(describe(sched, a.bitrate))
+        for t, cid, d in list(zip(sched.t_s, sched.ids.tolist(), sched.data, strict=True))[:20]:
+            print(f"  {t:10.6f}  0x{cid:03X}  {d.hex(' ')}")
+        if len(sched) > 20:
+            print(f"  ... {len(sched) - 20} more")
+        return 0
+
+    import can
+
+    try:
+        bus = can.Bus(interface=a.interface, channel=a.channel, fd=a.fd)
+    except (can.CanError, OSError, ValueError) as e:
+        print(f"crash-replay: error: cannot open {a.interface}:{a.channel}: {e}", file=sys.stderr)
+        return 2
+    msgs = [can.Message(arbitration_id=cid, data=d, is_extended_id=cid > 0x7FF,
+                        is_fd=a.fd and len(d) > 8)
+            for cid, d in zip(sched.ids.tolist(), sched.data, strict=True)]
+    position = [0]  # messages are prebuilt: nothing is allocated while playing
+
+    def send(cid: int, data: bytes) -> bool:
+        k = position[0]
+        position[0] = k + 1
+        try:
+            bus.send(msgs[k])
+            return True
+        except can.CanError:
+            return False
+
+    tty = sys.stderr.isatty() and not a.quiet
+
+    def progress(k: int, n: int) -> None:
+        if tty:
+            width = 30
+            done = int(width * k / max(n, 1))
+            sys.stderr.write(f"\r[{'#' * done}{'.' * (width - done)}] {k}/{n} frames")
+            sys.stderr.flush()
+
+    try:
+        report = play(sched, send, rate=a.rate, progress=progress)
+    except KeyboardInterrupt:
+        print("\ncrash-replay: interrupted", file=sys.stderr)
+        return 130
+    finally:
+        bus.shutdown()
+    if tty:
+        sys.stderr.write("\r\033[K")
+    print(f"crash-replay: {report.summary()}")
+    return 0 if report.failed == 0 else 1
+
+
+def entry() -> int:
+    try:
+        return main()
+    except BrokenPipeError:  # e.g. --dry-run | head
+        sys.stderr.close()
+        return 0
+
+
+if __name__ == "__main__":
+    sys.exit(entry())

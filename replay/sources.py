@@ -1,0 +1,146 @@
+"""Replay sources, each turned into a :class:`Schedule` before anything is sent, so that a bad
+source is an error naming the file and the place, never a half-played run.
+
+- an ISO-MME test (folder, ``.mme`` or ``.zip``) or a CSV crash test: resampled to the bus
+  rate and encoded with the DBC (:mod:`replay.schedule`);
+- an MCAP recording of ``observer-node run``: its raw frames (``/can/frames``) with their
+  recorded timing; by default the frames the daemon received, so a run replays exactly;
+- python-can logs: candump ``-L`` (``.log``, parsed here with line numbers), ASC, BLF, TRC.
+"""
+
+from __future__ import annotations
+
+import json
+import re
+import struct
+from pathlib import Path
+
+import numpy as np
+
+from dbc import Codec
+from observer_node.data import ChannelCodes, CrashDataError, find_tests, load_test
+
+from .schedule import Schedule, crash_test_schedule
+
+
+class SourceError(ValueError):
+    """A replay source that cannot be played; the message names the file and place."""
+
+
+# (timestamp) interface id#data, optionally followed by a direction flag (python-can: R/T)
+_CANDUMP = re.compile(r"^\((\d+(?:\.\d+)?)\)\s+(\S+)\s+([0-9A-Fa-f]{1,8})#(R?)([0-9A-Fa-f]*)"
+                      r"(?:\s+[RT])?\s*$")
+_CANDUMP_FD = re.compile(r"^\((\d+(?:\.\d+)?)\)\s+(\S+)\s+([0-9A-Fa-f]{1,8})##([0-9A-Fa-f])"
+                         r"([0-9A-Fa-f]*)(?:\s+[RT])?\s*$")
+
+
+def read_candump(path: Path) -> Schedule:
+    times, ids, data = [], [], []
+    for n, line in enumerate(path.read_text(encoding="ascii", errors="replace").splitlines(), 1):
+        if not line.strip() or line.startswith("#"):
+            continue
+        m = _CANDUMP.match(line) or _CANDUMP_FD.match(line)
+        payload = m.group(5) if m else ""
+        if not m or len(payload) % 2 or len(payload) > 128:
+            raise SourceError(f"{path}:{n}: not a candump -L line: {line.strip()[:80]!r}")
+        times.append(float(m.group(1)))
+        ids.append(int(m.group(3), 16))
+        data.append(bytes.fromhex(payload))
+    if not data:
+        raise SourceError(f"{path}: no frames")
+    t = np.array(times)
+    if np.any(np.diff(t) < 0):
+        k = int(np.argmax(np.diff(t) < 0)) + 2
+        raise SourceError(f"{path}: frame {k}: timestamps go backwards")
+    return Schedule(t - t[0], np.array(ids), data, path.name)
+
+
+def read_python_can_log(path: Path) -> Schedule:
+    import can
+
+    times, ids, data = [], [], []
+    try:
+        for k, m in enumerate(can.LogReader(str(path)), 1):
+            if m.is_error_frame or m.is_remote_frame:
+                continue
+            times.append(m.timestamp)
+            ids.append(m.arbitration_id)
+            data.append(bytes(m.data))
+    except Exception as e:  # python-can raises many kinds on bad logs
+        raise SourceError(f"{path}: unreadable after frame {len(data)}: {e}") from None
+    if not data:
+        raise SourceError(f"{path}: no frames")
+    t = np.array(times)
+    return Schedule(t - t[0], np.array(ids), data, path.name)
+
+
+def read_mcap_frames(path: Path, all_frames: bool = False) -> Schedule:
+    from mcap.exceptions import McapError
+    from mcap.records import Channel, Message
+    from mcap.stream_reader import StreamReader
+
+    times, ids, data = [], [], []
+    topics: dict[int, str] = {}
+    ended = False
+    with path.open("rb") as f:
+        try:
+            for rec in StreamReader(f, validate_crcs=True).records:
+                if isinstance(rec, Channel):
+                    topics[rec.id] = rec.topic
+                elif isinstance(rec, Message) and topics.get(rec.channel_id) == "/can/frames":
+                    m = json.loads(rec.data)
+                    if m["error"] or (m["dir"] == "tx" and not all_frames):
+                        continue
+                    times.append(m["t"])
+                    ids.append(m["id"])
+                    data.append(bytes.fromhex(m["data"]))
+            ended = True
+        except (McapError, ValueError, EOFError, struct.error) as e:
+            raise SourceError(f"{path}: truncated or corrupt MCAP after {len(data)} frames "
+                              f"({type(e).__name__}: {e})") from None
+    if not ended or not data:
+        raise SourceError(f"{path}: no /can/frames messages (not a chest-observer recording?)")
+    order = np.argsort(np.array(times), kind="stable")
+    t = np.array(times)[order]
+    return Schedule(t - t[0], np.array(ids)[order], [data[i] for i in order], path.name)
+
+
+def load_source(path: str | Path, codec: Codec, rate_hz: float = 1000.0,
+                reference: bool = False, start_s: float | None = None,
+                end_s: float | None = None, pre_s: float = 0.2,
+                codes: ChannelCodes | None = None, counts_per_rev: int | None = None,
+                all_frames: bool = False) -> list[Schedule]:
+    """Schedules for one source path (a folder of tests gives one schedule per test)."""
+    p = Path(path)
+    if not p.exists():
+        raise SourceError(f"{p}: no such file or folder")
+    suffix = p.suffix.lower()
+    try:
+        if suffix == ".mcap":
+            return [_window(read_mcap_frames(p, all_frames), start_s, end_s)]
+        if suffix == ".log":
+            return [_window(read_candump(p), start_s, end_s)]
+        if suffix in (".asc", ".blf", ".trc"):
+            return [_window(read_python_can_log(p), start_s, end_s)]
+        tests = [load_test(t, codes, counts_per_rev, require_outputs=reference)
+                 for t in find_tests([p])]
+    except CrashDataError as e:
+        raise SourceError(str(e)) from None
+    return [crash_test_schedule(t, codec, rate_hz, reference and t.has_outputs,
+                                start_s=start_s, end_s=end_s, pre_s=pre_s) for t in tests]
+
+
+def _window(s: Schedule, start_s: float | None, end_s: float | None) -> Schedule:
+    keep = np.ones(len(s), bool)
+    if start_s is not None:
+        keep &= s.t_s >= start_s
+    if end_s is not None:
+        keep &= s.t_s <= end_s
+    idx = np.flatnonzero(keep)
+    return Schedule(s.t_s[idx], s.ids[idx], [s.data[i] for i in idx], s.source)
+
+
+def filter_remap(s: Schedule, only: set[int] | None, remap: dict[int, int]) -> Schedule:
+    idx = [i for i, cid in enumerate(s.ids.tolist()) if only is None or cid in only]
+    ids = np.array([remap.get(int(s.ids[i]), int(s.ids[i])) for i in idx], dtype=np.int64)
+    return Schedule(s.t_s[idx], ids, [s.data[i] for i in idx], s.source)
