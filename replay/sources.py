@@ -60,7 +60,7 @@ def read_python_can_log(path: Path) -> Schedule:
 
     times, ids, data = [], [], []
     try:
-        for k, m in enumerate(can.LogReader(str(path)), 1):
+        for m in can.LogReader(str(path)):
             if m.is_error_frame or m.is_remote_frame:
                 continue
             times.append(m.timestamp)
