@@ -71,9 +71,9 @@ def play(schedule: Schedule, send: Callable[[int, bytes], bool], rate: float = 1
             sleep(remaining - spin_s)
         while clock() < target:
             pass
+        lateness[k] = clock() - target  # when the frame is handed to the bus
         if not send(ids[k], data[k]):
             failed += 1
-        lateness[k] = clock() - target
         if progress is not None and k % step == 0:
             progress(k, n)
             if should_stop is not None and should_stop():
