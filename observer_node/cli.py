@@ -178,6 +178,20 @@ def cmd_analyze(a: argparse.Namespace) -> int:
     return 0
 
 
+def cmd_loop(a: argparse.Namespace) -> int:
+    from .loop.closed_loop import run_loop
+
+    codes, cpr = _codes(a), a.counts_per_rev
+    est = load_tests(a.estimate, codes, cpr)
+    val = load_tests(a.validate, codes, cpr)
+    r = run_loop(est, val, Path(a.out), a.rate, tuple(a.window or THESIS_WINDOW_S),
+                 a.margin, verbose=not a.quiet)
+    print((Path(a.out) / "report.md").read_text())
+    print(f"wrote {a.out}/report.json, report.md, model.json and plots "
+          f"({r['seconds']} s)")
+    return 0
+
+
 def cmd_bench(a: argparse.Namespace) -> int:
     from .bench import DEFAULT_TESTS, run_bench
 
@@ -206,6 +220,22 @@ def build_parser() -> argparse.ArgumentParser:
     s.add_argument("--rate", type=float, default=1.0, help="replay time scale (default 1)")
     s.add_argument("--out", default="out/bench", help="output folder (default out/bench)")
     s.set_defaults(func=cmd_bench)
+
+    s = sub.add_parser(
+        "loop", help="find what the grey-box model lacks, add it, refit, report",
+        description="Identify the thesis grey-box model on the estimation tests, analyse its "
+        "residual, trace it to a physical effect of the library (or a sparse formula), add it, "
+        "refit, accept it only if cross-validation inside the estimation tests improves, "
+        "repeat; report fits before and after on the validation tests.")
+    s.add_argument("--estimate", nargs="+", required=True, metavar="DIR")
+    s.add_argument("--validate", nargs="+", required=True, metavar="DIR")
+    s.add_argument("--out", required=True, help="output folder")
+    s.add_argument("--margin", type=float, default=1.0,
+                   help="fit_TOT points an effect must add in cross-validation (default 1)")
+    _data_options(s, required=False)
+    s.add_argument("--rate", type=float, default=1000.0, help="tick rate in Hz (1000)")
+    s.add_argument("--quiet", action="store_true")
+    s.set_defaults(func=cmd_loop)
 
     s = sub.add_parser("identify", help="fit a grey-box, ARX or N4SID model to crash tests",
                        description="Fit one model to crash tests and write its JSON model file.")

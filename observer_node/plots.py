@@ -41,6 +41,29 @@ def measured_vs_simulated(path: Path, title: str, names: list[str], t_s: np.ndar
     return path
 
 
+def residuals(path: Path, names: list[str], t_s: np.ndarray, before: np.ndarray,
+              after: np.ndarray) -> Path:
+    """Residuals (measured - simulated) before and after the loop, per test and output."""
+    n = len(names)
+    fig, axes = plt.subplots(n, 2, figsize=(11, 1.9 * n + 0.6), squeeze=False, sharex=True)
+    for i, name in enumerate(names):
+        for k, (key, label) in enumerate(OUTPUT_LABELS):
+            ax = axes[i][k]
+            ax.plot(t_s * 1000, before[i, :, k], color="0.6", lw=1, label="before")
+            ax.plot(t_s * 1000, after[i, :, k], "r-", lw=1, label="after")
+            ax.axhline(0, color="k", lw=0.5)
+            ax.set_title(f"{name} {key.upper()} residual", fontsize=8)
+            ax.grid(alpha=0.3)
+    axes[0][0].legend(fontsize=7)
+    for k, (_, label) in enumerate(OUTPUT_LABELS):
+        axes[-1][k].set_xlabel("t [ms]")
+        axes[n // 2][k].set_ylabel(label, fontsize=8)
+    fig.tight_layout()
+    fig.savefig(path, dpi=70)
+    plt.close(fig)
+    return path
+
+
 def order_scan(path: Path, title: str, xlabel: str, rows: list[dict], x_key: str) -> Path:
     """fit_TOT against model order (thesis Figures 3.6 and 3.7)."""
     fig, ax = plt.subplots(figsize=(6, 3.5))

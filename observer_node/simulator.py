@@ -11,7 +11,8 @@ the thesis model can be switched on, each with a scale (1.0 = the default magnit
 ``belt_stiffening``    belt/flesh stiffness k2 (1 + (e/20 mm)^2)
 ``airbag_contact``     50 kN/m, 600 N s/m on the sternum beyond 110 mm forward excursion
 ``pelvis_coupling``    20 kN/m, 400 N s/m between the spine and the vehicle (lap belt, seat)
-``input_delay``        the recorded pulse and BRS lag the physical ones by 2 ms
+``input_delay``        transport delay: the chest feels the pulse and belt 2 ms after the
+                       sensors record them
 ``input_gain``         BRS gain grows 10 % per revolution paid out (webbing layers)
 ``sensor_offset``      +1.5 mm on CD and +1 g on CR channels
 =====================  ==================================================================
@@ -39,7 +40,7 @@ EFFECTS = {
     "belt_stiffening": "belt/flesh stiffness k2 hardening with penetration",
     "airbag_contact": "airbag force on the sternum beyond a forward-excursion gap",
     "pelvis_coupling": "extra load path between the spine and the vehicle",
-    "input_delay": "recorded inputs lag the physical ones",
+    "input_delay": "the chest responds to the inputs later than they are recorded",
     "input_gain": "BRS gain (m of belt per rad) changes with the webbing wound",
     "sensor_offset": "constant offsets on the CR and CD channels",
 }
@@ -218,9 +219,11 @@ def simulate_test(setup: str, name: str, rng: np.random.Generator,
     pulse_g = a / STANDARD_GRAVITY
     brs = counts
     if eff.get("input_delay"):
+        # The physics above ran on delayed inputs: record them as they were before the delay.
         lag = round(0.002 * eff["input_delay"] * FS_HZ)
-        pulse_g = np.concatenate([np.zeros(lag), pulse_g[:-lag]]) if lag else pulse_g
-        brs = np.concatenate([np.zeros(lag), brs[:-lag]]) if lag else brs
+        if lag:
+            pulse_g = np.concatenate([pulse_g[lag:], np.full(lag, pulse_g[-1])])
+            brs = np.concatenate([brs[lag:], np.full(lag, brs[-1])])
     if eff.get("sensor_offset"):
         cr = cr + 1.0 * eff["sensor_offset"]
         cd = cd + 1.5 * eff["sensor_offset"]

@@ -24,6 +24,8 @@ from typing import Any
 import numpy as np
 
 from .. import __version__
+from .effects import EFFECTS
+from .nonlinear import NonlinearGreyBox
 from .observer import LinearObserver
 
 FORMAT = "chest-observer-model"
@@ -61,8 +63,13 @@ class ModelFile:
     fitted_on: dict[str, Any] = field(default_factory=dict)
     fits: dict[str, Any] = field(default_factory=dict)
     software_version: str = __version__
+    effects: list[dict[str, Any]] = field(default_factory=list)
 
-    def observer(self) -> LinearObserver:
+    def observer(self) -> LinearObserver | NonlinearGreyBox:
+        """The run-time observer: linear, or the grey-box with its added effects."""
+        if self.effects:
+            base = {n: float(v["value"]) for n, v in self.parameters.items()}
+            return NonlinearGreyBox(base, self.effects, self.tick_rate_hz)
         return LinearObserver(self.A, self.B, self.C, self.D, self.input_transform,
                               self.tick_rate_hz)
 
@@ -76,6 +83,7 @@ class ModelFile:
                             (("A", self.A), ("B", self.B), ("C", self.C), ("D", self.D))},
             "parameters": self.parameters, "structure": self.structure,
             "fitted_on": self.fitted_on, "fits": self.fits,
+            **({"effects": self.effects} if self.effects else {}),
         }
 
     def dumps(self) -> str:
@@ -109,11 +117,18 @@ class ModelFile:
                 parameters=d.get("parameters", {}), structure=d.get("structure", {}),
                 fitted_on=d.get("fitted_on", {}), fits=d.get("fits", {}),
                 software_version=d.get("software_version", "?"),
+                effects=list(d.get("effects", [])),
             )
         except KeyError as e:
             raise ModelFileError(f"{where}: missing key {e.args[0]!r}") from None
         except (TypeError, ValueError) as e:
             raise ModelFileError(f"{where}: key 'state_space': {e}") from None
+        if mf.effects and mf.kind != "greybox":
+            raise ModelFileError(f"{where}: key 'effects' is only for grey-box models")
+        for i, e in enumerate(mf.effects):
+            if e.get("kind") not in EFFECTS:
+                raise ModelFileError(f"{where}: key 'effects[{i}].kind' {e.get('kind')!r} is "
+                                     f"not one of {sorted(EFFECTS)}")
         if mf.kind not in KINDS:
             raise ModelFileError(f"{where}: key 'kind' {mf.kind!r} not one of {KINDS}")
         for k, m in (("A", mf.A), ("B", mf.B), ("C", mf.C), ("D", mf.D)):
@@ -121,7 +136,7 @@ class ModelFile:
                 raise ModelFileError(f"{where}: key 'state_space.{k}' has non-finite values")
         try:
             mf.observer()
-        except ValueError as e:
+        except (ValueError, KeyError) as e:
             raise ModelFileError(f"{where}: {e}") from None
         return mf
 

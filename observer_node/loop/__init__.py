@@ -1,0 +1,1 @@
+"""Closing the loop on measured data: residual -> missing physical effect -> refit -> report."""

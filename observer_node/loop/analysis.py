@@ -1,0 +1,254 @@
+"""Residual analysis of a grey-box model on measured data.
+
+- whiteness: the residual's autocorrelation against the 99 % band 2.58/sqrt(N);
+- input cross-correlation over lags -L..L, against Ljung's band for a coloured residual,
+  2.58 sqrt(P/N) with P = sum_k R_e(k) R_u(k) (crash residuals are far from white: CFC
+  filtering alone gives a lag-1 autocorrelation near 0.99, so the white-noise band would call
+  everything significant);
+- candidate signatures: each effect's force evaluated along the model's own trajectory and
+  propagated through the model's linear part gives the output change a unit of that effect
+  would cause; regressing the residual on it says how much of the residual the effect
+  explains (its share of the residual's weighted variance).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..ident.dataset import Dataset
+from ..model.effects import EFFECTS, OTHER_TERMS, POSITIVE, effect_forces, other_term
+from ..model.nonlinear import G0, NonlinearGreyBox
+
+MAX_LAG = 25
+
+
+def weights(data: Dataset) -> np.ndarray:
+    """1/||y - mean|| per test and output over the window (the fit's normalisation)."""
+    y = data.y[:, data.win]
+    return 1.0 / np.linalg.norm(y - y.mean(axis=1, keepdims=True), axis=1)  # (tests, 2)
+
+
+def _xcorr(a: np.ndarray, b: np.ndarray, lag: int) -> float:
+    if lag >= 0:
+        return float(np.dot(a[lag:], b[:len(b) - lag])) / len(a)
+    return float(np.dot(a[:lag], b[-lag:])) / len(a)
+
+
+def correlation_tests(resid: np.ndarray, data: Dataset) -> dict:
+    """Autocorrelation and input cross-correlation of the residual, per output.
+
+    ``resid`` is (tests, n_window, 2). Returns per output: lag-1 autocorrelation, share of
+    lags 1..L outside the white band, and the largest |cross-correlation| with each input as a
+    ratio to Ljung's coloured band (> 1 means significant)."""
+    inputs = {"pulse": data.pulse_g[:, data.win],
+              "brs_rate": np.diff(data.brs_rad, axis=1, prepend=data.brs_rad[:, :1])[:, data.win]}
+    out = {}
+    for k, name in enumerate(("cr", "cd")):
+        e = resid[:, :, k]
+        e = e - e.mean(axis=1, keepdims=True)
+        N = e.size
+        Re = np.array([np.mean([_xcorr(t, t, lag) for t in e]) for lag in range(MAX_LAG + 1)])
+        rho = Re / Re[0] if Re[0] > 0 else Re
+        white_band = 2.58 / np.sqrt(N)
+        entry = {"lag1_autocorrelation": float(rho[1]),
+                 "share_of_lags_outside_white_band": float(np.mean(np.abs(rho[1:]) > white_band))}
+        for uname, u in inputs.items():
+            u = u - u.mean(axis=1, keepdims=True)
+            Ru = np.array([np.mean([_xcorr(t, t, lag) for t in u]) for lag in range(MAX_LAG + 1)])
+            P = Re[0] * Ru[0] + 2 * np.sum(Re[1:] * Ru[1:])
+            band = 2.58 * np.sqrt(max(P, 1e-30) / N)
+            r = [np.mean([_xcorr(a, b, lag) for a, b in zip(e, u, strict=True)])
+                 for lag in range(-MAX_LAG, MAX_LAG + 1)]
+            entry[f"xcorr_{uname}_ratio"] = float(np.max(np.abs(r)) / band)
+            entry[f"xcorr_{uname}_rms_ratio"] = float(np.sqrt(np.mean(np.square(r))) / band)
+        out[name] = entry
+    return out
+
+
+@dataclass
+class Trajectory:
+    """The model's own states and inputs along each test (for candidate forces)."""
+
+    z: np.ndarray  # (6, tests, n)
+    u1: np.ndarray  # (tests, n)
+    u2: np.ndarray
+    theta: np.ndarray
+
+
+def trajectory(model: NonlinearGreyBox, data: Dataset) -> Trajectory:
+    """States of ``model`` on ``data`` (re-running its simulation and keeping the states)."""
+    P, T = data.pulse_g, data.brs_rad
+    u1 = np.cumsum(P, axis=1) * (G0 / data.fs_hz)
+    u2 = np.diff(T, axis=1, prepend=T[:, :1]) * data.fs_hz
+    ntest, n = P.shape
+    z = np.zeros((6, ntest))
+    zs = np.empty((6, ntest, n))
+    for k in range(n):
+        zs[:, :, k] = z
+        fs = np.zeros(ntest)
+        fn = np.zeros(ntest)
+        for kind, p in model.force_effects:
+            a, b = effect_forces(kind, p, z, u1[:, k], u2[:, k], T[:, k], model.base)
+            fs, fn = fs + a, fn + b
+        z = model.Ad @ z + model.Bd @ np.vstack([u1[:, k], u2[:, k]]) + \
+            model.Gd @ np.vstack([fs, fn])
+    return Trajectory(zs, u1, u2, T)
+
+
+def propagate(model: NonlinearGreyBox, f_spine: np.ndarray, f_sternum: np.ndarray) -> np.ndarray:
+    """Output response (tests, n, 2) of the model's linear part to force signals (tests, n)."""
+    ntest, n = f_spine.shape
+    z = np.zeros((6, ntest))
+    y = np.empty((ntest, n, 2))
+    for k in range(n):
+        f = np.vstack([f_spine[:, k], f_sternum[:, k]])
+        y[:, k] = (model.C @ z + model.Df @ f).T
+        z = model.Ad @ z + model.Gd @ f
+    return y
+
+
+def force_signature(model: NonlinearGreyBox, data: Dataset, kind: str, p: dict) -> np.ndarray:
+    """Output change (tests, n, 2) that a force effect with parameters ``p`` would cause,
+    evaluated along ``model``'s own trajectory and propagated through its linear part."""
+    tr = trajectory(model, data)
+    fs, fn = effect_forces(kind, p, tuple(tr.z), tr.u1, tr.u2, tr.theta, model.base)
+    return propagate(model, np.asarray(np.broadcast_to(fs, tr.u1.shape), float),
+                     np.asarray(np.broadcast_to(fn, tr.u1.shape), float))
+
+
+def explained_share(resid: np.ndarray, signature: np.ndarray, data: Dataset) -> float:
+    """Share of the (weighted) residual a signature explains with a free coefficient."""
+    return _regress(resid, [signature], weights(data), data.win)[1]
+
+
+@dataclass
+class Candidate:
+    kind: str
+    explained: float  # share of the residual's weighted variance explained
+    parameters: dict  # initial parameter values from the regression
+    signature: np.ndarray | None = None
+
+
+def _regress(r: np.ndarray, sigs: list[np.ndarray], w: np.ndarray, win: slice):
+    """Least squares of the weighted residual on weighted signatures; (coefs, explained)."""
+    rw = (r * w[:, None, :]).ravel()
+    S = np.stack([(s[:, win] * w[:, None, :]).ravel() for s in sigs], axis=1)
+    if not np.any(S) or not np.all(np.isfinite(S)):  # a trial model that ran away
+        return np.zeros(len(sigs)), 0.0
+    coef = np.linalg.lstsq(S, rw, rcond=None)[0]
+    rest = rw - S @ coef
+    return coef, float(1 - rest @ rest / (rw @ rw))
+
+
+def candidates(model: NonlinearGreyBox, data: Dataset, present: set[str]) -> list[Candidate]:
+    """Every effect not yet in the model, scored on the residual, best first."""
+    y_hat = model.simulate(data.pulse_g, data.brs_rad)
+    r = (data.y - y_hat)[:, data.win]
+    w = weights(data)
+    tr = trajectory(model, data)
+    out: list[Candidate] = []
+    zt = tuple(tr.z)
+
+    def force_sig(kind: str, p: dict) -> np.ndarray:
+        fs, fn = effect_forces(kind, p, zt, tr.u1, tr.u2, tr.theta, model.base)
+        fs = np.broadcast_to(fs, tr.u1.shape)
+        fn = np.broadcast_to(fn, tr.u1.shape)
+        return propagate(model, np.asarray(fs, float), np.asarray(fn, float))
+
+    for kind, (_, params) in EFFECTS.items():
+        if kind in present or kind == "other":
+            continue
+        unit = {n: mag for n, (_, mag) in params.items()}
+        if kind == "sensor_offset":
+            n = data.y.shape[1]
+            s_cr = np.zeros((data.n_tests, n, 2))
+            s_cr[:, :, 0] = 1.0
+            s_cd = np.zeros((data.n_tests, n, 2))
+            s_cd[:, :, 1] = 1.0
+            _, ex = _regress(r, [s_cr, s_cd], w, data.win)
+            # A sensor offset is there at rest too: the first 2 ms after contact, before the
+            # chest moves, must show it (> 1 % of the output's range); if they do not, what
+            # looks like an offset in the window is something else.
+            rest = data.y[:, :max(2, round(0.002 * data.fs_hz))].mean(axis=(0, 1))
+            span = np.ptp(data.y[:, data.win], axis=1).mean(axis=0)
+            if np.any(np.abs(rest) > 0.01 * span):
+                out.append(Candidate(kind, ex, {"cr_g": float(rest[0]),
+                                                "cd_mm": float(rest[1])}))
+        elif kind == "input_delay":
+            best = None
+            for which in ("n_pulse", "n_brs", "both"):
+                for lag in range(1, 6):
+                    p = ({"n_pulse": lag, "n_brs": lag} if which == "both" else
+                         {"n_pulse": 0, "n_brs": 0, which: lag})
+                    m = NonlinearGreyBox(model.base, [*model.effects,
+                                                      {"kind": kind, "parameters": p}],
+                                         model.fs_hz)
+                    sig = m.simulate(data.pulse_g, data.brs_rad) - y_hat
+                    coef, ex = _regress(r, [sig], w, data.win)
+                    if coef[0] > 0 and (best is None or ex > best.explained):
+                        best = Candidate(kind, ex, p, sig)
+            if best:
+                out.append(best)
+        elif kind == "airbag_contact":
+            best = None
+            for gap in (0.04, 0.07, 0.1, 0.13, 0.16, 0.2, 0.25):
+                sig = force_sig(kind, {"kab": unit["kab"], "gap": gap})
+                coef, ex = _regress(r, [sig], w, data.win)
+                if coef[0] > 0 and (best is None or ex > best.explained):
+                    best = Candidate(kind, ex, {"kab": float(coef[0] * unit["kab"]), "gap": gap},
+                                     sig)
+            if best:
+                out.append(best)
+        elif kind == "belt_unloading":
+            # No free parameter: score it as it is (coefficient 1), not as a fitted shape.
+            sig = force_sig(kind, {})
+            rw = (r * w[:, None, :]).ravel()
+            rest = rw - (sig[:, data.win] * w[:, None, :]).ravel()
+            out.append(Candidate(kind, float(1 - rest @ rest / (rw @ rw)), {}, sig))
+        else:
+            sig = force_sig(kind, unit)
+            coef, ex = _regress(r, [sig], w, data.win)
+            p = {n: float(coef[0] * mag) for n, mag in unit.items()}
+            if kind == "pelvis_coupling":  # one spring-damper: its shape at the unit ratio
+                p = {"kp": float(coef[0] * unit["kp"]), "cp": float(coef[0] * unit["cp"])}
+            if any(v < 0 for n, v in p.items() if n in POSITIVE):
+                continue  # the residual asks for the opposite of this physical effect
+            out.append(Candidate(kind, ex, p, sig))
+    if "other" not in present:
+        out.append(_sparse_other(model, data, r, w, tr))
+    return sorted(out, key=lambda c: -c.explained)
+
+
+def _sparse_other(model, data, r, w, tr) -> Candidate:
+    """Sequentially thresholded least squares over polynomial force terms (SINDy-style)."""
+    xd, x, sd, s, wst, p = tr.z
+    d, dd = s - x, sd - xd
+    e = wst - s
+    ed = tr.u1 + model.base["R"] * tr.u2 - sd
+    sigs, names = [], []
+    for where in ("rib", "belt"):
+        for term in OTHER_TERMS:
+            f = other_term(term, d, dd, e, ed)
+            scale = 1.0 / max(np.abs(f).max(), 1e-12)
+            fs, fn = (f * scale, -f * scale) if where == "rib" else (0 * f, f * scale)
+            sigs.append(propagate(model, fs, fn))
+            names.append((where, term, scale))
+    active = list(range(len(sigs)))
+    coef = np.zeros(len(sigs))
+    for _ in range(5):
+        c, _ = _regress(r, [sigs[i] for i in active], w, data.win)
+        coef[:] = 0
+        coef[active] = c
+        big = np.abs(coef) * np.array([np.abs(s[:, data.win]).max() for s in sigs])
+        keep = [i for i in active if big[i] >= 0.1 * big.max()][:3]
+        if keep == active:
+            break
+        active = keep
+    c, ex = _regress(r, [sigs[i] for i in active], w, data.win)
+    params: dict = {"rib": {}, "belt": {}}
+    for i, ci in zip(active, c, strict=True):
+        where, term, scale = names[i]
+        params[where][term] = float(ci * scale)
+    return Candidate("other", ex, params)

@@ -1,0 +1,156 @@
+"""The grey-box chest with added physical effects, as a real-time observer.
+
+The linear part (thesis eq. 3.7, plus the vehicle displacement p as a sixth state so effects
+can use the forward excursion) is discretised exactly (zero-order hold); the effects' forces
+enter as extra inputs held over the tick:
+
+    z[k+1] = Ad z[k] + Bd u[k] + Gd f(z[k], u[k], theta[k])
+    y[k]   = C z[k] + Df f(z[k], u[k], theta[k]) + offsets
+
+With no effects this is the linear grey-box model exactly. ``simulate`` runs many tests at
+once (numpy over the test axis); ``step`` is the daemon's per-tick call.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+from scipy import linalg
+
+from ..data.crashtest import STANDARD_GRAVITY
+from .effects import FORCE_KINDS, effect_forces
+
+G0 = STANDARD_GRAVITY
+
+
+def matrices(base: dict[str, float], fs_hz: float):
+    """(Ad, Bd, Gd, C, Df) of the 6-state model at ``fs_hz``."""
+    k1, c1, k2, c2, m1, m2, R = (base[n] for n in ("k1", "c1", "k2", "c2", "m1", "m2", "R"))
+    A = np.zeros((6, 6))
+    A[0, :4] = [-c1 / m1, -k1 / m1, c1 / m1, k1 / m1]
+    A[1, 0] = 1.0
+    A[2, :5] = [c1 / m2, k1 / m2, -(c1 + c2) / m2, -(k1 + k2) / m2, k2 / m2]
+    A[3, 2] = 1.0
+    B = np.zeros((6, 2))
+    B[2] = [c2 / m2, c2 / m2 * R]
+    B[4] = [1.0, R]
+    B[5] = [0.0, 0.0]
+    A[5, :] = 0.0
+    # p' = u1 (vehicle velocity change): a state fed by the input
+    Bp = np.zeros((6, 1))
+    Bp[5, 0] = 1.0
+    F = np.zeros((6, 2))
+    F[0, 0] = 1.0 / m1
+    F[2, 1] = 1.0 / m2
+    Ball = np.hstack([B + np.hstack([Bp, np.zeros((6, 1))]), F])
+    n, m = 6, 4
+    M = np.zeros((n + m, n + m))
+    M[:n, :n], M[:n, n:] = A, Ball
+    E = linalg.expm(M / fs_hz)
+    Ad, Bd, Gd = E[:n, :n], E[:n, n:n + 2], E[:n, n + 2:]
+    C = np.zeros((2, 6))
+    C[0] = A[0] / G0
+    C[1, 1], C[1, 3] = -1000.0, 1000.0
+    Df = np.array([[1.0 / (m1 * G0), 0.0], [0.0, 0.0]])
+    return Ad, Bd, Gd, C, Df
+
+
+class NonlinearGreyBox:
+    """Same interface as :class:`LinearObserver`: ``reset``, ``step``, ``simulate``."""
+
+    def __init__(self, base: dict[str, float], effects: list[dict], fs_hz: float):
+        self.base = dict(base)
+        self.effects = [dict(e) for e in effects]
+        self.fs_hz = fs_hz
+        self.Ad, self.Bd, self.Gd, self.C, self.Df = matrices(self.base, fs_hz)
+        self.force_effects = [(e["kind"], e.get("parameters", {})) for e in self.effects
+                              if e["kind"] in FORCE_KINDS]
+        delay = next((e["parameters"] for e in self.effects if e["kind"] == "input_delay"), {})
+        self.n_pulse = int(round(delay.get("n_pulse", 0)))
+        self.n_brs = int(round(delay.get("n_brs", 0)))
+        off = next((e["parameters"] for e in self.effects if e["kind"] == "sensor_offset"), {})
+        self.offset = np.array([off.get("cr_g", 0.0), off.get("cd_mm", 0.0)])
+        self._dt_g = G0 / fs_hz
+        self.x = np.zeros(6)
+        self._y = np.zeros(2)
+        self._u = np.zeros(2)
+        self._f = np.zeros(2)
+        self._pulse_ring = np.zeros(self.n_pulse + 1)
+        self._brs_ring = np.zeros(self.n_brs + 1)
+        self.reset()
+
+    @property
+    def order(self) -> int:
+        return 6
+
+    # ------------------------------------------------------------------ per tick
+    def reset(self) -> None:
+        self.x[:] = 0.0
+        self._velocity = 0.0
+        self._theta_prev: float | None = None
+        self._pulse_ring[:] = 0.0
+        self._brs_ring[:] = math.nan
+        self._k = 0
+
+    def step(self, pulse_g: float, brs_rad: float) -> np.ndarray:
+        k = self._k
+        self._k = k + 1
+        if self.n_pulse:
+            self._pulse_ring[k % (self.n_pulse + 1)] = pulse_g
+            pulse_g = self._pulse_ring[(k + 1) % (self.n_pulse + 1)] if k >= self.n_pulse else 0.0
+        if self.n_brs:
+            self._brs_ring[k % (self.n_brs + 1)] = brs_rad
+            old = self._brs_ring[(k + 1) % (self.n_brs + 1)]
+            brs_rad = old if k >= self.n_brs else self._brs_ring[0]
+        self._velocity += pulse_g * self._dt_g
+        prev = brs_rad if self._theta_prev is None else self._theta_prev
+        self._theta_prev = brs_rad
+        u = self._u
+        u[0] = self._velocity
+        u[1] = (brs_rad - prev) * self.fs_hz
+        f = self._f
+        f[0] = f[1] = 0.0
+        z = self.x
+        for kind, p in self.force_effects:
+            fs, fn = effect_forces(kind, p, z, u[0], u[1], brs_rad, self.base)
+            f[0] += fs
+            f[1] += fn
+        y = self._y
+        np.dot(self.C, z, out=y)
+        y += self.Df @ f + self.offset
+        self.x = self.Ad @ z + self.Bd @ u + self.Gd @ f
+        return y
+
+    # ------------------------------------------------------------------ whole records
+    def simulate(self, pulse_g: np.ndarray, brs_rad: np.ndarray) -> np.ndarray:
+        """From rest, (n,) or (tests, n) -> (..., n, 2)."""
+        squeeze = pulse_g.ndim == 1
+        P = np.atleast_2d(pulse_g).astype(float)
+        T = np.atleast_2d(brs_rad).astype(float)
+        if self.n_pulse:
+            P = np.concatenate([np.zeros((P.shape[0], self.n_pulse)), P[:, :-self.n_pulse]], 1)
+        if self.n_brs:
+            T = np.concatenate([np.repeat(T[:, :1], self.n_brs, 1), T[:, :-self.n_brs]], 1)
+        u1 = np.cumsum(P, axis=1) * self._dt_g
+        u2 = np.diff(T, axis=1, prepend=T[:, :1]) * self.fs_hz
+        y = self._run(u1, u2, T)
+        return y[0] if squeeze else y
+
+    def _run(self, u1: np.ndarray, u2: np.ndarray, theta: np.ndarray) -> np.ndarray:
+        ntest, n = u1.shape
+        z = np.zeros((6, ntest))
+        y = np.empty((ntest, n, 2))
+        AdT, Bd, Gd, C, Df = self.Ad, self.Bd, self.Gd, self.C, self.Df
+        for k in range(n):
+            a, b, th = u1[:, k], u2[:, k], theta[:, k]
+            fs = np.zeros(ntest)
+            fn = np.zeros(ntest)
+            for kind, p in self.force_effects:
+                s1, s2 = effect_forces(kind, p, z, a, b, th, self.base)
+                fs = fs + s1
+                fn = fn + s2
+            f = np.vstack([fs, fn])
+            y[:, k] = (C @ z + Df @ f).T
+            z = AdT @ z + Bd @ np.vstack([a, b]) + Gd @ f
+        return y + self.offset
