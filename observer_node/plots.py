@@ -47,7 +47,7 @@ def residuals(path: Path, names: list[str], t_s: np.ndarray, before: np.ndarray,
     n = len(names)
     fig, axes = plt.subplots(n, 2, figsize=(11, 1.9 * n + 0.6), squeeze=False, sharex=True)
     for i, name in enumerate(names):
-        for k, (key, label) in enumerate(OUTPUT_LABELS):
+        for k, (key, _) in enumerate(OUTPUT_LABELS):
             ax = axes[i][k]
             ax.plot(t_s * 1000, before[i, :, k], color="0.6", lw=1, label="before")
             ax.plot(t_s * 1000, after[i, :, k], "r-", lw=1, label="after")

@@ -223,7 +223,7 @@ def candidates(model: NonlinearGreyBox, data: Dataset, present: set[str]) -> lis
 
 def _sparse_other(model, data, r, w, tr) -> Candidate:
     """Sequentially thresholded least squares over polynomial force terms (SINDy-style)."""
-    xd, x, sd, s, wst, p = tr.z
+    xd, x, sd, s, wst, _p = tr.z
     d, dd = s - x, sd - xd
     e = wst - s
     ed = tr.u1 + model.base["R"] * tr.u2 - sd

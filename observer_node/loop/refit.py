@@ -58,7 +58,7 @@ def refit(base: dict, effects: list[dict], data: Dataset, max_nfev: int = 60
     m1 = base["m1"]
 
     def unpack(theta: np.ndarray) -> tuple[dict, list[dict]]:
-        b = dict(zip(FREE, np.exp(theta[:len(FREE)])))
+        b = dict(zip(FREE, np.exp(theta[:len(FREE)]), strict=False))
         b["m1"] = m1
         for (i, name, scale), v in zip(layout, theta[len(FREE):], strict=True):
             _set(effects, i, name, abs(v * scale) if name in POSITIVE else v * scale)

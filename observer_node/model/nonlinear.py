@@ -67,8 +67,8 @@ class NonlinearGreyBox:
         self.force_effects = [(e["kind"], e.get("parameters", {})) for e in self.effects
                               if e["kind"] in FORCE_KINDS]
         delay = next((e["parameters"] for e in self.effects if e["kind"] == "input_delay"), {})
-        self.n_pulse = int(round(delay.get("n_pulse", 0)))
-        self.n_brs = int(round(delay.get("n_brs", 0)))
+        self.n_pulse = round(delay.get("n_pulse", 0))
+        self.n_brs = round(delay.get("n_brs", 0))
         off = next((e["parameters"] for e in self.effects if e["kind"] == "sensor_offset"), {})
         self.offset = np.array([off.get("cr_g", 0.0), off.get("cd_mm", 0.0)])
         self._dt_g = G0 / fs_hz
