@@ -87,13 +87,22 @@ def main() -> None:
                                  formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--log", type=Path, help="candump -L log to play (default: made here)")
     ap.add_argument("--repeat", type=int, default=3)
+    ap.add_argument("--accel-only", action="store_true",
+                    help="default log with the accelerometer frames only: 1 frame per 1 ms")
     ap.add_argument("--socketcan", action="store_true",
                     help="on vcan0 (in the VM): all three tools, canplayer included")
     a = ap.parse_args()
     log = a.log
     if log is None:
         s = crash_test_schedule(read_isomme(bundled_campaign() / "R16_002.zip"), Codec(),
-                                1000.0, reference=True, pre_s=0.3)
+                                1000.0, reference=not a.accel_only, pre_s=0.3)
+        if a.accel_only:
+            from replay.sources import filter_remap
+
+            s = filter_remap(s, {Codec()["TunnelAccel"].frame_id}, {})
+        from replay.schedule import concat
+
+        s = concat([s] * 5, gap_s=0.01)  # ~2.6 s: enough frames for a p99
         log = Path(tempfile.mkdtemp()) / "r16_002.log"
         write_candump(s, log)
     sched = read_candump(log)
