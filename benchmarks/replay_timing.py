@@ -27,7 +27,7 @@ import numpy as np
 
 from dbc import Codec
 from observer_node.data import bundled_campaign, read_isomme
-from replay.player import lateness_report, play
+from replay.player import bus_sender, lateness_report, play
 from replay.schedule import Schedule, crash_test_schedule
 from replay.sources import read_candump
 
@@ -39,16 +39,7 @@ def write_candump(s: Schedule, path: Path) -> None:
 
 
 def ours(s: Schedule, bus: can.BusABC):
-    msgs = [can.Message(arbitration_id=i, data=d, is_extended_id=False)
-            for i, d in zip(s.ids.tolist(), s.data, strict=True)]
-    pos = [0]
-
-    def send(_: int, __: bytes) -> bool:
-        bus.send(msgs[pos[0]])
-        pos[0] += 1
-        return True
-
-    return play(s, send)
+    return play(s, bus_sender(bus, s))
 
 
 def python_can_player(log: Path, bus: can.BusABC):

@@ -32,7 +32,7 @@ def run_bench(out: Path, model_path: str | None = None, interface: str = "auto",
     import can
 
     from dbc import Codec
-    from replay.player import play
+    from replay.player import bus_sender, play
     from replay.schedule import concat, crash_test_schedule, restamp_counters
 
     from .daemon.node import NodeConfig, ObserverNode
@@ -71,15 +71,7 @@ def run_bench(out: Path, model_path: str | None = None, interface: str = "auto",
         crash_test_schedule(t, codec, model.tick_rate_hz, reference=True, pre_s=0.2)
         for t in crash], gap_s=0.3), codec)
     bus = can.Bus(interface=interface, channel=channel)
-    msgs = [can.Message(arbitration_id=i, data=d, is_extended_id=False)
-            for i, d in zip(sched.ids.tolist(), sched.data, strict=True)]
-    pos = [0]
-
-    def send(_: int, __: bytes) -> bool:
-        bus.send(msgs[pos[0]])
-        pos[0] += 1
-        return True
-
+    send = bus_sender(bus, sched)
     print(f"bench: replaying {', '.join(tests)} ({len(sched)} frames, "
           f"{sched.t_s[-1] / rate:.1f} s)")
     report = play(sched, send, rate=rate)

@@ -19,7 +19,7 @@ from collections import Counter
 
 from dbc import Codec, frame_bits
 
-from .player import play
+from .player import bus_sender, play
 from .schedule import Schedule, concat, restamp_counters
 from .sources import SourceError, filter_remap, load_source
 
@@ -121,19 +121,7 @@ def main(argv: list[str] | None = None) -> int:
     except (can.CanError, OSError, ValueError) as e:
         print(f"crash-replay: error: cannot open {a.interface}:{a.channel}: {e}", file=sys.stderr)
         return 2
-    msgs = [can.Message(arbitration_id=cid, data=d, is_extended_id=cid > 0x7FF,
-                        is_fd=a.fd and len(d) > 8)
-            for cid, d in zip(sched.ids.tolist(), sched.data, strict=True)]
-    position = [0]  # messages are prebuilt: nothing is allocated while playing
-
-    def send(cid: int, data: bytes) -> bool:
-        k = position[0]
-        position[0] = k + 1
-        try:
-            bus.send(msgs[k])
-            return True
-        except can.CanError:
-            return False
+    send = bus_sender(bus, sched, a.fd)
 
     tty = sys.stderr.isatty() and not a.quiet
 

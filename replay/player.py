@@ -46,6 +46,28 @@ def lateness_report(lateness_s: np.ndarray, failed: int, duration_s: float,
                         float(us.max()), duration_s)
 
 
+def bus_sender(bus, schedule: Schedule, fd: bool = False) -> Callable[[int, bytes], bool]:
+    """A ``send`` for :func:`play` onto a python-can bus: every message is built before
+    playing, so sending allocates nothing; frames go out in schedule order."""
+    import can
+
+    msgs = [can.Message(arbitration_id=cid, data=d, is_extended_id=cid > 0x7FF,
+                        is_fd=fd and len(d) > 8)
+            for cid, d in zip(schedule.ids.tolist(), schedule.data, strict=True)]
+    position = [0]
+
+    def send(_: int, __: bytes) -> bool:
+        k = position[0]
+        position[0] = k + 1
+        try:
+            bus.send(msgs[k])
+            return True
+        except can.CanError:
+            return False
+
+    return send
+
+
 def play(schedule: Schedule, send: Callable[[int, bytes], bool], rate: float = 1.0,
          spin_s: float = 0.0003, progress: Callable[[int, int], None] | None = None,
          should_stop: Callable[[], bool] | None = None) -> TimingReport:
