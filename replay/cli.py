@@ -53,6 +53,9 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--pre", type=float, default=0.2,
                    help="quiet signal before a lab test, s, for the daemon's bias (0.2)")
     p.add_argument("--loop", type=int, default=1, metavar="N", help="play everything N times")
+    p.add_argument("--spin-us", type=float, default=300.0,
+                   help="busy-wait this long before each due time for accuracy (300); use 0 "
+                   "in an emulated VM, where spinning steals the emulator's own CPU")
     p.add_argument("--gap", type=float, default=0.5, help="pause between sources, s (0.5)")
     p.add_argument("--only", type=_int, action="append", metavar="ID",
                    help="send only these CAN IDs (repeatable; 0x100 or 256)")
@@ -133,7 +136,7 @@ def main(argv: list[str] | None = None) -> int:
             sys.stderr.flush()
 
     try:
-        report = play(sched, send, rate=a.rate, progress=progress)
+        report = play(sched, send, rate=a.rate, spin_s=a.spin_us * 1e-6, progress=progress)
     except KeyboardInterrupt:
         print("\ncrash-replay: interrupted", file=sys.stderr)
         return 130
