@@ -52,7 +52,7 @@ def bus_sender(bus, schedule: Schedule, fd: bool = False) -> Callable[[int, byte
     import can
 
     msgs = [can.Message(arbitration_id=cid, data=d, is_extended_id=cid > 0x7FF,
-                        is_fd=fd and len(d) > 8)
+                        is_fd=fd, bitrate_switch=fd)
             for cid, d in zip(schedule.ids.tolist(), schedule.data, strict=True)]
     position = [0]
 

@@ -162,3 +162,21 @@ def test_replay_tool_into_daemon_matches_offline_evaluation(model_path, tmp_path
     offline = evaluate_model(ModelFile.load(model_path), [read_isomme(test)])["tests"]["R16_004"]
     for k in ("cr", "cd"):  # onset detection vs the lab's t = 0: within 2 points
         assert abs(event["fit_vs_reference"][k] - offline[k]) < 2.0, (event, offline)
+
+
+def test_can_fd_is_a_configuration():
+    """The same frame layouts go out as CAN FD frames when the port is configured for FD."""
+    from dbc import Codec
+
+    acc = Codec()["TunnelAccel"]
+    rx = SocketCanPort(CHANNEL, [acc.frame_id], fd=True)
+    tx = SocketCanPort(CHANNEL, [], fd=True)
+    try:
+        data = acc.encode({"TunnelAccelX": -12.5}, 3)
+        assert tx.send(acc.frame_id, data)
+        got = rx.recv(2.0)
+        assert got is not None and got[2] == data and got[3] & 2  # FLAG_FD
+        assert acc.decode(got[2])["TunnelAccelX"] == pytest.approx(-12.5)
+    finally:
+        rx.close()
+        tx.close()

@@ -37,6 +37,8 @@ CAN_EFF_FLAG = 0x80000000
 CAN_ERR_MASK = 0x1FFFFFFF
 CAN_MTU, CANFD_MTU = 16, 72
 _FRAME = struct.Struct("=IB3x")
+_FD_FRAME = struct.Struct("=IBB2x")
+CANFD_BRS = 0x01  # bit-rate switch: the data phase at the fast rate
 
 
 class PortError(OSError):
@@ -112,8 +114,8 @@ class SocketCanPort:
 
     def send(self, can_id: int, data: bytes) -> bool:
         n = len(data)
-        if self.fd and n > 8:
-            frame = _FRAME.pack(can_id, n) + data.ljust(64, b"\0")
+        if self.fd:  # CAN FD is a configuration: the same layouts, sent as FD frames
+            frame = _FD_FRAME.pack(can_id, n, CANFD_BRS) + data.ljust(64, b"\0")
         else:
             frame = _FRAME.pack(can_id, n) + data.ljust(8, b"\0")
         try:
@@ -161,7 +163,7 @@ class PythonCanPort:
 
     def send(self, can_id: int, data: bytes) -> bool:
         msg = self._can.Message(arbitration_id=can_id, data=data, is_extended_id=False,
-                                is_fd=self.fd and len(data) > 8)
+                                is_fd=self.fd, bitrate_switch=self.fd)
         try:
             self.bus.send(msg)
             return True

@@ -73,6 +73,9 @@ class NonlinearGreyBox:
         self.offset = np.array([off.get("cr_g", 0.0), off.get("cd_mm", 0.0)])
         self._dt_g = G0 / fs_hz
         self.x = np.zeros(6)
+        self._xn = np.zeros(6)
+        self._tmp = np.zeros(6)
+        self._y2 = np.zeros(2)
         self._y = np.zeros(2)
         self._u = np.zeros(2)
         self._f = np.zeros(2)
@@ -116,10 +119,20 @@ class NonlinearGreyBox:
             fs, fn = effect_forces(kind, p, z, u[0], u[1], brs_rad, self.base)
             f[0] += fs
             f[1] += fn
+        # Preallocated buffers only: no array is created per tick (the effect forces are
+        # floats).
         y = self._y
         np.dot(self.C, z, out=y)
-        y += self.Df @ f + self.offset
-        self.x = self.Ad @ z + self.Bd @ u + self.Gd @ f
+        np.dot(self.Df, f, out=self._y2)
+        y += self._y2
+        y += self.offset
+        xn, tmp = self._xn, self._tmp
+        np.dot(self.Ad, z, out=xn)
+        np.dot(self.Bd, u, out=tmp)
+        xn += tmp
+        np.dot(self.Gd, f, out=tmp)
+        xn += tmp
+        self.x, self._xn = xn, z
         return y
 
     # ------------------------------------------------------------------ whole records

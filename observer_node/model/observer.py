@@ -63,8 +63,10 @@ class LinearObserver:
         self._dt_g = STANDARD_GRAVITY / self.fs_hz
         self.x = np.zeros(nx)
         self._xn = np.zeros(nx)
+        self._bu = np.zeros(nx)
         self._u = np.zeros(2)
         self._y = np.zeros(2)
+        self._du = np.zeros(2)
         self.reset()
 
     @property
@@ -89,11 +91,14 @@ class LinearObserver:
             self._brs_prev = brs_rad
             u[0] = self._velocity
             u[1] = (brs_rad - prev) * self.fs_hz
+        # Preallocated buffers only: no array is created per tick.
         y = self._y
         np.dot(self.C, self.x, out=y)
-        y += self.D @ u
+        np.dot(self.D, u, out=self._du)
+        y += self._du
         np.dot(self.A, self.x, out=self._xn)
-        self._xn += self.B @ u
+        np.dot(self.B, u, out=self._bu)
+        self._xn += self._bu
         self.x, self._xn = self._xn, self.x
         return y
 
