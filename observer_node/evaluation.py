@@ -152,8 +152,7 @@ def thesis_comparison(tests: list[CrashTest], out_dir: Path, rate_hz: float = 10
                 "validation": fits, "estimation_fit": mf.fits["fit"],
                 "model_file": f"models/{setup.lower()}-{slug}.json", "plots": pngs,
                 **({"parameters": mf.parameters} if spec["kind"] == "greybox" else {}),
-                **({"orders": mf.structure.get("NA") and
-                    {k: mf.structure[k] for k in ("NA", "NB", "NK")}}
+                **({"orders": {k: mf.structure[k] for k in ("NA", "NB", "NK")}}
                    if spec["kind"] == "arx" else {}),
             }
         if setup in THESIS_TABLES:

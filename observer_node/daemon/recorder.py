@@ -37,6 +37,7 @@ TICK_COLS = ("t", "tick", "accel_x_g", "decel_g", "bias_g", "brs_count", "brs_re
              "rad_per_count", "cr_g", "cd_mm", "valid", "running", "state", "cause", "event",
              "onset_tick", "ref_cr_g", "ref_cd_mm", "proc_us")
 _CTRL = ("frames_head", "ticks_head", "stop", "done", "frames_lost", "ticks_lost", "ready")
+FRAMES_HEAD, TICKS_HEAD, STOP, DONE, FRAMES_LOST, TICKS_LOST, READY = range(len(_CTRL))
 
 
 class Rings:
@@ -64,17 +65,17 @@ class Rings:
 
     # Hot path: one row each, then publish the head (the writer reads rows below it).
     def put_frame(self, t: float, can_id: int, data: bytes, flags: int) -> None:
-        head = int(self.ctrl[0])
+        head = int(self.ctrl[FRAMES_HEAD])
         i = head % self.capacity
         n = len(data)
         self.frame_meta[i] = (t, can_id, flags, n)
         self.frame_data[i * 64:i * 64 + n] = data
-        self.ctrl[0] = head + 1
+        self.ctrl[FRAMES_HEAD] = head + 1
 
     def put_tick(self, row: tuple) -> None:
-        head = int(self.ctrl[1])
+        head = int(self.ctrl[TICKS_HEAD])
         self.ticks[head % self.capacity] = row
-        self.ctrl[1] = head + 1
+        self.ctrl[TICKS_HEAD] = head + 1
 
     def close(self, unlink: bool = False) -> None:
         self.ctrl = self.frame_meta = self.ticks = None  # type: ignore[assignment]
@@ -134,7 +135,7 @@ def writer_main(names: tuple[str, str, str], capacity: int, path: str, clock: tu
     for name, media, data in attachments:
         w.add_attachment(wall0_ns, wall0_ns, name, media, data)
     w.flush()
-    rings.ctrl[6] = 1
+    rings.ctrl[READY] = 1
     seq = dict.fromkeys(chan, 0)
 
     def emit(topic: str, t: float, msg: dict) -> None:
@@ -147,13 +148,13 @@ def writer_main(names: tuple[str, str, str], capacity: int, path: str, clock: tu
     last_flush = time.monotonic()
     try:
         while True:
-            stop = bool(rings.ctrl[2])
-            head_f, head_t = int(rings.ctrl[0]), int(rings.ctrl[1])
+            stop = bool(rings.ctrl[STOP])
+            head_f, head_t = int(rings.ctrl[FRAMES_HEAD]), int(rings.ctrl[TICKS_HEAD])
             if head_f - tail_f > capacity:
-                rings.ctrl[4] += head_f - tail_f - capacity
+                rings.ctrl[FRAMES_LOST] += head_f - tail_f - capacity
                 tail_f = head_f - capacity
             if head_t - tail_t > capacity:
-                rings.ctrl[5] += head_t - tail_t - capacity
+                rings.ctrl[TICKS_LOST] += head_t - tail_t - capacity
                 tail_t = head_t - capacity
             wrote = head_f > tail_f or head_t > tail_t
             for k in range(tail_f, head_f):
@@ -195,18 +196,19 @@ def writer_main(names: tuple[str, str, str], capacity: int, path: str, clock: tu
                 w.flush()
                 last_flush = now
             orphaned = ppid is not None and os.getppid() != ppid
-            if (stop or orphaned) and tail_f == int(rings.ctrl[0]) and \
-                    tail_t == int(rings.ctrl[1]):
+            if (stop or orphaned) and tail_f == int(rings.ctrl[FRAMES_HEAD]) and \
+                    tail_t == int(rings.ctrl[TICKS_HEAD]):
                 break
             if not wrote:
                 time.sleep(0.005)
         w.add_metadata("chest-observer-recorder", {
-            "frames_lost": str(int(rings.ctrl[4])), "ticks_lost": str(int(rings.ctrl[5])),
+            "frames_lost": str(int(rings.ctrl[FRAMES_LOST])),
+            "ticks_lost": str(int(rings.ctrl[TICKS_LOST])),
             "frames": str(seq["/can/frames"]), "ticks": str(seq["/observer/estimate"])})
         w.finish()
     finally:
         f.close()
-        rings.ctrl[3] = 1
+        rings.ctrl[DONE] = 1
         rings.close()
 
 
@@ -232,17 +234,17 @@ class Recorder:
     def wait_ready(self, timeout_s: float = 30.0) -> bool:
         """Wait until the writer process has the file open (it buffers meanwhile anyway)."""
         deadline = time.monotonic() + timeout_s
-        while not self.rings.ctrl[6] and self.proc.is_alive() and time.monotonic() < deadline:
+        while not self.rings.ctrl[READY] and self.proc.is_alive() and time.monotonic() < deadline:
             time.sleep(0.01)
-        return bool(self.rings.ctrl[6])
+        return bool(self.rings.ctrl[READY])
 
     @property
     def lost(self) -> tuple[int, int]:
-        return int(self.rings.ctrl[4]), int(self.rings.ctrl[5])
+        return int(self.rings.ctrl[FRAMES_LOST]), int(self.rings.ctrl[TICKS_LOST])
 
     def close(self, timeout_s: float = 30.0) -> None:
         """Stop after everything written so far is in the file, and finish it."""
-        self.rings.ctrl[2] = 1
+        self.rings.ctrl[STOP] = 1
         self.proc.join(timeout_s)
         if self.proc.is_alive():
             self.proc.terminate()
