@@ -1,12 +1,18 @@
-"""observer-node: identify chest models from crash tests, score them as the thesis does,
-and (on a bench) run them as a real-time CAN observer.
+"""observer-node: the chest observer for crash benches, after Blåberg (2008).
+
+Estimates the dummy's chest acceleration (CR) and deflection (CD) from the crash pulse and the
+belt spindle rotation (BRS): identify models from crash tests, score them as the thesis does,
+close the loop on what they lack, and run them as a real-time CAN observer.
 
 Examples::
 
-    observer-node evaluate                          # thesis tables on the bundled campaign
-    observer-node identify --model greybox --data tests/R16 --out model.json
-    observer-node evaluate --model model.json --data tests/R16_002 --out out/
-    observer-node simulate --out sim/ --setup R16 --count 4
+    observer-node bench                               # the whole bench on bundled data
+    observer-node evaluate                            # thesis Tables 4.1-4.3, plots
+    observer-node identify --model greybox --data tests/data --out model.json
+    observer-node evaluate --model model.json --data tests/data/R16_002 --out out/
+    observer-node loop --estimate odd/ --validate even/ --out out/loop
+    observer-node run --interface socketcan --channel vcan0 --model model.json --record run.mcap
+    observer-node analyze run.mcap
 """
 
 from __future__ import annotations
