@@ -19,7 +19,8 @@ import numpy as np
 
 from ..ident.dataset import Dataset
 from ..model.effects import EFFECTS, OTHER_TERMS, POSITIVE, effect_forces, other_term
-from ..model.nonlinear import G0, NonlinearGreyBox
+from ..model.nonlinear import NonlinearGreyBox
+from ..model.observer import transform_inputs
 
 MAX_LAG = 25
 
@@ -80,8 +81,8 @@ class Trajectory:
 def trajectory(model: NonlinearGreyBox, data: Dataset) -> Trajectory:
     """States of ``model`` on ``data`` (re-running its simulation and keeping the states)."""
     P, T = data.pulse_g, data.brs_rad
-    u1 = np.cumsum(P, axis=1) * (G0 / data.fs_hz)
-    u2 = np.diff(T, axis=1, prepend=T[:, :1]) * data.fs_hz
+    u = transform_inputs("velocity_brs_rate", P, T, data.fs_hz)
+    u1, u2 = u[..., 0], u[..., 1]
     ntest, n = P.shape
     z = np.zeros((6, ntest))
     zs = np.empty((6, ntest, n))

@@ -20,6 +20,7 @@ from scipy import linalg
 
 from ..data.crashtest import STANDARD_GRAVITY
 from .effects import FORCE_KINDS, effect_forces
+from .observer import transform_inputs
 
 G0 = STANDARD_GRAVITY
 
@@ -145,9 +146,8 @@ class NonlinearGreyBox:
             P = np.concatenate([np.zeros((P.shape[0], self.n_pulse)), P[:, :-self.n_pulse]], 1)
         if self.n_brs:
             T = np.concatenate([np.repeat(T[:, :1], self.n_brs, 1), T[:, :-self.n_brs]], 1)
-        u1 = np.cumsum(P, axis=1) * self._dt_g
-        u2 = np.diff(T, axis=1, prepend=T[:, :1]) * self.fs_hz
-        y = self._run(u1, u2, T)
+        u = transform_inputs("velocity_brs_rate", P, T, self.fs_hz)
+        y = self._run(u[..., 0], u[..., 1], T)
         return y[0] if squeeze else y
 
     def _run(self, u1: np.ndarray, u2: np.ndarray, theta: np.ndarray) -> np.ndarray:
