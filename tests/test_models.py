@@ -125,3 +125,19 @@ def test_n4sid_identifies_a_known_system():
                                np.sort(np.abs(np.linalg.eigvals(A))), atol=1e-3)
     rows = n4sid.order_scan(data, None, range(1, 5), block_rows=10)
     assert rows[2]["estimation_fit"] > rows[0]["estimation_fit"]
+
+
+def test_nonlinear_model_without_effects_is_the_linear_greybox(clean_r16):
+    from observer_node.model.nonlinear import NonlinearGreyBox
+
+    data = make_dataset(clean_r16[:3], 1000.0)
+    p = TRUTH.as_dict()
+    np.testing.assert_allclose(NonlinearGreyBox(p, [], 1000.0).simulate(data.pulse_g,
+                                                                        data.brs_rad),
+                               greybox.simulate(p, data), atol=1e-9)
+    # and each effect changes the answer
+    for kind, params in (("chest_stiffening", {"k3": 5e8}), ("belt_unloading", {}),
+                         ("sensor_offset", {"cr_g": 1.0, "cd_mm": 0.5})):
+        m = NonlinearGreyBox(p, [{"kind": kind, "parameters": params}], 1000.0)
+        assert np.abs(m.simulate(data.pulse_g, data.brs_rad) -
+                      greybox.simulate(p, data)).max() > 0.1, kind
