@@ -28,8 +28,10 @@ def main() -> None:
                                  formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--effects", nargs="+", default=sorted(EFFECTS))
     ap.add_argument("--no-campaign", action="store_true")
+    ap.add_argument("--rate", type=float, default=1000.0, help="tick rate in Hz (1000)")
     a = ap.parse_args()
     work = Path(tempfile.mkdtemp())
+    print(f"tick rate {a.rate:g} Hz")
     print(f"{'hidden effect':<20}{'setup':<6}{'accepted':<48}{'before':>8}{'after':>8}"
           f"{'time s':>8}")
     for kind in a.effects:
@@ -38,14 +40,14 @@ def main() -> None:
         est = simulate_campaign(setup, 12, seed=31, config=cfg, prefix="EST")
         val = simulate_campaign(setup, 12, seed=32, config=cfg, prefix="VAL")
         t0 = time.monotonic()
-        r = run_loop(est, val, work / kind, verbose=False)
+        r = run_loop(est, val, work / kind, rate_hz=a.rate, verbose=False)
         found = ", ".join(e["kind"] for e in r["effects"]) or "(none)"
         print(f"{kind:<20}{setup:<6}{found:<48}{r['baseline']['fit']['total']:>8.1f}"
               f"{r['final']['fit']['total']:>8.1f}{time.monotonic() - t0:>8.1f}", flush=True)
     if not a.no_campaign:
         est, val = split_halves(load_tests([bundled_campaign()]))
         t0 = time.monotonic()
-        r = run_loop(est, val, work / "campaign", verbose=False)
+        r = run_loop(est, val, work / "campaign", rate_hz=a.rate, verbose=False)
         found = ", ".join(e["kind"] for e in r["effects"]) or "(none)"
         print(f"{'campaign-a':<20}{'all':<6}{found:<48}{r['baseline']['fit']['total']:>8.1f}"
               f"{r['final']['fit']['total']:>8.1f}{time.monotonic() - t0:>8.1f}")
