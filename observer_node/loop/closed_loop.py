@@ -43,7 +43,7 @@ def _fit3(t: dict) -> dict:
 
 def run_loop(est_tests: list[CrashTest], val_tests: list[CrashTest], out: Path,
              rate_hz: float = 1000.0, window_s: tuple[float, float] = THESIS_WINDOW_S,
-             margin: float = 1.0, top_k: int = 3, max_effects: int = 4,
+             margin: float = 1.0, top_k: int = 5, max_effects: int = 4,
              verbose: bool = True) -> dict:
     t_start = time.monotonic()
     prog = Progress("loop", enabled=verbose)
