@@ -82,7 +82,6 @@ class FrameCodec:
         self.name = message.name
         self.frame_id = message.frame_id
         self.length = message.length
-        self.cycle_ms = message.cycle_time
         self.signal_names = [s.name for s in message.signals]
         fmt, pos, slot = "<", 0, -1
         byte_slot: dict[int, int] = {}

@@ -28,14 +28,10 @@ import numpy as np
 from ..model.observer import LinearObserver
 
 ARMED, RUNNING, HOLD, FAULT = 1, 2, 3, 4
-STATE_NAMES = {0: "INIT", ARMED: "ARMED", RUNNING: "RUNNING", HOLD: "HOLD", FAULT: "FAULT"}
 
 # InvalidCause / ObserverFault bits (see the DBC)
 ACCEL_TIMEOUT, BRS_TIMEOUT, BAD_E2E, LOST_FRAME, OUT_OF_RANGE, BUS_ERROR, SENSOR_FAULT = (
     1 << i for i in range(7))
-CAUSE_NAMES = {ACCEL_TIMEOUT: "accel_timeout", BRS_TIMEOUT: "brs_timeout", BAD_E2E: "bad_e2e",
-               LOST_FRAME: "lost_frame", OUT_OF_RANGE: "out_of_range", BUS_ERROR: "bus_error",
-               SENSOR_FAULT: "sensor_fault"}
 
 
 @dataclass

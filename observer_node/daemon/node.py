@@ -133,6 +133,7 @@ class ObserverNode:
         self.est_scale_cr = est.scale("ChestAccelCR")
         self.est_scale_cd = est.scale("ChestDeflCD")
         self.est_lo, self.est_hi = est.raw_range("ChestAccelCR")
+        self._est_buf = bytearray(est.length)
         self.status_codec, self.counters_codec = c["ObserverStatus"], c["ObserverCounters"]
         self.period_s = 1.0 / model.tick_rate_hz
         self.accel_timeout_s = cfg.accel_timeout_s or 2 * self.period_s
@@ -168,7 +169,7 @@ class ObserverNode:
             self.recorder = None
 
     def install_signal_handlers(self) -> None:
-        def stop(signum, frame):
+        def stop(_signum, _frame):
             self.stop_event.set()
         signal.signal(signal.SIGINT, stop)
         signal.signal(signal.SIGTERM, stop)
@@ -345,9 +346,10 @@ class ObserverNode:
         cd_raw = min(max(round(cd / self.est_scale_cd), lo), hi)
         b1 = (core.tick_index & 0xF) | (self.est_valid_bit if valid else 0) | \
             (self.est_running_bit if running else 0)
-        data = bytearray(self.est_struct.pack(0, b1, cr_raw, cd_raw))
-        data[0] = e2e_crc(self.est_id, data)
-        data = bytes(data)
+        buf = self._est_buf
+        self.est_struct.pack_into(buf, 0, 0, b1, cr_raw, cd_raw)
+        buf[0] = e2e_crc(self.est_id, buf)
+        data = bytes(buf)
         if not self.port.send(self.est_id, data):  # type: ignore[union-attr]
             self.counters.tx_dropped += 1
         done = time.perf_counter()

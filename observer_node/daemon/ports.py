@@ -35,7 +35,7 @@ SO_RCVBUFFORCE = 33
 CAN_ERR_FLAG = 0x20000000
 CAN_EFF_FLAG = 0x80000000
 CAN_ERR_MASK = 0x1FFFFFFF
-CAN_MTU, CANFD_MTU = 16, 72
+CANFD_MTU = 72
 _FRAME = struct.Struct("=IB3x")
 _FD_FRAME = struct.Struct("=IBB2x")
 CANFD_BRS = 0x01  # bit-rate switch: the data phase at the fast rate

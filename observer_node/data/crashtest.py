@@ -73,12 +73,6 @@ class CrashTest:
     def has_outputs(self) -> bool:
         return self.cr_g is not None and self.cd_mm is not None
 
-    def outputs(self) -> np.ndarray:
-        """Measured outputs as an (n, 2) array [cr_g, cd_mm]."""
-        if not self.has_outputs:
-            raise CrashDataError(f"{self.source or self.name}: no CR/CD channels")
-        return np.column_stack([self.cr_g, self.cd_mm])
-
     def inputs(self) -> np.ndarray:
         """Raw inputs as an (n, 2) array [pulse_g, brs counts]."""
         return np.column_stack([self.pulse_g, self.brs])
@@ -87,15 +81,6 @@ class CrashTest:
         """Index of the first sample at or after ``t_s`` (clipped to the record)."""
         i = int(np.ceil((t_s - self.t0_s) * self.fs_hz - 1e-9))
         return min(max(i, 0), self.n)
-
-    def crop(self, start_s: float, end_s: float) -> CrashTest:
-        i, j = self.index_of(start_s), self.index_of(end_s) + 1
-        def cut(a):
-            return (None if a is None else a[i:j].copy())
-        return replace(
-            self, t0_s=self.t0_s + i / self.fs_hz, pulse_g=self.pulse_g[i:j].copy(),
-            brs=self.brs[i:j].copy(), cr_g=cut(self.cr_g), cd_mm=cut(self.cd_mm),
-        )
 
     def pulse_bias_g(self) -> float:
         """Accelerometer bias: mean pulse before first contact (0 if no pre-trigger data)."""

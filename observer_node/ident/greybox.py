@@ -165,7 +165,3 @@ def to_model_file(fit: GreyBoxFit, data: Dataset, name: str = "greybox",
 def _fitted_on(data: Dataset) -> dict:
     return {"tests": data.names, "setups": sorted(set(data.setups)), "rate_hz": data.fs_hz,
             "window_s": list(data.window_s), "simulation_start_s": 0.0}
-
-
-def params_from_model(mf: ModelFile) -> dict[str, float]:
-    return {n: float(v["value"]) for n, v in mf.parameters.items()}
