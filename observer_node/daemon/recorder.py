@@ -117,6 +117,10 @@ def writer_main(names: tuple[str, str, str], capacity: int, path: str, clock: tu
     """The recorder process: drain the rings into ``path`` until told to stop."""
     from mcap.writer import CompressionType, Writer
 
+    # The rings hold seconds of data: let the daemon have the CPU first when cores are few.
+    with contextlib.suppress(OSError):
+        os.nice(10)
+
     from dbc import Codec
 
     rings = Rings(capacity, names)
