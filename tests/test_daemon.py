@@ -115,7 +115,8 @@ def _accel(value_g: float, counter: int) -> bytes:
 def test_bad_input_is_counted_and_flagged_never_fatal(model):
     acc = CODEC["TunnelAccel"]
     brs = CODEC["BeltSpindle"]
-    with Harness(model, "bad") as h:
+    # Timeouts far above any scheduling hiccup: only the bad frames may flag the estimate.
+    with Harness(model, "bad", accel_timeout_s=1.0, brs_timeout_s=1.0) as h:
         k = kb = 0
 
         def good(n: int) -> None:

@@ -181,12 +181,12 @@ class ObserverNode:
         """Run until stopped (signal, ``stop_event``), ``max_seconds`` or, with
         ``idle_exit_s``, that long without any input frame after the first one.
         ``on_ready`` is called once the bus is open and the recorder is writing."""
-        self.open()
-        # Everything alive now (model, codec, numpy, the bus) lives for the whole run: move it
-        # out of the collector's sight, so that a full collection cannot pause a tick for
-        # tens of milliseconds scanning it.
+        # Everything alive now (model, codec, numpy) lives for the whole run: move it out of
+        # the collector's sight, so that a full collection cannot pause a tick for tens of
+        # milliseconds scanning it. Before the bus opens: nobody is waiting for us yet.
         gc.collect()
         gc.freeze()
+        self.open()
         if on_ready is not None:
             on_ready()
         try:
