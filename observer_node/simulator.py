@@ -18,9 +18,12 @@ the thesis model can be switched on, each with a scale (1.0 = the default magnit
 =====================  ==================================================================
 
 The simulation runs in two passes at 10 kHz with RK4: the first, closed loop, gives the
-spindle angle (pretensioner, then the load limiter paying out above its force); the BRS
-quantises it; the second drives the chest with the *quantised* BRS and the pulse, so that
-without effects the recorded outputs are those of the thesis model on the recorded inputs.
+spindle angle (pretensioner, then the load limiter paying out above its force); the second
+drives the chest with that angle and the pulse, so that without effects the recorded outputs
+are those of the thesis model on the true inputs. The BRS only *measures* the angle, in whole
+counts: its quantisation is an error of the recorded input, as on a real belt, which moves
+smoothly whatever the sensor's resolution. (Driving the chest with the quantised angle
+instead would make the belt jerk at every count, and a slack belt chatter between counts.)
 Outputs are filtered like a lab's (CR CFC 180, CD CFC 600); the pulse is left unfiltered.
 """
 
@@ -190,14 +193,13 @@ def simulate_test(setup: str, name: str, rng: np.random.Generator,
         y = _rk4(f1, y, t[k], h)
         theta[k + 1] = y[4]
     counts = np.round(theta * cfg.counts_per_rev / (2 * np.pi))
-    theta_q = counts * 2 * np.pi / cfg.counts_per_rev
 
-    # Pass 2: the chest driven by the quantised BRS (linear between samples) and the pulse.
+    # Pass 2: the chest driven by the spindle angle (linear between samples) and the pulse.
     def f2(tt: float, y2: np.ndarray) -> np.ndarray:
         x, xd, s, sd = y2
         k = min(max(int((tt - T0_S) * FS_HZ + 1e-9), 0), N_SAMPLES - 2)
-        th = lin(theta_q, tt)
-        thd = (theta_q[k + 1] - theta_q[k]) * FS_HZ
+        th = lin(theta, tt)
+        thd = (theta[k + 1] - theta[k]) * FS_HZ
         w = lin(pcar, tt) + belt_disp(th)
         slope = 1 - gain_growth * min(th, 0.0)
         wd = lin(v, tt) + p.R * slope * thd
@@ -210,8 +212,8 @@ def simulate_test(setup: str, name: str, rng: np.random.Generator,
     for k in range(N_SAMPLES - 1):
         y2 = _rk4(f2, y2, t[k], h)
         xdd, _, _ = chest.accel(y2[0], y2[1], y2[2], y2[3],
-                                lin(pcar, t[k + 1]) + belt_disp(theta_q[k + 1]),
-                                v[k + 1] + p.R * (theta_q[k + 1] - theta_q[k]) * FS_HZ,
+                                lin(pcar, t[k + 1]) + belt_disp(theta[k + 1]),
+                                v[k + 1] + p.R * (theta[k + 1] - theta[k]) * FS_HZ,
                                 pcar[k + 1], v[k + 1])
         cr[k + 1] = xdd / STANDARD_GRAVITY
         cd[k + 1] = (y2[2] - y2[0]) * 1000.0

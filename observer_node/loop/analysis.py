@@ -16,8 +16,10 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
+from scipy import optimize
 
 from ..ident.dataset import Dataset
+from ..ident.greybox import FREE
 from ..model.effects import EFFECTS, OTHER_TERMS, POSITIVE, effect_forces, other_term
 from ..model.nonlinear import NonlinearGreyBox
 from ..model.observer import transform_inputs
@@ -83,18 +85,8 @@ def trajectory(model: NonlinearGreyBox, data: Dataset) -> Trajectory:
     P, T = data.pulse_g, data.brs_rad
     u = transform_inputs("velocity_brs_rate", P, T, data.fs_hz)
     u1, u2 = u[..., 0], u[..., 1]
-    ntest, n = P.shape
-    z = np.zeros((6, ntest))
-    zs = np.empty((6, ntest, n))
-    for k in range(n):
-        zs[:, :, k] = z
-        fs = np.zeros(ntest)
-        fn = np.zeros(ntest)
-        for kind, p in model.force_effects:
-            a, b = effect_forces(kind, p, z, u1[:, k], u2[:, k], T[:, k], model.base)
-            fs, fn = fs + a, fn + b
-        z = model.Ad @ z + model.Bd @ np.vstack([u1[:, k], u2[:, k]]) + \
-            model.Gd @ np.vstack([fs, fn])
+    zs = np.empty((6, *P.shape))
+    model.run_transformed(u1, u2, T, states=zs)
     return Trajectory(zs, u1, u2, T)
 
 
@@ -143,14 +135,35 @@ def _regress(r: np.ndarray, sigs: list[np.ndarray], w: np.ndarray, win: slice):
     return coef, float(1 - rest @ rest / (rw @ rw))
 
 
+def base_sensitivities(model: NonlinearGreyBox, data: Dataset, y_hat: np.ndarray
+                       ) -> list[np.ndarray]:
+    """Output change (tests, n, 2) per 1 % change of each free base parameter."""
+    out = []
+    for name in FREE:
+        b = {**model.base, name: model.base[name] * 1.01}
+        m = NonlinearGreyBox(b, model.effects, model.fs_hz)
+        out.append(m.simulate(data.pulse_g, data.brs_rad) - y_hat)
+    return out
+
+
 def candidates(model: NonlinearGreyBox, data: Dataset, present: set[str]) -> list[Candidate]:
-    """Every effect not yet in the model, scored on the residual, best first."""
+    """Every effect not yet in the model, scored on the residual, best first.
+
+    The refit re-estimates the base parameters with the effect, so each signature is
+    regressed *together with* the base parameters' sensitivities: an effect the fitted
+    linear model has half absorbed (a hardening belt makes the fit choose a stiffer k2)
+    shows its true sign and size only beside them."""
     y_hat = model.simulate(data.pulse_g, data.brs_rad)
     r = (data.y - y_hat)[:, data.win]
     w = weights(data)
     tr = trajectory(model, data)
     out: list[Candidate] = []
     zt = tuple(tr.z)
+    sens = base_sensitivities(model, data, y_hat)
+
+    def regress(sigs: list[np.ndarray]) -> tuple[np.ndarray, float]:
+        coef, ex = _regress(r, [*sigs, *sens], w, data.win)
+        return coef[:len(sigs)], ex
 
     def force_sig(kind: str, p: dict) -> np.ndarray:
         fs, fn = effect_forces(kind, p, zt, tr.u1, tr.u2, tr.theta, model.base)
@@ -158,6 +171,7 @@ def candidates(model: NonlinearGreyBox, data: Dataset, present: set[str]) -> lis
         fn = np.broadcast_to(fn, tr.u1.shape)
         return propagate(model, np.asarray(fs, float), np.asarray(fn, float))
 
+    scorer = _Scorer(model, data, r, w, sens, y_hat)
     for kind, (_, params) in EFFECTS.items():
         if kind in present or kind == "other":
             continue
@@ -168,7 +182,7 @@ def candidates(model: NonlinearGreyBox, data: Dataset, present: set[str]) -> lis
             s_cr[:, :, 0] = 1.0
             s_cd = np.zeros((data.n_tests, n, 2))
             s_cd[:, :, 1] = 1.0
-            _, ex = _regress(r, [s_cr, s_cd], w, data.win)
+            _, ex = regress([s_cr, s_cd])
             # A sensor offset is there at rest too: the first 2 ms after contact, before the
             # chest moves, must show it (> 1 % of the output's range); if they do not, what
             # looks like an offset in the window is something else.
@@ -183,43 +197,76 @@ def candidates(model: NonlinearGreyBox, data: Dataset, present: set[str]) -> lis
                 for lag in range(1, 6):
                     p = ({"n_pulse": lag, "n_brs": lag} if which == "both" else
                          {"n_pulse": 0, "n_brs": 0, which: lag})
-                    m = NonlinearGreyBox(model.base, [*model.effects,
-                                                      {"kind": kind, "parameters": p}],
-                                         model.fs_hz)
-                    sig = m.simulate(data.pulse_g, data.brs_rad) - y_hat
-                    coef, ex = _regress(r, [sig], w, data.win)
-                    if coef[0] > 0 and (best is None or ex > best.explained):
+                    ex, sig = scorer.share(kind, p)
+                    if best is None or ex > best.explained:
                         best = Candidate(kind, ex, p, sig)
             if best:
                 out.append(best)
-        elif kind == "airbag_contact":
-            best = None
-            for gap in (0.04, 0.07, 0.1, 0.13, 0.16, 0.2, 0.25):
-                sig = force_sig(kind, {"kab": unit["kab"], "gap": gap})
-                coef, ex = _regress(r, [sig], w, data.win)
-                if coef[0] > 0 and (best is None or ex > best.explained):
-                    best = Candidate(kind, ex, {"kab": float(coef[0] * unit["kab"]), "gap": gap},
-                                     sig)
-            if best:
-                out.append(best)
         elif kind == "belt_unloading":
-            # No free parameter: score it as it is (coefficient 1), not as a fitted shape.
-            sig = force_sig(kind, {})
-            rw = (r * w[:, None, :]).ravel()
-            rest = rw - (sig[:, data.win] * w[:, None, :]).ravel()
-            out.append(Candidate(kind, float(1 - rest @ rest / (rw @ rw)), {}, sig))
+            ex, sig = scorer.share(kind, {})
+            out.append(Candidate(kind, ex, {}, sig))
         else:
-            sig = force_sig(kind, unit)
-            coef, ex = _regress(r, [sig], w, data.win)
-            p = {n: float(coef[0] * mag) for n, mag in unit.items()}
-            if kind == "pelvis_coupling":  # one spring-damper: its shape at the unit ratio
-                p = {"kp": float(coef[0] * unit["kp"]), "cp": float(coef[0] * unit["cp"])}
-            if any(v < 0 for n, v in p.items() if n in POSITIVE):
-                continue  # the residual asks for the opposite of this physical effect
+            # Start from the linearised regression (its size, and for the airbag its gap),
+            # then let a short non-linear fit of the effect's own parameters finish.
+            if kind == "airbag_contact":
+                start, best_ex = {"kab": unit["kab"], "gap": 0.1}, -np.inf
+                for gap in (0.04, 0.07, 0.1, 0.13, 0.16, 0.2, 0.25):
+                    coef, ex = regress([force_sig(kind, {"kab": unit["kab"], "gap": gap})])
+                    if ex > best_ex:
+                        best_ex, start = ex, {"kab": abs(coef[0]) * unit["kab"], "gap": gap}
+            else:
+                coef, _ = regress([force_sig(kind, unit)])
+                c = coef[0] if kind == "input_gain" else max(abs(coef[0]), 0.1)
+                start = {n: float(c * mag) for n, mag in unit.items()}
+            ex, p, sig = scorer.fit(kind, start)
             out.append(Candidate(kind, ex, p, sig))
     if "other" not in present:
         out.append(_sparse_other(model, data, r, w, tr))
     return sorted(out, key=lambda c: -c.explained)
+
+
+class _Scorer:
+    """Share of the residual an effect explains when simulated as it is (non-linear, on the
+    current model), with the base parameters re-estimated to first order beside it."""
+
+    def __init__(self, model: NonlinearGreyBox, data: Dataset, r, w, sens, y_hat):
+        self.model, self.data, self.y_hat = model, data, y_hat
+        self.w = w
+        self.rw = (r * w[:, None, :]).ravel()
+        S = np.stack([(x[:, data.win] * w[:, None, :]).ravel() for x in sens], axis=1)
+        self.Q = np.linalg.qr(S)[0]
+
+    def _rest(self, kind: str, p: dict) -> tuple[np.ndarray, np.ndarray]:
+        m = self.model
+        trial = NonlinearGreyBox(m.base, [*m.effects, {"kind": kind, "parameters": p}],
+                                 m.fs_hz)
+        with np.errstate(all="ignore"):
+            sig = trial.simulate(self.data.pulse_g, self.data.brs_rad) - self.y_hat
+        v = self.rw - (sig[:, self.data.win] * self.w[:, None, :]).ravel()
+        v = v - self.Q @ (self.Q.T @ v)
+        return np.where(np.isfinite(v), v, 1e3), sig
+
+    def share(self, kind: str, p: dict) -> tuple[float, np.ndarray]:
+        v, sig = self._rest(kind, p)
+        return float(1 - v @ v / (self.rw @ self.rw)), sig
+
+    def fit(self, kind: str, start: dict, max_nfev: int = 12) -> tuple[float, dict, np.ndarray]:
+        """Least squares over the effect's parameters (positive ones as logarithms)."""
+        names = list(start)
+        pos = [n in POSITIVE for n in names]
+        scale = [abs(start[n]) or EFFECTS[kind][1][n][1] for n in names]
+
+        def unpack(th):
+            return {n: float(sc * (np.exp(t) if ps else t))
+                    for n, t, ps, sc in zip(names, th, pos, scale, strict=True)}
+
+        th0 = np.array([0.0 if ps else np.sign(start[n]) or 1.0
+                        for n, ps in zip(names, pos, strict=True)])
+        res = optimize.least_squares(lambda th: self._rest(kind, unpack(th))[0], th0,
+                                     max_nfev=max_nfev, diff_step=1e-3)
+        p = unpack(res.x)
+        ex, sig = self.share(kind, p)
+        return ex, p, sig
 
 
 def _sparse_other(model, data, r, w, tr) -> Candidate:

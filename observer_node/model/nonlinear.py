@@ -7,8 +7,12 @@ enter as extra inputs held over the tick:
     z[k+1] = Ad z[k] + Bd u[k] + Gd f(z[k], u[k], theta[k])
     y[k]   = C z[k] + Df f(z[k], u[k], theta[k]) + offsets
 
-With no effects this is the linear grey-box model exactly. ``simulate`` runs many tests at
-once (numpy over the test axis); ``step`` is the daemon's per-tick call.
+With no effects this is the linear grey-box model exactly. A slack belt (``belt_unloading``)
+is not a force but a switch: in a tick that starts with the belt force k2 e + c2 e' < 0 the
+state moves with the belt-free matrices (k2 = c2 = 0), which is exact within the tick, where
+cancelling the belt force with a held force lags a stiff spring by a tick.
+``simulate`` runs many tests at once (numpy over the test axis); ``step`` is the daemon's
+per-tick call.
 """
 
 from __future__ import annotations
@@ -66,7 +70,10 @@ class NonlinearGreyBox:
         self.fs_hz = fs_hz
         self.Ad, self.Bd, self.Gd, self.C, self.Df = matrices(self.base, fs_hz)
         self.force_effects = [(e["kind"], e.get("parameters", {})) for e in self.effects
-                              if e["kind"] in FORCE_KINDS]
+                              if e["kind"] in FORCE_KINDS and e["kind"] != "belt_unloading"]
+        self.unloading = any(e["kind"] == "belt_unloading" for e in self.effects)
+        slack = matrices({**self.base, "k2": 0.0, "c2": 0.0}, fs_hz)
+        self.Ad_slack, self.Bd_slack, self.Gd_slack = slack[:3]
         delay = next((e["parameters"] for e in self.effects if e["kind"] == "input_delay"), {})
         self.n_pulse = round(delay.get("n_pulse", 0))
         self.n_brs = round(delay.get("n_brs", 0))
@@ -127,14 +134,22 @@ class NonlinearGreyBox:
         np.dot(self.Df, f, out=self._y2)
         y += self._y2
         y += self.offset
+        Ad, Bd, Gd = self.Ad, self.Bd, self.Gd
+        if self.unloading and self.belt_slack(z, u[0], u[1]):
+            Ad, Bd, Gd = self.Ad_slack, self.Bd_slack, self.Gd_slack
         xn, tmp = self._xn, self._tmp
-        np.dot(self.Ad, z, out=xn)
-        np.dot(self.Bd, u, out=tmp)
+        np.dot(Ad, z, out=xn)
+        np.dot(Bd, u, out=tmp)
         xn += tmp
-        np.dot(self.Gd, f, out=tmp)
+        np.dot(Gd, f, out=tmp)
         xn += tmp
         self.x, self._xn = xn, z
         return y
+
+    def belt_slack(self, z, u1, u2):
+        """True where the belt would push (force k2 e + c2 e' < 0): float or array."""
+        b = self.base
+        return b["k2"] * (z[4] - z[3]) + b["c2"] * (u1 + b["R"] * u2 - z[2]) < 0.0
 
     # ------------------------------------------------------------------ whole records
     def simulate(self, pulse_g: np.ndarray, brs_rad: np.ndarray) -> np.ndarray:
@@ -147,15 +162,19 @@ class NonlinearGreyBox:
         if self.n_brs:
             T = np.concatenate([np.repeat(T[:, :1], self.n_brs, 1), T[:, :-self.n_brs]], 1)
         u = transform_inputs("velocity_brs_rate", P, T, self.fs_hz)
-        y = self._run(u[..., 0], u[..., 1], T)
+        y = self.run_transformed(u[..., 0], u[..., 1], T)
         return y[0] if squeeze else y
 
-    def _run(self, u1: np.ndarray, u2: np.ndarray, theta: np.ndarray) -> np.ndarray:
+    def run_transformed(self, u1: np.ndarray, u2: np.ndarray, theta: np.ndarray,
+             states: np.ndarray | None = None) -> np.ndarray:
+        """Outputs (tests, n, 2); the states (6, tests, n) go into ``states`` if given."""
         ntest, n = u1.shape
         z = np.zeros((6, ntest))
         y = np.empty((ntest, n, 2))
-        AdT, Bd, Gd, C, Df = self.Ad, self.Bd, self.Gd, self.C, self.Df
+        Ad, Bd, Gd, C, Df = self.Ad, self.Bd, self.Gd, self.C, self.Df
         for k in range(n):
+            if states is not None:
+                states[:, :, k] = z
             a, b, th = u1[:, k], u2[:, k], theta[:, k]
             fs = np.zeros(ntest)
             fn = np.zeros(ntest)
@@ -164,6 +183,13 @@ class NonlinearGreyBox:
                 fs = fs + s1
                 fn = fn + s2
             f = np.vstack([fs, fn])
+            ab = np.vstack([a, b])
             y[:, k] = (C @ z + Df @ f).T
-            z = AdT @ z + Bd @ np.vstack([a, b]) + Gd @ f
+            zn = Ad @ z + Bd @ ab + Gd @ f
+            if self.unloading:
+                slack = self.belt_slack(z, a, b)
+                if slack.any():
+                    z_slack = self.Ad_slack @ z + self.Bd_slack @ ab + self.Gd_slack @ f
+                    zn = np.where(slack, z_slack, zn)
+            z = zn
         return y + self.offset
