@@ -3,7 +3,16 @@
 Both the daemon and the replay tool use this package; neither knows the other's internals.
 """
 
-from .codec import DBC_PATH, Codec, FrameCodec, bus_load, crc8_j1850, e2e_crc, frame_bits
+from .codec import (
+    DBC_PATH,
+    Codec,
+    FrameCodec,
+    bus_load,
+    crc8_j1850,
+    e2e_crc,
+    fd_frame_time_s,
+    frame_bits,
+)
 
 __all__ = ["DBC_PATH", "Codec", "FrameCodec", "bus_load", "crc8_j1850", "e2e_crc",
-           "frame_bits"]
+           "fd_frame_time_s", "frame_bits"]

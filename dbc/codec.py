@@ -82,6 +82,7 @@ class FrameCodec:
         self.name = message.name
         self.frame_id = message.frame_id
         self.length = message.length
+        self.fd_only = bool(message.is_fd) or message.length > 8
         self.signal_names = [s.name for s in message.signals]
         fmt, pos, slot = "<", 0, -1
         byte_slot: dict[int, int] = {}
@@ -205,26 +206,39 @@ class Codec:
         return hashlib.sha256(self.path.read_bytes()).hexdigest()
 
 
-def frame_bits(dlc: int, extended: bool = False, fd: bool = False) -> int:
-    """Worst-case bits on the wire of one data frame including stuff bits and the 3-bit
-    interframe space (classic CAN; for FD this counts the arbitration-rate bits only and is
-    an upper bound on the time at the nominal rate)."""
-    if fd:
-        # Arbitration phase at nominal rate; data phase counted at the nominal rate as well
-        # (an upper bound: divide by the data/nominal ratio for the real data phase).
-        payload = 8 * dlc + (17 if dlc <= 16 else 21) + 28
-        header = 29 if not extended else 48
-        return header + payload + (header + payload) // 4 + 3
+def frame_bits(dlc: int, extended: bool = False) -> int:
+    """Worst-case bits on the wire of one classic data frame including stuff bits and the
+    3-bit interframe space."""
     stuffable = (34 if not extended else 54) + 8 * dlc
     return (47 if not extended else 67) + 8 * dlc + (stuffable - 1) // 4
 
 
-def bus_load(codec: Codec, rates_hz: dict[str, float], bitrate: float = 500_000) -> dict:
-    """Worst-case bus load of the given frames at the given rates on a classic CAN bus."""
+def fd_frame_time_s(length: int, bitrate: float, data_bitrate: float) -> float:
+    """Worst-case time of one CAN FD frame (11-bit ID, bit-rate switch): the arbitration and
+    end of frame at ``bitrate``, from the BRS bit to the CRC delimiter at ``data_bitrate``.
+    Counts stuff bits as one per four in the dynamically stuffed fields, the fixed stuff
+    bits and stuff count of the CRC field, ACK, EOF and the interframe space."""
+    crc = 17 if length <= 16 else 21
+    nominal = 1 + 11 + 3 + 1 + (16 - 1) // 4 + 1 + 2 + 7 + 3  # SOF ID r1 IDE FDF res, ACK EOF IFS
+    dynamic = 1 + 4 + 8 * length  # ESI, DLC, data
+    data = 1 + dynamic + (dynamic - 1) // 4 + 4 + crc + (crc + 4) // 4 + 1
+    return nominal / bitrate + data / data_bitrate
+
+
+def bus_load(codec: Codec, rates_hz: dict[str, float], bitrate: float = 500_000,
+             data_bitrate: float | None = None) -> dict:
+    """Worst-case bus load of the given frames at the given rates. Classic CAN, or with
+    ``data_bitrate`` CAN FD for every frame (frames the DBC marks FD-only need it)."""
     rows = []
     for name, rate in rates_hz.items():
         f = codec[name]
-        bits = frame_bits(f.length)
+        if data_bitrate:
+            t = fd_frame_time_s(f.length, bitrate, data_bitrate)
+        elif f.fd_only:
+            raise ValueError(f"{name} is a CAN FD frame ({f.length} bytes): give data_bitrate")
+        else:
+            t = frame_bits(f.length) / bitrate
         rows.append({"frame": name, "id": f"0x{f.frame_id:03X}", "dlc": f.length,
-                     "rate_hz": rate, "bits": bits, "load": bits * rate / bitrate})
-    return {"bitrate": bitrate, "frames": rows, "total": sum(r["load"] for r in rows)}
+                     "rate_hz": rate, "time_us": t * 1e6, "load": t * rate})
+    return {"bitrate": bitrate, "data_bitrate": data_bitrate, "frames": rows,
+            "total": sum(r["load"] for r in rows)}

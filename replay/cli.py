@@ -17,7 +17,7 @@ import argparse
 import sys
 from collections import Counter
 
-from dbc import Codec, frame_bits
+from dbc import Codec, fd_frame_time_s, frame_bits
 
 from .player import bus_sender, play
 from .schedule import Schedule, concat, restamp_counters
@@ -42,6 +42,9 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--interface", default="socketcan", help="python-can interface (socketcan)")
     p.add_argument("--channel", default="vcan0", help="bus channel (vcan0)")
     p.add_argument("--fd", action="store_true", help="send as CAN FD frames")
+    p.add_argument("--burst", action="store_true",
+                   help="lab data as InputBurst frames, eight samples each (CAN FD; for tick "
+                   "rates a frame per sample cannot carry, e.g. --tick-rate 10000)")
     p.add_argument("--rate", type=float, default=1.0,
                    help="time scale: 2 plays twice as fast, 0.1 ten times slower (1)")
     p.add_argument("--tick-rate", type=float, default=1000.0,
@@ -65,13 +68,16 @@ def build_parser() -> argparse.ArgumentParser:
                    help="MCAP: also the frames the daemon sent, not only those it received")
     p.add_argument("--counts-per-rev", type=int, help="BRS counts/rev if a test does not say")
     p.add_argument("--bitrate", type=float, default=500_000, help="for --dry-run's bus load")
+    p.add_argument("--data-bitrate", type=float, default=2_000_000,
+                   help="CAN FD data phase, for --dry-run's bus load with --fd (2000000)")
     p.add_argument("--dry-run", action="store_true",
                    help="print what would be sent and the bus load, send nothing")
     p.add_argument("--quiet", action="store_true", help="no progress bar")
     return p
 
 
-def describe(s: Schedule, bitrate: float) -> str:
+def describe(s: Schedule, bitrate: float, data_bitrate: float | None = None) -> str:
+    """Frames per ID and the worst-case bus load (CAN FD timing with ``data_bitrate``)."""
     dur = float(s.t_s[-1] - s.t_s[0]) if len(s) else 0.0
     lines = [f"{len(s)} frames over {dur:.3f} s from {s.source}"]
     counts = Counter(s.ids.tolist())
@@ -80,12 +86,15 @@ def describe(s: Schedule, bitrate: float) -> str:
         sizes.setdefault(cid, len(d))
     load = 0.0
     for cid, n in sorted(counts.items()):
-        bits = frame_bits(sizes[cid])
-        share = n * bits / max(dur, 1e-9) / bitrate
+        t_frame = (fd_frame_time_s(sizes[cid], bitrate, data_bitrate) if data_bitrate
+                   else frame_bits(sizes[cid]) / bitrate)
+        share = n * t_frame / max(dur, 1e-9)
         load += share
         lines.append(f"  0x{cid:03X}: {n:6d} frames, DLC {sizes[cid]}, {n / max(dur, 1e-9):7.1f}/s,"
-                     f" {100 * share:5.1f} % of {bitrate / 1000:g} kbit/s")
-    lines.append(f"  bus load (worst-case stuffing): {100 * load:.1f} %")
+                     f" {100 * share:5.1f} %")
+    rate = f"{bitrate / 1000:g} kbit/s" + (f", FD data {data_bitrate / 1e6:g} Mbit/s"
+                                           if data_bitrate else "")
+    lines.append(f"  bus load (worst-case stuffing, {rate}): {100 * load:.1f} %")
     return "\n".join(lines)
 
 
@@ -96,9 +105,14 @@ def main(argv: list[str] | None = None) -> int:
         parts: list[Schedule] = []
         for src in a.sources:
             parts += load_source(src, codec, a.tick_rate, a.reference, a.start, a.end, a.pre,
-                                 counts_per_rev=a.counts_per_rev, all_frames=a.all_frames)
+                                 counts_per_rev=a.counts_per_rev, all_frames=a.all_frames,
+                                 burst=a.burst)
     except SourceError as e:
         print(f"crash-replay: error: {e}", file=sys.stderr)
+        return 2
+    if a.burst and not a.fd:
+        print("crash-replay: error: --burst sends 48-byte InputBurst frames: it needs --fd",
+              file=sys.stderr)
         return 2
     only = set(a.only) if a.only else None
     remap = dict(a.remap or [])
@@ -110,7 +124,7 @@ def main(argv: list[str] | None = None) -> int:
         print("crash-replay: nothing to send", file=sys.stderr)
         return 2
     if a.dry_run:
-        print(describe(sched, a.bitrate))
+        print(describe(sched, a.bitrate, a.data_bitrate if a.fd else None))
         for t, cid, d in list(zip(sched.t_s, sched.ids.tolist(), sched.data, strict=True))[:20]:
             print(f"  {t:10.6f}  0x{cid:03X}  {d.hex(' ')}")
         if len(sched) > 20:

@@ -7,6 +7,10 @@ changes (at most once per tick) and every ``brs_heartbeat_s``. With ``reference`
 measured CR and CD go out every tick (zero-phase decimated, model convention). Within a tick
 the BRS and reference frames precede the accelerometer frame, so the observer ticks on fresh
 values. Times are seconds from the first frame.
+
+With ``burst`` (CAN FD, for tick rates a frame per sample cannot carry), eight consecutive
+ticks go out as one InputBurst frame, each accelerometer sample paired with the BRS count held
+at it, sent with the last of them; the reference, if any, goes once per burst (its last tick).
 """
 
 from __future__ import annotations
@@ -72,7 +76,7 @@ def concat(schedules: list[Schedule], gap_s: float = 0.5) -> Schedule:
 def crash_test_schedule(test: CrashTest, codec: Codec, rate_hz: float = 1000.0,
                         reference: bool = False, brs_heartbeat_s: float = 0.01,
                         start_s: float | None = None, end_s: float | None = None,
-                        pre_s: float = 0.0) -> Schedule:
+                        pre_s: float = 0.0, burst: bool = False) -> Schedule:
     """Frames for one crash test between ``start_s`` and ``end_s`` (test time, default all).
     ``pre_s`` prepends that much quiet signal (the mean pulse before first contact, held)
     so a daemon can estimate the accelerometer bias before the crash."""
@@ -91,6 +95,8 @@ def crash_test_schedule(test: CrashTest, codec: Codec, rate_hz: float = 1000.0,
     pulse = np.append(pulse, pulse[quiet].mean() if quiet.any() else 0.0)  # index -1: padding
     idx = np.concatenate([np.full(n_pre, -1), np.arange(lo, hi)])
     acc, bfc, ref = codec["TunnelAccel"], codec["BeltSpindle"], codec["ReferenceChest"]
+    if burst:
+        return _burst_schedule(test, codec, rate_hz, idx, lo, pulse, brs, cr, cd)
     heartbeat = max(1, round(brs_heartbeat_s * rate_hz))
     times, ids, data = [], [], []
     last_brs = None
@@ -113,4 +119,31 @@ def crash_test_schedule(test: CrashTest, codec: Codec, rate_hz: float = 1000.0,
         times.append(tk)
         ids.append(acc.frame_id)
         data.append(acc.encode({"TunnelAccelX": -pulse[i]}, k))  # model -> J211 sign
+    return Schedule(np.array(times), np.array(ids), data, test.name, synthetic=True)
+
+
+BURST_SAMPLES = 8  # samples per InputBurst frame (the DBC's layout)
+
+
+def _burst_schedule(test: CrashTest, codec: Codec, rate_hz: float, idx: np.ndarray, lo: int,
+                    pulse: np.ndarray, brs: np.ndarray, cr, cd) -> Schedule:
+    fc, ref = codec["InputBurst"], codec["ReferenceChest"]
+    times, ids, data = [], [], []
+    n_frames = len(idx) // BURST_SAMPLES  # a partial last burst is not sent
+    for f in range(n_frames):
+        values: dict[str, float] = {"BurstCountsPerRev": test.counts_per_rev or 0,
+                                    "InputBurst_Status": 2}
+        for j in range(BURST_SAMPLES):
+            i = idx[f * BURST_SAMPLES + j]
+            values[f"BurstAccelX{j}"] = -pulse[i]  # model -> J211 sign
+            values[f"BurstBrsCount{j}"] = int(brs[lo] if i < 0 else brs[i])
+        tk = ((f + 1) * BURST_SAMPLES - 1) / rate_hz
+        if cr is not None and cd is not None:
+            j = max(int(idx[(f + 1) * BURST_SAMPLES - 1]), lo)
+            times.append(tk)
+            ids.append(ref.frame_id)
+            data.append(ref.encode({"RefChestAccelCR": cr[j], "RefChestDeflCD": cd[j]}, f))
+        times.append(tk)
+        ids.append(fc.frame_id)
+        data.append(fc.encode(values, f))
     return Schedule(np.array(times), np.array(ids), data, test.name, synthetic=True)

@@ -109,8 +109,9 @@ def load_source(path: str | Path, codec: Codec, rate_hz: float = 1000.0,
                 reference: bool = False, start_s: float | None = None,
                 end_s: float | None = None, pre_s: float = 0.2,
                 codes: ChannelCodes | None = None, counts_per_rev: int | None = None,
-                all_frames: bool = False) -> list[Schedule]:
-    """Schedules for one source path (a folder of tests gives one schedule per test)."""
+                all_frames: bool = False, burst: bool = False) -> list[Schedule]:
+    """Schedules for one source path (a folder of tests gives one schedule per test).
+    ``burst``: lab data as InputBurst FD frames (eight samples each)."""
     p = Path(path)
     if not p.exists():
         raise SourceError(f"{p}: no such file or folder")
@@ -127,7 +128,8 @@ def load_source(path: str | Path, codec: Codec, rate_hz: float = 1000.0,
     except CrashDataError as e:
         raise SourceError(str(e)) from None
     return [crash_test_schedule(t, codec, rate_hz, reference and t.has_outputs,
-                                start_s=start_s, end_s=end_s, pre_s=pre_s) for t in tests]
+                                start_s=start_s, end_s=end_s, pre_s=pre_s, burst=burst)
+            for t in tests]
 
 
 def _window(s: Schedule, start_s: float | None, end_s: float | None) -> Schedule:

@@ -41,6 +41,16 @@ def test_e2e_protects_safety_frames():
     assert all(f.has_e2e for f in CODEC.frames.values())
 
 
+def test_10_khz_fits_can_fd_only_as_bursts():
+    per_sample = bus_load(CODEC, {"TunnelAccel": 10_000, "ChestEstimate": 10_000,
+                                  "BeltSpindle": 10_000}, 500_000, 2_000_000)
+    bursts = bus_load(CODEC, {"InputBurst": 1250, "ChestEstimate": 1250,
+                              "ObserverStatus": 10, "ObserverCounters": 10}, 500_000, 2_000_000)
+    assert per_sample["total"] > 1.0 and bursts["total"] < 0.6
+    with pytest.raises(ValueError, match="InputBurst is a CAN FD frame"):
+        bus_load(CODEC, {"InputBurst": 1250})
+
+
 def test_default_rate_fits_a_500k_bus_with_margin():
     assert frame_bits(4) == 95 and frame_bits(8) == 135
     worst = bus_load(CODEC, {"TunnelAccel": 1000, "ChestEstimate": 1000, "BeltSpindle": 1000,

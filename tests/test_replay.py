@@ -37,6 +37,31 @@ def test_lab_test_becomes_bus_frames_in_dbc_layout():
     assert (s.ids == CODEC["ReferenceChest"].frame_id).sum() == 220
 
 
+def test_bursts_carry_the_same_samples_as_single_frames():
+    """--burst: eight (acceleration, BRS count) pairs per InputBurst frame, the same values
+    the per-sample frames carry, sent with the last sample of each eight."""
+    t = read_isomme(DATA / "R16_002")
+    single = crash_test_schedule(t, CODEC, 10_000.0)
+    burst = crash_test_schedule(t, CODEC, 10_000.0, burst=True)
+    acc, brs, fc = CODEC["TunnelAccel"], CODEC["BeltSpindle"], CODEC["InputBurst"]
+    pulse, counts, held = [], [], 0
+    for cid, d in zip(single.ids.tolist(), single.data, strict=True):
+        if cid == brs.frame_id:
+            held = brs.decode(d)["BrsCount"]
+        elif cid == acc.frame_id:
+            pulse.append(acc.decode(d)["TunnelAccelX"])
+            counts.append(held)
+    assert set(burst.ids.tolist()) == {fc.frame_id} and all(map(fc.check_e2e, burst.data))
+    n = len(burst)
+    assert n == len(pulse) // 8
+    dec = [fc.decode(d) for d in burst.data]
+    np.testing.assert_allclose([v[f"BurstAccelX{j}"] for v in dec for j in range(8)],
+                               pulse[:8 * n])
+    assert [v[f"BurstBrsCount{j}"] for v in dec for j in range(8)] == counts[:8 * n]
+    assert np.allclose(np.diff(burst.t_s), 8e-4)
+    assert main([str(DATA / "R16_002"), "--burst", "--dry-run"]) == 2  # needs --fd
+
+
 def test_concatenated_tests_keep_counting_like_one_sensor():
     t = read_isomme(DATA / "R16_002")
     s = restamp_counters(concat([crash_test_schedule(t, CODEC, 1000.0)] * 2), CODEC)

@@ -63,11 +63,13 @@ def test_raw_port_filters_and_counts_kernel_drops():
         tx.shutdown()
 
 
-def _start_daemon(model_path: Path, record: Path, tmp: Path) -> subprocess.Popen:
+def _start_daemon(model_path: Path, record: Path, tmp: Path,
+                  fd: bool = False) -> subprocess.Popen:
     cfg = tmp / "observer.toml"
     cfg.write_text(f'[observer]\ninterface = "socketcan"\nchannel = "{CHANNEL}"\n'
                    f'model = "{model_path}"\nrecord = "{record}"\n'
-                   "accel_timeout_s = 2.0\nbrs_timeout_s = 5.0\nidle_after_s = 10.0\n")
+                   "accel_timeout_s = 2.0\nbrs_timeout_s = 5.0\nidle_after_s = 10.0\n"
+                   f"fd = {'true' if fd else 'false'}\n")
     p = subprocess.Popen([sys.executable, "-m", "observer_node", "run", "--config", str(cfg)],
                          cwd=ROOT, stderr=subprocess.PIPE, text=True)
     line = p.stderr.readline()
@@ -180,3 +182,36 @@ def test_can_fd_is_a_configuration():
     finally:
         rx.close()
         tx.close()
+
+
+def test_10_khz_as_can_fd_input_bursts(campaign, tmp_path):
+    """10 kHz ticks on CAN FD: crash-replay --fd --burst (eight samples per InputBurst frame)
+    -> vcan0 -> observer-node run with fd = true: every sample a tick, estimates equal to
+    the offline simulation at 10 kHz."""
+    from observer_node.data import bundled_campaign
+    from observer_node.ident import greybox
+
+    est = [t for t in campaign if t.name in ("R16_001", "R16_003", "R16_005")]
+    data = make_dataset(est, 1000.0)
+    model_path = greybox.to_model_file(greybox.fit_greybox(data), data,
+                                       tick_rate_hz=10_000.0).save(tmp_path / "m10k.json")
+    record = tmp_path / "run.mcap"
+    p = _start_daemon(model_path, record, tmp_path, fd=True)
+    try:
+        r = subprocess.run([sys.executable, "-m", "replay",
+                            str(bundled_campaign() / "R16_002.zip"), "--reference", "--fd",
+                            "--burst", "--tick-rate", "10000", "--interface", "socketcan",
+                            "--channel", CHANNEL, "--rate", str(SLOW), "--quiet"],
+                           cwd=ROOT, capture_output=True, text=True, timeout=600)
+        assert r.returncode == 0, r.stderr
+        time.sleep(1.0)
+    finally:
+        p.send_signal(signal.SIGTERM)
+        _, err = p.communicate(timeout=120)
+    assert p.returncode == 0, err
+    rec = read_recording(record)
+    frames = sum(1 for f in rec.frames if f["id"] == CODEC["InputBurst"].frame_id)
+    assert frames > 400 and "lost 0" in err and "rejected 0" in err
+    assert int((rec.ticks["tick"] >= 0).sum()) == 8 * frames
+    (event,) = analyze(rec)["events"]
+    assert max(event["max_abs_diff_offline"].values()) < 1e-9

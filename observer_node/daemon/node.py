@@ -117,7 +117,8 @@ class ObserverNode:
         c = self.codec
         acc, brs, est, ref = (c["TunnelAccel"], c["BeltSpindle"], c["ChestEstimate"],
                               c["ReferenceChest"])
-        self.input_ids = [acc.frame_id, brs.frame_id, ref.frame_id]
+        burst = c["InputBurst"]
+        self.input_ids = [acc.frame_id, burst.frame_id, brs.frame_id, ref.frame_id]
         self._port_factory = port_factory or (
             lambda ids: open_port(cfg.interface, cfg.channel, ids, cfg.fd, cfg.raw_socketcan))
         # Everything the hot path needs, resolved once.
@@ -125,6 +126,9 @@ class ObserverNode:
         self.acc_scale = acc.scale("TunnelAccelX")
         self.acc_lo, self.acc_hi = acc.raw_range("TunnelAccelX")
         self.brs_id, self.brs_len, self.brs_struct = brs.frame_id, brs.length, brs.struct
+        self.burst_id, self.burst_len, self.burst_struct = (burst.frame_id, burst.length,
+                                                            burst.struct)
+        self.burst_n = sum(1 for n in burst.signal_names if n.startswith("BurstAccelX"))
         self.ref_id, self.ref_len, self.ref_struct = ref.frame_id, ref.length, ref.struct
         self.ref_scale_cr = ref.scale("RefChestAccelCR")
         self.ref_scale_cd = ref.scale("RefChestDeflCD")
@@ -138,6 +142,7 @@ class ObserverNode:
         self.status_codec, self.counters_codec = c["ObserverStatus"], c["ObserverCounters"]
         self.period_s = 1.0 / model.tick_rate_hz
         self.accel_timeout_s = cfg.accel_timeout_s or 2 * self.period_s
+        self.burst_timeout_s = cfg.accel_timeout_s or 2 * self.burst_n * self.period_s
         self.model_id = model.model_id()
         self.recorder: Recorder | None = None
         self.port: Port | None = None
@@ -204,8 +209,8 @@ class ObserverNode:
         next_status = t_start
         next_watchdog = math.inf
         status_counter = 0
-        acc_id, brs_id, ref_id = self.acc_id, self.brs_id, self.ref_id
-        acc_counter = brs_counter = -1
+        acc_id, brs_id, ref_id, burst_id = self.acc_id, self.brs_id, self.ref_id, self.burst_id
+        acc_counter = brs_counter = burst_counter = -1
         self.ref_cr = self.ref_cd = math.nan
         stop = self.stop_event
         while not stop.is_set():
@@ -238,6 +243,10 @@ class ObserverNode:
                 elif cid == brs_id:
                     brs_counter = self._on_brs(data, brs_counter)
                     last_brs = t
+                elif cid == burst_id:
+                    burst_counter = self._on_burst(t, data, burst_counter)
+                    last_accel = last_brs = t
+                    next_watchdog = t + self.burst_timeout_s
                 elif cid == ref_id:
                     self._on_reference(data)
                 else:
@@ -309,6 +318,41 @@ class ObserverNode:
         cnt.kernel_dropped = self.port.dropped  # type: ignore[union-attr]
         return counter
 
+    def _on_burst(self, t: float, data: bytes, last_counter: int) -> int:
+        """An InputBurst frame: ``burst_n`` ticks, each with its own BRS count; one estimate
+        frame (the last tick's) goes out, every tick is recorded."""
+        cnt, core, n = self.counters, self.core, self.burst_n
+        if len(data) != self.burst_len:
+            cnt.rejected += 1
+            core.fault(OUT_OF_RANGE)
+            return last_counter
+        v = self.burst_struct.unpack_from(data)  # crc, b1, counts/rev, (accel, count) x n
+        counter = v[1] & 0xF
+        if v[0] != e2e_crc(self.burst_id, data) or counter == last_counter:
+            cnt.bad_e2e += 1
+            core.fault(BAD_E2E)
+            return last_counter
+        if last_counter >= 0:
+            gap = (counter - last_counter - 1) & 0xF
+            if gap:
+                cnt.lost += gap
+                core.bridge(gap * n)
+        if v[1] >> 4 & 0b101:
+            core.fault(SENSOR_FAULT)
+        per_rev = v[2] or self.cfg.core.counts_per_rev
+        lo, hi, scale = self.acc_lo, self.acc_hi, self.acc_scale
+        for j in range(n):
+            raw = v[3 + 2 * j]
+            if raw <= lo or raw >= hi:
+                core.fault(OUT_OF_RANGE)
+            core.set_brs(float(v[4 + 2 * j]), per_rev)
+            accel_g = raw * scale
+            core.tick(-accel_g)
+            cnt.ticks += 1
+            self._publish(t, accel_g, send=j == n - 1, frame_ticks=n)
+        cnt.kernel_dropped = self.port.dropped  # type: ignore[union-attr]
+        return counter
+
     def _on_brs(self, data: bytes, last_counter: int) -> int:
         cnt = self.counters
         if len(data) != self.brs_len:
@@ -336,9 +380,11 @@ class ObserverNode:
         self.ref_cr = cr * self.ref_scale_cr
         self.ref_cd = cd * self.ref_scale_cd
 
-    def _publish(self, t: float, accel_g: float = math.nan, watchdog: bool = False) -> None:
-        """Send the estimate frame for this tick and record the tick (watchdog publishes,
-        between ticks, are recorded with tick -1)."""
+    def _publish(self, t: float, accel_g: float = math.nan, watchdog: bool = False,
+                 send: bool = True, frame_ticks: int = 1) -> None:
+        """Send the estimate frame for this tick (unless ``send`` is false: a burst's earlier
+        ticks) and record the tick (watchdog publishes, between ticks, with tick -1). A frame
+        carrying ``frame_ticks`` samples overruns when it took longer than as many periods."""
         core = self.core
         cr, cd = core.cr_g, core.cd_mm
         running = core.state == RUNNING
@@ -356,14 +402,15 @@ class ObserverNode:
         self.est_struct.pack_into(buf, 0, 0, b1, cr_raw, cd_raw)
         buf[0] = e2e_crc(self.est_id, buf)
         data = bytes(buf)
-        if not self.port.send(self.est_id, data):  # type: ignore[union-attr]
+        rec = self.recorder
+        if send and not self.port.send(self.est_id, data):  # type: ignore[union-attr]
             self.counters.tx_dropped += 1
         done = time.perf_counter()
-        if done - t > self.period_s:
+        if send and done - t > self.period_s * frame_ticks:
             self.counters.overruns += 1
-        rec = self.recorder
         if rec is not None:
-            rec.put_frame(done, self.est_id, data, TX)
+            if send:
+                rec.put_frame(done, self.est_id, data, TX)
             rec.put_tick((t, -1 if watchdog else core.tick_index, accel_g, -accel_g,
                           core.bias_g, core.brs_count, core.brs_ref, core.rad_per_count, cr,
                           cd, valid, running, core.state, core.cause, core.event,
