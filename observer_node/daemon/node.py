@@ -2,9 +2,11 @@
 
 One thread, one loop: receive a frame (kernel-filtered to the input IDs), validate it (DLC,
 E2E CRC, alive counter, range), hand it to :class:`ObserverCore`, publish the estimate,
-record both frames and the tick to the shared-memory rings. Status frames go out every
-``status_period_s``. Receive timeouts drive the watchdog: with no accelerometer frame for two
-tick periods an invalid estimate is published each tick period (for up to ``idle_after_s``);
+record both frames and the tick to the shared-memory rings. An InputBurst frame (CAN FD,
+for 10 kHz) is eight such ticks with their own BRS counts and one estimate frame, the last
+tick's. Status frames go out every ``status_period_s``. Receive timeouts drive the
+watchdog: with no accelerometer frame for two tick periods (two burst periods for bursts) an
+invalid estimate is published each tick period (for up to ``idle_after_s``);
 with no BRS frame for ``brs_timeout_s`` the estimate is flagged invalid. Bus errors and a
 downed interface are counted and survived: the port is reopened until the bus is back.
 

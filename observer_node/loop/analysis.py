@@ -211,9 +211,10 @@ def candidates(model: NonlinearGreyBox, data: Dataset, present: set[str]) -> lis
             if kind == "airbag_contact":
                 start, best_ex = {"kab": unit["kab"], "gap": 0.1}, -np.inf
                 for gap in (0.04, 0.07, 0.1, 0.13, 0.16, 0.2, 0.25):
-                    coef, ex = regress([force_sig(kind, {"kab": unit["kab"], "gap": gap})])
+                    coef, ex = regress([force_sig(kind, {**unit, "gap": gap})])
                     if ex > best_ex:
-                        best_ex, start = ex, {"kab": abs(coef[0]) * unit["kab"], "gap": gap}
+                        best_ex, start = ex, {"kab": abs(coef[0]) * unit["kab"], "gap": gap,
+                                              "cab": abs(coef[0]) * unit["cab"]}
             else:
                 coef, _ = regress([force_sig(kind, unit)])
                 c = coef[0] if kind == "input_gain" else max(abs(coef[0]), 0.1)

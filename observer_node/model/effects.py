@@ -24,9 +24,10 @@ EFFECTS: dict[str, tuple[str, dict[str, tuple[str, float]]]] = {
                        "its negative part is removed", {}),
     "belt_stiffening": ("belt/flesh stiffness hardening: F = kb3 e^3 on the sternum "
                         "(e = w - s, belt penetration)", {"kb3": ("N/m^3", 1e8)}),
-    "airbag_contact": ("airbag: F = kab max(p - x - gap, 0) on the sternum once the occupant's "
-                       "forward excursion p - x exceeds gap", {"kab": ("N/m", 3e4),
-                                                             "gap": ("m", 0.1)}),
+    "airbag_contact": ("airbag: F = max(kab (p - x - gap) + cab (p' - x'), 0) on the sternum "
+                       "once the occupant's forward excursion p - x exceeds gap (the bag "
+                       "pushes, never pulls; cab: its venting)",
+                       {"kab": ("N/m", 3e4), "gap": ("m", 0.1), "cab": ("N s/m", 300.0)}),
     "pelvis_coupling": ("extra load path spine-vehicle (pelvis, lap belt, seat): "
                         "F = kp (p - x) + cp (p' - x') on the spine",
                         {"kp": ("N/m", 1e4), "cp": ("N s/m", 300.0)}),
@@ -41,7 +42,7 @@ EFFECTS: dict[str, tuple[str, dict[str, tuple[str, float]]]] = {
 }
 # Parameters that must be positive to mean what their name says (a hardening stiffness, a
 # damping, a contact, a gap); the others (offsets, gain change, "other") may take any sign.
-POSITIVE = frozenset({"k3", "c3", "kb3", "kab", "gap", "kp", "cp"})
+POSITIVE = frozenset({"k3", "c3", "kb3", "kab", "gap", "cab", "kp", "cp"})
 FORCE_KINDS = ("chest_stiffening", "chest_rate_damping", "belt_unloading", "belt_stiffening",
                "airbag_contact", "pelvis_coupling", "input_gain", "other")
 
@@ -78,7 +79,9 @@ def effect_forces(kind: str, p: dict, z, u1, u2, theta, base: dict):
     if kind == "belt_stiffening":
         return zero, p["kb3"] * e * e * e
     if kind == "airbag_contact":
-        return zero, p["kab"] * np.maximum(pos - x - p["gap"], 0.0)
+        ex = pos - x - p["gap"]
+        f = np.maximum(p["kab"] * ex + p.get("cab", 0.0) * (u1 - xd), 0.0)
+        return zero, f * (ex > 0.0)
     if kind == "pelvis_coupling":
         return p["kp"] * (pos - x) + p["cp"] * (u1 - xd), zero
     if kind == "input_gain":
