@@ -120,10 +120,12 @@ def compute_per_tick(model, codec: Codec, n: int = 20000) -> np.ndarray:
 
 
 def run_rate(model, codec: Codec, rate_hz: float, ticks: int, workdir: Path,
-             record: bool = True) -> dict:
+             record: bool = True, burst: bool = False) -> dict:
+    """With ``burst``: InputBurst frames of eight samples (CAN FD layout) every eight ticks;
+    the latency is per frame, and a late frame misses its eight ticks."""
     model.tick_rate_hz = rate_hz  # the same matrices, re-labelled: timing only
-    channel = f"bench{int(rate_hz)}"
-    path = workdir / f"bench{int(rate_hz)}.mcap"
+    channel = f"bench{int(rate_hz)}{'b' if burst else ''}"
+    path = workdir / f"{channel}.mcap"
     node = ObserverNode(NodeConfig(interface="virtual", channel=channel,
                                    record=str(path) if record else ""),
                         model, codec,
@@ -139,6 +141,13 @@ def run_rate(model, codec: Codec, rate_hz: float, ticks: int, workdir: Path,
     frames = [acc.encode({"TunnelAccelX": float(p)}, k) for k, p in enumerate(pulse)]
     brs_frames = [brs.encode({"BrsCount": k // 50, "BrsCountsPerRev": 96}, k)
                   for k in range(ticks)]
+    n_per = 8 if burst else 1
+    if burst:
+        ib = codec["InputBurst"]
+        frames = [ib.encode({"BurstCountsPerRev": 96,
+                             **{f"BurstAccelX{j}": float(pulse[f * 8 + j]) for j in range(8)},
+                             **{f"BurstBrsCount{j}": (f * 8 + j) // 50 for j in range(8)}}, f)
+                  for f in range(ticks // 8)]
     cpu = {}
 
     def daemon():
@@ -154,17 +163,24 @@ def run_rate(model, codec: Codec, rate_hz: float, ticks: int, workdir: Path,
     period = 1.0 / rate_hz
     sent_at = np.zeros(ticks)  # bus timestamp of each TunnelAccel frame (time.time())
     start = time.perf_counter() + 0.01
-    for k in range(ticks):
+    for f in range(len(frames)):
+        k = f * n_per + n_per - 1  # the frame's last tick
         # Sleep, never spin: a spinning sender would hold the GIL the daemon thread needs.
         # Its wake-up jitter does not enter the latency, which starts at the send.
         remaining = start + k * period - time.perf_counter()
         if remaining > 0:
             time.sleep(remaining)
+        if burst:
+            sent_at[k] = time.time()
+            tx.send(can.Message(arbitration_id=ib.frame_id, data=frames[f], is_fd=True,
+                                is_extended_id=False,
+                                timestamp=sent_at[k]))
+            continue
         if k % 10 == 0:
             tx.send(can.Message(arbitration_id=brs.frame_id, data=brs_frames[k],
                                 is_extended_id=False))
         sent_at[k] = time.time()
-        tx.send(can.Message(arbitration_id=acc.frame_id, data=frames[k], is_extended_id=False,
+        tx.send(can.Message(arbitration_id=acc.frame_id, data=frames[f], is_extended_id=False,
                             timestamp=sent_at[k]))
     wall = time.perf_counter() - start
     td.join()
@@ -185,7 +201,9 @@ def run_rate(model, codec: Codec, rate_hz: float, ticks: int, workdir: Path,
     proc = read_recording(path, frames=False).ticks["proc_us"] if record else np.full(1, np.nan)
     # Missed: no estimate for the frame, or the estimate reached the bus after the next
     # input frame was due (the daemon fell a tick behind).
-    missed = int(np.sum(~(lat < period * 1e6)))
+    last = lat[n_per - 1::n_per]  # per frame
+    missed = n_per * int(np.sum(~(last < n_per * period * 1e6)))
+    lat = last
     return {"rate": rate_hz, "ticks": c.ticks, "missed": missed,
             "overruns": c.overruns, "lat": lat, "proc": proc,
             "cpu_share": cpu.get("daemon_s", float("nan")) / wall}
@@ -196,6 +214,8 @@ def main() -> None:
                                  formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--ticks", type=int, default=10_000)
     ap.add_argument("--rates", type=float, nargs="+", default=[1000, 2000, 5000, 10000])
+    ap.add_argument("--burst-rates", type=float, nargs="*", default=[5000, 10000],
+                    help="tick rates to run again as InputBurst frames (8 samples each)")
     ap.add_argument("--no-record", action="store_true", help="run the daemon without MCAP")
     a = ap.parse_args()
     sys.setswitchinterval(1e-4)
@@ -218,23 +238,25 @@ def main() -> None:
     print(f"\nDaemon on python-can's virtual bus, {'not ' if a.no_record else ''}recording to "
           f"MCAP, {a.ticks} ticks per rate, "
           "grey-box model (5 states):")
-    print(f"  {'rate':>7} {'ticks':>6} {'missed':>6} {'e2e p50':>8} {'p99':>7} "
+    print(f"  {'rate':>9} {'ticks':>6} {'missed':>6} {'e2e p50':>8} {'p99':>7} "
           f"{'max':>7}   "
           f"{'tick p50':>8} {'p99':>6} {'max':>7}  {'CPU':>5}")
     workdir = Path(tempfile.mkdtemp())
-    for rate in a.rates:
-        r = run_rate(model, codec, rate, a.ticks, workdir, not a.no_record)
+    for rate, burst in [(r, False) for r in a.rates] + [(r, True) for r in a.burst_rates]:
+        r = run_rate(model, codec, rate, a.ticks, workdir, not a.no_record, burst)
         lat, proc = r["lat"][~np.isnan(r["lat"])], r["proc"]
         pp = [*np.percentile(proc, [50, 99]), proc.max()]
         p50, p99 = np.percentile(lat, [50, 99])
-        print(f"  {rate:>5.0f}Hz {r['ticks']:>6} {r['missed']:>6} "
+        label = f"{rate:.0f}Hz" + ("/8" if burst else "")
+        print(f"  {label:>9} {r['ticks']:>6} {r['missed']:>6} "
               f"{p50:>6.0f}us {p99:>5.0f}us "
               f"{lat.max():>5.0f}us   {pp[0]:>6.1f}us {pp[1]:>4.0f}us {pp[2]:>5.0f}us  "
               f"{100 * r['cpu_share']:>4.0f}%")
     print("\n  e2e: bus timestamp of a TunnelAccel frame -> bus timestamp of its ChestEstimate; "
           "missed: input frames with no estimate, or an estimate later than the next input; "
           "tick: daemon's frame receipt -> estimate sent (its own measurement, in the MCAP); "
-          "CPU: daemon thread CPU time / wall time.")
+          "CPU: daemon thread CPU time / wall time; /8: InputBurst frames of eight samples "
+          "(latency per frame; a frame later than eight periods misses its eight ticks).")
 
 
 if __name__ == "__main__":
