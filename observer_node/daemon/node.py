@@ -299,16 +299,11 @@ class ObserverNode:
             core.fault(OUT_OF_RANGE)
             return last_counter
         crc, b1, raw = self.acc_struct.unpack_from(data)
-        counter = b1 & 0xF
-        if crc != e2e_crc(self.acc_id, data) or counter == last_counter:
-            cnt.bad_e2e += 1
-            core.fault(BAD_E2E)
+        gap = self._admit(self.acc_id, data, crc, b1, last_counter)
+        if gap < 0:
             return last_counter
-        if last_counter >= 0:
-            gap = (counter - last_counter - 1) & 0xF
-            if gap:
-                cnt.lost += gap
-                core.bridge(gap)
+        if gap:
+            core.bridge(gap)
         if b1 >> 4 & 1:
             core.fault(SENSOR_FAULT)
         if raw <= self.acc_lo or raw >= self.acc_hi:
@@ -318,7 +313,7 @@ class ObserverNode:
         cnt.ticks += 1
         self._publish(t, accel_g)
         cnt.kernel_dropped = self.port.dropped  # type: ignore[union-attr]
-        return counter
+        return b1 & 0xF
 
     def _on_burst(self, t: float, data: bytes, last_counter: int) -> int:
         """An InputBurst frame: ``burst_n`` ticks, each with its own BRS count; one estimate
@@ -329,16 +324,11 @@ class ObserverNode:
             core.fault(OUT_OF_RANGE)
             return last_counter
         v = self.burst_struct.unpack_from(data)  # crc, b1, counts/rev, (accel, count) x n
-        counter = v[1] & 0xF
-        if v[0] != e2e_crc(self.burst_id, data) or counter == last_counter:
-            cnt.bad_e2e += 1
-            core.fault(BAD_E2E)
+        gap = self._admit(self.burst_id, data, v[0], v[1], last_counter)
+        if gap < 0:
             return last_counter
-        if last_counter >= 0:
-            gap = (counter - last_counter - 1) & 0xF
-            if gap:
-                cnt.lost += gap
-                core.bridge(gap * n)
+        if gap:
+            core.bridge(gap * n)
         if v[1] >> 4 & 0b101:
             core.fault(SENSOR_FAULT)
         per_rev = v[2] or self.cfg.core.counts_per_rev
@@ -353,7 +343,7 @@ class ObserverNode:
             cnt.ticks += 1
             self._publish(t, accel_g, send=j == n - 1, frame_ticks=n)
         cnt.kernel_dropped = self.port.dropped  # type: ignore[union-attr]
-        return counter
+        return v[1] & 0xF
 
     def _on_brs(self, data: bytes, last_counter: int) -> int:
         cnt = self.counters
@@ -362,17 +352,26 @@ class ObserverNode:
             self.core.fault(OUT_OF_RANGE)
             return last_counter
         crc, b1, count, per_rev = self.brs_struct.unpack_from(data)
-        counter = b1 & 0xF
-        if crc != e2e_crc(self.brs_id, data) or counter == last_counter:
-            cnt.bad_e2e += 1
-            self.core.fault(BAD_E2E)
+        if self._admit(self.brs_id, data, crc, b1, last_counter) < 0:
             return last_counter
-        if last_counter >= 0:
-            cnt.lost += (counter - last_counter - 1) & 0xF
         if b1 >> 4 & 1:
             self.core.fault(SENSOR_FAULT)
         self.core.set_brs(float(count), per_rev or self.cfg.core.counts_per_rev)
-        return counter
+        return b1 & 0xF
+
+    def _admit(self, frame_id: int, data: bytes, crc: int, b1: int, last_counter: int) -> int:
+        """E2E check of an unpacked input frame: how many frames were lost before it (alive
+        counter gap, counted), or -1 for a bad CRC or repeated counter (counted, flagged)."""
+        counter = b1 & 0xF
+        if crc != e2e_crc(frame_id, data) or counter == last_counter:
+            self.counters.bad_e2e += 1
+            self.core.fault(BAD_E2E)
+            return -1
+        if last_counter < 0:
+            return 0
+        gap = (counter - last_counter - 1) & 0xF
+        self.counters.lost += gap
+        return gap
 
     def _on_reference(self, data: bytes) -> None:
         if len(data) != self.ref_len or data[0] != e2e_crc(self.ref_id, data):

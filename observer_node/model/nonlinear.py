@@ -72,6 +72,7 @@ class NonlinearGreyBox:
         self.force_effects = [(e["kind"], e.get("parameters", {})) for e in self.effects
                               if e["kind"] in FORCE_KINDS and e["kind"] != "belt_unloading"]
         self.unloading = any(e["kind"] == "belt_unloading" for e in self.effects)
+        self._k2, self._c2, self._R = self.base["k2"], self.base["c2"], self.base["R"]
         slack = matrices({**self.base, "k2": 0.0, "c2": 0.0}, fs_hz)
         self.Ad_slack, self.Bd_slack, self.Gd_slack = slack[:3]
         delay = next((e["parameters"] for e in self.effects if e["kind"] == "input_delay"), {})
@@ -148,8 +149,7 @@ class NonlinearGreyBox:
 
     def belt_slack(self, z, u1, u2):
         """True where the belt would push (force k2 e + c2 e' < 0): float or array."""
-        b = self.base
-        return b["k2"] * (z[4] - z[3]) + b["c2"] * (u1 + b["R"] * u2 - z[2]) < 0.0
+        return self._k2 * (z[4] - z[3]) + self._c2 * (u1 + self._R * u2 - z[2]) < 0.0
 
     # ------------------------------------------------------------------ whole records
     def simulate(self, pulse_g: np.ndarray, brs_rad: np.ndarray) -> np.ndarray:
