@@ -64,7 +64,8 @@ def run_bench(out: Path, model_path: str | None = None, interface: str = "auto",
         node.stop_event.set()
         thread.join()
         raise RuntimeError("the daemon did not start")
-    print(f"bench: daemon listening on {interface}:{channel}, recording to {record}")
+    print(f"bench: daemon listening on {interface}:{channel}, recording to {record}; "
+          f"{node.cpu_latency}")
 
     crash = [read_isomme(bundled_campaign() / f"{name}.zip") for name in tests]
     sched = restamp_counters(concat([

@@ -299,6 +299,10 @@ def build_parser() -> argparse.ArgumentParser:
     s.add_argument("--fd", action="store_true", default=None, help="CAN FD bus")
     s.add_argument("--python-can-socketcan", action="store_true",
                    help="use python-can's socketcan backend instead of the raw socket port")
+    s.add_argument("--cpu-latency-us", type=int, metavar="US",
+                   help="hold every CPU's wake-up latency at most US microseconds while running "
+                   "(Linux PM QoS, needs root; default 0, as cyclictest does; -1: leave "
+                   "power management alone)")
     s.add_argument("--trigger-g", type=float, help="crash trigger threshold in g (default 3)")
     s.add_argument("--event-s", type=float, help="observer run time after trigger (0.2 s)")
     s.add_argument("--counts-per-rev", type=int,

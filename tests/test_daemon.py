@@ -260,3 +260,38 @@ def test_bench_main_job_on_the_virtual_bus(tmp_path, capsys):
     assert max(event["max_abs_diff_offline"].values()) < 1e-9
     assert (tmp_path / "run.mcap").exists() and (tmp_path / "event0.png").exists()
     assert "daemon ticks" in capsys.readouterr().out
+
+
+def test_cpu_latency_is_held_while_open_and_fails_soft(tmp_path):
+    from observer_node.daemon.realtime import hold_cpu_latency
+
+    dev = tmp_path / "cpu_dma_latency"
+    dev.write_bytes(b"")
+    f, said = hold_cpu_latency(0, str(dev))
+    assert f is not None and not f.closed and dev.read_bytes() == (0).to_bytes(4, sys.byteorder)
+    assert "held at 0 us" in said
+    f.close()
+    f, said = hold_cpu_latency(0, str(tmp_path / "missing"))
+    assert f is None and "missing" in said and "not held" in said
+    assert hold_cpu_latency(-1, str(dev))[0] is None
+
+
+def test_virtual_port_frames_are_not_aliased():
+    # The port hands its frames to python-can's virtual bus without the bus's defensive copy:
+    # each send must still arrive as its own frame with its own data and bus timestamp.
+    import can
+
+    port = PythonCanPort("virtual", "alias", [0x100])
+    listeners = [can.Bus(interface="virtual", channel="alias") for _ in range(2)]
+    try:
+        port.send(0x120, b"\x01\x02")
+        port.send(0x121, b"\x03")
+        for bus in listeners:
+            a, b = bus.recv(1), bus.recv(1)
+            assert (a.arbitration_id, bytes(a.data)) == (0x120, b"\x01\x02")
+            assert (b.arbitration_id, bytes(b.data)) == (0x121, b"\x03")
+            assert a is not b and a.is_rx and 0 < a.timestamp <= b.timestamp
+    finally:
+        port.close()
+        for bus in listeners:
+            bus.shutdown()

@@ -27,6 +27,7 @@ import time
 from collections.abc import Callable
 from dataclasses import asdict, dataclass, field, fields
 from pathlib import Path
+from typing import BinaryIO
 
 from dbc import DBC_PATH, Codec, e2e_crc
 
@@ -44,6 +45,7 @@ from .core import (
     ObserverCore,
 )
 from .ports import FLAG_ERROR, Port, PortError, open_port
+from .realtime import hold_cpu_latency
 from .recorder import TX, Recorder
 
 
@@ -60,6 +62,7 @@ class NodeConfig:
     brs_timeout_s: float = 0.03
     idle_after_s: float = 1.0
     reconnect_s: float = 0.5
+    cpu_latency_us: int = 0  # PM QoS while running; -1: leave power management alone
     core: CoreConfig = field(default_factory=CoreConfig)
 
     @classmethod
@@ -148,6 +151,8 @@ class ObserverNode:
         self.model_id = model.model_id()
         self.recorder: Recorder | None = None
         self.port: Port | None = None
+        self._pm_qos: BinaryIO | None = None
+        self.cpu_latency = ""  # what hold_cpu_latency said
 
     # ------------------------------------------------------------------ lifecycle
     def metadata(self) -> dict[str, str]:
@@ -155,10 +160,11 @@ class ObserverNode:
         return {"software_version": __version__, "model_name": self.model.name,
                 "model_kind": self.model.kind, "model_id": str(self.model_id),
                 "tick_rate_hz": str(self.model.tick_rate_hz), "dbc_sha256": self.codec.sha256(),
-                "config": json.dumps(cfg), "started_utc": time.strftime("%Y-%m-%dT%H:%M:%SZ",
-                                                                        time.gmtime())}
+                "config": json.dumps(cfg), "cpu_latency": self.cpu_latency,
+                "started_utc": time.strftime("%Y-%m-%dT%H:%M:%SZ", time.gmtime())}
 
     def open(self) -> None:
+        self._pm_qos, self.cpu_latency = hold_cpu_latency(self.cfg.cpu_latency_us)
         if self.cfg.record:
             atts = [("model.json", "application/json", self.model.dumps().encode()),
                     ("chest_observer.dbc", "text/plain", self.codec.path.read_bytes())]
@@ -175,6 +181,9 @@ class ObserverNode:
         if self.recorder is not None:
             self.recorder.close()
             self.recorder = None
+        if self._pm_qos is not None:
+            self._pm_qos.close()
+            self._pm_qos = None
 
     def install_signal_handlers(self) -> None:
         def stop(_signum, _frame):
@@ -449,8 +458,8 @@ def run_daemon(cfg: NodeConfig, quiet: bool = False) -> int:
         if not quiet:
             print(f"observer-node: {model.kind} model {model.name!r} (id {node.model_id:#06x}) "
                   f"at {model.tick_rate_hz:g} Hz listening on {cfg.interface}:{cfg.channel}"
-                  + (f", recording to {cfg.record}" if cfg.record else ""), file=sys.stderr,
-                  flush=True)
+                  + (f", recording to {cfg.record}" if cfg.record else "")
+                  + f"; {node.cpu_latency}", file=sys.stderr, flush=True)
 
     try:
         cnt = node.run(on_ready=ready)

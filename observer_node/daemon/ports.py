@@ -151,6 +151,18 @@ class PythonCanPort:
         if bus is not None:
             bus.set_filters(filters)
 
+        class _Sent(can.Message):
+            """A frame built for one send and never touched again: python-can's virtual bus
+            deep-copies every sent message for its receivers (5 us, more than the observer's
+            step); this one is handed over as it is. Other interfaces never copy."""
+
+            __slots__ = ()
+
+            def __deepcopy__(self, memo):
+                return self
+
+        self._message = _Sent
+
     def recv(self, timeout_s: float) -> tuple[float, int, bytes, int] | None:
         try:
             m = self.bus.recv(timeout_s)
@@ -162,8 +174,8 @@ class PythonCanPort:
         return time.perf_counter(), m.arbitration_id, bytes(m.data), flags
 
     def send(self, can_id: int, data: bytes) -> bool:
-        msg = self._can.Message(arbitration_id=can_id, data=data, is_extended_id=False,
-                                is_fd=self.fd, bitrate_switch=self.fd)
+        msg = self._message(arbitration_id=can_id, data=data, is_extended_id=False,
+                            is_fd=self.fd, bitrate_switch=self.fd)
         try:
             self.bus.send(msg)
             return True

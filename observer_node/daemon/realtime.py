@@ -1,0 +1,38 @@
+"""Keeping the CPUs awake for the tick loop.
+
+A tick starts with a wake-up: the daemon sleeps in ``recv`` until a frame arrives. When the
+CPU it wakes on has gone into a deep idle state (or, in a VM, halted its virtual CPU), that
+wake-up costs tens to hundreds of microseconds, more than the tick itself. Linux's PM QoS
+interface lets a process cap the idle-state exit latency while it holds
+``/dev/cpu_dma_latency`` open; real-time tools (cyclictest, EtherCAT masters) hold it at 0,
+which keeps idle CPUs polling. It costs power, nothing else, and ends with the process.
+"""
+
+from __future__ import annotations
+
+import os
+import struct
+from typing import BinaryIO
+
+PM_QOS_DEVICE = "/dev/cpu_dma_latency"
+
+
+def hold_cpu_latency(max_us: int, device: str = PM_QOS_DEVICE) -> tuple[BinaryIO | None, str]:
+    """Ask the kernel to keep every CPU's wake-up latency at or below ``max_us``
+    (microseconds) for as long as the returned file stays open. A negative ``max_us`` asks
+    nothing. Returns ``(file or None, a line saying what happened)``; it fails soft, as the
+    daemon works without it (only its wake-ups are slower): the device needs root."""
+    if max_us < 0:
+        return None, "CPU wake-up latency left to power management"
+    try:
+        # Write-only, never create: the device exists or PM QoS is not there.
+        f = os.fdopen(os.open(device, os.O_WRONLY), "wb", buffering=0)
+    except OSError as e:
+        return None, (f"CPU wake-up latency not held ({device}: {e.strerror}); ticks wait "
+                      "longer for idle CPUs to wake")
+    try:
+        f.write(struct.pack("=i", int(max_us)))
+    except OSError as e:
+        f.close()
+        return None, f"CPU wake-up latency not held ({device}: {e.strerror})"
+    return f, f"CPU wake-up latency held at {int(max_us)} us ({device})"
