@@ -1,25 +1,28 @@
 """Daemon benchmark: per-tick processing time, end-to-end latency, missed ticks and CPU share
-at several tick rates on python-can's virtual bus, and the per-frame cost of cantools' own
-encode/decode beside the codec precompiled from the DBC.
+at several tick rates on python-can's virtual bus, beside the same bus with a bare echo in
+place of the daemon, and the per-frame cost of cantools' own encode/decode beside the codec
+precompiled from the DBC.
 
 All in one process, as python-can's virtual bus requires: the main thread sends TunnelAccel
 (+ BeltSpindle every 10th tick) on an absolute schedule, the daemon thread processes them and
 sends ChestEstimate frames, which wait in the sender's bus queue until the run ends. End-to-end
 latency is bus time to bus time: the estimate frame's timestamp (stamped by the virtual bus
 when the daemon sends it) minus its input frame's, which is what a CAN logger on a real wire
-would report. It includes the hand-off from the sender thread to the daemon thread. A tick is
-missed when its input frame got no estimate, or the estimate reached the bus after the next
-input frame was due. The interpreter's thread switch interval is set to 100 us (default 5 ms)
-so that the two threads hand over the GIL quickly; the daemon itself runs single-threaded.
+would report. It includes the hand-off from the sender thread to the daemon thread, which the
+echo rows measure alone. A tick is missed when its input frame got no estimate, or the
+estimate reached the bus after the next input frame was due. The interpreter's thread switch
+interval is set to 100 us (default 5 ms) so that the two threads hand over the GIL quickly;
+the daemon itself runs single-threaded. The CPU wake-up latency is held at 0 us (PM QoS, as
+the daemon does by default; needs root) for the whole run, echo rows included.
 
     python benchmarks/daemon.py [--ticks 10000] [--rates 1000 2000 5000 10000]
+                                [--cpu-latency-us -1]   # as on a machine without root
 """
 
 from __future__ import annotations
 
 import argparse
 import contextlib
-import queue
 import sys
 import tempfile
 import threading
@@ -33,6 +36,7 @@ import numpy as np
 from dbc import Codec, e2e_crc
 from observer_node.daemon.node import NodeConfig, ObserverNode
 from observer_node.daemon.ports import PythonCanPort
+from observer_node.daemon.realtime import hold_cpu_latency
 from observer_node.data import bundled_campaign, read_isomme
 from observer_node.evaluation import identify
 from observer_node.ident.dataset import make_dataset
@@ -71,29 +75,71 @@ def _fine_timer_slack() -> None:
         ctypes.CDLL(None, use_errno=True).prctl(29, 1, 0, 0, 0)  # PR_SET_TIMERSLACK
 
 
-def handoff_floor(rate_hz: float, n: int = 5000) -> np.ndarray:
-    """One-way hand-off between two threads of this interpreter (queue.Queue, as the virtual
-    bus uses) at the tick rate, with nothing else to do: the floor under the e2e latency."""
-    q: queue.Queue = queue.Queue()
-    got = np.zeros(n)
-
-    def receiver():
-        for k in range(n):
-            q.get()
-            got[k] = time.perf_counter()
-
-    th = threading.Thread(target=receiver)
-    th.start()
-    sent = np.zeros(n)
-    start = time.perf_counter() + 0.01
+def wake_floor(n: int = 20_000, sleep_s: float = 200e-6) -> np.ndarray:
+    """How late a thread doing nothing else wakes from a short sleep, in us: the machine's
+    own scheduling floor (on a VM it includes the hypervisor's)."""
+    late = np.zeros(n)
     for k in range(n):
-        remaining = start + k / rate_hz - time.perf_counter()
+        t = time.perf_counter()
+        time.sleep(sleep_s)
+        late[k] = time.perf_counter() - t - sleep_s
+    return late * 1e6
+
+
+def bus_floor(rate_hz: float, ticks: int) -> dict:
+    """python-can's virtual bus alone, as the daemon rows use it: the rig thread sends a frame
+    per tick, a thread that does nothing else answers each with one frame. Latency and missed
+    ticks as for the daemon: the floor under the daemon's rows."""
+    channel = f"floor{int(rate_hz)}"
+    rig = can.Bus(interface="virtual", channel=channel,
+                  can_filters=[{"can_id": 0x120, "can_mask": 0x7FF}])
+    dut = can.Bus(interface="virtual", channel=channel,
+                  can_filters=[{"can_id": 0x100, "can_mask": 0x7FF}])
+    cpu = {}
+
+    def echo():
+        c0 = time.thread_time()
+        for _ in range(ticks):
+            m = dut.recv(0.5)
+            if m is None:
+                break
+            dut.send(can.Message(arbitration_id=0x120, data=m.data, is_extended_id=False))
+        cpu["s"] = time.thread_time() - c0
+
+    th = threading.Thread(target=echo)
+    th.start()
+    time.sleep(0.2)
+    period = 1.0 / rate_hz
+    sent_at = np.zeros(ticks)
+    start = time.perf_counter() + 0.01
+    for k in range(ticks):
+        remaining = start + k * period - time.perf_counter()
         if remaining > 0:
             time.sleep(remaining)
-        sent[k] = time.perf_counter()
-        q.put(k)
+        sent_at[k] = time.time()
+        rig.send(can.Message(arbitration_id=0x100, data=k.to_bytes(4, "little"),
+                             is_extended_id=False, timestamp=sent_at[k]))
+    wall = time.perf_counter() - start
     th.join()
-    return (got - sent) * 1e6
+    lat = np.full(ticks, np.nan)
+    while (m := rig.recv(0.05)) is not None:
+        k = int.from_bytes(m.data, "little")
+        lat[k] = (m.timestamp - sent_at[k]) * 1e6
+    rig.shutdown()
+    dut.shutdown()
+    return {"rate": rate_hz, "lat": lat, "missed": _missed(lat, period * 1e6),
+            "cpu_share": cpu.get("s", float("nan")) / wall}
+
+
+def _missed(lat_us: np.ndarray, deadline_us: float, per: int = 1) -> tuple[int, int, int]:
+    """Ticks with no answer or one later than ``deadline_us``: how many, in how many
+    stretches of consecutive frames, the longest stretch (in ticks)."""
+    late = ~(lat_us < deadline_us)
+    idx = np.flatnonzero(late)
+    if not len(idx):
+        return 0, 0, 0
+    runs = np.split(idx, np.flatnonzero(np.diff(idx) > 1) + 1)
+    return per * len(idx), len(runs), per * max(len(r) for r in runs)
 
 
 class _NullPort:
@@ -120,18 +166,19 @@ def compute_per_tick(model, codec: Codec, n: int = 20000) -> np.ndarray:
 
 
 def run_rate(model, codec: Codec, rate_hz: float, ticks: int, workdir: Path,
-             record: bool = True, burst: bool = False) -> dict:
+             record: bool = True, burst: bool = False, cpu_latency_us: int = 0) -> dict:
     """With ``burst``: InputBurst frames of eight samples (CAN FD layout) every eight ticks;
     the latency is per frame, and a late frame misses its eight ticks."""
     model.tick_rate_hz = rate_hz  # the same matrices, re-labelled: timing only
     channel = f"bench{int(rate_hz)}{'b' if burst else ''}"
     path = workdir / f"{channel}.mcap"
     node = ObserverNode(NodeConfig(interface="virtual", channel=channel,
-                                   record=str(path) if record else ""),
+                                   record=str(path) if record else "",
+                                   cpu_latency_us=cpu_latency_us),
                         model, codec,
                         port_factory=lambda ids: PythonCanPort("virtual", channel, ids))
     # One bus object sends the inputs and hears the estimates, as a test rig's single
-    # interface would (a second virtual bus would cost the daemon a deep copy per frame).
+    # interface would (every further bus on the channel is one more queue per send).
     tx = rx = can.Bus(interface="virtual", channel=channel, can_filters=[
         {"can_id": codec["ChestEstimate"].frame_id, "can_mask": 0x7FF}])
     acc, brs = codec["TunnelAccel"], codec["BeltSpindle"]
@@ -201,12 +248,20 @@ def run_rate(model, codec: Codec, rate_hz: float, ticks: int, workdir: Path,
     proc = read_recording(path, frames=False).ticks["proc_us"] if record else np.full(1, np.nan)
     # Missed: no estimate for the frame, or the estimate reached the bus after the next
     # input frame was due (the daemon fell a tick behind).
-    last = lat[n_per - 1::n_per]  # per frame
-    missed = n_per * int(np.sum(~(last < n_per * period * 1e6)))
-    lat = last
-    return {"rate": rate_hz, "ticks": c.ticks, "missed": missed,
-            "overruns": c.overruns, "lat": lat, "proc": proc,
+    lat = lat[n_per - 1::n_per]  # per frame
+    return {"rate": rate_hz, "ticks": c.ticks, "missed": _missed(lat, n_per * period * 1e6, n_per),
+            "overruns": c.overruns, "timeouts": c.accel_timeouts, "lat": lat, "proc": proc,
             "cpu_share": cpu.get("daemon_s", float("nan")) / wall}
+
+
+def _row(label: str, r: dict, proc: np.ndarray | None = None) -> str:
+    lat = r["lat"][~np.isnan(r["lat"])]
+    p50, p99 = np.percentile(lat, [50, 99])
+    n, runs, longest = r["missed"]
+    tick = "" if proc is None else (f"{np.percentile(proc, 50):>6.1f}us "
+                                    f"{np.percentile(proc, 99):>4.0f}us {proc.max():>5.0f}us")
+    return (f"  {label:>9} {n:>6} {runs:>4} {longest:>4}  {p50:>5.0f}us {p99:>5.0f}us "
+            f"{lat.max():>5.0f}us  {100 * r['cpu_share']:>4.0f}%   {tick}")
 
 
 def main() -> None:
@@ -217,8 +272,12 @@ def main() -> None:
     ap.add_argument("--burst-rates", type=float, nargs="*", default=[5000, 10000],
                     help="tick rates to run again as InputBurst frames (8 samples each)")
     ap.add_argument("--no-record", action="store_true", help="run the daemon without MCAP")
+    ap.add_argument("--cpu-latency-us", type=int, default=0,
+                    help="PM QoS CPU wake-up latency held during the whole benchmark, floor "
+                    "rows included, as the daemon holds it by default (-1: none)")
     a = ap.parse_args()
     sys.setswitchinterval(1e-4)
+    _qos, qos_said = hold_cpu_latency(a.cpu_latency_us)
     codec = Codec()
     tests = [read_isomme(bundled_campaign() / f"R16_00{i}.zip") for i in (1, 3, 5)]
     model = identify("greybox", make_dataset(tests, 1000.0))
@@ -230,33 +289,30 @@ def main() -> None:
     print(f"\nPer-tick compute (validate, step, encode, no bus), 20,000 ticks: p50 "
           f"{np.percentile(c, 50):.1f} us, p99 {np.percentile(c, 99):.1f} us, max {c.max():.0f} us")
     _fine_timer_slack()
-    print("\nThread hand-off alone (queue.Queue between two threads, 5,000 at the rate):")
+    w = wake_floor()
+    print(f"\nA thread sleeping 200 us, 20,000 times ({qos_said}): wakes late by p50 "
+          f"{np.percentile(w, 50):.0f} us, p99 {np.percentile(w, 99):.0f} us, max "
+          f"{w.max():.0f} us; {np.sum(w > 1000)} times over 1 ms (the machine's floor).")
+    print(f"\n{a.ticks} ticks per row; {qos_said}. missed: ticks with no estimate or one later "
+          "than the next input, in how many stretches, the longest.")
+    print(f"  {'rate':>9} {'missed':>6} {'str.':>4} {'long':>4}  {'e2e p50':>7} {'p99':>7} "
+          f"{'max':>7}  {'CPU':>5}   {'tick p50':>8} {'p99':>6} {'max':>7}")
+    print("  python-can virtual bus alone (a thread echoing each frame):")
     for rate in a.rates:
-        h = handoff_floor(rate)
-        print(f"  {rate:>5.0f}Hz  p50 {np.percentile(h, 50):.0f} us, "
-              f"p99 {np.percentile(h, 99):.0f} us, max {h.max():.0f} us")
-    print(f"\nDaemon on python-can's virtual bus, {'not ' if a.no_record else ''}recording to "
-          f"MCAP, {a.ticks} ticks per rate, "
-          "grey-box model (5 states):")
-    print(f"  {'rate':>9} {'ticks':>6} {'missed':>6} {'e2e p50':>8} {'p99':>7} "
-          f"{'max':>7}   "
-          f"{'tick p50':>8} {'p99':>6} {'max':>7}  {'CPU':>5}")
+        print(_row(f"{rate:.0f}Hz", bus_floor(rate, a.ticks)))
+    print(f"  observer daemon ({'not ' if a.no_record else ''}recording to MCAP), grey-box "
+          "model (5 states):")
     workdir = Path(tempfile.mkdtemp())
     for rate, burst in [(r, False) for r in a.rates] + [(r, True) for r in a.burst_rates]:
-        r = run_rate(model, codec, rate, a.ticks, workdir, not a.no_record, burst)
-        lat, proc = r["lat"][~np.isnan(r["lat"])], r["proc"]
-        pp = [*np.percentile(proc, [50, 99]), proc.max()]
-        p50, p99 = np.percentile(lat, [50, 99])
-        label = f"{rate:.0f}Hz" + ("/8" if burst else "")
-        print(f"  {label:>9} {r['ticks']:>6} {r['missed']:>6} "
-              f"{p50:>6.0f}us {p99:>5.0f}us "
-              f"{lat.max():>5.0f}us   {pp[0]:>6.1f}us {pp[1]:>4.0f}us {pp[2]:>5.0f}us  "
-              f"{100 * r['cpu_share']:>4.0f}%")
-    print("\n  e2e: bus timestamp of a TunnelAccel frame -> bus timestamp of its ChestEstimate; "
-          "missed: input frames with no estimate, or an estimate later than the next input; "
-          "tick: daemon's frame receipt -> estimate sent (its own measurement, in the MCAP); "
-          "CPU: daemon thread CPU time / wall time; /8: InputBurst frames of eight samples "
-          "(latency per frame; a frame later than eight periods misses its eight ticks).")
+        r = run_rate(model, codec, rate, a.ticks, workdir, not a.no_record, burst,
+                     a.cpu_latency_us)
+        print(_row(f"{rate:.0f}Hz" + ("/8" if burst else ""), r,
+                   None if a.no_record else r["proc"]))
+    print("\n  e2e: bus timestamp of a TunnelAccel frame -> bus timestamp of its ChestEstimate "
+          "(the echo's answer); tick: daemon's frame receipt -> estimate sent (its own "
+          "measurement, in the MCAP); CPU: the answering thread's CPU time / wall time; /8: "
+          "InputBurst frames of eight samples (latency per frame; a frame later than eight "
+          "periods misses its eight ticks).")
 
 
 if __name__ == "__main__":
