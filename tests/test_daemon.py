@@ -205,7 +205,7 @@ class _FlakyPort(PythonCanPort):
 
 def test_reconnects_when_the_bus_goes_away(model):
     acc = CODEC["TunnelAccel"]
-    with Harness(model, "flaky") as h:
+    with Harness(model, "flaky", reconnect_s=0.01) as h:
         h.node._port_factory = lambda ids: _FlakyPort("virtual", "flaky", ids)
         h.node._reconnect()
         for k in range(100):
@@ -213,6 +213,34 @@ def test_reconnects_when_the_bus_goes_away(model):
             time.sleep(0.001)
         time.sleep(0.05)
     assert h.node.counters.reconnects >= 2 and h.node.counters.ticks > 40
+
+
+class _DownOnSendPort(PythonCanPort):
+    """An interface that goes down while the daemon is sending (its estimate or status)."""
+
+    fail_sends = 3
+
+    def send(self, can_id, data):
+        if _DownOnSendPort.fail_sends > 0 and can_id == CODEC["ChestEstimate"].frame_id:
+            _DownOnSendPort.fail_sends -= 1
+            raise PortError(100, "vcan0: Network is down")
+        return super().send(can_id, data)
+
+
+def test_bus_gone_while_sending_reconnects_and_keeps_the_tick(model, tmp_path):
+    acc = CODEC["TunnelAccel"]
+    with Harness(model, "downsend", record=tmp_path / "run.mcap", reconnect_s=0.01) as h:
+        h.node._port_factory = lambda ids: _DownOnSendPort("virtual", "downsend", ids)
+        h.node._reconnect()
+        for k in range(60):
+            h.send(acc.frame_id, _accel(0.0, k))
+            time.sleep(0.002)
+        time.sleep(0.1)
+    c = h.node.counters
+    assert h.thread.is_alive() is False and c.reconnects >= 4 and c.tx_dropped >= 3
+    # Every tick the daemon stepped is in the recording, sent or not (frames sent while no
+    # port was open are gone: the virtual bus keeps nothing for absent receivers).
+    assert len(read_recording(tmp_path / "run.mcap").ticks["tick"]) == c.ticks > 20
 
 
 def _spawn_feeder(model_path: Path, record: Path, seconds: float) -> subprocess.Popen:

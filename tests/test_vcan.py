@@ -135,7 +135,10 @@ def test_daemon_survives_interface_down_and_up(model_path, tmp_path):
         p.send_signal(signal.SIGTERM)
         _, err = p.communicate(timeout=120)
     assert p.returncode == 0, err
-    assert "reconnects 0" not in err
+    # Noticed (by a receive or a send) and retried every reconnect_s (0.5 s), not spun:
+    # a socket bound to a downed interface opens fine and fails on first use.
+    reconnects = int(err.split("reconnects ")[1].split(",")[0])
+    assert 1 <= reconnects <= 20, err
     assert len(read_recording(record).ticks["tick"]) == 20
 
 

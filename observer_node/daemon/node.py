@@ -152,6 +152,7 @@ class ObserverNode:
         self.recorder: Recorder | None = None
         self.port: Port | None = None
         self._pm_qos: BinaryIO | None = None
+        self._last_reconnect = -math.inf
         self.cpu_latency = ""  # what hold_cpu_latency said
 
     # ------------------------------------------------------------------ lifecycle
@@ -231,60 +232,63 @@ class ObserverNode:
             if idle_exit_s is not None and last_any is not None and now - last_any > idle_exit_s:
                 break
             timeout = min(next_status, next_watchdog) - now
+            # A PortError anywhere (receive, or sending an estimate or status on an
+            # interface that went down) means the bus is gone: reconnect.
             try:
                 r = self.port.recv(min(max(timeout, 1e-4), 0.05))  # type: ignore[union-attr]
+                now = time.perf_counter()
+                if r is not None:
+                    t, cid, data, flags = r
+                    cnt.rx += 1
+                    last_any = t
+                    if rec_frame:
+                        rec_frame(t, cid, data, flags)
+                    if flags & FLAG_ERROR:
+                        cnt.error_frames += 1
+                        core.fault(BUS_ERROR)
+                    elif cid == acc_id:
+                        acc_counter = self._on_accel(t, data, acc_counter)
+                        last_accel = t
+                        next_watchdog = t + self.accel_timeout_s
+                    elif cid == brs_id:
+                        brs_counter = self._on_brs(data, brs_counter)
+                        last_brs = t
+                    elif cid == burst_id:
+                        burst_counter = self._on_burst(t, data, burst_counter)
+                        last_accel = last_brs = t
+                        next_watchdog = t + self.burst_timeout_s
+                    elif cid == ref_id:
+                        self._on_reference(data)
+                    else:
+                        cnt.unknown_id += 1
+                # Watchdog: accelerometer silent for two tick periods -> invalid estimate per tick
+                if now >= next_watchdog:
+                    if last_accel is not None and now - last_accel < self.cfg.idle_after_s:
+                        if not core.cause & ACCEL_TIMEOUT:
+                            cnt.accel_timeouts += 1  # outages, not ticks
+                        core.fault(ACCEL_TIMEOUT)
+                        self._publish(now, watchdog=True)
+                        next_watchdog = now + period
+                    else:
+                        next_watchdog = math.inf
+                if last_brs is not None and now - last_brs > self.cfg.brs_timeout_s and \
+                        last_accel is not None and now - last_accel < self.cfg.idle_after_s:
+                    if not core.cause & BRS_TIMEOUT:
+                        cnt.brs_timeouts += 1
+                    core.fault(BRS_TIMEOUT)
+                if now >= next_status:
+                    self._send_status(now, status_counter)
+                    status_counter += 1
+                    next_status += self.cfg.status_period_s
+                    if next_status < now:
+                        next_status = now + self.cfg.status_period_s
             except PortError:
                 core.fault(BUS_ERROR)
                 self._reconnect()
-                continue
-            now = time.perf_counter()
-            if r is not None:
-                t, cid, data, flags = r
-                cnt.rx += 1
-                last_any = t
-                if rec_frame:
-                    rec_frame(t, cid, data, flags)
-                if flags & FLAG_ERROR:
-                    cnt.error_frames += 1
-                    core.fault(BUS_ERROR)
-                elif cid == acc_id:
-                    acc_counter = self._on_accel(t, data, acc_counter)
-                    last_accel = t
-                    next_watchdog = t + self.accel_timeout_s
-                elif cid == brs_id:
-                    brs_counter = self._on_brs(data, brs_counter)
-                    last_brs = t
-                elif cid == burst_id:
-                    burst_counter = self._on_burst(t, data, burst_counter)
-                    last_accel = last_brs = t
-                    next_watchdog = t + self.burst_timeout_s
-                elif cid == ref_id:
-                    self._on_reference(data)
-                else:
-                    cnt.unknown_id += 1
-            # Watchdog: accelerometer silent for two tick periods -> invalid estimate per tick
-            if now >= next_watchdog:
-                if last_accel is not None and now - last_accel < self.cfg.idle_after_s:
-                    if not core.cause & ACCEL_TIMEOUT:
-                        cnt.accel_timeouts += 1  # outages, not ticks
-                    core.fault(ACCEL_TIMEOUT)
-                    self._publish(now, watchdog=True)
-                    next_watchdog = now + period
-                else:
-                    next_watchdog = math.inf
-            if last_brs is not None and now - last_brs > self.cfg.brs_timeout_s and \
-                    last_accel is not None and now - last_accel < self.cfg.idle_after_s:
-                if not core.cause & BRS_TIMEOUT:
-                    cnt.brs_timeouts += 1
-                core.fault(BRS_TIMEOUT)
-            if now >= next_status:
-                self._send_status(now, status_counter)
-                status_counter += 1
-                next_status += self.cfg.status_period_s
-                if next_status < now:
-                    next_status = now + self.cfg.status_period_s
 
     def _reconnect(self) -> None:
+        """Reopen the port. A socket bound to a downed interface opens fine and fails on
+        first use, so reopenings are spaced ``reconnect_s`` apart, not spun."""
         cnt = self.counters
         try:
             if self.port is not None:
@@ -292,6 +296,9 @@ class ObserverNode:
         except OSError:
             pass
         self.port = None
+        if time.monotonic() - self._last_reconnect < self.cfg.reconnect_s:
+            self.stop_event.wait(self.cfg.reconnect_s)
+        self._last_reconnect = time.monotonic()
         while not self.stop_event.is_set():
             cnt.reconnects += 1
             try:
@@ -413,8 +420,15 @@ class ObserverNode:
         buf[0] = e2e_crc(self.est_id, buf)
         data = bytes(buf)
         rec = self.recorder
-        if send and not self.port.send(self.est_id, data):  # type: ignore[union-attr]
-            self.counters.tx_dropped += 1
+        bus_gone = None
+        if send:
+            try:
+                if not self.port.send(self.est_id, data):  # type: ignore[union-attr]
+                    self.counters.tx_dropped += 1
+                    send = False
+            except PortError as e:  # the interface went down: record the tick, then reconnect
+                self.counters.tx_dropped += 1
+                send, bus_gone = False, e
         done = time.perf_counter()
         if send and done - t > self.period_s * frame_ticks:
             self.counters.overruns += 1
@@ -425,6 +439,8 @@ class ObserverNode:
                           core.bias_g, core.brs_count, core.brs_ref, core.rad_per_count, cr,
                           cd, valid, running, core.state, core.cause, core.event,
                           core.onset_tick, self.ref_cr, self.ref_cd, (done - t) * 1e6))
+        if bus_gone is not None:
+            raise bus_gone
 
     def _send_status(self, now: float, counter: int) -> None:
         cnt, core = self.counters, self.core
@@ -441,11 +457,12 @@ class ObserverNode:
             data = fc.encode(values, counter)
             try:
                 ok = self.port.send(fc.frame_id, data)  # type: ignore[union-attr]
-            except PortError:
-                ok = False
+            except PortError:  # the interface went down: the loop reconnects
+                cnt.tx_dropped += 1
+                raise
             if not ok:
                 cnt.tx_dropped += 1
-            if self.recorder is not None:
+            elif self.recorder is not None:
                 self.recorder.put_frame(now, fc.frame_id, data, TX)
 
 
