@@ -217,7 +217,10 @@ def test_10_khz_as_can_fd_input_bursts(campaign, tmp_path):
     assert p.returncode == 0, err
     rec = read_recording(record)
     frames = sum(1 for f in rec.frames if f["id"] == CODEC["InputBurst"].frame_id)
-    assert frames > 400 and "lost 0" in err and "rejected 0" in err
-    assert int((rec.ticks["tick"] >= 0).sum()) == 8 * frames
+    assert frames > 400 and "lost 0" in err and "rejected 0" in err, err
+    ticks = int((rec.ticks["tick"] >= 0).sum())
+    assert ticks == 8 * frames, (f"{ticks} ticks for {frames} bursts; salvaged "
+                                 f"{rec.salvaged}; {rec.metadata.get('chest-observer-recorder')}"
+                                 f"; {err}")
     (event,) = analyze(rec)["events"]
     assert max(event["max_abs_diff_offline"].values()) < 1e-9
