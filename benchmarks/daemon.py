@@ -75,6 +75,17 @@ def _fine_timer_slack() -> None:
         ctypes.CDLL(None, use_errno=True).prctl(29, 1, 0, 0, 0)  # PR_SET_TIMERSLACK
 
 
+def _paced(due_ticks: range, period_s: float, start: float):
+    """Yield each tick index at its due time ``start + k * period_s`` (perf_counter). Sleep,
+    never spin: a spinning sender would hold the GIL the thread under test needs; its
+    wake-up jitter does not enter the latency, which starts at the send."""
+    for k in due_ticks:
+        remaining = start + k * period_s - time.perf_counter()
+        if remaining > 0:
+            time.sleep(remaining)
+        yield k
+
+
 def wake_floor(n: int = 20_000, sleep_s: float = 200e-6) -> np.ndarray:
     """How late a thread doing nothing else wakes from a short sleep, in us: the machine's
     own scheduling floor (on a VM it includes the hypervisor's)."""
@@ -112,10 +123,7 @@ def bus_floor(rate_hz: float, ticks: int) -> dict:
     period = 1.0 / rate_hz
     sent_at = np.zeros(ticks)
     start = time.perf_counter() + 0.01
-    for k in range(ticks):
-        remaining = start + k * period - time.perf_counter()
-        if remaining > 0:
-            time.sleep(remaining)
+    for k in _paced(range(ticks), period, start):
         sent_at[k] = time.time()
         rig.send(can.Message(arbitration_id=0x100, data=k.to_bytes(4, "little"),
                              is_extended_id=False, timestamp=sent_at[k]))
@@ -210,13 +218,8 @@ def run_rate(model, codec: Codec, rate_hz: float, ticks: int, workdir: Path,
     period = 1.0 / rate_hz
     sent_at = np.zeros(ticks)  # bus timestamp of each TunnelAccel frame (time.time())
     start = time.perf_counter() + 0.01
-    for f in range(len(frames)):
-        k = f * n_per + n_per - 1  # the frame's last tick
-        # Sleep, never spin: a spinning sender would hold the GIL the daemon thread needs.
-        # Its wake-up jitter does not enter the latency, which starts at the send.
-        remaining = start + k * period - time.perf_counter()
-        if remaining > 0:
-            time.sleep(remaining)
+    for k in _paced(range(n_per - 1, len(frames) * n_per, n_per), period, start):
+        f = k // n_per  # k: the frame's last tick
         if burst:
             sent_at[k] = time.time()
             tx.send(can.Message(arbitration_id=ib.frame_id, data=frames[f], is_fd=True,

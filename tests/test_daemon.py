@@ -89,24 +89,33 @@ def test_core_validity_recovers_after_faults(model):
 
 # ------------------------------------------------------------------ daemon on a virtual bus
 
-def test_every_frame_handled_and_estimates_equal_offline(model, tmp_path):
-    sched = r16_schedule()
-    n_accel = int((sched.ids == CODEC["TunnelAccel"].frame_id).sum())
-    with Harness(model, "e2e", tmp_path / "run.mcap") as h:
+def _play_recorded(model, channel: str, sched, record: Path):
+    """Play ``sched`` into a recording daemon: its counters, the estimate frames heard on
+    the bus, and the recording read back."""
+    with Harness(model, channel, record) as h:
         h.play(sched)
         time.sleep(0.1)
         est = h.estimates()
-    c = h.node.counters
-    assert c.ticks == n_accel and c.lost == c.rejected == c.bad_e2e == 0
-    assert sum(1 for _, e in est if e["ChestEstimate_Running"]) > 150
-    rec = read_recording(tmp_path / "run.mcap")
-    assert not rec.salvaged and rec.model is not None
-    assert len(rec.ticks["tick"]) == n_accel
-    res = analyze(rec)
-    (event,) = res["events"]
+    return h.node.counters, est, read_recording(record)
+
+
+def _assert_matches_offline(rec) -> None:
+    """The recorded estimates are the offline simulation's, and fit the reference."""
+    (event,) = analyze(rec)["events"]
     assert event["max_abs_diff_offline"]["cr_g"] < 1e-9
     assert event["max_abs_diff_offline"]["cd_mm"] < 1e-9
     assert event["fit_vs_reference"]["total"] > 55
+
+
+def test_every_frame_handled_and_estimates_equal_offline(model, tmp_path):
+    sched = r16_schedule()
+    n_accel = int((sched.ids == CODEC["TunnelAccel"].frame_id).sum())
+    c, est, rec = _play_recorded(model, "e2e", sched, tmp_path / "run.mcap")
+    assert c.ticks == n_accel and c.lost == c.rejected == c.bad_e2e == 0
+    assert sum(1 for _, e in est if e["ChestEstimate_Running"]) > 150
+    assert not rec.salvaged and rec.model is not None
+    assert len(rec.ticks["tick"]) == n_accel
+    _assert_matches_offline(rec)
     # raw frames for exact replay, the model and DBC as attachments, metadata
     assert rec.topics["/can/frames"] >= len(sched)
     assert rec.metadata["chest-observer"]["dbc_sha256"] == CODEC.sha256()
@@ -121,22 +130,14 @@ def test_input_bursts_carry_10_khz_ticks(campaign, tmp_path):
     test = read_isomme(bundled_campaign() / "R16_002.zip")
     sched = crash_test_schedule(test, CODEC, 10_000.0, reference=True, pre_s=0.2, burst=True)
     n_frames = int((sched.ids == CODEC["InputBurst"].frame_id).sum())
-    with Harness(model, "burst", tmp_path / "run.mcap") as h:
-        h.play(sched)
-        time.sleep(0.1)
-        est_frames = h.estimates()
-    c = h.node.counters
+    c, est_frames, rec = _play_recorded(model, "burst", sched, tmp_path / "run.mcap")
     assert c.ticks == 8 * n_frames and c.lost == c.rejected == c.bad_e2e == 0
     # One estimate frame per burst; the watchdog's publishes between frames repeat the
     # last tick's counter (bursts alternate counters 7, 15), so count the runs.
     counters = [e["ChestEstimate_Counter"] for _, e in est_frames]
     assert 1 + sum(a != b for a, b in itertools.pairwise(counters)) == n_frames
-    rec = read_recording(tmp_path / "run.mcap")
     assert int((rec.ticks["tick"] >= 0).sum()) == 8 * n_frames  # every sample recorded
-    (event,) = analyze(rec)["events"]
-    assert event["max_abs_diff_offline"]["cr_g"] < 1e-9
-    assert event["max_abs_diff_offline"]["cd_mm"] < 1e-9
-    assert event["fit_vs_reference"]["total"] > 55
+    _assert_matches_offline(rec)
 
 
 def _accel(value_g: float, counter: int) -> bytes:
