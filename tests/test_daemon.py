@@ -14,16 +14,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from observer_node.daemon.core import (
-    ACCEL_TIMEOUT,
-    ARMED,
-    BAD_E2E,
-    HOLD,
-    LOST_FRAME,
-    RUNNING,
-    CoreConfig,
-    ObserverCore,
-)
+from observer_node.daemon.core import ACCEL_TIMEOUT
 from observer_node.daemon.ports import PortError, PythonCanPort
 from observer_node.data import bundled_campaign, read_isomme
 from observer_node.evaluation import identify
@@ -46,45 +37,6 @@ def model(campaign):
 @pytest.fixture(scope="module")
 def model_path(model, tmp_path_factory):
     return model.save(tmp_path_factory.mktemp("m") / "model.json")
-
-
-# ------------------------------------------------------------------ core (no bus)
-
-def test_core_arms_triggers_runs_and_rearms(model):
-    core = ObserverCore(model.observer(), CoreConfig(event_s=0.05, rearm_s=0.02))
-    rng = np.random.default_rng(0)
-    quiet = 0.4 + 0.05 * rng.normal(size=200)  # 0.4 g accelerometer bias
-    for v in quiet:
-        core.tick(v)
-    assert core.state == ARMED and core.bias_g == pytest.approx(0.4, abs=0.02)
-    ramp = 0.4 + np.linspace(0, 20, 10)
-    for v in ramp:
-        core.tick(v)
-    assert core.state == RUNNING and core.event == 0
-    # onset: the last quiet sample before the ramp crossed bias + 0.5 g
-    first_above = 200 + int(np.argmax(ramp - 0.4 >= 0.5))
-    assert core.onset_tick == first_above
-    for _ in range(60):
-        core.tick(20.4)
-    assert core.state == HOLD and core.cr_g == 0.0
-    for _ in range(30):
-        core.tick(0.4)
-    assert core.state == ARMED
-
-
-def test_core_validity_recovers_after_faults(model):
-    core = ObserverCore(model.observer(), CoreConfig(recover_ticks=3))
-    core.tick(0.0)
-    assert core.valid
-    core.fault(BAD_E2E)
-    assert not core.valid and core.cause & BAD_E2E
-    for _ in range(3):  # invalid for the next three ticks
-        core.tick(0.0)
-        assert not core.valid
-    core.tick(0.0)
-    assert core.valid and core.cause == 0 and core.faults & BAD_E2E
-    core.bridge(2)  # two lost samples are stepped with the held pulse
-    assert core.tick_index == 6 and core.faults & LOST_FRAME
 
 
 # ------------------------------------------------------------------ daemon on a virtual bus

@@ -1,21 +1,35 @@
 """The observer's per-tick logic, free of any I/O: arming, bias, trigger, stepping, validity.
 
+It is designed as a restraint ECU's crash detection is: the accelerometer's zero is learned
+whenever the pulse is quiet, so a zero shift left by one crash (a bent mount, a sensor that
+took a shock) cannot blind it to the next one.
+
 States (published in ObserverStatus.ObserverState):
 
-ARMED    the pulse is quiet; the accelerometer bias is the mean of the last ``bias_window_s``
-         of pulse; the last ``pretrigger_s`` of inputs are kept in a ring.
+ARMED    the bias is the mean of the last ``bias_window_s`` of pulse (samples at or above the
+         trigger level are left out); the last ``pretrigger_s`` of inputs are kept in a ring.
 RUNNING  from the trigger: bias-corrected deceleration >= ``trigger_g`` for ``trigger_ticks``
          ticks in a row. The observer starts from rest at the *onset* (the last tick before
          the trigger whose bias-corrected pulse was below ``onset_g``, at most
          ``pretrigger_s`` back), steps through the buffered ticks at once, then one step per
          tick, for ``event_s``. The BRS count at the onset is the angle reference.
-HOLD     after the event: outputs 0 until the pulse has been quiet (|pulse| < ``quiet_g``)
-         for ``rearm_s``; then ARMED again.
+HOLD     after the event: outputs 0. The pulse is *quiet* when its standard deviation over
+         the last ``bias_window_s`` is below ``quiet_g``: its spread, not its distance to the
+         old zero, because a crash may leave the sensor with a new zero. Once quiet, and at
+         least ``rearm_s`` after the event, the bias is re-learned from that window and the
+         observer is ARMED again. A pulse that is not quiet within ``hold_max_s`` is a sensor
+         fault (counted in ``hold_timeouts``); the observer re-arms on the window's mean and
+         stays flagged invalid until the pulse is quiet.
 
-Validity: any fault (input timeout, bad CRC/counter, lost frame, value out of range, sensor
-fault, bus error) marks the estimate invalid for the next ``recover_ticks`` ticks. Lost
-accelerometer frames (alive-counter gaps) are bridged by stepping with the held pulse so the
-observer keeps time.
+Validity: the estimate is valid only when the observer can see a crash or is stepping one:
+ARMED with a learned, plausible bias, or RUNNING. HOLD is invalid (``NOT_ARMED``). Any
+input fault (input timeout, bad CRC/counter, lost frame, value out of range, sensor fault,
+bus error) marks the estimate invalid for the next ``recover_ticks`` ticks. A bias beyond
+``bias_max_g`` is a sensor fault (``bias_faults`` counts the episodes). A BRS count that
+moves faster than ``brs_max_rate_rad_s`` (no belt can) is a sensor fault, not an input: the
+angle reference moves with it, so a counter reset between two tests is not a belt movement.
+Lost accelerometer frames (alive-counter gaps) are bridged by stepping with the held pulse
+so the observer keeps time.
 """
 
 from __future__ import annotations
@@ -27,11 +41,12 @@ import numpy as np
 
 from ..model.observer import LinearObserver
 
-ARMED, RUNNING, HOLD, FAULT = 1, 2, 3, 4
+ARMED, RUNNING, HOLD = 1, 2, 3
 
-# InvalidCause / ObserverFault bits (see the DBC)
-ACCEL_TIMEOUT, BRS_TIMEOUT, BAD_E2E, LOST_FRAME, OUT_OF_RANGE, BUS_ERROR, SENSOR_FAULT = (
-    1 << i for i in range(7))
+# InvalidCause / ObserverFault bits (see the DBC). NOT_ARMED is a cause, never latched.
+ACCEL_TIMEOUT, BRS_TIMEOUT, BAD_E2E, LOST_FRAME, OUT_OF_RANGE, BUS_ERROR, SENSOR_FAULT, \
+    NOT_ARMED = (1 << i for i in range(8))
+LATCHED_MASK = 0x7F
 
 
 @dataclass
@@ -42,8 +57,11 @@ class CoreConfig:
     pretrigger_s: float = 0.02
     bias_window_s: float = 0.1
     event_s: float = 0.2
-    quiet_g: float = 1.0
-    rearm_s: float = 0.1
+    quiet_g: float = 1.0  # standard deviation of the pulse over the bias window
+    rearm_s: float = 0.1  # shortest HOLD after an event
+    hold_max_s: float = 2.0
+    bias_max_g: float = 15.0  # beyond any zero a healthy sensor has, even after shocks
+    brs_max_rate_rad_s: float = 1000.0  # ~25 m/s of webbing on a 25 mm spool: none pulls so
     recover_ticks: int = 5
     max_bridge_ticks: int = 10
     counts_per_rev: int = 96
@@ -57,29 +75,37 @@ class ObserverCore:
         self.cfg = cfg or CoreConfig()
         fs = observer.fs_hz
         self.fs_hz = fs
-        self.n_bias = max(1, round(self.cfg.bias_window_s * fs))
+        self.n_bias = max(2, round(self.cfg.bias_window_s * fs))
         self.n_pre = max(2, round(self.cfg.pretrigger_s * fs) + self.cfg.trigger_ticks + 1)
         self.n_event = round(self.cfg.event_s * fs)
         self.n_rearm = round(self.cfg.rearm_s * fs)
+        self.n_hold_max = max(self.n_bias, self.n_rearm, round(self.cfg.hold_max_s * fs))
+        self._quiet_var = self.cfg.quiet_g ** 2
+        self._brs_max_step = self.cfg.brs_max_rate_rad_s / fs  # rad per tick
         # Preallocated rings: bias window and pre-trigger inputs.
         self._bias_ring = np.zeros(self.n_bias)
         self._pre_pulse = np.zeros(self.n_pre)  # raw deceleration, bias not removed
         self._pre_brs = np.zeros(self.n_pre)
         self.rad_per_count = 2 * math.pi / self.cfg.counts_per_rev
+        self.hold_timeouts = 0
+        self.bias_faults = 0
+        self.brs_jumps = 0
         self.reset()
 
     def reset(self) -> None:
         self.state = ARMED
         self.tick_index = -1
-        self._bias_sum = 0.0
-        self._bias_n = 0
-        self._bias_i = 0
+        self._clear_window()
         self.bias_g = 0.0
         self._pre_i = 0
         self._pre_n = 0
         self._above = 0
-        self._quiet = 0
+        self._hold = 0
+        self._unsettled = False
+        self._bias_bad = False
         self.brs_count = 0.0
+        self._brs_tick = -1
+        self._brs_seen = False
         self.brs_ref = 0.0
         self.event = -1
         self.events = 0
@@ -88,16 +114,27 @@ class ObserverCore:
         self.cr_g = 0.0
         self.cd_mm = 0.0
         self.invalid_until = 0
-        self.cause = 0  # causes active now (cleared when recovered)
+        self.cause = 0  # input-fault causes active now (cleared when recovered)
         self.faults = 0  # latched since start
         self._last_pulse = 0.0
         self.obs.reset()
 
     # ------------------------------------------------------------------ inputs
     def set_brs(self, count: float, counts_per_rev: int) -> None:
-        self.brs_count = count
+        """A BRS count. A step no belt can make (a counter reset, a decoder glitch) is a
+        sensor fault: the reference moves with it so the spindle angle stays continuous."""
         if counts_per_rev > 0:
             self.rad_per_count = 2 * math.pi / counts_per_rev
+        if self._brs_seen:
+            ticks = max(1, self.tick_index - self._brs_tick)
+            step = count - self.brs_count
+            if abs(step) * self.rad_per_count > self._brs_max_step * ticks:
+                self.brs_jumps += 1
+                self.brs_ref += step
+                self.fault(SENSOR_FAULT)
+        self._brs_seen = True
+        self._brs_tick = self.tick_index
+        self.brs_count = count
 
     def fault(self, cause: int) -> None:
         """An input fault: the estimate is invalid until ``recover_ticks`` good ticks."""
@@ -106,8 +143,23 @@ class ObserverCore:
         self.invalid_until = self.tick_index + 1 + self.cfg.recover_ticks
 
     @property
+    def armed(self) -> bool:
+        """The observer can see a crash now or is stepping one."""
+        if self.state == RUNNING:
+            return True
+        return self.state == ARMED and self._bias_n > 0 and not self._unsettled
+
+    @property
     def valid(self) -> bool:
-        return self.tick_index >= self.invalid_until
+        return self.tick_index >= self.invalid_until and self.armed
+
+    @property
+    def invalid_cause(self) -> int:
+        """InvalidCause bits now (0 when valid)."""
+        if self.valid:
+            return 0
+        return (self.cause if self.tick_index < self.invalid_until else 0) | \
+            (0 if self.armed else NOT_ARMED)
 
     # ------------------------------------------------------------------ per tick
     def bridge(self, missing: int) -> None:
@@ -132,16 +184,66 @@ class ObserverCore:
             self.run_ticks += 1
             if self.run_ticks >= self.n_event:
                 self.state = HOLD
-                self._quiet = 0
+                self._hold = 0
                 self.event = -1
-        else:  # HOLD
-            self.cr_g = self.cd_mm = 0.0
-            self._quiet = self._quiet + 1 if abs(decel_g - self.bias_g) < self.cfg.quiet_g else 0
-            if self._quiet >= self.n_rearm:
-                self.state = ARMED
-                self._bias_n = self._bias_i = 0
-                self._bias_sum = 0.0
-                self._pre_n = 0
+                self._clear_window()
+        else:
+            self._holding(decel_g)
+
+    def _clear_window(self) -> None:
+        self._bias_n = self._bias_i = 0
+        self._bias_sum = self._bias_sq = 0.0
+
+    def _push(self, decel_g: float) -> None:
+        """Add a sample to the bias window (running sum and sum of squares)."""
+        j = self._bias_i
+        if self._bias_n == self.n_bias:
+            old = self._bias_ring[j]
+            self._bias_sum -= old
+            self._bias_sq -= old * old
+        else:
+            self._bias_n += 1
+        self._bias_ring[j] = decel_g
+        self._bias_sum += decel_g
+        self._bias_sq += decel_g * decel_g
+        j += 1
+        if j == self.n_bias:
+            j = 0
+            # Once per window: recompute exactly, so rounding cannot accumulate over days.
+            self._bias_sum = float(self._bias_ring.sum())
+            self._bias_sq = float(self._bias_ring @ self._bias_ring)
+        self._bias_i = j
+
+    def _quiet(self) -> bool:
+        n = self._bias_n
+        if n < self.n_bias:
+            return False
+        mean = self._bias_sum / n
+        return self._bias_sq / n - mean * mean < self._quiet_var
+
+    def _learn_bias(self) -> None:
+        self.bias_g = self._bias_sum / self._bias_n
+        bad = abs(self.bias_g) > self.cfg.bias_max_g
+        if bad:
+            if not self._bias_bad:
+                self.bias_faults += 1
+            self.fault(SENSOR_FAULT)
+        self._bias_bad = bad
+
+    def _holding(self, decel_g: float) -> None:
+        self.cr_g = self.cd_mm = 0.0
+        self._hold += 1
+        self._push(decel_g)
+        quiet = self._quiet()
+        if (quiet and self._hold >= self.n_rearm) or self._hold >= self.n_hold_max:
+            if not quiet:  # never settled: re-arm all the same, a crash must not be missed
+                self.hold_timeouts += 1
+                self._unsettled = True
+                self.fault(SENSOR_FAULT)
+            self._learn_bias()
+            self.state = ARMED
+            self._pre_n = 0
+            self._above = 0
 
     def _step(self, decel_g: float) -> None:
         y = self.obs.step(decel_g - self.bias_g, (self.brs_count - self.brs_ref) *
@@ -158,24 +260,21 @@ class ObserverCore:
         self._pre_i = (i + 1) % self.n_pre
         if self._pre_n < self.n_pre:
             self._pre_n += 1
-        # Trigger on the bias of the quiet window *before* this sample
+        # Trigger on the bias of the window *before* this sample
         if self._bias_n and decel_g - self.bias_g >= self.cfg.trigger_g:
             self._above += 1
             if self._above >= self.cfg.trigger_ticks:
                 self._start()
-                return
-        else:
-            self._above = 0
-            # Bias: running mean over the quiet window (a crash does not enter it)
-            j = self._bias_i
-            if self._bias_n == self.n_bias:
-                self._bias_sum -= self._bias_ring[j]
+            return
+        self._above = 0
+        # Bias: running mean over the window (a crash does not enter it)
+        self._push(decel_g)
+        self._learn_bias()
+        if self._unsettled:
+            if self._quiet():
+                self._unsettled = False
             else:
-                self._bias_n += 1
-            self._bias_ring[j] = decel_g
-            self._bias_sum += decel_g
-            self._bias_i = (j + 1) % self.n_bias
-            self.bias_g = self._bias_sum / self._bias_n
+                self.fault(SENSOR_FAULT)
 
     def _start(self) -> None:
         """Trigger: find the onset in the pre-trigger ring, start from rest there, catch up."""

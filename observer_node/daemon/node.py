@@ -38,6 +38,7 @@ from .core import (
     BAD_E2E,
     BRS_TIMEOUT,
     BUS_ERROR,
+    LATCHED_MASK,
     OUT_OF_RANGE,
     RUNNING,
     SENSOR_FAULT,
@@ -46,7 +47,10 @@ from .core import (
 )
 from .ports import FLAG_ERROR, Port, PortError, open_port
 from .realtime import hold_cpu_latency
-from .recorder import TX, Recorder
+from .recorder import OFF, TX, Recorder, RecorderError
+
+RECORDING_LOST = 0x80  # ObserverFault bit 7 (see the DBC)
+EXIT_RECORDING_LOST = 3  # run's exit code when the recording is not the whole run
 
 
 @dataclass
@@ -106,8 +110,10 @@ class Counters:
     kernel_dropped: int = 0
 
 
-def _sat16(v: int) -> int:
-    return v if v < 0xFFFF else 0xFFFF
+def _wrap16(v: int) -> int:
+    """Counters on the bus are free-running and wrap modulo 65536 (the DBC says so): a
+    receiver takes differences modulo 65536 and never sees a counter stick."""
+    return v & 0xFFFF
 
 
 class ObserverNode:
@@ -145,6 +151,9 @@ class ObserverNode:
         self.est_lo, self.est_hi = est.raw_range("ChestAccelCR")
         self._est_buf = bytearray(est.length)
         self.status_codec, self.counters_codec = c["ObserverStatus"], c["ObserverCounters"]
+        self.health_codec = c["ObserverHealth"]
+        self.log: Callable[[str], None] = lambda line: print(
+            f"observer-node: {line}", file=sys.stderr, flush=True)
         self.period_s = 1.0 / model.tick_rate_hz
         self.accel_timeout_s = cfg.accel_timeout_s or 2 * self.period_s
         self.burst_timeout_s = cfg.accel_timeout_s or 2 * self.burst_n * self.period_s
@@ -165,14 +174,20 @@ class ObserverNode:
                 "started_utc": time.strftime("%Y-%m-%dT%H:%M:%SZ", time.gmtime())}
 
     def open(self) -> None:
-        self._pm_qos, self.cpu_latency = hold_cpu_latency(self.cfg.cpu_latency_us)
-        if self.cfg.record:
-            atts = [("model.json", "application/json", self.model.dumps().encode()),
-                    ("chest_observer.dbc", "text/plain", self.codec.path.read_bytes())]
-            self.recorder = Recorder(self.cfg.record, self.metadata(), atts, self.codec.path)
-            if not self.recorder.wait_ready():
-                raise PortError(5, f"{self.cfg.record}: the recorder process did not start")
-        self.port = self._port_factory(self.input_ids)
+        """PM QoS, the recorder (its file created, its header written) and the bus port. On
+        any failure what was opened is closed again (the caller sees the error)."""
+        try:
+            self._pm_qos, self.cpu_latency = hold_cpu_latency(self.cfg.cpu_latency_us)
+            if self.cfg.record:
+                atts = [("model.json", "application/json", self.model.dumps().encode()),
+                        ("chest_observer.dbc", "text/plain", self.codec.path.read_bytes())]
+                self.recorder = Recorder(self.cfg.record, self.metadata(), atts,
+                                         self.codec.path)
+                self.recorder.wait_ready()
+            self.port = self._port_factory(self.input_ids)
+        except BaseException:
+            self.close()
+            raise
 
     def close(self) -> None:
         if self.port is not None:
@@ -180,8 +195,7 @@ class ObserverNode:
                 self.port.close()
             self.port = None
         if self.recorder is not None:
-            self.recorder.close()
-            self.recorder = None
+            self.recorder.close()  # kept: its parts, errors and losses are the run's record
         if self._pm_qos is not None:
             self._pm_qos.close()
             self._pm_qos = None
@@ -204,13 +218,18 @@ class ObserverNode:
         gc.collect()
         gc.freeze()
         self.open()
-        if on_ready is not None:
-            on_ready()
         try:
+            if on_ready is not None:
+                on_ready()
             self._loop(max_seconds, idle_exit_s)
         finally:
             self.close()
         return self.counters
+
+    @property
+    def recording_lost(self) -> bool:
+        """The recording is not the whole run (a writer failed, or ticks were lost)."""
+        return self.recorder is not None and self.recorder.degraded
 
     def _loop(self, max_seconds: float | None, idle_exit_s: float | None) -> None:
         cnt, core = self.counters, self.core
@@ -277,6 +296,10 @@ class ObserverNode:
                         cnt.brs_timeouts += 1
                     core.fault(BRS_TIMEOUT)
                 if now >= next_status:
+                    if self.recorder is not None:
+                        said = self.recorder.poll()
+                        if said is not None:
+                            self.log(said)
                     self._send_status(now, status_counter)
                     status_counter += 1
                     next_status += self.cfg.status_period_s
@@ -443,15 +466,23 @@ class ObserverNode:
             raise bus_gone
 
     def _send_status(self, now: float, counter: int) -> None:
-        cnt, core = self.counters, self.core
+        cnt, core, rec = self.counters, self.core, self.recorder
+        lost = rec is not None and rec.degraded
         frames = (
             (self.status_codec, {"ObserverState": core.state, "ModelId": self.model_id,
-                                 "TickOverruns": _sat16(cnt.overruns),
-                                 "InvalidCause": core.cause if not core.valid else 0,
-                                 "ObserverFault": core.faults}),
-            (self.counters_codec, {"LostFrames": _sat16(cnt.lost + cnt.kernel_dropped),
-                                   "RejectedFrames": _sat16(cnt.rejected + cnt.unknown_id),
-                                   "BadE2EFrames": _sat16(cnt.bad_e2e)}),
+                                 "TickOverruns": _wrap16(cnt.overruns),
+                                 "InvalidCause": core.invalid_cause,
+                                 "ObserverFault": (core.faults & LATCHED_MASK)
+                                 | (RECORDING_LOST if lost else 0)}),
+            (self.counters_codec, {"LostFrames": _wrap16(cnt.lost + cnt.kernel_dropped),
+                                   "RejectedFrames": _wrap16(cnt.rejected + cnt.unknown_id),
+                                   "BadE2EFrames": _wrap16(cnt.bad_e2e)}),
+            (self.health_codec, {"RecorderState": OFF if rec is None else rec.state,
+                                 "ErrorFrames": _wrap16(cnt.error_frames),
+                                 "RecorderLostTicks": _wrap16(0 if rec is None
+                                                              else rec.lost_ticks),
+                                 "SensorFaults": _wrap16(core.hold_timeouts + core.bias_faults
+                                                         + core.brs_jumps)}),
         )
         for fc, values in frames:
             data = fc.encode(values, counter)
@@ -475,15 +506,21 @@ def run_daemon(cfg: NodeConfig, quiet: bool = False) -> int:
         if not quiet:
             print(f"observer-node: {model.kind} model {model.name!r} (id {node.model_id:#06x}) "
                   f"at {model.tick_rate_hz:g} Hz listening on {cfg.interface}:{cfg.channel}"
-                  + (f", recording to {cfg.record}" if cfg.record else "")
+                  + (f", recording to {node.recorder.path}" if node.recorder else "")
                   + f"; {node.cpu_latency}", file=sys.stderr, flush=True)
 
     try:
         cnt = node.run(on_ready=ready)
-    except PortError as e:
-        print(f"observer-node: error: {e}", file=sys.stderr)
+    except (PortError, RecorderError) as e:
+        print(f"observer-node: error: {e.strerror or e}", file=sys.stderr)
         return 2
     if not quiet:
         print("observer-node: stopped; " + ", ".join(f"{k} {v}" for k, v in asdict(cnt).items()),
               file=sys.stderr)
+    rec = node.recorder
+    if rec is not None and rec.degraded:
+        print(f"observer-node: error: the recording is not the whole run: parts "
+              f"{', '.join(map(str, rec.parts))}; {rec.lost_ticks} ticks and {rec.lost_frames} "
+              f"frames lost; " + "; ".join(rec.errors), file=sys.stderr)
+        return EXIT_RECORDING_LOST
     return 0

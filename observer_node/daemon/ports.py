@@ -64,7 +64,11 @@ class SocketCanPort:
         self.fd = fd
         self.dropped = 0
         self._timeout = -1.0
-        s = socket.socket(socket.AF_CAN, socket.SOCK_RAW, socket.CAN_RAW)
+        try:
+            s = socket.socket(socket.AF_CAN, socket.SOCK_RAW, socket.CAN_RAW)
+        except OSError as e:  # EAFNOSUPPORT: this kernel has no CAN (no can-raw module)
+            raise PortError(e.errno, f"{channel}: cannot open a CAN socket: {e.strerror} "
+                            "(does this kernel have SocketCAN? try: modprobe can_raw)") from None
         try:
             try:
                 s.setsockopt(socket.SOL_SOCKET, SO_RCVBUFFORCE, rcvbuf_bytes)

@@ -1,13 +1,26 @@
-"""Recording a run to MCAP without delaying a tick.
+"""Recording a run to MCAP without delaying a tick, and without losing it silently.
 
 The tick loop writes fixed-size rows into two rings in shared memory (raw CAN frames, and one
 row per tick); a separate *process* drains them into an MCAP file. A process, not a thread:
 a Python thread encoding JSON would hold the GIL for milliseconds at a time and delay ticks.
 
-The writer flushes a chunk at least every ``flush_s`` (50 ms), so a daemon killed outright
-loses at most ~100 ms of data and the file up to there is readable with a non-seeking reader
-(see :mod:`observer_node.recording`). If the daemon dies but the writer survives, the writer
-notices its parent is gone, drains what is in the rings and finishes the file properly.
+What the recorder promises (README, "Faults"):
+
+- **Nothing is overwritten.** The daemon creates the file itself, exclusively; if the name
+  is taken it writes ``NAME.1.mcap``, ``NAME.2.mcap``, ... Path errors (a parent that is a
+  file, no permission, a directory) are raised here, in the daemon, with their real cause.
+- **A kill loses little.** The writer flushes a chunk at least every ``flush_s`` (50 ms) and
+  drains the rings in bounded batches, so a file cut by ``SIGKILL`` ends at most ~100 ms
+  before the kill and reads with a non-seeking reader (:mod:`observer_node.recording`). If
+  only the daemon dies, the writer notices, drains the rings and finishes the file.
+- **Nothing leaks.** The rings are one anonymous ``memfd`` handed to the writer as a file
+  descriptor: no named segment in ``/dev/shm`` survives any kill.
+- **Writer trouble reaches the daemon.** The writer publishes what it has flushed and, when
+  it fails, the errno and message. :meth:`Recorder.poll` (called at the status period) sees a
+  dead writer, starts a new one on the next file part (``NAME.part2.mcap``, ...) from the
+  last flushed row, so the rings' seconds of buffer bridge the restart; after
+  ``max_parts`` or when no part can be created the recording has FAILED. Rows the rings no
+  longer hold are counted as lost.
 
 Topics (JSON messages, JSON schemas, so Foxglove can plot every field):
 
@@ -15,20 +28,23 @@ Topics (JSON messages, JSON schemas, so Foxglove can plot every field):
 ``/observer/inputs``     per tick: accelerometer (J211), deceleration, bias, BRS
 ``/observer/estimate``   per tick: CR, CD, valid, running, state, invalid cause
 ``/observer/reference``  per tick with reference frames: the dummy's measured CR, CD
-``/observer/status``     the ObserverStatus and ObserverCounters frames, decoded
+``/observer/status``     the ObserverStatus, ObserverCounters and ObserverHealth frames
 plus a ``chest-observer`` metadata record and the model file and DBC as attachments.
 """
 
 from __future__ import annotations
 
 import contextlib
+import errno as errno_mod
 import json
+import mmap
 import multiprocessing as mp
 import os
 import struct
 import time
-from multiprocessing import shared_memory
+from multiprocessing import reduction
 from pathlib import Path
+from typing import Any
 
 import numpy as np
 
@@ -37,43 +53,75 @@ TX = 4  # frame flag bit: sent by the daemon (bits 1, 2 are ports.FLAG_ERROR, FL
 TICK_COLS = ("t", "tick", "accel_x_g", "decel_g", "bias_g", "brs_count", "brs_ref",
              "rad_per_count", "cr_g", "cd_mm", "valid", "running", "state", "cause", "event",
              "onset_tick", "ref_cr_g", "ref_cd_mm", "proc_us")
-_CTRL = ("frames_head", "ticks_head", "stop", "done", "frames_lost", "ticks_lost", "ready")
-FRAMES_HEAD, TICKS_HEAD, STOP, DONE, FRAMES_LOST, TICKS_LOST, READY = range(len(_CTRL))
+_CTRL = ("frames_head", "ticks_head", "stop", "done", "frames_lost", "ticks_lost", "ready",
+         "frames_flushed", "ticks_flushed", "errno")
+FRAMES_HEAD, TICKS_HEAD, STOP, DONE, FRAMES_LOST, TICKS_LOST, READY, FRAMES_FLUSHED, \
+    TICKS_FLUSHED, ERRNO = range(len(_CTRL))
+_MSG_BYTES = 512  # the writer's last error, UTF-8
 _HEAD = struct.Struct("=q")
 _FRAME_ROW = struct.Struct(f"={len(FRAME_COLS)}d")
 _TICK_ROW = struct.Struct(f"={len(TICK_COLS)}d")
 
+# RecorderState in ObserverHealth (see the DBC)
+OFF, RECORDING, RESTARTED, FAILED = range(4)
+
+
+class RecorderError(OSError):
+    """The recording cannot be started; the message names the file and the cause."""
+
+
+class _Fd:
+    """An open file descriptor handed to the spawned writer: multiprocessing passes it to
+    the child as it does sockets and pipes (``reduction.DupFd``), same number, no name."""
+
+    def __init__(self, fd: int):
+        self.fd = fd
+
+    def __reduce__(self):
+        return _Fd._rebuild, (reduction.DupFd(self.fd),)
+
+    @staticmethod
+    def _rebuild(dup: Any) -> _Fd:
+        return _Fd(dup.detach())
+
 
 class Rings:
-    """Shared-memory rings: frames (meta + 64 data bytes) and ticks (float64 rows)."""
+    """Shared-memory rings in one memfd: control words, the writer's error message, frames
+    (meta + 64 data bytes) and ticks (float64 rows)."""
 
-    def __init__(self, capacity: int = 1 << 16, names: tuple[str, str, str] | None = None):
-        create = names is None
+    def __init__(self, capacity: int = 1 << 16, fd: int | None = None):
         self.capacity = capacity
-        sizes = (8 * len(_CTRL), capacity * (8 * len(FRAME_COLS) + 64),
-                 capacity * 8 * len(TICK_COLS))
-        self.shm = [shared_memory.SharedMemory(create=create, size=s if create else 0,
-                                               name=None if create else names[k])
-                    for k, s in enumerate(sizes)]
+        ctrl_b = 8 * len(_CTRL)
+        meta_b = capacity * 8 * len(FRAME_COLS)
+        data_b = capacity * 64
+        tick_b = capacity * 8 * len(TICK_COLS)
+        size = ctrl_b + _MSG_BYTES + meta_b + data_b + tick_b
+        create = fd is None
+        if fd is None:
+            fd = os.memfd_create("chest-observer-rings", os.MFD_CLOEXEC)
+            os.ftruncate(fd, size)
+        self.fd = fd
+        self.mm = mmap.mmap(fd, size)
         if create:
             # Touch every page now: a page first written during a run is a page fault in the
             # middle of a tick (tens of microseconds, milliseconds on a busy VM).
-            for seg in self.shm:
-                np.ndarray((seg.size,), np.uint8, buffer=seg.buf).fill(0)
-        self.ctrl = np.ndarray((len(_CTRL),), np.int64, buffer=self.shm[0].buf)
-        self.frame_meta = np.ndarray((capacity, len(FRAME_COLS)), np.float64,
-                                     buffer=self.shm[1].buf)
-        self.frame_data = self.shm[1].buf[capacity * 8 * len(FRAME_COLS):]
-        self.ticks = np.ndarray((capacity, len(TICK_COLS)), np.float64, buffer=self.shm[2].buf)
-        # The producer's side: raw buffers and its own copy of the heads (it is their only
-        # writer).
-        self._ctrl_buf, self._meta_buf, self._ticks_buf = (s.buf for s in self.shm)
+            np.ndarray((size,), np.uint8, buffer=self.mm).fill(0)
+        off = 0
+        self.ctrl = np.ndarray((len(_CTRL),), np.int64, buffer=self.mm, offset=off)
+        off += ctrl_b
+        self._msg_off = off
+        off += _MSG_BYTES
+        self._meta_off = off
+        self.frame_meta = np.ndarray((capacity, len(FRAME_COLS)), np.float64, buffer=self.mm,
+                                     offset=off)
+        off += meta_b
+        self._data_off = off
+        off += data_b
+        self._ticks_off = off
+        self.ticks = np.ndarray((capacity, len(TICK_COLS)), np.float64, buffer=self.mm,
+                                offset=off)
         self._frames_head = int(self.ctrl[FRAMES_HEAD])
         self._ticks_head = int(self.ctrl[TICKS_HEAD])
-
-    @property
-    def names(self) -> tuple[str, str, str]:
-        return tuple(s.name for s in self.shm)  # type: ignore[return-value]
 
     # Hot path: pack one row straight into shared memory, then publish the head (the writer
     # reads rows below it). struct, not numpy item assignment: a third of the time.
@@ -81,26 +129,39 @@ class Rings:
         head = self._frames_head
         i = head % self.capacity
         n = len(data)
-        _FRAME_ROW.pack_into(self._meta_buf, i * _FRAME_ROW.size, t, can_id, flags, n)
-        self.frame_data[i * 64:i * 64 + n] = data
+        mm = self.mm
+        _FRAME_ROW.pack_into(mm, self._meta_off + i * _FRAME_ROW.size, t, can_id, flags, n)
+        d = self._data_off + i * 64
+        mm[d:d + n] = data
         self._frames_head = head + 1
-        _HEAD.pack_into(self._ctrl_buf, 8 * FRAMES_HEAD, head + 1)
+        _HEAD.pack_into(mm, 8 * FRAMES_HEAD, head + 1)
 
     def put_tick(self, row: tuple) -> None:
         head = self._ticks_head
-        _TICK_ROW.pack_into(self._ticks_buf, (head % self.capacity) * _TICK_ROW.size, *row)
+        _TICK_ROW.pack_into(self.mm, self._ticks_off + (head % self.capacity) * _TICK_ROW.size,
+                            *row)
         self._ticks_head = head + 1
-        _HEAD.pack_into(self._ctrl_buf, 8 * TICKS_HEAD, head + 1)
+        _HEAD.pack_into(self.mm, 8 * TICKS_HEAD, head + 1)
 
-    def close(self, unlink: bool = False) -> None:
+    def frame_data(self, i: int, n: int) -> bytes:
+        d = self._data_off + i * 64
+        return self.mm[d:d + n]
+
+    def set_error(self, err: int, message: str) -> None:
+        raw = message.encode("utf-8", "replace")[:_MSG_BYTES - 1]
+        self.mm[self._msg_off:self._msg_off + _MSG_BYTES] = raw.ljust(_MSG_BYTES, b"\0")
+        self.ctrl[ERRNO] = err or errno_mod.EIO
+
+    def error(self) -> str:
+        raw = self.mm[self._msg_off:self._msg_off + _MSG_BYTES]
+        return raw.split(b"\0", 1)[0].decode("utf-8", "replace")
+
+    def close(self) -> None:
         self.ctrl = self.frame_meta = self.ticks = None  # type: ignore[assignment]
-        self._ctrl_buf = self._meta_buf = self._ticks_buf = None  # type: ignore[assignment]
-        self.frame_data.release()
-        for s in self.shm:
-            s.close()
-            if unlink:
-                with contextlib.suppress(FileNotFoundError):
-                    s.unlink()
+        with contextlib.suppress(BufferError):
+            self.mm.close()
+        with contextlib.suppress(OSError):
+            os.close(self.fd)
 
 
 def _schema(title: str, props: dict[str, str]) -> bytes:
@@ -126,29 +187,47 @@ _TOPICS = {
         "t": "number", "frame": "string"}),
 }
 
+_BATCH = 250  # rows per drain step: a writer that is behind still flushes every ~flush_s
 
-def writer_main(names: tuple[str, str, str], capacity: int, path: str, clock: tuple[int, float],
+
+def writer_main(rings_fd: _Fd, capacity: int, file_fd: _Fd, path: str, clock: tuple[int, float],
                 metadata: dict[str, str], attachments: list[tuple[str, str, bytes]],
-                dbc_path: str, flush_s: float = 0.05, ppid: int | None = None) -> None:
-    """The recorder process: drain the rings into ``path`` until told to stop."""
-    from mcap.writer import CompressionType, Writer
-
-    # The rings hold seconds of data: the writer takes only CPU time nobody else wants, and
-    # a waking daemon preempts it at once (SCHED_IDLE; nice 19 where that is refused).
+                dbc_path: str, flush_s: float = 0.05, ppid: int | None = None,
+                idle: bool = True) -> None:
+    """The recorder process: drain the rings into the open file ``file_fd`` until told to
+    stop. Any failure is written to the rings' error slot before the process ends."""
+    rings = Rings(capacity, rings_fd.fd)
+    f = None
     try:
-        os.sched_setscheduler(0, os.SCHED_IDLE, os.sched_param(0))
-    except (OSError, AttributeError):
-        with contextlib.suppress(OSError):
-            os.nice(19)
+        f = os.fdopen(file_fd.fd, "wb")
+        _write(rings, capacity, f, clock, metadata, attachments, dbc_path, flush_s, ppid, idle)
+    except BaseException as e:
+        err = e.errno if isinstance(e, OSError) and e.errno else errno_mod.EIO
+        why = e.strerror if isinstance(e, OSError) and e.strerror else f"{type(e).__name__}: {e}"
+        rings.set_error(err, f"{path}: {why}")
+        raise SystemExit(1) from None
+    finally:
+        if f is not None:
+            with contextlib.suppress(OSError):
+                f.close()
+        rings.ctrl[DONE] = 1
+        rings.close()
+
+
+def _write(rings: Rings, capacity: int, f: Any, clock: tuple[int, float],
+           metadata: dict[str, str], attachments: list[tuple[str, str, bytes]], dbc_path: str,
+           flush_s: float, ppid: int | None, idle: bool) -> None:
+    # Imports and set-up at normal priority: on a slow machine they take seconds, and the
+    # daemon waits for READY.
+    from mcap.writer import CompressionType, Writer
 
     from dbc import Codec
 
-    rings = Rings(capacity, names)
     codec = Codec(dbc_path)
-    status_ids = {codec["ObserverStatus"].frame_id: codec["ObserverStatus"],
-                  codec["ObserverCounters"].frame_id: codec["ObserverCounters"]}
+    status_ids = {fc.frame_id: fc for fc in (codec["ObserverStatus"],
+                                             codec["ObserverCounters"],
+                                             codec["ObserverHealth"])}
     wall0_ns, perf0 = clock
-    f = open(path, "wb")  # noqa: SIM115 - closed in finally
     w = Writer(f, chunk_size=64 * 1024, compression=CompressionType.ZSTD)
     w.start(profile="", library="chest-observer")
     chan = {}
@@ -159,7 +238,16 @@ def writer_main(names: tuple[str, str, str], capacity: int, path: str, clock: tu
     for name, media, data in attachments:
         w.add_attachment(wall0_ns, wall0_ns, name, media, data)
     w.flush()
-    rings.ctrl[READY] = 1
+    ctrl = rings.ctrl
+    ctrl[READY] = 1
+    if idle:
+        # The rings hold a minute of data: the writer takes CPU time nobody else wants, and
+        # a waking daemon preempts it at once (SCHED_IDLE; nice 19 where that is refused).
+        try:
+            os.sched_setscheduler(0, os.SCHED_IDLE, os.sched_param(0))
+        except (OSError, AttributeError):
+            with contextlib.suppress(OSError):
+                os.nice(19)
     seq = dict.fromkeys(chan, 0)
 
     def emit(topic: str, t: float, msg: dict) -> None:
@@ -168,109 +256,224 @@ def writer_main(names: tuple[str, str, str], capacity: int, path: str, clock: tu
                       seq[topic])
         seq[topic] += 1
 
-    tail_f = tail_t = 0
+    # A restarted writer goes on from what the last one flushed.
+    tail_f, tail_t = int(ctrl[FRAMES_FLUSHED]), int(ctrl[TICKS_FLUSHED])
     last_flush = time.monotonic()
+    while True:
+        stop = bool(ctrl[STOP])
+        head_f, head_t = int(ctrl[FRAMES_HEAD]), int(ctrl[TICKS_HEAD])
+        if head_f - tail_f > capacity:
+            ctrl[FRAMES_LOST] += head_f - tail_f - capacity
+            tail_f = head_f - capacity
+        if head_t - tail_t > capacity:
+            ctrl[TICKS_LOST] += head_t - tail_t - capacity
+            tail_t = head_t - capacity
+        head_f = min(head_f, tail_f + _BATCH)
+        head_t = min(head_t, tail_t + _BATCH)
+        wrote = head_f > tail_f or head_t > tail_t
+        for k in range(tail_f, head_f):
+            i = k % capacity
+            t, cid, flags, n = rings.frame_meta[i]
+            cid, flags, n = int(cid), int(flags), int(n)
+            data = rings.frame_data(i, n)
+            emit("/can/frames", t, {"t": t - perf0, "id": cid,
+                                    "dir": "tx" if flags & TX else "rx",
+                                    "error": bool(flags & 1), "fd": bool(flags & 2),
+                                    "dlc": n, "data": data.hex()})
+            fc = status_ids.get(cid)
+            if fc is not None and n == fc.length:
+                emit("/observer/status", t, {"t": t - perf0, "frame": fc.name,
+                                             **fc.decode(data)})
+        tail_f = head_f
+        for k in range(tail_t, head_t):
+            r = dict(zip(TICK_COLS, rings.ticks[k % capacity].tolist(), strict=True))
+            t = r["t"]
+            rel = t - perf0
+            tick = int(r["tick"])
+            emit("/observer/inputs", t, {
+                "tick": tick, "t": rel, "accel_x_g": r["accel_x_g"], "decel_g": r["decel_g"],
+                "bias_g": r["bias_g"], "brs_count": r["brs_count"], "brs_ref": r["brs_ref"],
+                "rad_per_count": r["rad_per_count"]})
+            emit("/observer/estimate", t, {
+                "tick": tick, "t": rel, "cr_g": r["cr_g"], "cd_mm": r["cd_mm"],
+                "valid": bool(r["valid"]), "running": bool(r["running"]),
+                "state": int(r["state"]), "cause": int(r["cause"]),
+                "event": int(r["event"]), "onset_tick": int(r["onset_tick"]),
+                "proc_us": r["proc_us"]})
+            if r["ref_cr_g"] == r["ref_cr_g"]:  # not NaN
+                emit("/observer/reference", t, {"tick": tick, "t": rel,
+                                                "cr_g": r["ref_cr_g"],
+                                                "cd_mm": r["ref_cd_mm"]})
+        tail_t = head_t
+        now = time.monotonic()
+        if wrote and now - last_flush >= flush_s:
+            w.flush()
+            ctrl[FRAMES_FLUSHED], ctrl[TICKS_FLUSHED] = tail_f, tail_t
+            last_flush = now
+        orphaned = ppid is not None and os.getppid() != ppid
+        if (stop or orphaned) and tail_f == int(ctrl[FRAMES_HEAD]) and \
+                tail_t == int(ctrl[TICKS_HEAD]):
+            break
+        if not wrote:
+            time.sleep(0.005)
+    w.add_metadata("chest-observer-recorder", {
+        "frames_lost": str(int(ctrl[FRAMES_LOST])),
+        "ticks_lost": str(int(ctrl[TICKS_LOST])),
+        "frames": str(seq["/can/frames"]), "ticks": str(seq["/observer/estimate"])})
+    w.finish()
+    f.flush()
+    ctrl[FRAMES_FLUSHED], ctrl[TICKS_FLUSHED] = tail_f, tail_t
+
+
+def create_exclusive(path: Path) -> tuple[Path, int]:
+    """Create ``path`` for writing, never over an existing file: a taken name becomes
+    ``NAME.1.mcap``, ``NAME.2.mcap``, ... Raises :class:`RecorderError` naming the cause."""
     try:
-        while True:
-            stop = bool(rings.ctrl[STOP])
-            head_f, head_t = int(rings.ctrl[FRAMES_HEAD]), int(rings.ctrl[TICKS_HEAD])
-            if head_f - tail_f > capacity:
-                rings.ctrl[FRAMES_LOST] += head_f - tail_f - capacity
-                tail_f = head_f - capacity
-            if head_t - tail_t > capacity:
-                rings.ctrl[TICKS_LOST] += head_t - tail_t - capacity
-                tail_t = head_t - capacity
-            wrote = head_f > tail_f or head_t > tail_t
-            for k in range(tail_f, head_f):
-                i = k % capacity
-                t, cid, flags, n = rings.frame_meta[i]
-                cid, flags, n = int(cid), int(flags), int(n)
-                data = bytes(rings.frame_data[i * 64:i * 64 + n])
-                emit("/can/frames", t, {"t": t - perf0, "id": cid,
-                                        "dir": "tx" if flags & TX else "rx",
-                                        "error": bool(flags & 1), "fd": bool(flags & 2),
-                                        "dlc": n, "data": data.hex()})
-                fc = status_ids.get(cid)
-                if fc is not None and n == fc.length:
-                    emit("/observer/status", t, {"t": t - perf0, "frame": fc.name,
-                                                 **fc.decode(data)})
-            tail_f = head_f
-            for k in range(tail_t, head_t):
-                r = dict(zip(TICK_COLS, rings.ticks[k % capacity].tolist(), strict=True))
-                t = r["t"]
-                rel = t - perf0
-                tick = int(r["tick"])
-                emit("/observer/inputs", t, {
-                    "tick": tick, "t": rel, "accel_x_g": r["accel_x_g"], "decel_g": r["decel_g"],
-                    "bias_g": r["bias_g"], "brs_count": r["brs_count"], "brs_ref": r["brs_ref"],
-                    "rad_per_count": r["rad_per_count"]})
-                emit("/observer/estimate", t, {
-                    "tick": tick, "t": rel, "cr_g": r["cr_g"], "cd_mm": r["cd_mm"],
-                    "valid": bool(r["valid"]), "running": bool(r["running"]),
-                    "state": int(r["state"]), "cause": int(r["cause"]),
-                    "event": int(r["event"]), "onset_tick": int(r["onset_tick"]),
-                    "proc_us": r["proc_us"]})
-                if r["ref_cr_g"] == r["ref_cr_g"]:  # not NaN
-                    emit("/observer/reference", t, {"tick": tick, "t": rel,
-                                                    "cr_g": r["ref_cr_g"],
-                                                    "cd_mm": r["ref_cd_mm"]})
-            tail_t = head_t
-            now = time.monotonic()
-            if wrote and now - last_flush >= flush_s:
-                w.flush()
-                last_flush = now
-            orphaned = ppid is not None and os.getppid() != ppid
-            if (stop or orphaned) and tail_f == int(rings.ctrl[FRAMES_HEAD]) and \
-                    tail_t == int(rings.ctrl[TICKS_HEAD]):
-                break
-            if not wrote:
-                time.sleep(0.005)
-        w.add_metadata("chest-observer-recorder", {
-            "frames_lost": str(int(rings.ctrl[FRAMES_LOST])),
-            "ticks_lost": str(int(rings.ctrl[TICKS_LOST])),
-            "frames": str(seq["/can/frames"]), "ticks": str(seq["/observer/estimate"])})
-        w.finish()
-    finally:
-        f.close()
-        rings.ctrl[DONE] = 1
-        rings.close()
+        path.parent.mkdir(parents=True, exist_ok=True)
+    except OSError as e:
+        raise RecorderError(e.errno, f"{path}: cannot create its folder {path.parent}: "
+                            f"{e.strerror or e}") from None
+    if path.is_dir():
+        raise RecorderError(errno_mod.EISDIR, f"{path}: is a directory (give a file name)")
+    flags = os.O_WRONLY | os.O_CREAT | os.O_EXCL | os.O_CLOEXEC
+    for k in range(10_000):
+        p = path if k == 0 else path.with_name(f"{path.stem}.{k}{path.suffix}")
+        try:
+            return p, os.open(p, flags, 0o644)
+        except FileExistsError:
+            continue
+        except OSError as e:
+            raise RecorderError(e.errno, f"{p}: {e.strerror}") from None
+    raise RecorderError(errno_mod.EEXIST, f"{path}: 10,000 numbered recordings exist already")
 
 
 class Recorder:
-    """Owns the rings and the writer process."""
+    """Owns the rings and the writer process, restarts it into a new part when it dies."""
 
     def __init__(self, path: str | Path, metadata: dict[str, str],
                  attachments: list[tuple[str, str, bytes]], dbc_path: str | Path,
-                 capacity: int = 1 << 16):
-        self.path = Path(path)
-        self.path.parent.mkdir(parents=True, exist_ok=True)
+                 capacity: int = 1 << 16, idle: bool = True, max_parts: int = 5,
+                 restart_after_s: float = 1.0):
+        self.path, fd = create_exclusive(Path(path))
+        self.parts = [self.path]
         self.rings = Rings(capacity)
         self.clock = (time.time_ns(), time.perf_counter())
+        self._args = (capacity, metadata, attachments, str(dbc_path), idle)
+        self.max_parts = max_parts
+        self.restart_after_s = restart_after_s
+        self.state = RECORDING
+        self.errors: list[str] = []
+        self._final: tuple[int, int] | None = None  # (frames, ticks) lost, once closed
+        self._started = 0.0
+        self.put_frame = self.rings.put_frame
+        self.put_tick = self.rings.put_tick
+        self._spawn(fd, self.path)
+
+    def _spawn(self, fd: int, path: Path) -> None:
+        capacity, metadata, attachments, dbc_path, idle = self._args
+        self.rings.ctrl[READY] = self.rings.ctrl[DONE] = self.rings.ctrl[ERRNO] = 0
         ctx = mp.get_context("spawn")
         self.proc = ctx.Process(
             target=writer_main, name="chest-observer-recorder", daemon=False,
-            args=(self.rings.names, capacity, str(self.path), self.clock, metadata,
-                  attachments, str(dbc_path), 0.05, os.getpid()))
-        self.proc.start()
-        self.put_frame = self.rings.put_frame
-        self.put_tick = self.rings.put_tick
+            args=(_Fd(self.rings.fd), capacity, _Fd(fd), str(path), self.clock, metadata,
+                  attachments, dbc_path, 0.05, os.getpid(), idle))
+        try:
+            self.proc.start()
+        finally:
+            os.close(fd)  # the child has its own copy
+        self._started = time.monotonic()
 
-    def wait_ready(self, timeout_s: float = 30.0) -> bool:
-        """Wait until the writer process has the file open (it buffers meanwhile anyway)."""
+    def wait_ready(self, timeout_s: float = 120.0) -> None:
+        """Wait until the writer has the file's header written, however slow the machine;
+        raise :class:`RecorderError` with the writer's own reason if it cannot."""
         deadline = time.monotonic() + timeout_s
-        while not self.rings.ctrl[READY] and self.proc.is_alive() and time.monotonic() < deadline:
+        ctrl = self.rings.ctrl
+        while not ctrl[READY]:
+            if not self.proc.is_alive():
+                self.proc.join()
+                raise RecorderError(int(ctrl[ERRNO]) or errno_mod.EIO, self.rings.error() or
+                                    f"{self.path}: the recorder process ended with exit code "
+                                    f"{self.proc.exitcode} before writing")
+            if time.monotonic() > deadline:
+                self._stop_writer()
+                raise RecorderError(errno_mod.ETIMEDOUT, f"{self.path}: the recorder process "
+                                    f"did not write the file's header within {timeout_s:g} s")
             time.sleep(0.01)
-        return bool(self.rings.ctrl[READY])
+
+    # ------------------------------------------------------------------ health
+    @property
+    def lost_ticks(self) -> int:
+        """Ticks that are in no part: overwritten in the rings before a writer drained them,
+        or never written after the recording FAILED."""
+        if self._final is not None:
+            return self._final[1]
+        ctrl = self.rings.ctrl
+        unwritten = int(ctrl[TICKS_HEAD] - ctrl[TICKS_FLUSHED]) if self.state == FAILED else 0
+        return int(ctrl[TICKS_LOST]) + unwritten
 
     @property
-    def lost(self) -> tuple[int, int]:
-        return int(self.rings.ctrl[FRAMES_LOST]), int(self.rings.ctrl[TICKS_LOST])
+    def lost_frames(self) -> int:
+        if self._final is not None:
+            return self._final[0]
+        ctrl = self.rings.ctrl
+        unwritten = int(ctrl[FRAMES_HEAD] - ctrl[FRAMES_FLUSHED]) if self.state == FAILED else 0
+        return int(ctrl[FRAMES_LOST]) + unwritten
 
-    def close(self, timeout_s: float = 30.0) -> None:
-        """Stop after everything written so far is in the file, and finish it."""
+    @property
+    def degraded(self) -> bool:
+        """The recording is not the whole run: a writer failed or rows were lost."""
+        return self.state != RECORDING or self.lost_ticks > 0 or self.lost_frames > 0
+
+    def poll(self) -> str | None:
+        """Check the writer (at the status period, off the per-frame path). A dead writer
+        is restarted on a new part; returns a line to log when something happened."""
+        if self.state == FAILED or self.proc.is_alive():
+            return None
+        if self.rings.ctrl[STOP]:
+            return None
+        ctrl = self.rings.ctrl
+        why = self.rings.error() or f"{self.parts[-1]}: the recorder process ended (exit code " \
+            f"{self.proc.exitcode})"
+        if not self.errors or self.errors[-1] != why:
+            self.errors.append(why)
+        if len(self.parts) >= self.max_parts:
+            return self._fail(why, f"{len(self.parts)} parts written")
+        if time.monotonic() - self._started < self.restart_after_s:
+            return None  # a writer that dies at once is not restarted in a spin
+        base = self.parts[0]
+        part = base.with_name(f"{base.stem}.part{len(self.parts) + 1}{base.suffix}")
+        try:
+            part, fd = create_exclusive(part)
+        except RecorderError as e:
+            return self._fail(why, str(e))
+        self.proc.join()
+        self.parts.append(part)
+        self.state = RESTARTED
+        ctrl[STOP] = 0
+        self._spawn(fd, part)
+        return f"recorder: {why}; recording goes on in {part}"
+
+    def _fail(self, why: str, detail: str) -> str:
+        self.proc.join()
+        self.state = FAILED
+        return f"recorder: {why}; recording stopped ({detail}), estimates go on unrecorded"
+
+    def _stop_writer(self, timeout_s: float = 30.0) -> None:
         self.rings.ctrl[STOP] = 1
         self.proc.join(timeout_s)
         if self.proc.is_alive():
             self.proc.terminate()
             self.proc.join(5)
-        self.rings.close(unlink=True)
+
+    def close(self, timeout_s: float = 30.0) -> None:
+        """Stop after everything written so far is in the file, and finish it."""
+        if self._final is not None:
+            return
+        self._stop_writer(timeout_s)
+        if self.proc.exitcode != 0 and self.state != FAILED:
+            self.errors.append(self.rings.error() or
+                               f"the recorder process ended (exit code {self.proc.exitcode})")
+            self.state = FAILED
+        # What no writer flushed is lost (a failed writer, or one killed on close).
+        self._final = (self.lost_frames, self.lost_ticks)
+        self.rings.close()
