@@ -11,7 +11,6 @@ import sys
 import time
 from pathlib import Path
 
-import numpy as np
 import pytest
 
 from observer_node.daemon.core import ACCEL_TIMEOUT

@@ -182,10 +182,12 @@ class ObserverNode:
                 atts = [("model.json", "application/json", self.model.dumps().encode()),
                         ("chest_observer.dbc", "text/plain", self.codec.path.read_bytes())]
                 self.recorder = Recorder(self.cfg.record, self.metadata(), atts,
-                                         self.codec.path)
+                                         self.codec.path, rows_per_s=self.model.tick_rate_hz)
                 self.recorder.wait_ready()
             self.port = self._port_factory(self.input_ids)
         except BaseException:
+            if self.recorder is not None:
+                self.recorder.close(discard=True)  # nothing was recorded: leave no file
             self.close()
             raise
 
@@ -195,7 +197,9 @@ class ObserverNode:
                 self.port.close()
             self.port = None
         if self.recorder is not None:
-            self.recorder.close()  # kept: its parts, errors and losses are the run's record
+            said = self.recorder.close()  # kept: its parts, errors and losses are the record
+            if said is not None:
+                self.log(said)
         if self._pm_qos is not None:
             self._pm_qos.close()
             self._pm_qos = None
@@ -234,6 +238,8 @@ class ObserverNode:
     def _loop(self, max_seconds: float | None, idle_exit_s: float | None) -> None:
         cnt, core = self.counters, self.core
         rec_frame = self.recorder.put_frame if self.recorder else None
+        keep_up = self.recorder.keep_up if self.recorder else None
+        next_keep_up = 0.0
         period = self.period_s
         t_start = time.perf_counter()
         last_accel = last_brs = last_any = None
@@ -295,6 +301,9 @@ class ObserverNode:
                     if not core.cause & BRS_TIMEOUT:
                         cnt.brs_timeouts += 1
                     core.fault(BRS_TIMEOUT)
+                if keep_up is not None and now >= next_keep_up:
+                    keep_up()  # the MCAP writer's priority: idle unless it lags
+                    next_keep_up = now + 0.01
                 if now >= next_status:
                     if self.recorder is not None:
                         said = self.recorder.poll()

@@ -9,10 +9,12 @@ What the recorder promises (README, "Faults"):
 - **Nothing is overwritten.** The daemon creates the file itself, exclusively; if the name
   is taken it writes ``NAME.1.mcap``, ``NAME.2.mcap``, ... Path errors (a parent that is a
   file, no permission, a directory) are raised here, in the daemon, with their real cause.
-- **A kill loses little.** The writer flushes a chunk at least every ``flush_s`` (50 ms) and
-  drains the rings in bounded batches, so a file cut by ``SIGKILL`` ends at most ~100 ms
-  before the kill and reads with a non-seeking reader (:mod:`observer_node.recording`). If
-  only the daemon dies, the writer notices, drains the rings and finishes the file.
+- **A kill loses little.** The writer flushes a chunk every ``FLUSH_S`` (30 ms) and drains
+  the rings in bounded batches; it runs at idle priority only while it keeps up
+  (:meth:`Recorder.keep_up`), so a file cut by ``SIGKILL`` ends at most ~100 ms before the
+  kill, even on a loaded machine, and reads with a non-seeking reader
+  (:mod:`observer_node.recording`). If only the daemon dies, the writer notices, drains the
+  rings and finishes the file.
 - **Nothing leaks.** The rings are one anonymous ``memfd`` handed to the writer as a file
   descriptor: no named segment in ``/dev/shm`` survives any kill.
 - **Writer trouble reaches the daemon.** The writer publishes what it has flushed and, when
@@ -193,14 +195,14 @@ _BATCH = 250  # rows per drain step: a writer that is behind still flushes every
 def writer_main(rings_fd: _Fd, capacity: int, file_fd: _Fd, path: str, clock: tuple[int, float],
                 metadata: dict[str, str], attachments: list[tuple[str, str, bytes]],
                 dbc_path: str, flush_s: float = 0.05, ppid: int | None = None,
-                idle: bool = True) -> None:
+                ) -> None:
     """The recorder process: drain the rings into the open file ``file_fd`` until told to
     stop. Any failure is written to the rings' error slot before the process ends."""
     rings = Rings(capacity, rings_fd.fd)
     f = None
     try:
         f = os.fdopen(file_fd.fd, "wb")
-        _write(rings, capacity, f, clock, metadata, attachments, dbc_path, flush_s, ppid, idle)
+        _write(rings, capacity, f, clock, metadata, attachments, dbc_path, flush_s, ppid)
     except BaseException as e:
         err = e.errno if isinstance(e, OSError) and e.errno else errno_mod.EIO
         why = e.strerror if isinstance(e, OSError) and e.strerror else f"{type(e).__name__}: {e}"
@@ -216,7 +218,7 @@ def writer_main(rings_fd: _Fd, capacity: int, file_fd: _Fd, path: str, clock: tu
 
 def _write(rings: Rings, capacity: int, f: Any, clock: tuple[int, float],
            metadata: dict[str, str], attachments: list[tuple[str, str, bytes]], dbc_path: str,
-           flush_s: float, ppid: int | None, idle: bool) -> None:
+           flush_s: float, ppid: int | None) -> None:
     # Imports and set-up at normal priority: on a slow machine they take seconds, and the
     # daemon waits for READY.
     from mcap.writer import CompressionType, Writer
@@ -239,15 +241,7 @@ def _write(rings: Rings, capacity: int, f: Any, clock: tuple[int, float],
         w.add_attachment(wall0_ns, wall0_ns, name, media, data)
     w.flush()
     ctrl = rings.ctrl
-    ctrl[READY] = 1
-    if idle:
-        # The rings hold a minute of data: the writer takes CPU time nobody else wants, and
-        # a waking daemon preempts it at once (SCHED_IDLE; nice 19 where that is refused).
-        try:
-            os.sched_setscheduler(0, os.SCHED_IDLE, os.sched_param(0))
-        except (OSError, AttributeError):
-            with contextlib.suppress(OSError):
-                os.nice(19)
+    ctrl[READY] = 1  # from here the daemon sets this process's priority (Recorder.keep_up)
     seq = dict.fromkeys(chan, 0)
 
     def emit(topic: str, t: float, msg: dict) -> None:
@@ -325,6 +319,25 @@ def _write(rings: Rings, capacity: int, f: Any, clock: tuple[int, float],
     ctrl[FRAMES_FLUSHED], ctrl[TICKS_FLUSHED] = tail_f, tail_t
 
 
+FLUSH_S = 0.03  # the writer flushes a chunk this often
+BOOST_LAG_S = 0.05  # flushed rows this far behind: normal priority
+CALM_LAG_S = 0.01  # caught up: idle priority again
+
+
+def may_raise_priority() -> bool:
+    """Whether this process may move another of its own from SCHED_IDLE back to
+    SCHED_OTHER at nice 0 (root, CAP_SYS_NICE, or RLIMIT_NICE >= 20)."""
+    import resource
+
+    if os.geteuid() == 0 or resource.getrlimit(resource.RLIMIT_NICE)[0] >= 20:
+        return True
+    with contextlib.suppress(OSError, ValueError):
+        for line in Path("/proc/self/status").read_text().splitlines():
+            if line.startswith("CapEff:"):
+                return bool(int(line.split()[1], 16) >> 23 & 1)  # CAP_SYS_NICE
+    return False
+
+
 def create_exclusive(path: Path) -> tuple[Path, int]:
     """Create ``path`` for writing, never over an existing file: a taken name becomes
     ``NAME.1.mcap``, ``NAME.2.mcap``, ... Raises :class:`RecorderError` naming the cause."""
@@ -352,13 +365,19 @@ class Recorder:
 
     def __init__(self, path: str | Path, metadata: dict[str, str],
                  attachments: list[tuple[str, str, bytes]], dbc_path: str | Path,
-                 capacity: int = 1 << 16, idle: bool = True, max_parts: int = 5,
+                 capacity: int = 1 << 16, rows_per_s: float = 1000.0, max_parts: int = 5,
                  restart_after_s: float = 1.0):
         self.path, fd = create_exclusive(Path(path))
         self.parts = [self.path]
         self.rings = Rings(capacity)
         self.clock = (time.time_ns(), time.perf_counter())
-        self._args = (capacity, metadata, attachments, str(dbc_path), idle)
+        self._args = (capacity, metadata, attachments, str(dbc_path))
+        # Writer priority (keep_up): idle while it keeps up, normal while it lags.
+        self.can_boost = may_raise_priority()
+        self._boost_rows = int(BOOST_LAG_S * rows_per_s)
+        self._calm_rows = int(CALM_LAG_S * rows_per_s)
+        self._idle = False
+        self.boosts = 0
         self.max_parts = max_parts
         self.restart_after_s = restart_after_s
         self.state = RECORDING
@@ -370,18 +389,19 @@ class Recorder:
         self._spawn(fd, self.path)
 
     def _spawn(self, fd: int, path: Path) -> None:
-        capacity, metadata, attachments, dbc_path, idle = self._args
+        capacity, metadata, attachments, dbc_path = self._args
         self.rings.ctrl[READY] = self.rings.ctrl[DONE] = self.rings.ctrl[ERRNO] = 0
         ctx = mp.get_context("spawn")
         self.proc = ctx.Process(
             target=writer_main, name="chest-observer-recorder", daemon=False,
             args=(_Fd(self.rings.fd), capacity, _Fd(fd), str(path), self.clock, metadata,
-                  attachments, dbc_path, 0.05, os.getpid(), idle))
+                  attachments, dbc_path, FLUSH_S, os.getpid()))
         try:
             self.proc.start()
         finally:
             os.close(fd)  # the child has its own copy
         self._started = time.monotonic()
+        self._idle = False
 
     def wait_ready(self, timeout_s: float = 120.0) -> None:
         """Wait until the writer has the file's header written, however slow the machine;
@@ -401,6 +421,29 @@ class Recorder:
             time.sleep(0.01)
 
     # ------------------------------------------------------------------ health
+    def keep_up(self) -> None:
+        """Called every few ms by the tick loop (two reads, a syscall only on a change).
+        The writer runs SCHED_IDLE while it keeps up, so a waking daemon preempts it at
+        once; when what it has flushed lags ``BOOST_LAG_S`` behind, it gets normal priority
+        until it has caught up, so a kill never loses more than ~100 ms. Raising it back
+        needs root, CAP_SYS_NICE or RLIMIT_NICE >= 20; without, it stays at normal
+        priority: a safe recording comes before the last microseconds of tick latency."""
+        if not self.can_boost or not self.rings.ctrl[READY]:
+            return
+        ctrl = self.rings.ctrl
+        lag = int(ctrl[TICKS_HEAD]) - int(ctrl[TICKS_FLUSHED])
+        policy = None
+        if self._idle and lag > self._boost_rows:
+            policy, self._idle = os.SCHED_OTHER, False
+            self.boosts += 1
+        elif not self._idle and lag < self._calm_rows:
+            policy, self._idle = os.SCHED_IDLE, True
+        if policy is not None:
+            try:
+                os.sched_setscheduler(self.proc.pid or 0, policy, os.sched_param(0))
+            except OSError:  # gone (poll sees it) or refused: leave it at normal priority
+                self.can_boost = self._idle = False
+
     @property
     def lost_ticks(self) -> int:
         """Ticks that are in no part: overwritten in the rings before a writer drained them,
@@ -438,6 +481,8 @@ class Recorder:
             self.errors.append(why)
         if len(self.parts) >= self.max_parts:
             return self._fail(why, f"{len(self.parts)} parts written")
+        if not ctrl[READY]:  # it could not even write a header: another would not either
+            return self._fail(why, f"{self.parts[-1]} could not be started")
         if time.monotonic() - self._started < self.restart_after_s:
             return None  # a writer that dies at once is not restarted in a spin
         base = self.parts[0]
@@ -465,15 +510,24 @@ class Recorder:
             self.proc.terminate()
             self.proc.join(5)
 
-    def close(self, timeout_s: float = 30.0) -> None:
-        """Stop after everything written so far is in the file, and finish it."""
+    def close(self, timeout_s: float = 30.0, discard: bool = False) -> str | None:
+        """Stop after everything written so far is in the file, and finish it. ``discard``:
+        the run never started (the bus did not open), remove the files. Returns a line to
+        log when the last writer failed."""
         if self._final is not None:
-            return
+            return None
         self._stop_writer(timeout_s)
+        if discard:
+            for p in self.parts:
+                with contextlib.suppress(OSError):
+                    p.unlink()
+        said = None
         if self.proc.exitcode != 0 and self.state != FAILED:
-            self.errors.append(self.rings.error() or
-                               f"the recorder process ended (exit code {self.proc.exitcode})")
-            self.state = FAILED
+            why = self.rings.error() or f"{self.parts[-1]}: the recorder process ended " \
+                f"(exit code {self.proc.exitcode})"
+            self.errors.append(why)
+            said = self._fail(why, "at the end of the run")
         # What no writer flushed is lost (a failed writer, or one killed on close).
         self._final = (self.lost_frames, self.lost_ticks)
         self.rings.close()
+        return said
