@@ -34,7 +34,8 @@ import can
 import numpy as np
 
 from dbc import Codec, e2e_crc
-from observer_node.daemon.node import NodeConfig, ObserverNode
+from observer_node.daemon.config import NodeConfig
+from observer_node.daemon.node import ObserverNode
 from observer_node.daemon.ports import PythonCanPort
 from observer_node.daemon.realtime import hold_cpu_latency
 from observer_node.data import bundled_campaign, read_isomme

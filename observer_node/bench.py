@@ -35,7 +35,8 @@ def run_bench(out: Path, model_path: str | None = None, interface: str = "auto",
     from replay.player import bus_sender, play
     from replay.schedule import concat, crash_test_schedule, restamp_counters
 
-    from .daemon.node import NodeConfig, ObserverNode
+    from .daemon.config import NodeConfig
+    from .daemon.node import ObserverNode
     from .daemon.ports import PythonCanPort
 
     out.mkdir(parents=True, exist_ok=True)

@@ -134,9 +134,14 @@ def cmd_simulate(a: argparse.Namespace) -> int:
 def cmd_run(a: argparse.Namespace) -> int:
     from dataclasses import fields
 
-    from .daemon.node import NodeConfig, run_daemon
+    from .daemon.config import ConfigError, NodeConfig
+    from .daemon.node import run_daemon
 
-    cfg = NodeConfig.from_toml(a.config) if a.config else NodeConfig()
+    try:
+        cfg = NodeConfig.from_toml(a.config) if a.config else NodeConfig()
+    except ConfigError as e:
+        print(f"observer-node: error: {e}", file=sys.stderr)
+        return 2
     for f in fields(NodeConfig):
         v = getattr(a, f.name, None)
         if v is not None and f.name != "core":
@@ -148,7 +153,14 @@ def cmd_run(a: argparse.Namespace) -> int:
         if v is not None:
             setattr(cfg.core, name, v)
     if not cfg.model:
-        raise SystemExit("observer-node run: --model (or model in the config file) is required")
+        print("observer-node: error: run needs --model (or model in the config file)",
+              file=sys.stderr)
+        return 2
+    try:
+        cfg.check("command line" if not a.config else f"{a.config} with the command line")
+    except ConfigError as e:
+        print(f"observer-node: error: {e}", file=sys.stderr)
+        return 2
     return run_daemon(cfg, quiet=a.quiet)
 
 

@@ -16,9 +16,11 @@ import numpy as np
 from .ident.metrics import fit_percent
 from .model.modelfile import ModelFile
 
+MCAP_MAGIC = b"\x89MCAP0\r\n"
+
 
 class RecordingError(ValueError):
-    pass
+    """A file that is not a readable recording; the message names it and why."""
 
 
 @dataclass
@@ -49,8 +51,14 @@ def read_recording(path: str | Path, frames: bool = True) -> Recording:
     from mcap.stream_reader import StreamReader
 
     path = Path(path)
-    if not path.exists():
-        raise RecordingError(f"{path}: no such file")
+    if not path.is_file():
+        raise RecordingError(f"{path}: no such file" if not path.exists() else
+                             f"{path}: not a file")
+    with path.open("rb") as f:
+        magic = f.read(len(MCAP_MAGIC))
+    if magic != MCAP_MAGIC:
+        what = "an empty file" if not magic else "no MCAP magic at its start"
+        raise RecordingError(f"{path}: not an MCAP recording ({what})")
     metadata: dict[str, dict[str, str]] = {}
     model = None
     inputs: dict[int, dict] = {}
@@ -91,6 +99,12 @@ def read_recording(path: str | Path, frames: bool = True) -> Recording:
             salvaged = True
             note = (f"recording ends early ({type(e).__name__}: {e}); read {n} messages up to "
                     "the last complete chunk")
+    if "chest-observer" not in metadata:
+        raise RecordingError(f"{path}: an MCAP file, but not a chest-observer recording (no "
+                             "'chest-observer' metadata record)")
+    if not est:
+        raise RecordingError(f"{path}: holds no ticks (the daemon heard no accelerometer "
+                             "frame before it stopped)" + (f"; {note}" if note else ""))
     if "chest-observer-recorder" not in metadata and not salvaged:
         salvaged, note = True, f"recording has no end record; read {sum(topics.values())} messages"
     ticks_idx = np.array(sorted(set(est) & set(inputs)), dtype=np.int64)

@@ -14,7 +14,8 @@ from pathlib import Path
 import can
 
 from dbc import Codec
-from observer_node.daemon.node import NodeConfig, ObserverNode
+from observer_node.daemon.config import NodeConfig
+from observer_node.daemon.node import ObserverNode
 from observer_node.daemon.ports import PythonCanPort
 from observer_node.data import bundled_campaign, read_isomme
 from observer_node.model import ModelFile

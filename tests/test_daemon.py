@@ -215,6 +215,7 @@ def test_sigterm_finishes_the_recording(model_path, tmp_path):
 
 def test_killed_daemon_loses_at_most_100_ms(model_path, tmp_path):
     rec_path = tmp_path / "run.mcap"
+    shm_before = set(os.listdir("/dev/shm"))
     p = _spawn_feeder(model_path, rec_path, 30)
     assert p.stdout.readline().strip() == "started"
     line = p.stdout.readline()
@@ -228,6 +229,7 @@ def test_killed_daemon_loses_at_most_100_ms(model_path, tmp_path):
     assert recorded >= ticks_done  # everything up to the last report, at least
     # ~1 tick per ms: what was sent in the last 0.3 s minus at most 100 ms
     assert recorded >= ticks_done + 300 * 0.5 - 100
+    assert set(os.listdir("/dev/shm")) <= shm_before  # the rings die with the processes
 
 
 def test_bench_main_job_on_the_virtual_bus(tmp_path, capsys):

@@ -93,7 +93,8 @@ def test_nan_value_is_rejected(r16_folder: Path):
     lines = p.read_text(encoding="iso-8859-1").splitlines(keepends=True)
     lines[-5] = "nan\r\n"
     p.write_text("".join(lines), encoding="iso-8859-1", newline="")
-    with pytest.raises(CrashDataError, match="not finite"):
+    # named by its line in the file, not its sample index
+    with pytest.raises(CrashDataError, match=rf"R16_001\.001:{len(lines) - 4}: value 'nan' is not a finite"):
         read_isomme(r16_folder)
 
 

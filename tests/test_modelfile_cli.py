@@ -47,7 +47,7 @@ def test_bad_model_files_are_named(tmp_path: Path):
         ModelFile.load(p)
     p.write_text(json.dumps({"format": "chest-observer-model", "format_version": 1,
                              "kind": "greybox", "tick_rate_hz": 1000}))
-    with pytest.raises(ModelFileError, match="missing key 'state_space'"):
+    with pytest.raises(ModelFileError, match="missing key 'input_transform'"):
         ModelFile.load(p)
 
 

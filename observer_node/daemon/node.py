@@ -25,14 +25,14 @@ import sys
 import threading
 import time
 from collections.abc import Callable
-from dataclasses import asdict, dataclass, field, fields
-from pathlib import Path
+from dataclasses import asdict, dataclass
 from typing import BinaryIO
 
 from dbc import DBC_PATH, Codec, e2e_crc
 
 from .. import __version__
 from ..model.modelfile import ModelFile
+from .config import NodeConfig
 from .core import (
     ACCEL_TIMEOUT,
     BAD_E2E,
@@ -42,7 +42,6 @@ from .core import (
     OUT_OF_RANGE,
     RUNNING,
     SENSOR_FAULT,
-    CoreConfig,
     ObserverCore,
 )
 from .ports import FLAG_ERROR, Port, PortError, open_port
@@ -51,46 +50,6 @@ from .recorder import OFF, TX, Recorder, RecorderError
 
 RECORDING_LOST = 0x80  # ObserverFault bit 7 (see the DBC)
 EXIT_RECORDING_LOST = 3  # run's exit code when the recording is not the whole run
-
-
-@dataclass
-class NodeConfig:
-    interface: str = "socketcan"
-    channel: str = "vcan0"
-    fd: bool = False
-    raw_socketcan: bool = True
-    model: str = ""
-    record: str = ""
-    status_period_s: float = 0.1
-    accel_timeout_s: float = 0.0  # 0: two tick periods
-    brs_timeout_s: float = 0.03
-    idle_after_s: float = 1.0
-    reconnect_s: float = 0.5
-    cpu_latency_us: int = 0  # PM QoS while running; -1: leave power management alone
-    core: CoreConfig = field(default_factory=CoreConfig)
-
-    @classmethod
-    def from_toml(cls, path: str | Path) -> NodeConfig:
-        """Keys of the ``[observer]`` table are NodeConfig fields; ``[observer.core]`` holds
-        CoreConfig fields. Unknown keys are an error naming the file and key."""
-        import tomllib
-
-        p = Path(path)
-        try:
-            d = tomllib.loads(p.read_text(encoding="utf-8"))
-        except tomllib.TOMLDecodeError as e:
-            raise ValueError(f"{p}: {e}") from None
-        obs = d.get("observer", {})
-        core = obs.pop("core", {})
-        known = {f.name for f in fields(cls)} - {"core"}
-        known_core = {f.name for f in fields(CoreConfig)}
-        for k in obs:
-            if k not in known:
-                raise ValueError(f"{p}: [observer] unknown key {k!r} (known: {sorted(known)})")
-        for k in core:
-            if k not in known_core:
-                raise ValueError(f"{p}: [observer.core] unknown key {k!r}")
-        return cls(**obs, core=CoreConfig(**core))
 
 
 @dataclass

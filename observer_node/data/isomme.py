@@ -17,8 +17,10 @@ Every error names the file, the line and the key at fault.
 from __future__ import annotations
 
 import io
+import math
 import re
 import zipfile
+import zlib
 from collections.abc import Iterable
 from dataclasses import dataclass
 from pathlib import Path, PurePosixPath
@@ -28,6 +30,11 @@ import numpy as np
 from .crashtest import STANDARD_GRAVITY, CrashDataError, CrashTest
 
 NOVALUE = "NOVALUE"
+# Bounds of what a crash-test file can be: anything beyond is a broken or hostile file.
+MAX_FILE_BYTES = 64 << 20  # one channel of 1 M samples at ~20 characters a line
+MAX_ABS_VALUE = 1e6  # g, m/s^2, mm, deg, counts: no channel of a crash test reaches it
+MIN_INTERVAL_S, MAX_INTERVAL_S = 1e-7, 1.0  # 10 MHz .. 1 Hz
+MAX_COUNTS_PER_REV = 100_000
 
 
 @dataclass(frozen=True)
@@ -61,9 +68,12 @@ class Channel:
         if v is None:
             raise CrashDataError(f"{self.where(key)}: missing (or NOVALUE)")
         try:
-            return float(v)
+            x = float(v)
         except ValueError:
             raise CrashDataError(f"{self.where(key)}: not a number: {v!r}") from None
+        if not math.isfinite(x):
+            raise CrashDataError(f"{self.where(key)}: not a finite number: {v!r}")
+        return x
 
 
 # ---------------------------------------------------------------------------------- text files
@@ -123,7 +133,26 @@ class _Source:
         return f"{self.path}!{name}" if self._zip else str(self.path / name)
 
     def read(self, name: str) -> list[str]:
-        raw = self._zip.read(name) if self._zip else (self.path / name).read_bytes()
+        """A text file's lines; sizes are checked before reading (a zip bomb is refused by
+        its declared size, a corrupt member by its CRC), each failure naming the file."""
+        label = self.label(name)
+        try:
+            if self._zip:
+                size = self._zip.getinfo(name).file_size
+                if size > MAX_FILE_BYTES:
+                    raise CrashDataError(f"{label}: {size / 2**20:.0f} MiB unpacked, more than "
+                                         f"any crash-test file ({MAX_FILE_BYTES >> 20} MiB)")
+                raw = self._zip.read(name)
+            else:
+                p = self.path / name
+                if p.stat().st_size > MAX_FILE_BYTES:
+                    raise CrashDataError(f"{label}: larger than any crash-test file "
+                                         f"({MAX_FILE_BYTES >> 20} MiB)")
+                raw = p.read_bytes()
+        except (zipfile.BadZipFile, zlib.error, EOFError, NotImplementedError) as e:
+            raise CrashDataError(f"{label}: corrupt zip member: {e}") from None
+        except OSError as e:
+            raise CrashDataError(f"{label}: cannot read: {e.strerror or e}") from None
         return decode_text(raw).splitlines()
 
     def find(self, suffix_pattern: str) -> list[str]:
@@ -151,16 +180,23 @@ def _read_channel(src: _Source, name: str) -> Channel:
         if not s:
             continue
         try:
-            values.append(float(s))
+            v = float(s)
         except ValueError:
             raise CrashDataError(f"{label}:{k}: non-numeric value {s!r}") from None
+        if not abs(v) <= MAX_ABS_VALUE:  # NaN too
+            raise CrashDataError(f"{label}:{k}: value {s!r} is not a finite number within "
+                                 f"+-{MAX_ABS_VALUE:g} (no crash channel reaches it)")
+        values.append(v)
     arr = np.asarray(values)
-    if not np.all(np.isfinite(arr)):
-        bad = int(np.flatnonzero(~np.isfinite(arr))[0])
-        raise CrashDataError(f"{label}: sample {bad}: value is not finite")
+    if not len(arr):
+        raise CrashDataError(f"{label}: no samples")
     declared = ch.get("Number of samples")
     if declared is not None:
-        n = int(ch.number("Number of samples"))
+        x = ch.number("Number of samples")
+        if not x.is_integer() or x < 1:
+            raise CrashDataError(f"{ch.where('Number of samples')}: {declared!r} is not a "
+                                 "positive whole number")
+        n = int(x)
         if n != len(arr):
             what = "truncated" if len(arr) < n else "longer than declared"
             raise CrashDataError(
@@ -175,7 +211,11 @@ def _counts_per_rev(texts: Iterable[str]) -> int | None:
     for text in texts:
         m = re.search(r"(\d+)\s*counts?\s*/\s*rev", text, re.IGNORECASE)
         if m:
-            return int(m.group(1))
+            n = int(m.group(1))
+            if not 1 <= n <= MAX_COUNTS_PER_REV:
+                raise CrashDataError(f"BRS resolution {m.group(0)!r} in {text!r}: counts/rev "
+                                     f"must be 1..{MAX_COUNTS_PER_REV}")
+            return n
     return None
 
 
@@ -250,6 +290,10 @@ def read_isomme(
         mme_name = mmes[0]
         mme_lines = src.read(mme_name)
         mme, _, _ = parse_header(mme_lines)
+        if not mme:
+            raise CrashDataError(f"{src.label(mme_name)}: no 'key :value' lines (empty .mme)")
+        if not src.find(r"\.chn$"):
+            raise CrashDataError(f"{src.path}: no channel list (<TEST>/Channel/<TEST>.chn)")
         chan_files = src.find(r"\.\d{3}$")
         if not chan_files:
             raise CrashDataError(f"{src.label(mme_name)}: no channel files (<TEST>.NNN)")
@@ -295,8 +339,12 @@ def read_isomme(
             raise CrashDataError(
                 f"{ch.path}: {len(ch.values)} samples, pulse channel has {len(pulse_ch.values)}"
             )
-    if dt <= 0:
-        raise CrashDataError(f"{pulse_ch.where('Sampling interval')}: must be positive")
+    if not MIN_INTERVAL_S <= dt <= MAX_INTERVAL_S:
+        raise CrashDataError(f"{pulse_ch.where('Sampling interval')}: {dt:g} s is not a crash "
+                             f"test's ({MIN_INTERVAL_S:g} to {MAX_INTERVAL_S:g} s)")
+    if counts_per_rev is not None and not 1 <= counts_per_rev <= MAX_COUNTS_PER_REV:
+        raise CrashDataError(f"--counts-per-rev {counts_per_rev}: must be "
+                             f"1..{MAX_COUNTS_PER_REV}")
 
     per_rev = counts_per_rev or _counts_per_rev(
         [mme.get("Comments", ""), brs_ch.get("Name of the channel") or "",

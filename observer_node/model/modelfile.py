@@ -27,6 +27,7 @@ from .. import __version__
 from .effects import EFFECTS
 from .nonlinear import NonlinearGreyBox
 from .observer import LinearObserver
+from .schema import MAX_BYTES, validate
 
 FORMAT = "chest-observer-model"
 FORMAT_VERSION = 1
@@ -101,12 +102,20 @@ class ModelFile:
         return path
 
     @classmethod
-    def from_dict(cls, d: dict[str, Any], where: str = "<model>") -> ModelFile:
+    def from_dict(cls, d: Any, where: str = "<model>") -> ModelFile:
+        """Build a model file from parsed JSON, refusing what a daemon must not run: a
+        document the schema (:mod:`.schema`) rejects, or an unstable model."""
+        if not isinstance(d, dict):
+            raise ModelFileError(f"{where}: not a model file (a JSON {type(d).__name__}, "
+                                 "expected an object)")
         if d.get("format") != FORMAT:
             raise ModelFileError(f"{where}: key 'format' must be {FORMAT!r}")
         if d.get("format_version") != FORMAT_VERSION:
             raise ModelFileError(f"{where}: key 'format_version' {d.get('format_version')!r} "
                                  f"is not supported (this software reads {FORMAT_VERSION})")
+        said = validate(d, where)
+        if said is not None:
+            raise ModelFileError(said)
         try:
             ss = d["state_space"]
             mf = cls(
@@ -135,18 +144,45 @@ class ModelFile:
             if not np.all(np.isfinite(m)):
                 raise ModelFileError(f"{where}: key 'state_space.{k}' has non-finite values")
         try:
-            mf.observer()
+            obs = mf.observer()
         except (ValueError, KeyError) as e:
-            raise ModelFileError(f"{where}: {e}") from None
+            key = "effects" if mf.effects else "state_space"
+            raise ModelFileError(f"{where}: key '{key}': {e}") from None
+        # Stable or marginally so (the grey-box's belt position integrates): a growing mode
+        # would saturate the estimate within a crash.
+        A = obs.Ad if isinstance(obs, NonlinearGreyBox) else obs.A
+        radius = float(np.max(np.abs(np.linalg.eigvals(A))))
+        if not radius <= 1.0 + 1e-9:
+            key = "parameters" if mf.effects else "state_space.A"
+            raise ModelFileError(f"{where}: key '{key}': the model is unstable (spectral radius "
+                                 f"{radius:.6g} > 1)")
         return mf
 
     @classmethod
     def load(cls, path: str | Path) -> ModelFile:
         path = Path(path)
         try:
-            d = json.loads(path.read_text(encoding="utf-8"))
-        except json.JSONDecodeError as e:
-            raise ModelFileError(f"{path}:{e.lineno}: not valid JSON: {e.msg}") from None
+            with path.open("rb") as f:
+                raw = f.read(MAX_BYTES + 1)
         except OSError as e:
             raise ModelFileError(f"{path}: cannot read: {e.strerror}") from None
+        if len(raw) > MAX_BYTES:
+            raise ModelFileError(f"{path}: larger than {MAX_BYTES >> 20} MiB: not a model file")
+        try:
+            text = raw.decode("utf-8-sig")
+        except UnicodeDecodeError as e:
+            line = raw[:e.start].count(b"\n") + 1
+            raise ModelFileError(f"{path}:{line}: not UTF-8 text (byte {e.start})") from None
+
+        def no_constant(name: str) -> None:
+            raise ValueError(f"{name} is not a number a model may hold")
+
+        try:
+            d = json.loads(text, parse_constant=no_constant)
+        except json.JSONDecodeError as e:
+            raise ModelFileError(f"{path}:{e.lineno}: not valid JSON: {e.msg}") from None
+        except ValueError as e:
+            raise ModelFileError(f"{path}: {e}") from None
+        except RecursionError:
+            raise ModelFileError(f"{path}: nested too deeply to be a model file") from None
         return cls.from_dict(d, str(path))

@@ -1,0 +1,118 @@
+"""The daemon's configuration: defaults, the TOML file, and the ranges every value must lie in.
+
+A config is checked whole, after the file and the command line are merged, before the bus
+opens: a syntax error, an unknown key, a wrong type, a value that is not finite or out of its
+range is one line naming the file (or the command line) and the key. The ranges are checked
+with a JSON schema (``jsonschema``), the same library that checks model files.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import asdict, dataclass, field, fields
+from pathlib import Path
+from typing import Any
+
+from .core import CoreConfig
+
+
+class ConfigError(ValueError):
+    """A configuration the daemon must not run with; the message names where and the key."""
+
+
+@dataclass
+class NodeConfig:
+    interface: str = "socketcan"
+    channel: str = "vcan0"
+    fd: bool = False
+    raw_socketcan: bool = True
+    model: str = ""
+    record: str = ""
+    status_period_s: float = 0.1
+    accel_timeout_s: float = 0.0  # 0: two tick periods
+    brs_timeout_s: float = 0.03
+    idle_after_s: float = 1.0
+    reconnect_s: float = 0.5
+    cpu_latency_us: int = 0  # PM QoS while running; -1: leave power management alone
+    core: CoreConfig = field(default_factory=CoreConfig)
+
+    @classmethod
+    def from_toml(cls, path: str | Path) -> NodeConfig:
+        """Keys of the ``[observer]`` table are NodeConfig fields; ``[observer.core]`` holds
+        CoreConfig fields. Anything else, or a value of the wrong type, is a ConfigError."""
+        import tomllib
+
+        p = Path(path)
+        try:
+            d = tomllib.loads(p.read_text(encoding="utf-8"))
+        except tomllib.TOMLDecodeError as e:
+            raise ConfigError(f"{p}: {e}") from None
+        except UnicodeDecodeError as e:
+            raise ConfigError(f"{p}: not UTF-8 text (byte {e.start})") from None
+        except OSError as e:
+            raise ConfigError(f"{p}: cannot read: {e.strerror}") from None
+        extra = sorted(set(d) - {"observer"})
+        if extra:
+            raise ConfigError(f"{p}: unknown table or key {extra[0]!r} (the daemon reads "
+                              "[observer] and [observer.core])")
+        obs = dict(d.get("observer", {}))
+        core = obs.pop("core", {})
+        if not isinstance(core, dict):
+            raise ConfigError(f"{p}: [observer] core: must be a table [observer.core]")
+        check({**obs, "core": core}, str(p))
+        return cls(**obs, core=CoreConfig(**core))
+
+    def check(self, where: str = "command line") -> None:
+        check(asdict(self), where)
+
+
+def _num(lo: float, hi: float, integer: bool = False) -> dict[str, Any]:
+    return {"type": "integer" if integer else "number", "minimum": lo, "maximum": hi}
+
+
+_STR = {"type": "string", "maxLength": 4096}
+_NODE = {"interface": {**_STR, "minLength": 1}, "channel": _STR, "fd": {"type": "boolean"},
+         "raw_socketcan": {"type": "boolean"}, "model": _STR, "record": _STR,
+         "status_period_s": _num(0.01, 10), "accel_timeout_s": _num(0, 1),
+         "brs_timeout_s": _num(0.001, 10), "idle_after_s": _num(0.01, 3600),
+         "reconnect_s": _num(0.01, 60), "cpu_latency_us": _num(-1, 100_000, True)}
+_CORE = {"trigger_g": _num(0.5, 100), "trigger_ticks": _num(1, 100, True),
+         "onset_g": _num(0, 100), "pretrigger_s": _num(0, 1), "bias_window_s": _num(0.002, 10),
+         "event_s": _num(0.01, 10), "quiet_g": _num(0.001, 100), "rearm_s": _num(0, 10),
+         "hold_max_s": _num(0.01, 3600), "bias_max_g": _num(0.1, 300),
+         "brs_max_rate_rad_s": _num(1, 1e6), "recover_ticks": _num(0, 100_000, True),
+         "max_bridge_ticks": _num(0, 10_000, True), "counts_per_rev": _num(1, 255, True)}
+assert set(_NODE) | {"core"} == {f.name for f in fields(NodeConfig)}
+assert set(_CORE) == {f.name for f in fields(CoreConfig)}
+
+SCHEMA = {"type": "object", "additionalProperties": False,
+          "properties": {**_NODE, "core": {"type": "object", "additionalProperties": False,
+                                           "properties": _CORE}}}
+
+
+def check(d: dict[str, Any], where: str) -> None:
+    """Raise ConfigError for the first key of ``d`` (NodeConfig fields, ``core`` a dict of
+    CoreConfig fields) that is unknown, of the wrong type, not finite or out of range."""
+    import jsonschema
+
+    for table, values in (("[observer]", d), ("[observer.core]", d.get("core", {}))):
+        for k, v in values.items():
+            if isinstance(v, float) and not math.isfinite(v):
+                raise ConfigError(f"{where}: {table} {k}: {v} is not a finite number")
+    err = jsonschema.exceptions.best_match(
+        jsonschema.Draft202012Validator(SCHEMA).iter_errors(d))
+    if err is not None:
+        path = list(err.absolute_path)
+        table = "[observer.core]" if path[:1] == ["core"] else "[observer]"
+        key = str(path[-1]) if path and path != ["core"] else ""
+        if err.validator == "additionalProperties":
+            known = sorted(_CORE if table == "[observer.core]" else _NODE)
+            unknown = sorted(set(err.instance) - set(known) - {"core"})
+            raise ConfigError(f"{where}: {table} unknown key {unknown[0]!r} "
+                              f"(known: {', '.join(known)})")
+        raise ConfigError(f"{where}: {table} {key}: {err.message}")
+    core = d.get("core", {})
+    trig, onset = core.get("trigger_g", 3.0), core.get("onset_g", 0.5)
+    if onset >= trig:
+        raise ConfigError(f"{where}: [observer.core] onset_g: {onset} must be below "
+                          f"trigger_g {trig}")

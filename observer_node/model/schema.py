@@ -1,0 +1,106 @@
+"""The model file's JSON schema, checked with ``jsonschema`` before anything is built from it.
+
+The schema bounds what a daemon may be handed: the kinds, the tick rate (a positive, finite
+rate a CAN bus can carry: 100 Hz to 20 kHz), matrix shapes (at most ``MAX_STATES`` states, two
+inputs, two outputs), every effect with the parameters its formula needs, finite numbers only
+(NaN and Infinity are refused by the reader before the schema sees them). Stability is checked
+after, on the matrices themselves (see :func:`observer_node.model.modelfile.ModelFile.from_dict`).
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+from .effects import EFFECTS
+
+MAX_STATES = 64
+MAX_BYTES = 4 << 20  # a model file is kilobytes; more is not a model
+
+_NUMBER = {"type": "number"}
+_ROW = {"type": "array", "items": _NUMBER, "maxItems": MAX_STATES}
+
+
+def _matrix(rows: int | None, cols: int | None) -> dict[str, Any]:
+    row = dict(_ROW)
+    if cols is not None:
+        row |= {"minItems": cols, "maxItems": cols}
+    m: dict[str, Any] = {"type": "array", "items": row, "minItems": 1, "maxItems": MAX_STATES}
+    if rows is not None:
+        m |= {"minItems": rows, "maxItems": rows}
+    return m
+
+
+# Parameters an effect's formula cannot do without (others default to 0).
+_REQUIRED = {"chest_stiffening": ["k3"], "chest_rate_damping": ["c3"],
+             "belt_stiffening": ["kb3"], "airbag_contact": ["kab", "gap"],
+             "pelvis_coupling": ["kp", "cp"], "input_gain": ["g"]}
+_DELAY_TICKS = {"type": "number", "minimum": 0, "maximum": 1000}
+
+
+def _effect(kind: str) -> dict[str, Any]:
+    params: dict[str, Any] = {"type": "object"}
+    if kind == "other":
+        terms = {"type": "object", "additionalProperties": _NUMBER}
+        params["properties"] = {"rib": terms, "belt": terms}
+    elif kind == "input_delay":
+        params["properties"] = {"n_pulse": _DELAY_TICKS, "n_brs": _DELAY_TICKS}
+    else:
+        params["properties"] = {p: _NUMBER for p in EFFECTS[kind][1]}
+        params["required"] = _REQUIRED.get(kind, [])
+    return {"if": {"properties": {"kind": {"const": kind}}},
+            "then": {"properties": {"parameters": params},
+                     **({"required": ["parameters"]} if _REQUIRED.get(kind) else {})}}
+
+
+_GREYBOX = ("k1", "c1", "k2", "c2", "m1", "m2", "R")
+_PARAMETER = {"type": "object", "required": ["value"],
+              "properties": {"value": _NUMBER, "std_err": {"type": ["number", "null"]}}}
+
+SCHEMA: dict[str, Any] = {
+    "$schema": "https://json-schema.org/draft/2020-12/schema",
+    "title": "chest-observer model file",
+    "type": "object",
+    "required": ["format", "format_version", "kind", "tick_rate_hz", "input_transform",
+                 "state_space"],
+    "properties": {
+        "format": {"const": "chest-observer-model"},
+        "format_version": {"const": 1},
+        "kind": {"enum": ["greybox", "arx", "n4sid"]},
+        "name": {"type": "string", "maxLength": 200},
+        "tick_rate_hz": {"type": "number", "minimum": 100, "maximum": 20_000},
+        "input_transform": {"enum": ["velocity_brs_rate", "raw"]},
+        "state_space": {
+            "type": "object", "required": ["A", "B", "C", "D"],
+            "properties": {"A": _matrix(None, None), "B": _matrix(None, 2),
+                           "C": _matrix(2, None), "D": _matrix(2, 2)}},
+        "parameters": {"type": "object"},  # kind-specific; the grey-box's checked below
+        "effects": {
+            "type": "array", "maxItems": 32,
+            "items": {"type": "object", "required": ["kind"],
+                      "properties": {"kind": {"enum": sorted(EFFECTS)}},
+                      "allOf": [_effect(k) for k in EFFECTS]}},
+    },
+    # A grey-box with effects is stepped from its physical parameters, not its matrices.
+    "if": {"required": ["effects"], "properties": {"effects": {"minItems": 1}}},
+    "then": {"properties": {"kind": {"const": "greybox"},
+                            "parameters": {"required": list(_GREYBOX),
+                                           "properties": dict.fromkeys(_GREYBOX, _PARAMETER)}},
+             "required": ["parameters"]},
+}
+
+
+def validate(d: Any, where: str) -> str | None:
+    """None when ``d`` is a valid model file, else one line naming the key at fault."""
+    import jsonschema
+
+    v = jsonschema.Draft202012Validator(SCHEMA)
+    err = jsonschema.exceptions.best_match(v.iter_errors(d))
+    if err is None:
+        return None
+    key = ".".join(f"[{p}]" if isinstance(p, int) else str(p) for p in err.absolute_path)
+    key = key.replace(".[", "[")
+    if err.validator == "required" and isinstance(err.instance, dict):
+        missing = next(k for k in err.validator_value if k not in err.instance)
+        return f"{where}: missing key '{key + '.' if key else ''}{missing}'"
+    msg = err.message if len(err.message) < 160 else err.message[:157] + "..."
+    return f"{where}: " + (f"key '{key}': " if key else "") + msg

@@ -1,0 +1,308 @@
+"""The bad-input corpus: model files, daemon configs, ISO-MME tests and zips, recordings.
+
+Every case is run through the command a user would type, in-process, and must end with exit
+code 2 and one line on stderr that names the file (and where it can, the line or key), no
+traceback, and nothing written. Each case is a small function that makes the bad file from a
+good one, so the corpus reads as a list of what can go wrong.
+"""
+
+from __future__ import annotations
+
+import io
+import json
+import shutil
+import zipfile
+from collections.abc import Callable
+from pathlib import Path
+
+import pytest
+
+from observer_node import cli
+from observer_node.evaluation import identify
+from observer_node.ident.dataset import make_dataset
+from replay import cli as replay_cli
+
+DATA = Path(__file__).parent / "data"
+
+
+@pytest.fixture(scope="module")
+def good_model(tmp_path_factory) -> dict:
+    from observer_node.data import read_isomme
+
+    mf = identify("greybox", make_dataset([read_isomme(DATA / "R16_001")], 1000.0))
+    return mf.to_dict()
+
+
+def _expect_one_line_error(code: int, err: str, says: str) -> None:
+    assert code == 2, err
+    assert "Traceback" not in err
+    lines = err.strip().splitlines()
+    assert len(lines) == 1, err
+    assert says in lines[0], lines[0]
+
+
+# ---------------------------------------------------------------------------- model files
+def _unstable(d):
+    d["state_space"]["A"] = [[2.0 if i == j else 0.0 for j in range(5)] for i in range(5)]
+
+
+def _set(key, value):
+    def f(d):
+        d[key] = value
+    return f
+
+
+def _effect(effect):
+    def f(d):
+        d["effects"] = [effect]
+    return f
+
+
+MODEL_CASES: dict[str, tuple[Callable[[dict], object] | bytes, str]] = {
+    "unstable A=2I": (_unstable, "unstable"),
+    "tick rate 0": (_set("tick_rate_hz", 0), "tick_rate_hz"),
+    "tick rate -1000": (_set("tick_rate_hz", -1000), "tick_rate_hz"),
+    "tick rate 1e9": (_set("tick_rate_hz", 1e9), "tick_rate_hz"),
+    "tick rate text": (_set("tick_rate_hz", "fast"), "tick_rate_hz"),
+    "kind unknown": (_set("kind", "neural"), "kind"),
+    "transform unknown": (_set("input_transform", "magic"), "input_transform"),
+    "format version 2": (_set("format_version", 2), "format_version"),
+    "no state space": (lambda d: d.pop("state_space"), "state_space"),
+    "A not square": (lambda d: d["state_space"].__setitem__("A", [[1.0, 0.0]]), "state_space"),
+    "B one input": (lambda d: d["state_space"].__setitem__("B", [[0.0]] * 5), "state_space.B"),
+    "matrix text": (lambda d: d["state_space"]["D"].__setitem__(0, ["a", 0]), "state_space.D"),
+    "stiffening without k3": (_effect({"kind": "chest_stiffening", "parameters": {}}), "k3"),
+    "airbag without gap": (_effect({"kind": "airbag_contact",
+                                    "parameters": {"kab": 3e4}}), "gap"),
+    "pelvis without parameters": (_effect({"kind": "pelvis_coupling"}), "parameters"),
+    "effect kind unknown": (_effect({"kind": "warp_drive", "parameters": {}}), "effects[0]"),
+    "effect delay 1e6 ticks": (_effect({"kind": "input_delay",
+                                        "parameters": {"n_pulse": 1e6}}), "n_pulse"),
+    "effects on ARX": (lambda d: (d.__setitem__("kind", "arx"),
+                                  _effect({"kind": "belt_unloading"})(d)), "kind"),
+    "effects without grey-box parameters": (lambda d: (d["parameters"].pop("k2"), _effect(
+        {"kind": "belt_unloading"})(d)), "k2"),
+    "a list": (b"[1, 2, 3]", "not a model file"),
+    "null": (b"null", "not a model file"),
+    "a string": (b'"model"', "not a model file"),
+    "empty file": (b"", "not valid JSON"),
+    "truncated JSON": (b'{"format": "chest-observer-model", "kind": "gre', "not valid JSON"),
+    "NaN tick rate": (b'{"format": "chest-observer-model", "tick_rate_hz": NaN}', "NaN"),
+    "Infinity in A": (b'{"state_space": {"A": [[Infinity]]}}', "Infinity"),
+    "not UTF-8": (b'{"name": "\xff\xfe\xfa"}', "not UTF-8"),
+    "deeply nested": (b"[" * 100_000 + b"]" * 100_000, "nested too deeply"),
+    "80 MB of JSON": (b'{"name": "' + b"x" * (5 << 20) + b'"}', "larger than"),
+}
+
+
+@pytest.mark.parametrize("case", sorted(MODEL_CASES))
+def test_bad_model_file(case, good_model, tmp_path, capsys):
+    make, says = MODEL_CASES[case]
+    p = tmp_path / "model.json"
+    if isinstance(make, bytes):
+        p.write_bytes(make)
+    else:
+        d = json.loads(json.dumps(good_model))
+        make(d)
+        p.write_text(json.dumps(d))
+    code = cli.main(["run", "--model", str(p), "--interface", "virtual", "--channel",
+                     "bad-model", "--record", str(tmp_path / "run.mcap")])
+    _expect_one_line_error(code, capsys.readouterr().err, says)
+    assert not (tmp_path / "run.mcap").exists()
+
+
+def test_missing_model_file_and_a_directory(tmp_path, capsys):
+    for p in (tmp_path / "nosuch.json", tmp_path):
+        code = cli.main(["run", "--model", str(p), "--interface", "virtual"])
+        _expect_one_line_error(code, capsys.readouterr().err, str(p))
+
+
+# ---------------------------------------------------------------------------- daemon config
+CONFIG_CASES = {
+    "syntax error": ("[observer\nchannel = 'vcan0'", "config.toml"),
+    "unknown key": ("[observer]\nchanel = 'vcan0'", "unknown key 'chanel'"),
+    "unknown core key": ("[observer.core]\ntriger_g = 3", "unknown key 'triger_g'"),
+    "unknown table": ("[observr]\nchannel = 'x'", "unknown table or key 'observr'"),
+    "recover_ticks text": ("[observer.core]\nrecover_ticks = 'x'", "recover_ticks"),
+    "recover_ticks float": ("[observer.core]\nrecover_ticks = 2.5", "recover_ticks"),
+    "status period 0": ("[observer]\nstatus_period_s = 0", "status_period_s"),
+    "status period negative": ("[observer]\nstatus_period_s = -1", "status_period_s"),
+    "trigger negative": ("[observer.core]\ntrigger_g = -3", "trigger_g"),
+    "trigger nan": ("[observer.core]\ntrigger_g = nan", "not a finite number"),
+    "event inf": ("[observer.core]\nevent_s = inf", "not a finite number"),
+    "onset above trigger": ("[observer.core]\ntrigger_g = 3.0\nonset_g = 4.0", "onset_g"),
+    "counts per rev 0": ("[observer.core]\ncounts_per_rev = 0", "counts_per_rev"),
+    "fd a number": ("[observer]\nfd = 1", "fd"),
+    "core not a table": ("[observer]\ncore = 3", "core"),
+    "cpu latency text": ("[observer]\ncpu_latency_us = 'low'", "cpu_latency_us"),
+    "hold max 0": ("[observer.core]\nhold_max_s = 0", "hold_max_s"),
+    "interface empty": ("[observer]\ninterface = ''", "interface"),
+}
+
+
+@pytest.mark.parametrize("case", sorted(CONFIG_CASES))
+def test_bad_config(case, good_model, tmp_path, capsys):
+    text, says = CONFIG_CASES[case]
+    model = tmp_path / "model.json"
+    model.write_text(json.dumps(good_model))
+    cfg = tmp_path / "config.toml"
+    cfg.write_text(text)
+    code = cli.main(["run", "--config", str(cfg), "--model", str(model), "--interface",
+                     "virtual", "--channel", "bad-config", "--record", str(tmp_path / "r.mcap")])
+    _expect_one_line_error(code, capsys.readouterr().err, says)
+    assert not (tmp_path / "r.mcap").exists()
+
+
+def test_bad_command_line_values(good_model, tmp_path, capsys):
+    model = tmp_path / "model.json"
+    model.write_text(json.dumps(good_model))
+    for opt, value in (("--trigger-g", "-1"), ("--event-s", "0"), ("--counts-per-rev", "0"),
+                       ("--trigger-g", "nan")):
+        code = cli.main(["run", "--model", str(model), "--interface", "virtual", opt, value])
+        _expect_one_line_error(code, capsys.readouterr().err, "command line")
+
+
+# ---------------------------------------------------------------------------- ISO-MME tests
+def _edit_key(rel: str, key: str, value: str):
+    def f(d: Path) -> None:
+        p = d / rel
+        lines = p.read_text(encoding="iso-8859-1").splitlines(keepends=True)
+        for i, line in enumerate(lines):
+            if line.startswith(key):
+                lines[i] = f"{line.split(':', 1)[0]}:{value}\r\n"
+        p.write_text("".join(lines), encoding="iso-8859-1", newline="")
+    return f
+
+
+def _edit_value(rel: str, index: int, value: str):
+    def f(d: Path) -> None:
+        p = d / rel
+        lines = p.read_text(encoding="iso-8859-1").splitlines(keepends=True)
+        lines[index] = f"{value}\r\n"
+        p.write_text("".join(lines), encoding="iso-8859-1", newline="")
+    return f
+
+
+def _truncate(rel: str, keep: int):
+    def f(d: Path) -> None:
+        p = d / rel
+        lines = p.read_text(encoding="iso-8859-1").splitlines(keepends=True)
+        p.write_text("".join(lines[:keep]), encoding="iso-8859-1", newline="")
+    return f
+
+
+CH1, CH2 = "Channel/R16_001.001", "Channel/R16_001.002"
+ISO_CASES: dict[str, tuple[Callable[[Path], None], str]] = {
+    "interval NaN": (_edit_key(CH1, "Sampling interval", "NaN"), "Sampling interval"),
+    "interval 0": (_edit_key(CH1, "Sampling interval", "0"), "Sampling interval"),
+    "interval 1e-300": (_edit_key(CH1, "Sampling interval", "1e-300"), "Sampling interval"),
+    "interval negative": (_edit_key(CH1, "Sampling interval", "-0.0001"), "Sampling interval"),
+    "interval text": (_edit_key(CH1, "Sampling interval", "fast"), "Sampling interval"),
+    "samples 0": (_edit_key(CH1, "Number of samples", "0"), "Number of samples"),
+    "samples 2200.7": (_edit_key(CH1, "Number of samples", "2200.7"), "Number of samples"),
+    "samples negative": (_edit_key(CH1, "Number of samples", "-5"), "Number of samples"),
+    "0 counts/rev": (_edit_key("R16_001.mme", "Comments", "BRS 0 counts/rev"), "counts/rev"),
+    "value 1e308": (_edit_value(CH1, 100, "1e308"), "R16_001.001:101"),
+    "value nan": (_edit_value(CH1, 100, "nan"), "R16_001.001:101"),
+    "value -inf": (_edit_value(CH2, 200, "-inf"), "R16_001.002:201"),
+    "value text": (_edit_value(CH1, 100, "1,5"), "R16_001.001:101"),
+    "truncated channel": (_truncate(CH1, 500), "truncated"),
+    "header only": (_truncate(CH1, 20), "R16_001.001"),
+    "no .chn": (lambda d: (d / "Channel" / "R16_001.chn").unlink(), ".chn"),
+    "empty .mme": (lambda d: (d / "R16_001.mme").write_bytes(b""), "empty .mme"),
+    "no .mme": (lambda d: (d / "R16_001.mme").unlink(), "R16_001"),
+    "unit unknown": (_edit_key(CH1, "Unit", "furlong"), "Unit"),
+    "pulse channel missing": (_edit_key(CH1, "Channel code", "XXXXXXXXXXXXXXXX"), "crash pulse"),
+}
+
+
+@pytest.mark.parametrize("case", sorted(ISO_CASES))
+def test_bad_isomme_test(case, tmp_path, capsys):
+    make, says = ISO_CASES[case]
+    d = tmp_path / "R16_001"
+    shutil.copytree(DATA / "R16_001", d)
+    make(d)
+    out = tmp_path / "out"
+    code = cli.main(["identify", "--model", "greybox", "--data", str(d), "--out",
+                     str(out / "m.json"), "--quiet"])
+    _expect_one_line_error(code, capsys.readouterr().err, says)
+    assert not out.exists()
+    # crash-replay reads the same files with the same verdict, and sends nothing
+    code = replay_cli.main([str(d), "--dry-run"])
+    _expect_one_line_error(code, capsys.readouterr().err, says)
+
+
+def _zip_of(folder: Path, dest: Path) -> Path:
+    with zipfile.ZipFile(dest, "w", zipfile.ZIP_DEFLATED) as z:
+        for p in sorted(folder.rglob("*")):
+            if p.is_file():
+                z.write(p, p.relative_to(folder.parent).as_posix())
+    return dest
+
+
+def _corrupt_member(zpath: Path) -> None:
+    raw = bytearray(zpath.read_bytes())
+    with zipfile.ZipFile(zpath) as z:
+        info = z.getinfo("R16_001/Channel/R16_001.001")
+    start = info.header_offset + 30 + len(info.filename) + 10
+    for k in range(start, start + 200):
+        raw[k] ^= 0x5A
+    zpath.write_bytes(bytes(raw))
+
+
+def _bomb(zpath: Path) -> None:
+    with zipfile.ZipFile(zpath, "a", zipfile.ZIP_DEFLATED) as z, \
+            z.open("R16_001/Channel/R16_001.009", "w", force_zip64=True) as f:
+        block = b"0\r\n" * (1 << 20)
+        for _ in range(24):  # 72 MiB of zeros, a few hundred kB packed
+            f.write(block)
+
+
+ZIP_CASES: dict[str, tuple[Callable[[Path], None], str]] = {
+    "corrupt member": (_corrupt_member, "R16_001.001"),
+    "zip bomb member": (_bomb, "MiB"),
+    "not a zip": (lambda z: z.write_bytes(b"PK\x03\x04 this is no zip"), "not a readable zip"),
+    "empty zip": (lambda z: zipfile.ZipFile(z, "w").close(), "no .mme"),
+}
+
+
+@pytest.mark.parametrize("case", sorted(ZIP_CASES))
+def test_bad_zip(case, tmp_path, capsys):
+    make, says = ZIP_CASES[case]
+    z = _zip_of(DATA / "R16_001", tmp_path / "R16_001.zip")
+    make(z)
+    code = cli.main(["identify", "--model", "greybox", "--data", str(z), "--out",
+                     str(tmp_path / "out" / "m.json"), "--quiet"])
+    _expect_one_line_error(code, capsys.readouterr().err, says)
+    assert not (tmp_path / "out").exists()
+
+
+# ---------------------------------------------------------------------------- recordings
+def _mcap_without_our_metadata(p: Path) -> None:
+    from mcap.writer import Writer
+
+    buf = io.BytesIO()
+    w = Writer(buf)
+    w.start()
+    w.finish()
+    p.write_bytes(buf.getvalue())
+
+
+REC_CASES: dict[str, tuple[Callable[[Path], object], str]] = {
+    "empty file": (lambda p: p.write_bytes(b""), "empty file"),
+    "random bytes": (lambda p: p.write_bytes(bytes(range(256)) * 40), "not an MCAP"),
+    "a JSON file": (lambda p: p.write_text('{"ticks": []}'), "not an MCAP"),
+    "someone else's MCAP": (_mcap_without_our_metadata, "not a chest-observer recording"),
+    "magic only": (lambda p: p.write_bytes(b"\x89MCAP0\r\n"), "run.mcap"),
+}
+
+
+@pytest.mark.parametrize("case", sorted(REC_CASES))
+def test_bad_recording(case, tmp_path, capsys):
+    make, says = REC_CASES[case]
+    p = tmp_path / "run.mcap"
+    make(p)
+    out = tmp_path / "analysis"
+    code = cli.main(["analyze", str(p), "--out", str(out)])
+    _expect_one_line_error(code, capsys.readouterr().err, says)
+    assert not out.exists()
