@@ -94,7 +94,8 @@ def test_nan_value_is_rejected(r16_folder: Path):
     lines[-5] = "nan\r\n"
     p.write_text("".join(lines), encoding="iso-8859-1", newline="")
     # named by its line in the file, not its sample index
-    with pytest.raises(CrashDataError, match=rf"R16_001\.001:{len(lines) - 4}: value 'nan' is not a finite"):
+    line = len(lines) - 4
+    with pytest.raises(CrashDataError, match=rf"R16_001\.001:{line}: value 'nan' is not a"):
         read_isomme(r16_folder)
 
 
