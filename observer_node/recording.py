@@ -160,10 +160,12 @@ def analyze(rec: Recording, window_s: tuple[float, float] = (0.01, 0.15),
         rows = np.array([idx[int(k)] for k in ticks])
         y_est = np.column_stack([T["cr_g"][rows], T["cd_mm"][rows]])
         running = T["running"][rows] > 0
+        valid = T["valid"][rows] > 0
         onset = int(ticks[0])
         t_rel = (ticks - onset) / fs
         win = (t_rel >= window_s[0] - 1e-9) & (t_rel <= window_s[1] + 1e-9) & running
         entry: dict = {"event": e, "onset_tick": onset, "ticks": len(ticks),
+                       "invalid_ticks": int((running & ~valid).sum()),
                        "max_abs_diff_offline": {
                            "cr_g": float(np.max(np.abs(y_est[running, 0] - y_off[running, 0]))),
                            "cd_mm": float(np.max(np.abs(y_est[running, 1] - y_off[running, 1])))},
@@ -171,9 +173,9 @@ def analyze(rec: Recording, window_s: tuple[float, float] = (0.01, 0.15),
                            "cr": fit_percent(y_off[win, 0], y_est[win, 0]),
                            "cd": fit_percent(y_off[win, 1], y_est[win, 1])}}
         have_ref = np.array([int(k) in rec.reference for k in ticks])
-        if (have_ref & win).sum() > 10:
+        if (have_ref & win & valid).sum() > 10:
             r = np.array([rec.reference.get(int(k), (np.nan, np.nan)) for k in ticks])
-            w = win & have_ref
+            w = win & have_ref & valid  # an estimate flagged invalid is not scored
             entry["fit_vs_reference"] = {"cr": fit_percent(r[w, 0], y_est[w, 0]),
                                          "cd": fit_percent(r[w, 1], y_est[w, 1])}
             entry["fit_vs_reference"]["total"] = (entry["fit_vs_reference"]["cr"]
@@ -183,7 +185,8 @@ def analyze(rec: Recording, window_s: tuple[float, float] = (0.01, 0.15),
         else:
             r = None
         if out_dir is not None:
-            _plot_event(out_dir / f"event{e}.png", rec, e, t_rel, y_est, y_off, r, entry)
+            _plot_event(out_dir / f"event{e}.png", rec, e, t_rel, y_est, y_off, r, entry,
+                        running & valid)
         result["events"].append(entry)
     if out_dir is not None:
         out_dir.mkdir(parents=True, exist_ok=True)
@@ -192,7 +195,10 @@ def analyze(rec: Recording, window_s: tuple[float, float] = (0.01, 0.15),
 
 
 def _plot_event(path: Path, rec: Recording, e: int, t: np.ndarray, y_est: np.ndarray,
-                y_off: np.ndarray, ref: np.ndarray | None, entry: dict) -> None:
+                y_off: np.ndarray, ref: np.ndarray | None, entry: dict,
+                shown: np.ndarray) -> None:
+    """The estimate is drawn only where the daemon flagged it valid and running: elsewhere a
+    gap, with invalid stretches shaded, so nothing the daemon disowned reads as data."""
     import matplotlib
 
     matplotlib.use("Agg")
@@ -202,7 +208,12 @@ def _plot_event(path: Path, rec: Recording, e: int, t: np.ndarray, y_est: np.nda
     for k, (ax, label) in enumerate(zip(axes, ("CR [g]", "CD [mm]"), strict=True)):
         if ref is not None:
             ax.plot(t * 1000, ref[:, k], "k-", lw=1.2, label="reference (measured)")
-        ax.plot(t * 1000, y_est[:, k], "r--", lw=1.2, label="daemon estimate")
+        ax.plot(t * 1000, np.where(shown, y_est[:, k], np.nan), "r--", lw=1.2,
+                label="daemon estimate (valid)")
+        tick_ms = (t[1] - t[0]) * 1000 if len(t) > 1 else 1.0
+        for j, (a, b) in enumerate(_runs(~shown)):
+            ax.axvspan(t[a] * 1000, t[b - 1] * 1000 + tick_ms, color="0.85", lw=0,
+                       label="estimate invalid or not running" if j == 0 else None)
         ax.plot(t * 1000, y_off[:, k], "b:", lw=1.5, label="offline simulation")
         ax.set_ylabel(label)
         ax.grid(alpha=0.3)
@@ -217,3 +228,10 @@ def _plot_event(path: Path, rec: Recording, e: int, t: np.ndarray, y_est: np.nda
     path.parent.mkdir(parents=True, exist_ok=True)
     fig.savefig(path, dpi=80)
     plt.close(fig)
+
+
+def _runs(mask: np.ndarray) -> list[tuple[int, int]]:
+    """[start, end) index ranges where ``mask`` is true."""
+    d = np.diff(np.concatenate([[0], mask.astype(np.int8), [0]]))
+    return list(zip(np.flatnonzero(d == 1).tolist(), np.flatnonzero(d == -1).tolist(),
+                    strict=True))

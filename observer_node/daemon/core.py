@@ -29,7 +29,10 @@ bus error) marks the estimate invalid for the next ``recover_ticks`` ticks. A bi
 moves faster than ``brs_max_rate_rad_s`` (no belt can) is a sensor fault, not an input: the
 angle reference moves with it, so a counter reset between two tests is not a belt movement.
 Lost accelerometer frames (alive-counter gaps) are bridged by stepping with the held pulse
-so the observer keeps time.
+so the observer keeps time. An accelerometer silent for longer than ``event_s`` ends a running
+event (:meth:`end_event`, called by the daemon's watchdog): that is what separates two tests
+replayed one after another (crash-replay's ``--gap``), and the next one re-arms on its own
+quiet lead-in.
 """
 
 from __future__ import annotations
@@ -90,6 +93,7 @@ class ObserverCore:
         self.hold_timeouts = 0
         self.bias_faults = 0
         self.brs_jumps = 0
+        self.events_cut = 0
         self.reset()
 
     def reset(self) -> None:
@@ -183,12 +187,23 @@ class ObserverCore:
             self._step(decel_g)
             self.run_ticks += 1
             if self.run_ticks >= self.n_event:
-                self.state = HOLD
-                self._hold = 0
-                self.event = -1
-                self._clear_window()
+                self._to_hold()
         else:
             self._holding(decel_g)
+
+    def end_event(self) -> None:
+        """The inputs stopped mid-event (the accelerometer silent for longer than an event):
+        what follows is another test or another crash, not this one. Hold, and re-arm on
+        the next quiet window."""
+        if self.state == RUNNING:
+            self.events_cut += 1
+            self._to_hold()
+
+    def _to_hold(self) -> None:
+        self.state = HOLD
+        self._hold = 0
+        self.event = -1
+        self._clear_window()
 
     def _clear_window(self) -> None:
         self._bias_n = self._bias_i = 0

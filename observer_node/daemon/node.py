@@ -44,7 +44,7 @@ from .core import (
     SENSOR_FAULT,
     ObserverCore,
 )
-from .ports import FLAG_ERROR, Port, PortError, open_port
+from .ports import FLAG_ERROR, FLAG_REMOTE, Port, PortError, open_port
 from .realtime import hold_cpu_latency
 from .recorder import OFF, TX, Recorder, RecorderError
 
@@ -54,7 +54,11 @@ EXIT_RECORDING_LOST = 3  # run's exit code when the recording is not the whole r
 
 @dataclass
 class Counters:
+    """Every received frame is counted once as accepted, rejected, bad_e2e, unknown_id or
+    error_frames (rx is their sum); the others count events."""
+
     rx: int = 0
+    accepted: int = 0
     ticks: int = 0
     lost: int = 0
     rejected: int = 0
@@ -230,6 +234,8 @@ class ObserverNode:
                     if flags & FLAG_ERROR:
                         cnt.error_frames += 1
                         core.fault(BUS_ERROR)
+                    elif flags & FLAG_REMOTE:
+                        cnt.rejected += 1  # a request for data is never data
                     elif cid == acc_id:
                         acc_counter = self._on_accel(t, data, acc_counter)
                         last_accel = t
@@ -251,6 +257,8 @@ class ObserverNode:
                         if not core.cause & ACCEL_TIMEOUT:
                             cnt.accel_timeouts += 1  # outages, not ticks
                         core.fault(ACCEL_TIMEOUT)
+                        if core.state == RUNNING and now - last_accel > self.cfg.core.event_s:
+                            core.end_event()  # a silence, then another test: not this event
                         self._publish(now, watchdog=True)
                         next_watchdog = now + period
                     else:
@@ -374,6 +382,7 @@ class ObserverNode:
             self.counters.bad_e2e += 1
             self.core.fault(BAD_E2E)
             return -1
+        self.counters.accepted += 1
         if last_counter < 0:
             return 0
         gap = (counter - last_counter - 1) & 0xF
@@ -384,6 +393,7 @@ class ObserverNode:
         if len(data) != self.ref_len or data[0] != e2e_crc(self.ref_id, data):
             self.counters.rejected += 1
             return
+        self.counters.accepted += 1
         _, _, cr, cd = self.ref_struct.unpack_from(data)
         self.ref_cr = cr * self.ref_scale_cr
         self.ref_cd = cd * self.ref_scale_cd

@@ -2,9 +2,9 @@
 raw SocketCAN socket sits.
 
 ``recv(timeout_s)`` returns ``(t_s, can_id, data, flags)`` or ``None`` on timeout; ``t_s`` is
-``time.perf_counter()`` at receipt, ``flags`` has ``FLAG_ERROR`` for error frames and
-``FLAG_FD`` for CAN FD frames. ``send(can_id, data)`` transmits one frame. Errors of the bus
-itself (interface down, bus gone) raise :class:`PortError`; the daemon then reconnects.
+``time.perf_counter()`` at receipt, ``flags`` has ``FLAG_ERROR`` for error frames,
+``FLAG_FD`` for CAN FD frames and ``FLAG_REMOTE`` for remote (RTR) frames.
+``send(can_id, data)`` transmits one frame. Errors of the bus itself (interface down, bus gone) raise :class:`PortError`; the daemon then reconnects.
 
 Why a raw SocketCAN port beside python-can's: python-can's socketcan receive costs a
 ``select`` and a ``recvmsg`` plus a Message object per frame, and it accepts no ancillary data
@@ -25,6 +25,7 @@ from typing import Protocol
 
 FLAG_ERROR = 1
 FLAG_FD = 2
+FLAG_REMOTE = 8  # a remote (RTR) frame: no data, never an input (4 is recorder.TX)
 
 SOL_CAN_RAW = 101
 CAN_RAW_FILTER = 1
@@ -33,6 +34,7 @@ CAN_RAW_FD_FRAMES = 5
 SO_RXQ_OVFL = 40
 SO_RCVBUFFORCE = 33
 CAN_ERR_FLAG = 0x20000000
+CAN_RTR_FLAG = 0x40000000
 CAN_EFF_FLAG = 0x80000000
 CAN_ERR_MASK = 0x1FFFFFFF
 CANFD_MTU = 72
@@ -114,6 +116,8 @@ class SocketCanPort:
         flags = FLAG_FD if len(cf) == CANFD_MTU else 0
         if can_id & CAN_ERR_FLAG:
             flags |= FLAG_ERROR
+        if can_id & CAN_RTR_FLAG:
+            flags |= FLAG_REMOTE
         return t, can_id & CAN_ERR_MASK, cf[8:8 + length], flags
 
     def send(self, can_id: int, data: bytes) -> bool:
@@ -174,7 +178,8 @@ class PythonCanPort:
             raise PortError(errno.EIO, str(e)) from None
         if m is None:
             return None
-        flags = (FLAG_ERROR if m.is_error_frame else 0) | (FLAG_FD if m.is_fd else 0)
+        flags = (FLAG_ERROR if m.is_error_frame else 0) | (FLAG_FD if m.is_fd else 0) | \
+            (FLAG_REMOTE if m.is_remote_frame else 0)
         return time.perf_counter(), m.arbitration_id, bytes(m.data), flags
 
     def send(self, can_id: int, data: bytes) -> bool:
