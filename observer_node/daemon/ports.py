@@ -4,7 +4,8 @@ raw SocketCAN socket sits.
 ``recv(timeout_s)`` returns ``(t_s, can_id, data, flags)`` or ``None`` on timeout; ``t_s`` is
 ``time.perf_counter()`` at receipt, ``flags`` has ``FLAG_ERROR`` for error frames,
 ``FLAG_FD`` for CAN FD frames and ``FLAG_REMOTE`` for remote (RTR) frames.
-``send(can_id, data)`` transmits one frame. Errors of the bus itself (interface down, bus gone) raise :class:`PortError`; the daemon then reconnects.
+``send(can_id, data)`` transmits one frame. Errors of the bus itself (interface down, bus
+gone) raise :class:`PortError`; the daemon then reconnects.
 
 Why a raw SocketCAN port beside python-can's: python-can's socketcan receive costs a
 ``select`` and a ``recvmsg`` plus a Message object per frame, and it accepts no ancillary data
