@@ -134,8 +134,12 @@ def cmd_simulate(a: argparse.Namespace) -> int:
 def cmd_run(a: argparse.Namespace) -> int:
     from dataclasses import fields
 
-    from .daemon.config import ConfigError, NodeConfig
+    from .daemon.config import ConfigError, NodeConfig, example_toml
     from .daemon.node import run_daemon
+
+    if a.print_config:
+        print(example_toml())
+        return 0
 
     try:
         cfg = NodeConfig.from_toml(a.config) if a.config else NodeConfig()
@@ -302,12 +306,21 @@ def build_parser() -> argparse.ArgumentParser:
         "run", help="run the real-time observer daemon on a CAN bus",
         description="Read TunnelAccel and BeltSpindle frames, step the model once per "
         "accelerometer frame, publish ChestEstimate every tick and the status at 10 Hz, and "
-        "record the run to MCAP. Stops cleanly on SIGINT/SIGTERM.")
+        "record the run to MCAP. Stops cleanly on SIGINT/SIGTERM.",
+        epilog="A recording never overwrites a file: if --record names one that exists, the "
+        "run goes to NAME.1.mcap, NAME.2.mcap, ... If the MCAP writer fails, the daemon "
+        "keeps estimating, says so on the bus (ObserverHealth) and in the log, and records "
+        "on in NAME.part2.mcap. Exit codes: 0 a clean stop; 2 it could not start (bad model "
+        "file or config, a port or record path that cannot be opened); 3 it ran, but the "
+        "recording is not the whole run. --print-config prints every config key with its "
+        "default and range.")
     s.add_argument("--interface", help="python-can interface (default socketcan)")
     s.add_argument("--channel", help="bus channel (default vcan0)")
     s.add_argument("--model", help="model file (JSON) from identify or evaluate")
     s.add_argument("--record", help="MCAP file to record the run to")
     s.add_argument("--config", help="TOML file with an [observer] table of these options")
+    s.add_argument("--print-config", action="store_true",
+                   help="print every config key with its default and range, and exit")
     s.add_argument("--fd", action="store_true", default=None, help="CAN FD bus")
     s.add_argument("--python-can-socketcan", action="store_true",
                    help="use python-can's socketcan backend instead of the raw socket port")

@@ -306,3 +306,12 @@ def test_bad_recording(case, tmp_path, capsys):
     code = cli.main(["analyze", str(p), "--out", str(out)])
     _expect_one_line_error(code, capsys.readouterr().err, says)
     assert not out.exists()
+
+
+def test_printed_example_config_is_a_valid_config(tmp_path, capsys):
+    from observer_node.daemon.config import NodeConfig
+
+    assert cli.main(["run", "--print-config"]) == 0
+    p = tmp_path / "observer.toml"
+    p.write_text(capsys.readouterr().out)
+    assert NodeConfig.from_toml(p) == NodeConfig()

@@ -116,3 +116,18 @@ def check(d: dict[str, Any], where: str) -> None:
     if onset >= trig:
         raise ConfigError(f"{where}: [observer.core] onset_g: {onset} must be below "
                           f"trigger_g {trig}")
+
+
+def example_toml() -> str:
+    """Every key with its default and allowed range, as a config file would hold them."""
+    node, core = NodeConfig(), CoreConfig()
+    out = ["# observer-node run --config FILE: every key, its default and its range"]
+    for table, obj, schema in (("[observer]", node, _NODE), ("[observer.core]", core, _CORE)):
+        out.append(f"\n{table}")
+        for k, sch in schema.items():
+            v = getattr(obj, k)
+            val = f'"{v}"' if isinstance(v, str) else str(v).lower() if isinstance(v, bool) \
+                else repr(v)
+            rng = f"  # {sch['minimum']:g} .. {sch['maximum']:g}" if "minimum" in sch else ""
+            out.append(f"{k} = {val}{rng}")
+    return "\n".join(out)
