@@ -13,7 +13,7 @@ import argparse
 import sys
 import tempfile
 import time
-from dataclasses import asdict
+from dataclasses import asdict, replace
 from pathlib import Path
 
 import numpy as np
@@ -50,7 +50,7 @@ def main() -> None:
 
         with Harness(model, "fuzz-bench", record=rec_path) as h:
             passed = run_fuzz(h, a.frames, a.seed, on_batch=progress)
-            c = h.node.counters
+            c = replace(h.node.counters)  # as the fuzz left them, before the crash
             alive = h.thread.is_alive()
             events = h.node.core.events
             h.play(r16_schedule(pre_s=0.6))

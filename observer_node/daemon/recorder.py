@@ -386,7 +386,12 @@ class Recorder:
         self._started = 0.0
         self.put_frame = self.rings.put_frame
         self.put_tick = self.rings.put_tick
-        self._spawn(fd, self.path)
+        try:
+            self._spawn(fd, self.path)
+        except OSError as e:  # no process could be started (limits, memory)
+            self.rings.close()
+            raise RecorderError(e.errno, f"{self.path}: cannot start the recorder process: "
+                                f"{e.strerror or e}") from None
 
     def _spawn(self, fd: int, path: Path) -> None:
         capacity, metadata, attachments, dbc_path = self._args

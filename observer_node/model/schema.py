@@ -1,11 +1,11 @@
 """The model file's JSON schema, checked with ``jsonschema`` before anything is built from it.
 
-The schema bounds what a daemon may be handed: the kinds, the tick rate (a positive, finite
-rate a CAN bus can carry: 100 Hz to 20 kHz), matrix shapes (at most ``MAX_STATES`` states, two
-inputs, two outputs), every effect with the parameters its formula needs, finite numbers only
-(NaN and Infinity are refused by the reader before the schema sees them). Stability is checked
-after, on the matrices themselves (see :func:`observer_node.model.modelfile.ModelFile.from_dict`).
-"""
+The schema bounds what a daemon may be handed: the kinds; the tick rate (finite, and one the
+DBC provides for: 100 Hz to 10 kHz, the top rates as InputBurst frames); matrix shapes (at
+most ``MAX_STATES`` states, two inputs, two outputs); every effect with the parameters its
+formula needs; finite numbers only (NaN and Infinity are refused by the reader before the
+schema sees them). Stability is checked after, on the matrices themselves
+(:meth:`observer_node.model.modelfile.ModelFile.from_dict`)."""
 
 from __future__ import annotations
 
@@ -67,7 +67,7 @@ SCHEMA: dict[str, Any] = {
         "format_version": {"const": 1},
         "kind": {"enum": ["greybox", "arx", "n4sid"]},
         "name": {"type": "string", "maxLength": 200},
-        "tick_rate_hz": {"type": "number", "minimum": 100, "maximum": 20_000},
+        "tick_rate_hz": {"type": "number", "minimum": 100, "maximum": 10_000},
         "input_transform": {"enum": ["velocity_brs_rate", "raw"]},
         "state_space": {
             "type": "object", "required": ["A", "B", "C", "D"],
