@@ -194,6 +194,11 @@ def cmd_analyze(a: argparse.Namespace) -> int:
             f = e["fit_vs_reference"]
             print(f"    fit vs reference (eq. 3.15): CR {f['cr']:.1f} %  CD {f['cd']:.1f} %  "
                   f"TOT {f['total']:.1f} %")
+        if e["invalid_ticks"]:
+            v = e.get("fit_vs_reference_valid")
+            print(f"    {e['invalid_ticks']} of {e['ticks']} ticks flagged invalid (gaps in the "
+                  "plots)" + (f"; on the valid ones: CR {v['cr']:.1f} %  CD {v['cd']:.1f} %"
+                              if v else ""))
     if not result["events"]:
         print("  no crash event in the recording (the observer never triggered)")
     print(f"wrote {out / 'analysis.json'} and plots in {out}")

@@ -298,3 +298,25 @@ def test_two_tests_back_to_back_are_two_events_without_spikes(model, tmp_path):
     T = rec.ticks
     shown = (T["valid"] > 0) & (T["running"] > 0)
     assert np.max(np.abs(T["cd_mm"][shown])) < 60 and np.max(np.abs(T["cr_g"][shown])) < 60
+
+
+def test_invalid_ticks_are_marked_not_scored_as_valid(model, tmp_path):
+    """A BRS sensor-fault flag mid-event: those ticks are flagged invalid, analyze counts
+    them, scores the valid ones apart, and the plot shows them as a shaded gap."""
+    from dbc import e2e_crc
+
+    sched = r16_schedule()
+    brs_id = CODEC["BeltSpindle"].frame_id
+    t_event = 0.2 + 0.05  # 50 ms into the test
+    k = next(i for i, (t, cid) in enumerate(zip(sched.t_s, sched.ids, strict=True))
+             if cid == brs_id and t >= t_event)
+    d = bytearray(sched.data[k])
+    d[1] |= 0x10  # BeltSpindle_Status bit 0: sensor fault
+    d[0] = e2e_crc(brs_id, d)
+    sched.data[k] = bytes(d)
+    _, _, rec = _play_recorded(model, "flagged", sched, tmp_path / "run.mcap")
+    (event,) = analyze(rec, out_dir=tmp_path / "an")["events"]
+    assert event["invalid_ticks"] >= 5
+    assert event["fit_vs_reference_valid"]["ticks"] < event["ticks"]
+    assert event["max_abs_diff_offline"]["cd_mm"] < 1e-9
+    assert (tmp_path / "an" / "event0.png").stat().st_size > 10_000
