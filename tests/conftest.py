@@ -21,3 +21,18 @@ def r16_folder(tmp_path: Path) -> Path:
 @pytest.fixture(scope="session")
 def campaign():
     return load_tests([bundled_campaign()])
+
+
+@pytest.fixture(scope="session")
+def model(campaign):
+    """The grey-box model the daemon tests run: identified on R16_001, 003 and 005."""
+    from observer_node.evaluation import identify
+    from observer_node.ident.dataset import make_dataset
+
+    est = [t for t in campaign if t.name in ("R16_001", "R16_003", "R16_005")]
+    return identify("greybox", make_dataset(est, 1000.0))
+
+
+@pytest.fixture(scope="session")
+def model_path(model, tmp_path_factory):
+    return model.save(tmp_path_factory.mktemp("m") / "model.json")

@@ -25,17 +25,9 @@ from observer_node.daemon.core import (
 )
 from observer_node.data import bundled_campaign, read_isomme
 from observer_node.data.crashtest import resample_inputs
-from observer_node.evaluation import identify
-from observer_node.ident.dataset import make_dataset
 from observer_node.recording import Recording, offline_estimates
 
 FS = 1000.0
-
-
-@pytest.fixture(scope="module")
-def model(campaign):
-    est = [t for t in campaign if t.name in ("R16_001", "R16_003", "R16_005")]
-    return identify("greybox", make_dataset(est, FS))
 
 
 @pytest.fixture(scope="module")

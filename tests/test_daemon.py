@@ -12,12 +12,10 @@ import time
 from pathlib import Path
 
 import numpy as np
-import pytest
 
 from observer_node.daemon.core import ACCEL_TIMEOUT
 from observer_node.daemon.ports import PortError, PythonCanPort
 from observer_node.data import bundled_campaign, read_isomme
-from observer_node.evaluation import identify
 from observer_node.ident import greybox
 from observer_node.ident.dataset import make_dataset
 from observer_node.recording import analyze, read_recording
@@ -26,17 +24,6 @@ from replay.schedule import crash_test_schedule
 from .daemon_feed import CODEC, Harness, r16_schedule
 
 ROOT = Path(__file__).resolve().parents[1]
-
-
-@pytest.fixture(scope="module")
-def model(campaign):
-    est = [t for t in campaign if t.name in ("R16_001", "R16_003", "R16_005")]
-    return identify("greybox", make_dataset(est, 1000.0))
-
-
-@pytest.fixture(scope="module")
-def model_path(model, tmp_path_factory):
-    return model.save(tmp_path_factory.mktemp("m") / "model.json")
 
 
 # ------------------------------------------------------------------ daemon on a virtual bus

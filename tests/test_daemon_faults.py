@@ -14,8 +14,6 @@ import pytest
 
 from observer_node.daemon.node import RECORDING_LOST, _wrap16
 from observer_node.daemon.recorder import FAILED, RESTARTED, RecorderError, create_exclusive
-from observer_node.evaluation import identify
-from observer_node.ident.dataset import make_dataset
 from observer_node.recording import read_recording
 
 from .daemon_feed import CODEC, Harness
@@ -23,17 +21,6 @@ from .daemon_feed import CODEC, Harness
 ROOT = Path(__file__).resolve().parents[1]
 ACC, BRS = CODEC["TunnelAccel"], CODEC["BeltSpindle"]
 STATUS, HEALTH = CODEC["ObserverStatus"], CODEC["ObserverHealth"]
-
-
-@pytest.fixture(scope="module")
-def model(campaign):
-    est = [t for t in campaign if t.name in ("R16_001", "R16_003", "R16_005")]
-    return identify("greybox", make_dataset(est, 1000.0))
-
-
-@pytest.fixture(scope="module")
-def model_path(model, tmp_path_factory):
-    return model.save(tmp_path_factory.mktemp("m") / "model.json")
 
 
 def _feed(h: Harness, ticks: range, every=None) -> None:

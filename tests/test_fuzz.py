@@ -7,10 +7,7 @@ from __future__ import annotations
 import time
 
 import numpy as np
-import pytest
 
-from observer_node.evaluation import identify
-from observer_node.ident.dataset import make_dataset
 from observer_node.recording import offline_estimates, read_recording
 
 from .daemon_feed import Harness, r16_schedule
@@ -22,12 +19,6 @@ def rss_mb() -> float:
         import os
 
         return int(f.read().split()[1]) * os.sysconf("SC_PAGE_SIZE") / 2**20
-
-
-@pytest.fixture(scope="module")
-def model(campaign):
-    est = [t for t in campaign if t.name in ("R16_001", "R16_003", "R16_005")]
-    return identify("greybox", make_dataset(est, 1000.0))
 
 
 def test_fuzzed_frames_are_counted_and_a_later_crash_is_detected(model, tmp_path):

@@ -108,20 +108,17 @@ class Rings:
             # Touch every page now: a page first written during a run is a page fault in the
             # middle of a tick (tens of microseconds, milliseconds on a busy VM).
             np.ndarray((size,), np.uint8, buffer=self.mm).fill(0)
-        off = 0
-        self.ctrl = np.ndarray((len(_CTRL),), np.int64, buffer=self.mm, offset=off)
-        off += ctrl_b
-        self._msg_off = off
-        off += _MSG_BYTES
-        self._meta_off = off
-        self.frame_meta = np.ndarray((capacity, len(FRAME_COLS)), np.float64, buffer=self.mm,
-                                     offset=off)
-        off += meta_b
-        self._data_off = off
-        off += data_b
-        self._ticks_off = off
-        self.ticks = np.ndarray((capacity, len(TICK_COLS)), np.float64, buffer=self.mm,
-                                offset=off)
+        # Layout: control words | error message | frame meta | frame data | ticks
+        self._msg_off = ctrl_b
+        self._meta_off = self._msg_off + _MSG_BYTES
+        self._data_off = self._meta_off + meta_b
+        self._ticks_off = self._data_off + data_b
+        mm = self.mm
+        self.ctrl = np.ndarray((len(_CTRL),), np.int64, buffer=mm)
+        self.frame_meta = np.ndarray((capacity, len(FRAME_COLS)), np.float64, buffer=mm,
+                                     offset=self._meta_off)
+        self.ticks = np.ndarray((capacity, len(TICK_COLS)), np.float64, buffer=mm,
+                                offset=self._ticks_off)
         self._frames_head = int(self.ctrl[FRAMES_HEAD])
         self._ticks_head = int(self.ctrl[TICKS_HEAD])
 
@@ -453,19 +450,18 @@ class Recorder:
     def lost_ticks(self) -> int:
         """Ticks that are in no part: overwritten in the rings before a writer drained them,
         or never written after the recording FAILED."""
-        if self._final is not None:
-            return self._final[1]
-        ctrl = self.rings.ctrl
-        unwritten = int(ctrl[TICKS_HEAD] - ctrl[TICKS_FLUSHED]) if self.state == FAILED else 0
-        return int(ctrl[TICKS_LOST]) + unwritten
+        return self._final[1] if self._final is not None else \
+            self._lost(TICKS_LOST, TICKS_HEAD, TICKS_FLUSHED)
 
     @property
     def lost_frames(self) -> int:
-        if self._final is not None:
-            return self._final[0]
+        return self._final[0] if self._final is not None else \
+            self._lost(FRAMES_LOST, FRAMES_HEAD, FRAMES_FLUSHED)
+
+    def _lost(self, lost: int, head: int, flushed: int) -> int:
         ctrl = self.rings.ctrl
-        unwritten = int(ctrl[FRAMES_HEAD] - ctrl[FRAMES_FLUSHED]) if self.state == FAILED else 0
-        return int(ctrl[FRAMES_LOST]) + unwritten
+        unwritten = int(ctrl[head] - ctrl[flushed]) if self.state == FAILED else 0
+        return int(ctrl[lost]) + unwritten
 
     @property
     def degraded(self) -> bool:
