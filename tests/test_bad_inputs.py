@@ -315,3 +315,14 @@ def test_printed_example_config_is_a_valid_config(tmp_path, capsys):
     p = tmp_path / "observer.toml"
     p.write_text(capsys.readouterr().out)
     assert NodeConfig.from_toml(p) == NodeConfig()
+
+
+def test_slow_replay_config_is_accepted(tmp_path):
+    """The vcan tests replay at 1/20 speed under emulation with timeouts to match."""
+    from observer_node.daemon.config import NodeConfig
+
+    p = tmp_path / "observer.toml"
+    p.write_text("[observer]\naccel_timeout_s = 2.0\nbrs_timeout_s = 5.0\nidle_after_s = 10.0\n"
+                 "cpu_latency_us = -1\n")
+    cfg = NodeConfig.from_toml(p)
+    assert (cfg.accel_timeout_s, cfg.brs_timeout_s, cfg.idle_after_s) == (2.0, 5.0, 10.0)

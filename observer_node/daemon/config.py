@@ -73,7 +73,7 @@ def _num(lo: float, hi: float, integer: bool = False) -> dict[str, Any]:
 _STR = {"type": "string", "maxLength": 4096}
 _NODE = {"interface": {**_STR, "minLength": 1}, "channel": _STR, "fd": {"type": "boolean"},
          "raw_socketcan": {"type": "boolean"}, "model": _STR, "record": _STR,
-         "status_period_s": _num(0.01, 10), "accel_timeout_s": _num(0, 1),
+         "status_period_s": _num(0.01, 10), "accel_timeout_s": _num(0, 60),
          "brs_timeout_s": _num(0.001, 10), "idle_after_s": _num(0.01, 3600),
          "reconnect_s": _num(0.01, 60), "cpu_latency_us": _num(-1, 100_000, True)}
 _CORE = {"trigger_g": _num(0.5, 100), "trigger_ticks": _num(1, 100, True),
