@@ -30,19 +30,9 @@ ROOT = Path(__file__).resolve().parents[1]
 
 def last_log_time_ns(path: Path) -> int:
     """The newest message time in a (possibly cut) MCAP file, read without seeking."""
-    from mcap.exceptions import McapError
-    from mcap.records import Message
-    from mcap.stream_reader import StreamReader
+    from observer_node.recording import Scan
 
-    last = 0
-    with path.open("rb") as f:
-        try:
-            for rec in StreamReader(f, validate_crcs=True).records:
-                if isinstance(rec, Message):
-                    last = max(last, rec.log_time)
-        except (McapError, EOFError, ValueError):
-            pass  # cut mid-chunk: everything before it was read
-    return last
+    return max((t for topic, t, _ in Scan(path) if not topic.startswith("#")), default=0)
 
 
 def one_run(model: Path, record: Path, delay_s: float) -> float:

@@ -119,6 +119,11 @@ class FrameCodec:
                                    if n.endswith("_Counter")), None)
 
     @property
+    def unscaled_signals(self) -> set[str]:
+        """Signals whose physical value is the raw integer (scale 1, offset 0)."""
+        return {f.name for f in self._fields if f.scale == 1 and not f.offset}
+
+    @property
     def struct(self) -> struct.Struct:
         return self._struct
 

@@ -12,7 +12,6 @@ from __future__ import annotations
 
 import json
 import re
-import struct
 from pathlib import Path
 
 import numpy as np
@@ -75,31 +74,33 @@ def read_python_can_log(path: Path) -> Schedule:
 
 
 def read_mcap_frames(path: Path, all_frames: bool = False) -> Schedule:
-    from mcap.exceptions import McapError
-    from mcap.records import Channel, Message
-    from mcap.stream_reader import StreamReader
+    """The frames a recording's daemon received (``all_frames``: and sent), with their
+    recorded times; errors name the file."""
+    from observer_node.recording import RecordingError, Scan
+    from observer_node.recording import format as fmt
 
     times, ids, data = [], [], []
-    topics: dict[int, str] = {}
-    ended = False
-    with path.open("rb") as f:
-        try:
-            for rec in StreamReader(f, validate_crcs=True).records:
-                if isinstance(rec, Channel):
-                    topics[rec.id] = rec.topic
-                elif isinstance(rec, Message) and topics.get(rec.channel_id) == "/can/frames":
-                    m = json.loads(rec.data)
-                    if m["error"] or (m["dir"] == "tx" and not all_frames):
-                        continue
-                    times.append(m["t"])
-                    ids.append(m["id"])
-                    data.append(bytes.fromhex(m["data"]))
-            ended = True
-        except (McapError, ValueError, EOFError, struct.error) as e:
-            raise SourceError(f"{path}: truncated or corrupt MCAP after {len(data)} frames "
-                              f"({type(e).__name__}: {e})") from None
-    if not ended or not data:
-        raise SourceError(f"{path}: no /can/frames messages (not a chest-observer recording?)")
+    try:
+        scan = Scan(path)
+        for topic, _, raw in scan:
+            if topic != fmt.FRAMES:
+                continue
+            m = json.loads(raw)
+            if m["error"] or (m["dir"] == "tx" and not all_frames):
+                continue
+            times.append(m["t"])
+            ids.append(m["id"])
+            data.append(bytes.fromhex(m["data"]))
+    except RecordingError as e:
+        raise SourceError(str(e)) from None
+    except (ValueError, KeyError) as e:
+        raise SourceError(f"{path}: a {fmt.FRAMES} message that is not a frame "
+                          f"({type(e).__name__}: {e})") from None
+    if scan.salvaged:
+        raise SourceError(f"{path}: truncated or corrupt MCAP after {len(data)} frames "
+                          f"({scan.note})")
+    if not data:
+        raise SourceError(f"{path}: no {fmt.FRAMES} messages (not a chest-observer recording?)")
     order = np.argsort(np.array(times), kind="stable")
     t = np.array(times)[order]
     return Schedule(t - t[0], np.array(ids)[order], [data[i] for i in order], path.name)

@@ -307,3 +307,27 @@ def test_invalid_ticks_are_marked_not_scored_as_valid(model, tmp_path):
     assert event["fit_vs_reference_valid"]["ticks"] < event["ticks"]
     assert event["max_abs_diff_offline"]["cd_mm"] < 1e-9
     assert (tmp_path / "an" / "event0.png").stat().st_size > 10_000
+
+
+def test_every_message_matches_its_topics_schema(model, tmp_path):
+    """One message type per topic, every field declared in the topic's JSON schema (so a
+    viewer such as Foxglove offers them all), the schemas those of recording.format."""
+    import json
+
+    import jsonschema
+    from mcap.reader import make_reader
+
+    from observer_node.recording import format as fmt
+
+    _play_recorded(model, "schemas", r16_schedule(), tmp_path / "run.mcap")
+    seen: dict[str, int] = {}
+    with (tmp_path / "run.mcap").open("rb") as f:
+        for schema, channel, message in make_reader(f).iter_messages():
+            s = json.loads(schema.data)
+            msg = json.loads(message.data)
+            assert set(msg) == set(s["properties"]), channel.topic
+            if seen.get(channel.topic, 0) < 50:
+                jsonschema.validate(msg, s)
+            seen[channel.topic] = seen.get(channel.topic, 0) + 1
+            assert s["title"] == fmt.TITLES[channel.topic]
+    assert set(seen) == set(fmt.TITLES)  # every topic of the format is written

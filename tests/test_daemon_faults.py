@@ -13,8 +13,8 @@ from pathlib import Path
 import pytest
 
 from observer_node.daemon.node import RECORDING_LOST, _wrap16
-from observer_node.daemon.recorder import FAILED, RESTARTED, RecorderError, create_exclusive
 from observer_node.recording import read_recording
+from observer_node.recording.writer import FAILED, RESTARTED, RecorderError, create_exclusive
 
 from .daemon_feed import CODEC, Harness
 

@@ -32,6 +32,8 @@ from dbc import DBC_PATH, Codec, e2e_crc
 
 from .. import __version__
 from ..model.modelfile import ModelFile
+from ..recording.format import FLAG_TX, TickRow
+from ..recording.writer import OFF, Recorder, RecorderError
 from .config import NodeConfig
 from .core import (
     ACCEL_TIMEOUT,
@@ -46,7 +48,6 @@ from .core import (
 )
 from .ports import FLAG_ERROR, FLAG_REMOTE, Port, PortError, open_port
 from .realtime import hold_cpu_latency
-from .recorder import OFF, TX, Recorder, RecorderError
 
 RECORDING_LOST = 0x80  # ObserverFault bit 7 (see the DBC)
 EXIT_RECORDING_LOST = 3  # run's exit code when the recording is not the whole run
@@ -435,11 +436,12 @@ class ObserverNode:
             self.counters.overruns += 1
         if rec is not None:
             if send:
-                rec.put_frame(done, self.est_id, data, TX)
-            rec.put_tick((t, -1 if watchdog else core.tick_index, accel_g, -accel_g,
-                          core.bias_g, core.brs_count, core.brs_ref, core.rad_per_count, cr,
-                          cd, valid, running, core.state, core.cause, core.event,
-                          core.onset_tick, self.ref_cr, self.ref_cd, (done - t) * 1e6))
+                rec.put_frame(done, self.est_id, data, FLAG_TX)
+            rec.put_tick(TickRow(t, -1 if watchdog else core.tick_index, accel_g, -accel_g,
+                                 core.bias_g, core.brs_count, core.brs_ref,
+                                 core.rad_per_count, cr, cd, valid, running, core.state,
+                                 core.invalid_cause, core.event, core.onset_tick, self.ref_cr,
+                                 self.ref_cd, (done - t) * 1e6))
         if bus_gone is not None:
             raise bus_gone
 
@@ -472,7 +474,7 @@ class ObserverNode:
             if not ok:
                 cnt.tx_dropped += 1
             elif self.recorder is not None:
-                self.recorder.put_frame(now, fc.frame_id, data, TX)
+                self.recorder.put_frame(now, fc.frame_id, data, FLAG_TX)
 
 
 def run_daemon(cfg: NodeConfig, quiet: bool = False) -> int:

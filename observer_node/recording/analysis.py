@@ -1,119 +1,15 @@
-"""Reading a daemon's MCAP recording back: ticks, events, the model it ran, and the analysis.
-
-A file cut short (daemon killed, disk full) has no summary; it is read with the non-seeking
-reader up to the last complete chunk and reported as salvaged.
-"""
+"""After the run: each recorded event re-run offline on its recorded inputs, scored against
+the reference frames (the thesis's fit, eq. 3.15), and plotted."""
 
 from __future__ import annotations
 
 import json
-import struct
-from dataclasses import dataclass, field
 from pathlib import Path
 
 import numpy as np
 
-from .ident.metrics import fit_percent
-from .model.modelfile import ModelFile
-
-MCAP_MAGIC = b"\x89MCAP0\r\n"
-
-
-class RecordingError(ValueError):
-    """A file that is not a readable recording; the message names it and why."""
-
-
-@dataclass
-class Recording:
-    path: Path
-    metadata: dict[str, dict[str, str]]
-    model: ModelFile | None
-    ticks: dict[str, np.ndarray]  # per tick, sorted by tick index
-    frames: list[dict]  # /can/frames messages (raw, in order)
-    reference: dict[int, tuple[float, float]]
-    salvaged: bool = False
-    salvage_note: str = ""
-    topics: dict[str, int] = field(default_factory=dict)
-
-    @property
-    def tick_rate_hz(self) -> float:
-        return float(self.metadata.get("chest-observer", {}).get("tick_rate_hz", "nan"))
-
-
-_INPUT_KEYS = ("accel_x_g", "decel_g", "bias_g", "brs_count", "brs_ref", "rad_per_count")
-_EST_KEYS = ("t", "cr_g", "cd_mm", "valid", "running", "state", "cause", "event", "onset_tick",
-             "proc_us")
-
-
-def read_recording(path: str | Path, frames: bool = True) -> Recording:
-    from mcap.exceptions import McapError
-    from mcap.records import Attachment, Channel, Message, Metadata
-    from mcap.stream_reader import StreamReader
-
-    path = Path(path)
-    if not path.is_file():
-        raise RecordingError(f"{path}: no such file" if not path.exists() else
-                             f"{path}: not a file")
-    with path.open("rb") as f:
-        magic = f.read(len(MCAP_MAGIC))
-    if magic != MCAP_MAGIC:
-        what = "an empty file" if not magic else "no MCAP magic at its start"
-        raise RecordingError(f"{path}: not an MCAP recording ({what})")
-    metadata: dict[str, dict[str, str]] = {}
-    model = None
-    inputs: dict[int, dict] = {}
-    est: dict[int, dict] = {}
-    ref: dict[int, tuple[float, float]] = {}
-    raw: list[dict] = []
-    topics: dict[str, int] = {}
-    salvaged, note = False, ""
-    with path.open("rb") as f:
-        channels: dict[int, str] = {}
-        n = 0
-        try:
-            # One sequential pass (no seeking, so a truncated file reads up to where it ends)
-            for rec in StreamReader(f, validate_crcs=True).records:
-                if isinstance(rec, Channel):
-                    channels[rec.id] = rec.topic
-                elif isinstance(rec, Message):
-                    topic = channels.get(rec.channel_id, "?")
-                    topics[topic] = topics.get(topic, 0) + 1
-                    n += 1
-                    if topic == "/observer/estimate":
-                        m = json.loads(rec.data)
-                        if m["tick"] >= 0:  # -1: watchdog publish between ticks
-                            est[m["tick"]] = m
-                    elif topic == "/observer/inputs":
-                        m = json.loads(rec.data)
-                        inputs[m["tick"]] = m
-                    elif topic == "/observer/reference":
-                        m = json.loads(rec.data)
-                        ref[m["tick"]] = (m["cr_g"], m["cd_mm"])
-                    elif topic == "/can/frames" and frames:
-                        raw.append(json.loads(rec.data))
-                elif isinstance(rec, Metadata):
-                    metadata[rec.name] = dict(rec.metadata)
-                elif isinstance(rec, Attachment) and rec.name == "model.json":
-                    model = ModelFile.from_dict(json.loads(rec.data), f"{path}!model.json")
-        except (McapError, EOFError, ValueError, KeyError, struct.error) as e:
-            salvaged = True
-            note = (f"recording ends early ({type(e).__name__}: {e}); read {n} messages up to "
-                    "the last complete chunk")
-    if "chest-observer" not in metadata:
-        raise RecordingError(f"{path}: an MCAP file, but not a chest-observer recording (no "
-                             "'chest-observer' metadata record)")
-    if not est:
-        raise RecordingError(f"{path}: holds no ticks (the daemon heard no accelerometer "
-                             "frame before it stopped)" + (f"; {note}" if note else ""))
-    if "chest-observer-recorder" not in metadata and not salvaged:
-        salvaged, note = True, f"recording has no end record; read {sum(topics.values())} messages"
-    ticks_idx = np.array(sorted(set(est) & set(inputs)), dtype=np.int64)
-    ticks: dict[str, np.ndarray] = {"tick": ticks_idx}
-    for k in _EST_KEYS:
-        ticks[k] = np.array([est[i][k] for i in ticks_idx], dtype=float)
-    for k in _INPUT_KEYS:
-        ticks[k] = np.array([inputs[i][k] for i in ticks_idx], dtype=float)
-    return Recording(path, metadata, model, ticks, raw, ref, salvaged, note, topics)
+from ..ident.metrics import fit_percent
+from .reader import Recording, RecordingError
 
 
 def offline_estimates(rec: Recording, event: int) -> tuple[np.ndarray, np.ndarray]:

@@ -24,14 +24,7 @@ What the recorder promises (README, "Faults"):
   ``max_parts`` or when no part can be created the recording has FAILED. Rows the rings no
   longer hold are counted as lost.
 
-Topics (JSON messages, JSON schemas, so Foxglove can plot every field):
-
-``/can/frames``          every frame received and sent, raw, for exact replay
-``/observer/inputs``     per tick: accelerometer (J211), deceleration, bias, BRS
-``/observer/estimate``   per tick: CR, CD, valid, running, state, invalid cause
-``/observer/reference``  per tick with reference frames: the dummy's measured CR, CD
-``/observer/status``     the ObserverStatus, ObserverCounters and ObserverHealth frames
-plus a ``chest-observer`` metadata record and the model file and DBC as attachments.
+Topics, fields and schemas are those of :mod:`.format`.
 """
 
 from __future__ import annotations
@@ -50,11 +43,10 @@ from typing import Any
 
 import numpy as np
 
-FRAME_COLS = ("t", "id", "flags", "dlc")
-TX = 4  # frame flag bit: sent by the daemon (bits 1, 2 are ports.FLAG_ERROR, FLAG_FD)
-TICK_COLS = ("t", "tick", "accel_x_g", "decel_g", "bias_g", "brs_count", "brs_ref",
-             "rad_per_count", "cr_g", "cd_mm", "valid", "running", "state", "cause", "event",
-             "onset_tick", "ref_cr_g", "ref_cd_mm", "proc_us")
+from . import format as fmt
+from .format import TICK_COLS, TickRow
+
+FRAME_COLS = ("t", "id", "flags", "dlc")  # a frame's row in the rings, its data beside
 _CTRL = ("frames_head", "ticks_head", "stop", "done", "frames_lost", "ticks_lost", "ready",
          "frames_flushed", "ticks_flushed", "errno")
 FRAMES_HEAD, TICKS_HEAD, STOP, DONE, FRAMES_LOST, TICKS_LOST, READY, FRAMES_FLUSHED, \
@@ -163,29 +155,6 @@ class Rings:
             os.close(self.fd)
 
 
-def _schema(title: str, props: dict[str, str]) -> bytes:
-    return json.dumps({"title": title, "type": "object",
-                       "properties": {k: {"type": v} for k, v in props.items()}}).encode()
-
-
-_TOPICS = {
-    "/can/frames": ("chest_observer.CanFrame", {
-        "t": "number", "id": "integer", "dir": "string", "error": "boolean", "fd": "boolean",
-        "dlc": "integer", "data": "string"}),
-    "/observer/inputs": ("chest_observer.Inputs", {
-        "tick": "integer", "t": "number", "accel_x_g": "number", "decel_g": "number",
-        "bias_g": "number", "brs_count": "number", "brs_ref": "number",
-        "rad_per_count": "number"}),
-    "/observer/estimate": ("chest_observer.Estimate", {
-        "tick": "integer", "t": "number", "cr_g": "number", "cd_mm": "number",
-        "valid": "boolean", "running": "boolean", "state": "integer", "cause": "integer",
-        "event": "integer", "onset_tick": "integer", "proc_us": "number"}),
-    "/observer/reference": ("chest_observer.Reference", {
-        "tick": "integer", "t": "number", "cr_g": "number", "cd_mm": "number"}),
-    "/observer/status": ("chest_observer.Status", {
-        "t": "number", "frame": "string"}),
-}
-
 _BATCH = 250  # rows per drain step: a writer that is behind still flushes every ~flush_s
 
 
@@ -223,17 +192,19 @@ def _write(rings: Rings, capacity: int, f: Any, clock: tuple[int, float],
     from dbc import Codec
 
     codec = Codec(dbc_path)
-    status_ids = {fc.frame_id: fc for fc in (codec["ObserverStatus"],
-                                             codec["ObserverCounters"],
-                                             codec["ObserverHealth"])}
+    status = {codec[name].frame_id: (codec[name], topic)
+              for name, topic in fmt.STATUS_TOPICS.items()}
     wall0_ns, perf0 = clock
     w = Writer(f, chunk_size=64 * 1024, compression=CompressionType.ZSTD)
     w.start(profile="", library="chest-observer")
+    fields = {fmt.FRAMES: fmt.FRAME_FIELDS, **fmt.TOPIC_FIELDS}
+    for fc, topic in status.values():
+        fields[topic] = fmt.status_fields(fc.signal_names, fc.unscaled_signals)
     chan = {}
-    for topic, (title, props) in _TOPICS.items():
-        sid = w.register_schema(title, "jsonschema", _schema(title, props))
+    for topic, f_ in fields.items():
+        sid = w.register_schema(fmt.TITLES[topic], "jsonschema", fmt.json_schema(topic, f_))
         chan[topic] = w.register_channel(topic, "json", sid)
-    w.add_metadata("chest-observer", metadata)
+    w.add_metadata(fmt.META_RUN, metadata)
     for name, media, data in attachments:
         w.add_attachment(wall0_ns, wall0_ns, name, media, data)
     w.flush()
@@ -267,34 +238,15 @@ def _write(rings: Rings, capacity: int, f: Any, clock: tuple[int, float],
             t, cid, flags, n = rings.frame_meta[i]
             cid, flags, n = int(cid), int(flags), int(n)
             data = rings.frame_data(i, n)
-            emit("/can/frames", t, {"t": t - perf0, "id": cid,
-                                    "dir": "tx" if flags & TX else "rx",
-                                    "error": bool(flags & 1), "fd": bool(flags & 2),
-                                    "dlc": n, "data": data.hex()})
-            fc = status_ids.get(cid)
-            if fc is not None and n == fc.length:
-                emit("/observer/status", t, {"t": t - perf0, "frame": fc.name,
-                                             **fc.decode(data)})
+            emit(fmt.FRAMES, t, fmt.frame_message(t - perf0, cid, flags, data))
+            st = status.get(cid)
+            if st is not None and n == st[0].length:
+                emit(st[1], t, {"t": t - perf0, **st[0].decode(data)})
         tail_f = head_f
         for k in range(tail_t, head_t):
-            r = dict(zip(TICK_COLS, rings.ticks[k % capacity].tolist(), strict=True))
-            t = r["t"]
-            rel = t - perf0
-            tick = int(r["tick"])
-            emit("/observer/inputs", t, {
-                "tick": tick, "t": rel, "accel_x_g": r["accel_x_g"], "decel_g": r["decel_g"],
-                "bias_g": r["bias_g"], "brs_count": r["brs_count"], "brs_ref": r["brs_ref"],
-                "rad_per_count": r["rad_per_count"]})
-            emit("/observer/estimate", t, {
-                "tick": tick, "t": rel, "cr_g": r["cr_g"], "cd_mm": r["cd_mm"],
-                "valid": bool(r["valid"]), "running": bool(r["running"]),
-                "state": int(r["state"]), "cause": int(r["cause"]),
-                "event": int(r["event"]), "onset_tick": int(r["onset_tick"]),
-                "proc_us": r["proc_us"]})
-            if r["ref_cr_g"] == r["ref_cr_g"]:  # not NaN
-                emit("/observer/reference", t, {"tick": tick, "t": rel,
-                                                "cr_g": r["ref_cr_g"],
-                                                "cd_mm": r["ref_cd_mm"]})
+            row = TickRow(*rings.ticks[k % capacity].tolist())
+            for topic, msg in fmt.tick_messages(row, perf0):
+                emit(topic, row.t, msg)
         tail_t = head_t
         now = time.monotonic()
         if wrote and now - last_flush >= flush_s:
@@ -307,10 +259,10 @@ def _write(rings: Rings, capacity: int, f: Any, clock: tuple[int, float],
             break
         if not wrote:
             time.sleep(0.005)
-    w.add_metadata("chest-observer-recorder", {
+    w.add_metadata(fmt.META_END, {
         "frames_lost": str(int(ctrl[FRAMES_LOST])),
         "ticks_lost": str(int(ctrl[TICKS_LOST])),
-        "frames": str(seq["/can/frames"]), "ticks": str(seq["/observer/estimate"])})
+        "frames": str(seq[fmt.FRAMES]), "ticks": str(seq[fmt.ESTIMATE])})
     w.finish()
     f.flush()
     ctrl[FRAMES_FLUSHED], ctrl[TICKS_FLUSHED] = tail_f, tail_t

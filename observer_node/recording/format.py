@@ -1,0 +1,130 @@
+"""The recording's format: one MCAP file per run, its topics, their fields and JSON schemas.
+
+This module is the contract between the daemon that writes a recording
+(:mod:`.writer`), everything that reads one (:mod:`.reader`, ``analyze``, ``crash-replay``)
+and any MCAP viewer: topic names, the fields of each message with their JSON types, the
+metadata records and attachments. A field added here is added everywhere.
+
+Topics (JSON messages, one message type per topic, every field declared in its schema so
+Foxglove offers it):
+
+``/can/frames``          every frame received and sent, raw, for exact replay
+``/observer/inputs``     per tick: accelerometer (J211), deceleration, bias, BRS
+``/observer/estimate``   per tick: CR, CD, valid, running, state, invalid cause
+``/observer/reference``  per tick with reference frames: the dummy's measured CR, CD
+``/observer/status``     the ObserverStatus, ObserverCounters and ObserverHealth frames,
+                         decoded (their signals by name)
+
+Metadata records: ``chest-observer`` (software, model, DBC hash, configuration, start time)
+at the start, ``chest-observer-recorder`` (what was written and lost) at a clean end; a file
+without the latter was cut short. Attachments: ``model.json`` and ``chest_observer.dbc``.
+Times: ``t`` is seconds since the recorder started; the MCAP log time is wall-clock ns.
+"""
+
+from __future__ import annotations
+
+import json
+from typing import NamedTuple
+
+MCAP_MAGIC = b"\x89MCAP0\r\n"
+META_RUN = "chest-observer"
+META_END = "chest-observer-recorder"
+ATT_MODEL = "model.json"
+ATT_DBC = "chest_observer.dbc"
+
+FRAMES = "/can/frames"
+INPUTS = "/observer/inputs"
+ESTIMATE = "/observer/estimate"
+REFERENCE = "/observer/reference"
+STATUS = "/observer/status"
+
+# Frame flags in the rings and in /can/frames (bits 1, 2 and 8 are the bus port's)
+FLAG_TX = 4
+
+
+class TickRow(NamedTuple):
+    """One tick as the daemon hands it to the writer (floats in shared memory)."""
+
+    t: float
+    tick: float  # -1: a watchdog publish between ticks
+    accel_x_g: float
+    decel_g: float
+    bias_g: float
+    brs_count: float
+    brs_ref: float
+    rad_per_count: float
+    cr_g: float
+    cd_mm: float
+    valid: float
+    running: float
+    state: float
+    cause: float
+    event: float
+    onset_tick: float
+    ref_cr_g: float  # NaN: no reference frame yet
+    ref_cd_mm: float
+    proc_us: float
+
+
+TICK_COLS = TickRow._fields
+
+# Per-tick topics: field -> (JSON type, the TickRow column it comes from). ``t`` is made
+# relative to the recorder's start.
+TICK_TOPICS: dict[str, dict[str, tuple[str, str]]] = {
+    INPUTS: {"tick": ("integer", "tick"), "t": ("number", "t"),
+             "accel_x_g": ("number", "accel_x_g"), "decel_g": ("number", "decel_g"),
+             "bias_g": ("number", "bias_g"), "brs_count": ("number", "brs_count"),
+             "brs_ref": ("number", "brs_ref"), "rad_per_count": ("number", "rad_per_count")},
+    ESTIMATE: {"tick": ("integer", "tick"), "t": ("number", "t"), "cr_g": ("number", "cr_g"),
+               "cd_mm": ("number", "cd_mm"), "valid": ("boolean", "valid"),
+               "running": ("boolean", "running"), "state": ("integer", "state"),
+               "cause": ("integer", "cause"), "event": ("integer", "event"),
+               "onset_tick": ("integer", "onset_tick"), "proc_us": ("number", "proc_us")},
+    REFERENCE: {"tick": ("integer", "tick"), "t": ("number", "t"),
+                "cr_g": ("number", "ref_cr_g"), "cd_mm": ("number", "ref_cd_mm")},
+}
+TOPIC_FIELDS = {topic: {k: v[0] for k, v in f.items()} for topic, f in TICK_TOPICS.items()}
+FRAME_FIELDS = {"t": "number", "id": "integer", "dir": "string", "error": "boolean",
+                "fd": "boolean", "dlc": "integer", "data": "string"}
+# The daemon's status frames, decoded: one topic and one message type per frame; the
+# fields are the frame's signals in the DBC (see :func:`status_fields`).
+STATUS_TOPICS = {"ObserverStatus": "/observer/status", "ObserverCounters": "/observer/counters",
+                 "ObserverHealth": "/observer/health"}
+TITLES = {FRAMES: "chest_observer.CanFrame", INPUTS: "chest_observer.Inputs",
+          ESTIMATE: "chest_observer.Estimate", REFERENCE: "chest_observer.Reference",
+          **{topic: f"chest_observer.{name}" for name, topic in STATUS_TOPICS.items()}}
+_CAST = {"integer": int, "boolean": bool, "number": float}
+
+
+def status_fields(signal_names: list[str], integer: set[str]) -> dict[str, str]:
+    """Fields of a status frame's topic: ``t`` and every signal (``integer`` names those
+    without a scale)."""
+    return {"t": "number", **{n: "integer" if n in integer else "number"
+                              for n in signal_names}}
+
+
+def json_schema(topic: str, fields: dict[str, str]) -> bytes:
+    """The JSON schema of a topic's messages: every field declared, all required."""
+    return json.dumps({"title": TITLES[topic], "type": "object",
+                       "properties": {k: {"type": v} for k, v in fields.items()},
+                       "required": list(fields)}).encode()
+
+
+def tick_messages(row: TickRow, t0: float) -> list[tuple[str, dict]]:
+    """The messages of one tick: inputs, estimate, and the reference when there is one."""
+    out = []
+    for topic, fields in TICK_TOPICS.items():
+        if topic == REFERENCE and row.ref_cr_g != row.ref_cr_g:  # NaN: none yet
+            continue
+        msg = {k: _CAST[kind](getattr(row, col)) for k, (kind, col) in fields.items()}
+        msg["t"] = row.t - t0
+        out.append((topic, msg))
+    return out
+
+
+def frame_message(t_rel: float, can_id: int, flags: int, data: bytes) -> dict:
+    """A /can/frames message: a raw frame as received or sent (``flags``: the port's
+    FLAG_ERROR 1, FLAG_FD 2, and FLAG_TX)."""
+    return {"t": t_rel, "id": can_id, "dir": "tx" if flags & FLAG_TX else "rx",
+            "error": bool(flags & 1), "fd": bool(flags & 2), "dlc": len(data),
+            "data": data.hex()}
