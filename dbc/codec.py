@@ -112,6 +112,8 @@ class FrameCodec:
         self._struct = struct.Struct(fmt)
         self._fields = fields
         self._by_name = {f.name: f for f in fields}
+        self._fields_by_index = {f.index: f for f in fields}
+        self._message = message
         self._nslots = slot + 1
         self.has_e2e = self.signal_names[0].endswith("_CRC") and any(
             n.endswith("_Counter") for n in self.signal_names)
@@ -173,11 +175,46 @@ class FrameCodec:
             raise LayoutError(f"{self.name}.{name} is not a sub-byte signal")
         return f.shift
 
+    @property
+    def slots(self) -> int:
+        """How many values ``struct`` packs: whole fields, and one per byte of sub-byte
+        fields."""
+        return self._nslots
+
+    def locate(self, name: str) -> tuple[int, int, int]:
+        """Where a signal is in ``struct.unpack_from(data)``'s tuple: ``(slot, shift,
+        mask)``; its raw value is ``v[slot] >> shift & mask`` (for a whole field shift is 0
+        and the struct already gives the signed value). For hot paths that must not look
+        anything up per frame: the DBC stays the only place that knows where a bit is."""
+        f = self._by_name.get(name)
+        if f is None:
+            raise LayoutError(f"{self.name} has no signal {name!r} (the DBC has "
+                              f"{', '.join(self.signal_names)})")
+        return f.slot, f.shift if f.sub_byte else 0, (1 << f.bits) - 1
+
+    def choices(self, name: str) -> dict[str, int]:
+        """A signal's value table from the DBC (VAL_): name -> raw value."""
+        sig = self._message.get_signal_by_name(name)
+        return {str(v): int(k) for k, v in (sig.choices or {}).items()}
+
+    def with_counter(self, data: bytes, counter: int) -> bytes:
+        """The same frame with another alive counter and its CRC redone."""
+        raw = self.unpack(data)
+        if self.counter_index is None:
+            raise LayoutError(f"{self.name} has no alive counter")
+        raw[self.counter_index] = counter & ((1 << self._fields_by_index[
+            self.counter_index].bits) - 1)
+        out = bytearray(self.pack(raw))
+        if self.has_e2e:
+            out[0] = e2e_crc(self.frame_id, out)
+        return bytes(out)
+
     def encode(self, values: dict[str, float], counter: int = 0) -> bytes:
         """Frame bytes from physical values (missing signals 0), with E2E CRC and counter."""
         raw = [self.to_raw(n, values.get(n, 0.0)) for n in self.signal_names]
         if self.has_e2e and self.counter_index is not None:
-            raw[self.counter_index] = counter & 0xF
+            raw[self.counter_index] = counter & ((1 << self._fields_by_index[
+                self.counter_index].bits) - 1)
         data = bytearray(self.pack(raw))
         if self.has_e2e:
             data[0] = e2e_crc(self.frame_id, data)

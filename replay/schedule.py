@@ -19,7 +19,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from dbc import Codec, e2e_crc
+from dbc import Codec
 from observer_node.data import CrashTest
 from observer_node.data.crashtest import resample_inputs, resample_reference
 
@@ -51,10 +51,7 @@ def restamp_counters(s: Schedule, codec: Codec) -> Schedule:
             continue
         k = counters.get(cid, 0)
         counters[cid] = k + 1
-        b = bytearray(d)
-        b[1] = (b[1] & 0xF0) | (k & 0xF)
-        b[0] = e2e_crc(cid, b)
-        data.append(bytes(b))
+        data.append(fc.with_counter(d, k))
     return Schedule(s.t_s, s.ids, data, s.source, s.synthetic)
 
 
@@ -108,7 +105,7 @@ def crash_test_schedule(test: CrashTest, codec: Codec, rate_hz: float = 1000.0,
             times.append(tk)
             ids.append(bfc.frame_id)
             data.append(bfc.encode({"BrsCount": count, "BrsCountsPerRev": test.counts_per_rev,
-                                    "BeltSpindle_Status": 2}, n_brs))
+                                    "BeltSpindle_Bidirectional": 1}, n_brs))
             n_brs += 1
             last_brs = count
         if cr is not None and cd is not None:
@@ -132,7 +129,7 @@ def _burst_schedule(test: CrashTest, codec: Codec, rate_hz: float, idx: np.ndarr
     n_frames = len(idx) // BURST_SAMPLES  # a partial last burst is not sent
     for f in range(n_frames):
         values: dict[str, float] = {"BurstCountsPerRev": test.counts_per_rev or 0,
-                                    "InputBurst_Status": 2}
+                                    "InputBurst_Bidirectional": 1}
         for j in range(BURST_SAMPLES):
             i = idx[f * BURST_SAMPLES + j]
             values[f"BurstAccelX{j}"] = -pulse[i]  # model -> J211 sign

@@ -33,10 +33,12 @@ def r16_schedule(name: str = "R16_002", reference: bool = True, pre_s: float = 0
 class Harness:
     """A daemon on a virtual channel, a sender and a listener on the same channel."""
 
-    def __init__(self, model: ModelFile, channel: str, record: Path | None = None, **cfg):
+    def __init__(self, model: ModelFile, channel: str, record: Path | None = None,
+                 port_class: type[PythonCanPort] = PythonCanPort, codec: Codec = CODEC,
+                 **cfg):
         self.cfg = NodeConfig(interface="virtual", channel=channel, record=str(record or ""),
                               **cfg)
-        self.node = ObserverNode(self.cfg, model, CODEC, port_factory=lambda ids: PythonCanPort(
+        self.node = ObserverNode(self.cfg, model, codec, port_factory=lambda ids: port_class(
             "virtual", channel, ids))
         self.tx = can.Bus(interface="virtual", channel=channel)
         self.rx = can.Bus(interface="virtual", channel=channel)

@@ -145,14 +145,12 @@ class _FlakyPort(PythonCanPort):
 
 def test_reconnects_when_the_bus_goes_away(model):
     acc = CODEC["TunnelAccel"]
-    with Harness(model, "flaky", reconnect_s=0.01) as h:
-        h.node._port_factory = lambda ids: _FlakyPort("virtual", "flaky", ids)
-        h.node._reconnect()
+    with Harness(model, "flaky", port_class=_FlakyPort, reconnect_s=0.01) as h:
         for k in range(100):
             h.send(acc.frame_id, _accel(0.0, k))
             time.sleep(0.001)
         time.sleep(0.05)
-    assert h.node.counters.reconnects >= 2 and h.node.counters.ticks > 40
+    assert h.node.counters.reconnects >= 1 and h.node.counters.ticks > 40
 
 
 class _DownOnSendPort(PythonCanPort):
@@ -169,15 +167,14 @@ class _DownOnSendPort(PythonCanPort):
 
 def test_bus_gone_while_sending_reconnects_and_keeps_the_tick(model, tmp_path):
     acc = CODEC["TunnelAccel"]
-    with Harness(model, "downsend", record=tmp_path / "run.mcap", reconnect_s=0.01) as h:
-        h.node._port_factory = lambda ids: _DownOnSendPort("virtual", "downsend", ids)
-        h.node._reconnect()
+    with Harness(model, "downsend", record=tmp_path / "run.mcap", port_class=_DownOnSendPort,
+                 reconnect_s=0.01) as h:
         for k in range(60):
             h.send(acc.frame_id, _accel(0.0, k))
             time.sleep(0.002)
         time.sleep(0.1)
     c = h.node.counters
-    assert h.thread.is_alive() is False and c.reconnects >= 4 and c.tx_dropped >= 3
+    assert h.thread.is_alive() is False and c.reconnects >= 3 and c.tx_dropped >= 3
     # Every tick the daemon stepped is in the recording, sent or not (frames sent while no
     # port was open are gone: the virtual bus keeps nothing for absent receivers).
     assert len(read_recording(tmp_path / "run.mcap").ticks["tick"]) == c.ticks > 20
@@ -290,17 +287,14 @@ def test_two_tests_back_to_back_are_two_events_without_spikes(model, tmp_path):
 def test_invalid_ticks_are_marked_not_scored_as_valid(model, tmp_path):
     """A BRS sensor-fault flag mid-event: those ticks are flagged invalid, analyze counts
     them, scores the valid ones apart, and the plot shows them as a shaded gap."""
-    from dbc import e2e_crc
-
     sched = r16_schedule()
-    brs_id = CODEC["BeltSpindle"].frame_id
+    brs = CODEC["BeltSpindle"]
     t_event = 0.2 + 0.05  # 50 ms into the test
     k = next(i for i, (t, cid) in enumerate(zip(sched.t_s, sched.ids, strict=True))
-             if cid == brs_id and t >= t_event)
-    d = bytearray(sched.data[k])
-    d[1] |= 0x10  # BeltSpindle_Status bit 0: sensor fault
-    d[0] = e2e_crc(brs_id, d)
-    sched.data[k] = bytes(d)
+             if cid == brs.frame_id and t >= t_event)
+    values = brs.decode(sched.data[k])
+    sched.data[k] = brs.encode({**values, "BeltSpindle_SensorFault": 1},
+                               int(values["BeltSpindle_Counter"]))
     _, _, rec = _play_recorded(model, "flagged", sched, tmp_path / "run.mcap")
     (event,) = analyze(rec, out_dir=tmp_path / "an")["events"]
     assert event["invalid_ticks"] >= 5
@@ -331,3 +325,51 @@ def test_every_message_matches_its_topics_schema(model, tmp_path):
             seen[channel.topic] = seen.get(channel.topic, 0) + 1
             assert s["title"] == fmt.TITLES[channel.topic]
     assert set(seen) == set(fmt.TITLES)  # every topic of the format is written
+
+
+def test_moving_bits_in_the_dbc_needs_no_other_edit(model, tmp_path):
+    """The DBC is the only place that knows where a bit is: swap the alive counter and the
+    flags of the accelerometer, BRS and estimate frames and move two invalid-cause bits, and
+    replay and daemon follow without another edit."""
+    from dbc import DBC_PATH, Codec
+    from replay.schedule import crash_test_schedule
+
+    text = DBC_PATH.read_text()
+    for old, new in (
+            ("TunnelAccel_Counter : 8|4", "TunnelAccel_Counter : 12|4"),
+            ("TunnelAccel_SensorFault : 12|1", "TunnelAccel_SensorFault : 8|1"),
+            ("BeltSpindle_Counter : 8|4", "BeltSpindle_Counter : 12|4"),
+            ("BeltSpindle_SensorFault : 12|1", "BeltSpindle_SensorFault : 8|1"),
+            ("BeltSpindle_Bidirectional : 13|1", "BeltSpindle_Bidirectional : 9|1"),
+            ("ChestEstimate_Counter : 8|4", "ChestEstimate_Counter : 12|4"),
+            ("ChestEstimate_Valid : 12|1", "ChestEstimate_Valid : 9|1"),
+            ("ChestEstimate_Running : 13|1", "ChestEstimate_Running : 8|1"),
+            ("Invalid_AccelTimeout : 48|1", "Invalid_AccelTimeout : 55|1"),
+            ("Invalid_NotArmed : 55|1", "Invalid_NotArmed : 48|1")):
+        assert old in text
+        text = text.replace(old, new)
+    moved_path = tmp_path / "moved.dbc"
+    moved_path.write_text(text)
+    moved = Codec(moved_path)
+    sched = crash_test_schedule(read_isomme(bundled_campaign() / "R16_002.zip"), moved, 1000.0,
+                                reference=True, pre_s=0.2)
+    est = moved["ChestEstimate"]
+    # Timeouts far above any scheduling hiccup: validity here is about where its bit is.
+    with Harness(model, "moved", tmp_path / "run.mcap", codec=moved, accel_timeout_s=1.0,
+                 brs_timeout_s=1.0) as h:
+        h.play(sched)
+        time.sleep(0.1)
+        frames = []
+        while (m := h.rx.recv(0)) is not None:
+            frames.append(m)
+    c = h.node.counters
+    n_accel = int((sched.ids == moved["TunnelAccel"].frame_id).sum())
+    assert c.ticks == n_accel and c.bad_e2e == c.lost == c.rejected == 0
+    decoded = [est.decode(m.data) for m in frames if m.arbitration_id == est.frame_id]
+    assert sum(d["ChestEstimate_Running"] for d in decoded) > 150
+    assert all(d["ChestEstimate_Valid"] for d in decoded if d["ChestEstimate_Running"])
+    status = [moved["ObserverStatus"].decode(m.data) for m in frames
+              if m.arbitration_id == moved["ObserverStatus"].frame_id]
+    assert any(s["Invalid_NotArmed"] for s in status)  # holding after the event
+    assert not any(s["Invalid_AccelTimeout"] for s in status[:-3])
+    _assert_matches_offline(read_recording(tmp_path / "run.mcap"))

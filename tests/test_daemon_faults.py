@@ -12,7 +12,7 @@ from pathlib import Path
 
 import pytest
 
-from observer_node.daemon.node import RECORDING_LOST, _wrap16
+from observer_node.daemon.outputs import wrap16
 from observer_node.recording import read_recording
 from observer_node.recording.writer import FAILED, RESTARTED, RecorderError, create_exclusive
 
@@ -62,7 +62,7 @@ def test_killed_writer_restarts_into_a_new_part_and_says_so(model, tmp_path):
     assert rec.state == RESTARTED and len(rec.parts) == 2
     assert rec.parts[1].name == "run.part2.mcap"
     assert any("recording goes on in" in line and "run.part2.mcap" in line for line in logs)
-    assert any(s["ObserverFault"] & RECORDING_LOST for s in status)
+    assert any(s["Fault_RecordingLost"] for s in status)
     assert any(x["RecorderState"] == RESTARTED for x in health)
     assert h.node.recording_lost  # run_daemon's exit code is then non-zero
     ticks = set()
@@ -97,7 +97,7 @@ def test_disk_full_fails_the_recording_loudly_and_estimates_go_on(model, tmp_pat
         assert any("No space left on device" in line for line in logs)
         assert any("recording stopped" in line for line in logs), logs
         assert health[-1]["RecorderState"] == FAILED and health[-1]["RecorderLostTicks"] > 0
-        assert status[-1]["ObserverFault"] & RECORDING_LOST
+        assert status[-1]["Fault_RecordingLost"]
     finally:
         subprocess.run(["umount", "-l", str(mnt)], check=False)
 
@@ -154,4 +154,4 @@ def test_bad_record_path_from_the_cli_is_one_line(model_path, tmp_path):
 
 
 def test_counters_wrap_modulo_65536():
-    assert _wrap16(65535) == 65535 and _wrap16(65536) == 0 and _wrap16(70000) == 70000 - 65536
+    assert wrap16(65535) == 65535 and wrap16(65536) == 0 and wrap16(70000) == 70000 - 65536

@@ -46,10 +46,10 @@ from ..model.observer import LinearObserver
 
 ARMED, RUNNING, HOLD = 1, 2, 3
 
-# InvalidCause / ObserverFault bits (see the DBC). NOT_ARMED is a cause, never latched.
+# Causes of an invalid estimate; on the bus each is a one-bit signal of ObserverStatus
+# (daemon/outputs.py names them). NOT_ARMED is a state, never latched.
 ACCEL_TIMEOUT, BRS_TIMEOUT, BAD_E2E, LOST_FRAME, OUT_OF_RANGE, BUS_ERROR, SENSOR_FAULT, \
     NOT_ARMED = (1 << i for i in range(8))
-LATCHED_MASK = 0x7F
 
 
 @dataclass
@@ -159,7 +159,7 @@ class ObserverCore:
 
     @property
     def invalid_cause(self) -> int:
-        """InvalidCause bits now (0 when valid)."""
+        """The cause bits of an invalid estimate now (0 when valid)."""
         if self.valid:
             return 0
         return (self.cause if self.tick_index < self.invalid_until else 0) | \

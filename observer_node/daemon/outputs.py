@@ -1,0 +1,110 @@
+"""The daemon's outputs: the ChestEstimate frame every tick and the three status frames.
+
+What each bit and value means on the bus comes from the DBC, by signal name: the estimate's
+counter and flags are packed where the codec says, the observer's states are sent as the
+DBC's value table names them, and each invalid cause or latched fault of the core goes to
+the one-bit signal of that name (``Invalid_<Name>``, ``Fault_<Name>``).
+"""
+
+from __future__ import annotations
+
+from dbc import Codec, e2e_crc
+
+from ..recording.writer import OFF, Recorder
+from .core import (
+    ACCEL_TIMEOUT,
+    ARMED,
+    BAD_E2E,
+    BRS_TIMEOUT,
+    BUS_ERROR,
+    HOLD,
+    LOST_FRAME,
+    NOT_ARMED,
+    OUT_OF_RANGE,
+    RUNNING,
+    SENSOR_FAULT,
+    ObserverCore,
+)
+from .inputs import Counters
+
+# The core's cause bits and the names the DBC gives them (Invalid_<name>, Fault_<name>)
+CAUSES = {ACCEL_TIMEOUT: "AccelTimeout", BRS_TIMEOUT: "BrsTimeout", BAD_E2E: "BadE2E",
+          LOST_FRAME: "LostFrame", OUT_OF_RANGE: "OutOfRange", BUS_ERROR: "BusError",
+          SENSOR_FAULT: "SensorFault", NOT_ARMED: "NotArmed"}
+STATES = {ARMED: "ARMED", RUNNING: "RUNNING", HOLD: "HOLD"}
+
+
+def wrap16(v: int) -> int:
+    """Counters on the bus are free-running and wrap modulo 65536 (the DBC says so): a
+    receiver takes differences modulo 65536 and never sees a counter stick."""
+    return v & 0xFFFF
+
+
+class Outputs:
+    def __init__(self, codec: Codec, model_id: int):
+        est = codec["ChestEstimate"]
+        self.est_id, self.est_struct = est.frame_id, est.struct
+        self.est_crc = est.locate("ChestEstimate_CRC")[0]
+        self.est_cnt = est.locate("ChestEstimate_Counter")
+        self.est_valid = est.locate("ChestEstimate_Valid")[:2]
+        self.est_running = est.locate("ChestEstimate_Running")[:2]
+        self.est_cr = est.locate("ChestAccelCR")[0]
+        self.est_cd = est.locate("ChestDeflCD")[0]
+        self.est_scale_cr = est.scale("ChestAccelCR")
+        self.est_scale_cd = est.scale("ChestDeflCD")
+        self.est_lo, self.est_hi = est.raw_range("ChestAccelCR")
+        self._slots = [0] * est.slots
+        self._buf = bytearray(est.length)
+        self.status, self.counters, self.health = (codec["ObserverStatus"],
+                                                   codec["ObserverCounters"],
+                                                   codec["ObserverHealth"])
+        table = self.status.choices("ObserverState")
+        self.state_value = {s: table[name] for s, name in STATES.items()}
+        self.model_id = model_id
+
+    def estimate(self, core: ObserverCore, cr: float, cd: float, valid: bool,
+                 running: bool) -> bytes:
+        """The ChestEstimate frame of this tick (CR and CD saturated to the signal)."""
+        lo, hi = self.est_lo, self.est_hi
+        s = self._slots
+        cs, csh, cm = self.est_cnt
+        vs, vsh = self.est_valid
+        rs, rsh = self.est_running
+        s[cs] = s[vs] = s[rs] = s[self.est_crc] = 0
+        s[cs] |= (core.tick_index & cm) << csh
+        s[vs] |= valid << vsh
+        s[rs] |= running << rsh
+        s[self.est_cr] = min(max(round(cr / self.est_scale_cr), lo), hi)
+        s[self.est_cd] = min(max(round(cd / self.est_scale_cd), lo), hi)
+        buf = self._buf
+        self.est_struct.pack_into(buf, 0, *s)
+        buf[0] = e2e_crc(self.est_id, buf)
+        return bytes(buf)
+
+    def status_frames(self, core: ObserverCore, cnt: Counters, rec: Recorder | None,
+                      counter: int) -> list[tuple[int, bytes]]:
+        """ObserverStatus, ObserverCounters and ObserverHealth, E2E-protected (at the
+        status period, off the per-tick path)."""
+        lost = rec is not None and rec.degraded
+        cause, faults = core.invalid_cause, core.faults
+        status = {"ObserverState": self.state_value[core.state], "ModelId": self.model_id,
+                  "TickOverruns": wrap16(cnt.overruns), "Fault_RecordingLost": int(lost)}
+        for bit, name in CAUSES.items():
+            status[f"Invalid_{name}"] = int(bool(cause & bit))
+            if bit != NOT_ARMED:  # a state, not a fault: never latched
+                status[f"Fault_{name}"] = int(bool(faults & bit))
+        counters = {"LostFrames": wrap16(cnt.lost + cnt.kernel_dropped),
+                    "RejectedFrames": wrap16(cnt.rejected + cnt.unknown_id),
+                    "BadE2EFrames": wrap16(cnt.bad_e2e)}
+        health = {"RecorderState": OFF if rec is None else rec.state,
+                  "ErrorFrames": wrap16(cnt.error_frames),
+                  "RecorderLostTicks": wrap16(0 if rec is None else rec.lost_ticks),
+                  "SensorFaults": wrap16(core.hold_timeouts + core.bias_faults
+                                         + core.brs_jumps)}
+        return [(fc.frame_id, fc.encode(values, counter)) for fc, values in
+                ((self.status, status), (self.counters, counters), (self.health, health))]
+
+    def state(self, core: ObserverCore) -> int:
+        """The observer's state as the bus carries it."""
+        return self.state_value[core.state]
+
