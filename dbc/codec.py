@@ -14,7 +14,7 @@ the low nibble of byte 1 is a 4-bit alive counter.
 from __future__ import annotations
 
 import struct
-from collections.abc import Sequence
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -209,7 +209,7 @@ class FrameCodec:
             out[0] = e2e_crc(self.frame_id, out)
         return bytes(out)
 
-    def encode(self, values: dict[str, float], counter: int = 0) -> bytes:
+    def encode(self, values: Mapping[str, float], counter: int = 0) -> bytes:
         """Frame bytes from physical values (missing signals 0), with E2E CRC and counter."""
         raw = [self.to_raw(n, values.get(n, 0.0)) for n in self.signal_names]
         if self.has_e2e and self.counter_index is not None:
@@ -235,7 +235,10 @@ class Codec:
 
     def __init__(self, path: str | Path = DBC_PATH):
         self.path = Path(path)
-        self.db = cantools.database.load_file(str(self.path))
+        db = cantools.database.load_file(str(self.path))
+        if not isinstance(db, cantools.database.can.Database):
+            raise LayoutError(f"{self.path}: not a CAN database")
+        self.db = db
         self.frames = {m.name: FrameCodec(m) for m in self.db.messages}
         self.by_id = {c.frame_id: c for c in self.frames.values()}
 

@@ -96,7 +96,7 @@ def cmd_evaluate(a: argparse.Namespace) -> int:
     out = Path(a.out)
     if a.model:
         mf = ModelFile.load(a.model)
-        fits = evaluate_model(mf, tests, out, window)  # type: ignore[arg-type]
+        fits = evaluate_model(mf, tests, out, window)
         f = fits["fit"]
         print(f"{mf.kind} model {mf.name!r} on {len(tests)} tests:")
         for name, v in fits["tests"].items():
@@ -185,18 +185,18 @@ def cmd_analyze(a: argparse.Namespace) -> int:
           f"max tick processing {result['max_proc_us']:.0f} us")
     if rec.salvaged:
         print(f"  salvaged: {rec.salvage_note}")
-    for e in result["events"]:
-        line = (f"  event {e['event']} (onset tick {e['onset_tick']}, {e['ticks']} ticks): "
-                f"max |daemon - offline| CR {e['max_abs_diff_offline']['cr_g']:.2g} g, "
-                f"CD {e['max_abs_diff_offline']['cd_mm']:.2g} mm")
+    for ev in result["events"]:
+        line = (f"  event {ev['event']} (onset tick {ev['onset_tick']}, {ev['ticks']} ticks): "
+                f"max |daemon - offline| CR {ev['max_abs_diff_offline']['cr_g']:.2g} g, "
+                f"CD {ev['max_abs_diff_offline']['cd_mm']:.2g} mm")
         print(line)
-        if "fit_vs_reference" in e:
-            f = e["fit_vs_reference"]
+        if "fit_vs_reference" in ev:
+            f = ev["fit_vs_reference"]
             print(f"    fit vs reference (eq. 3.15): CR {f['cr']:.1f} %  CD {f['cd']:.1f} %  "
                   f"TOT {f['total']:.1f} %")
-        if e["invalid_ticks"]:
-            v = e.get("fit_vs_reference_valid")
-            print(f"    {e['invalid_ticks']} of {e['ticks']} ticks flagged invalid (gaps in the "
+        if ev["invalid_ticks"]:
+            v = ev.get("fit_vs_reference_valid")
+            print(f"    {ev['invalid_ticks']} of {ev['ticks']} ticks flagged invalid (gaps in the "
                   "plots)" + (f"; on the valid ones: CR {v['cr']:.1f} %  CD {v['cd']:.1f} %"
                               if v else ""))
     if not result["events"]:

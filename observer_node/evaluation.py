@@ -6,6 +6,7 @@ from __future__ import annotations
 import json
 import re
 from pathlib import Path
+from typing import Any
 
 import numpy as np
 
@@ -62,8 +63,8 @@ def identify(kind: str, data: Dataset, nmax: int = 6, order: int = 7,
         m.fits = fit_table(data.names, data.y[:, data.win], m.simulate(data)[:, data.win])
         return arx.to_model_file(m, data, name or f"arx-nmax{nmax}", nmax, history)
     if kind == "n4sid":
-        m = n4sid.n4sid(data, order, N4SID_BLOCK_ROWS)
-        return n4sid.to_model_file(m, data, name or f"n4sid-{order}", N4SID_BLOCK_ROWS)
+        ss = n4sid.n4sid(data, order, N4SID_BLOCK_ROWS)
+        return n4sid.to_model_file(ss, data, name or f"n4sid-{order}", N4SID_BLOCK_ROWS)
     raise ValueError(f"unknown model kind {kind!r} (greybox, arx, n4sid)")
 
 
@@ -77,7 +78,7 @@ def simulate_model(mf: ModelFile, data: Dataset) -> np.ndarray:
 def dataset_for(mf: ModelFile, tests: list[CrashTest],
                 window_s: tuple[float, float] | None = None) -> Dataset:
     window = window_s or tuple(mf.fitted_on.get("window_s", THESIS_WINDOW_S))
-    return make_dataset(tests, mf.tick_rate_hz, window)  # type: ignore[arg-type]
+    return make_dataset(tests, mf.tick_rate_hz, window)
 
 
 def evaluate_model(mf: ModelFile, tests: list[CrashTest], out_dir: Path | None = None,
@@ -132,7 +133,7 @@ def thesis_comparison(tests: list[CrashTest], out_dir: Path, rate_hz: float = 10
                 prog.update(f"{setup}: ARX order search Nmax={nmax}")
                 arx_orders[nmax], _ = arx.search_orders(est, nmax, progress=prog)
             scans[setup] = _order_scans(est, val, out_dir, setup, prog)
-        specs = {
+        specs: dict[str, dict[str, Any]] = {
             "ARX Nmax=10": dict(kind="arx", nmax=10, orders=arx_orders[10]),
             "ARX Nmax=6": dict(kind="arx", nmax=6, orders=arx_orders[6]),
             "SS N=16": dict(kind="n4sid", order=16),
@@ -142,7 +143,7 @@ def thesis_comparison(tests: list[CrashTest], out_dir: Path, rate_hz: float = 10
         for label, spec in specs.items():
             prog.update(f"{setup}: {label}")
             slug = re.sub(r"[^a-z0-9]+", "-", label.lower()).strip("-")
-            mf = identify(data=est, name=f"{setup.lower()}-{slug}", **spec)  # type: ignore[arg-type]
+            mf = identify(data=est, name=f"{setup.lower()}-{slug}", **spec)
             mf.save(out_dir / "models" / f"{setup.lower()}-{slug}.json")
             y_hat = simulate_model(mf, val)
             fits = fit_table(val.names, val.y[:, val.win], y_hat[:, val.win])

@@ -81,7 +81,7 @@ def describe(s: Schedule, bitrate: float, data_bitrate: float | None = None) -> 
     dur = float(s.t_s[-1] - s.t_s[0]) if len(s) else 0.0
     lines = [f"{len(s)} frames over {dur:.3f} s from {s.source}"]
     counts = Counter(s.ids.tolist())
-    sizes = {}
+    sizes: dict[int, int] = {}
     for cid, d in zip(s.ids.tolist(), s.data, strict=True):
         sizes.setdefault(cid, len(d))
     load = 0.0

@@ -71,17 +71,20 @@ def _num(lo: float, hi: float, integer: bool = False) -> dict[str, Any]:
 
 
 _STR = {"type": "string", "maxLength": 4096}
-_NODE = {"interface": {**_STR, "minLength": 1}, "channel": _STR, "fd": {"type": "boolean"},
-         "raw_socketcan": {"type": "boolean"}, "model": _STR, "record": _STR,
-         "status_period_s": _num(0.01, 10), "accel_timeout_s": _num(0, 60),
-         "brs_timeout_s": _num(0.001, 10), "idle_after_s": _num(0.01, 3600),
-         "reconnect_s": _num(0.01, 60), "cpu_latency_us": _num(-1, 100_000, True)}
-_CORE = {"trigger_g": _num(0.5, 100), "trigger_ticks": _num(1, 100, True),
-         "onset_g": _num(0, 100), "pretrigger_s": _num(0, 1), "bias_window_s": _num(0.002, 10),
-         "event_s": _num(0.01, 10), "quiet_g": _num(0.001, 100), "rearm_s": _num(0, 10),
-         "hold_max_s": _num(0.01, 3600), "bias_max_g": _num(0.1, 300),
-         "brs_max_rate_rad_s": _num(1, 1e6), "recover_ticks": _num(0, 100_000, True),
-         "max_bridge_ticks": _num(0, 10_000, True), "counts_per_rev": _num(1, 255, True)}
+_Schema = dict[str, dict[str, Any]]
+_NODE: _Schema = {
+    "interface": {**_STR, "minLength": 1}, "channel": _STR, "fd": {"type": "boolean"},
+    "raw_socketcan": {"type": "boolean"}, "model": _STR, "record": _STR,
+    "status_period_s": _num(0.01, 10), "accel_timeout_s": _num(0, 60),
+    "brs_timeout_s": _num(0.001, 10), "idle_after_s": _num(0.01, 3600),
+    "reconnect_s": _num(0.01, 60), "cpu_latency_us": _num(-1, 100_000, True)}
+_CORE: _Schema = {
+    "trigger_g": _num(0.5, 100), "trigger_ticks": _num(1, 100, True),
+    "onset_g": _num(0, 100), "pretrigger_s": _num(0, 1), "bias_window_s": _num(0.002, 10),
+    "event_s": _num(0.01, 10), "quiet_g": _num(0.001, 100), "rearm_s": _num(0, 10),
+    "hold_max_s": _num(0.01, 3600), "bias_max_g": _num(0.1, 300),
+    "brs_max_rate_rad_s": _num(1, 1e6), "recover_ticks": _num(0, 100_000, True),
+    "max_bridge_ticks": _num(0, 10_000, True), "counts_per_rev": _num(1, 255, True)}
 assert set(_NODE) | {"core"} == {f.name for f in fields(NodeConfig)}
 assert set(_CORE) == {f.name for f in fields(CoreConfig)}
 
@@ -122,7 +125,9 @@ def example_toml() -> str:
     """Every key with its default and allowed range, as a config file would hold them."""
     node, core = NodeConfig(), CoreConfig()
     out = ["# observer-node run --config FILE: every key, its default and its range"]
-    for table, obj, schema in (("[observer]", node, _NODE), ("[observer.core]", core, _CORE)):
+    tables: tuple[tuple[str, object, dict[str, dict[str, Any]]], ...] = (
+        ("[observer]", node, _NODE), ("[observer.core]", core, _CORE))
+    for table, obj, schema in tables:
         out.append(f"\n{table}")
         for k, sch in schema.items():
             v = getattr(obj, k)

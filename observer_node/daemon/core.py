@@ -42,6 +42,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ..model.nonlinear import NonlinearGreyBox
 from ..model.observer import LinearObserver
 
 ARMED, RUNNING, HOLD = 1, 2, 3
@@ -73,7 +74,8 @@ class CoreConfig:
 class ObserverCore:
     """One instance per daemon. ``tick`` is called once per accelerometer sample."""
 
-    def __init__(self, observer: LinearObserver, cfg: CoreConfig | None = None):
+    def __init__(self, observer: LinearObserver | NonlinearGreyBox,
+                 cfg: CoreConfig | None = None):
         self.obs = observer
         self.cfg = cfg or CoreConfig()
         fs = observer.fs_hz

@@ -37,7 +37,7 @@ def write_csv(test: CrashTest, path: str | Path) -> Path:
     path = Path(path)
     cols = [test.time_s, test.pulse_g, test.brs]
     names = ["time[s]", "pulse[g]", "brs[counts]"]
-    if test.has_outputs:
+    if test.cr_g is not None and test.cd_mm is not None:
         cols += [test.cr_g, test.cd_mm]
         names += ["cr[g]", "cd[mm]"]
     head = [f"# name: {test.name}", f"# setup: {test.setup}", "# signs: model"]

@@ -55,6 +55,8 @@ def make_dataset(tests: list[CrashTest], fs_hz: float = 1000.0,
                 f"needs {start:.3f}..{end:.3f} s"
             )
         bias = t.pulse_bias_g()
+        if t.cr_g is None or t.cd_mm is None:
+            raise CrashDataError(f"{t.source or t.name}: no CR/CD channels to identify on")
         r = t.resample(fs_hz)
         i = r.index_of(start)
         if r.n - i < n:
@@ -62,6 +64,7 @@ def make_dataset(tests: list[CrashTest], fs_hz: float = 1000.0,
         sl = slice(i, i + n)
         pulses.append(r.pulse_g[sl] - bias)
         brss.append(r.brs[sl] * (2 * np.pi / t.counts_per_rev))
+        assert r.cr_g is not None and r.cd_mm is not None  # resampled from t's outputs
         ys.append(np.column_stack([r.cr_g[sl], r.cd_mm[sl]]))
     i0 = round((window_s[0] - start) * fs_hz)
     return Dataset([t.name for t in tests], [t.setup for t in tests], fs_hz, np.array(pulses),

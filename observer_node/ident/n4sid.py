@@ -59,7 +59,7 @@ def _hankel(x: np.ndarray, rows: int, start: int, cols: int) -> np.ndarray:
 def _subspace(data: Dataset, i: int) -> tuple[np.ndarray, np.ndarray]:
     """Left singular vectors and singular values of the oblique projection."""
     u = _inputs(data)
-    blocks = {"Up": [], "Uf": [], "Yp": [], "Yf": []}
+    blocks: dict[str, list[np.ndarray]] = {"Up": [], "Uf": [], "Yp": [], "Yf": []}
     n = data.y.shape[1]
     cols = n - 2 * i + 1
     if cols < 4 * i:

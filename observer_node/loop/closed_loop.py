@@ -23,6 +23,7 @@ from __future__ import annotations
 import json
 import time
 from pathlib import Path
+from typing import Any
 
 import numpy as np
 
@@ -87,9 +88,9 @@ def run_loop(est_tests: list[CrashTest], val_tests: list[CrashTest], out: Path,
                 tried.append((cv, c))
             if tried and max(t[0] for t in tried) - cv_now >= margin:
                 break
-        step = {"effects_before": [e["kind"] for e in effects], "cv_fit_before": cv_now,
-                "ranking": ranking, "tried": [{"kind": c.kind, "cv_fit": cv}
-                                              for cv, c in tried]}
+        step: dict[str, Any] = {
+            "effects_before": [e["kind"] for e in effects], "cv_fit_before": cv_now,
+            "ranking": ranking, "tried": [{"kind": c.kind, "cv_fit": cv} for cv, c in tried]}
         history.append(step)
         if not tried:
             step["decision"] = "no candidate explains more than 1 % of the residual"

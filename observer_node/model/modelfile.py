@@ -134,10 +134,10 @@ class ModelFile:
             raise ModelFileError(f"{where}: key 'state_space': {e}") from None
         if mf.effects and mf.kind != "greybox":
             raise ModelFileError(f"{where}: key 'effects' is only for grey-box models")
-        for i, e in enumerate(mf.effects):
-            if e.get("kind") not in EFFECTS:
-                raise ModelFileError(f"{where}: key 'effects[{i}].kind' {e.get('kind')!r} is "
-                                     f"not one of {sorted(EFFECTS)}")
+        for i, effect in enumerate(mf.effects):
+            if effect.get("kind") not in EFFECTS:
+                raise ModelFileError(f"{where}: key 'effects[{i}].kind' {effect.get('kind')!r} "
+                                     f"is not one of {sorted(EFFECTS)}")
         if mf.kind not in KINDS:
             raise ModelFileError(f"{where}: key 'kind' {mf.kind!r} not one of {KINDS}")
         for k, m in (("A", mf.A), ("B", mf.B), ("C", mf.C), ("D", mf.D)):

@@ -75,10 +75,12 @@ class NonlinearGreyBox:
         self._k2, self._c2, self._R = self.base["k2"], self.base["c2"], self.base["R"]
         slack = matrices({**self.base, "k2": 0.0, "c2": 0.0}, fs_hz)
         self.Ad_slack, self.Bd_slack, self.Gd_slack = slack[:3]
-        delay = next((e["parameters"] for e in self.effects if e["kind"] == "input_delay"), {})
+        delay: dict[str, float] = next((e["parameters"] for e in self.effects
+                                        if e["kind"] == "input_delay"), {})
         self.n_pulse = round(delay.get("n_pulse", 0))
         self.n_brs = round(delay.get("n_brs", 0))
-        off = next((e["parameters"] for e in self.effects if e["kind"] == "sensor_offset"), {})
+        off: dict[str, float] = next((e["parameters"] for e in self.effects
+                                      if e["kind"] == "sensor_offset"), {})
         self.offset = np.array([off.get("cr_g", 0.0), off.get("cd_mm", 0.0)])
         self._dt_g = G0 / fs_hz
         self.x = np.zeros(6)
