@@ -32,8 +32,8 @@ from pathlib import Path
 
 import can
 import numpy as np
+from observer_node.dbc import Codec, e2e_crc
 
-from dbc import Codec, e2e_crc
 from observer_node.daemon.config import NodeConfig
 from observer_node.daemon.node import ObserverNode
 from observer_node.daemon.ports import PythonCanPort

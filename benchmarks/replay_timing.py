@@ -24,12 +24,12 @@ from pathlib import Path
 
 import can
 import numpy as np
+from observer_node.dbc import Codec
+from observer_node.replay.player import bus_sender, lateness_report, play
+from observer_node.replay.schedule import Schedule, crash_test_schedule
+from observer_node.replay.sources import read_candump
 
-from dbc import Codec
 from observer_node.data import bundled_campaign, read_isomme
-from replay.player import bus_sender, lateness_report, play
-from replay.schedule import Schedule, crash_test_schedule
-from replay.sources import read_candump
 
 
 def write_candump(s: Schedule, path: Path) -> None:
@@ -88,10 +88,10 @@ def main() -> None:
         s = crash_test_schedule(read_isomme(bundled_campaign() / "R16_002.zip"), Codec(),
                                 1000.0, reference=not a.accel_only, pre_s=0.3)
         if a.accel_only:
-            from replay.sources import filter_remap
+            from observer_node.replay.sources import filter_remap
 
             s = filter_remap(s, {Codec()["TunnelAccel"].frame_id}, {})
-        from replay.schedule import concat
+        from observer_node.replay.schedule import concat
 
         s = concat([s] * 5, gap_s=0.01)  # ~2.6 s: enough frames for a p99
         log = Path(tempfile.mkdtemp()) / "r16_002.log"

@@ -31,9 +31,9 @@ def run_bench(out: Path, model_path: str | None = None, interface: str = "auto",
               rate: float = 1.0) -> dict:
     import can
 
-    from dbc import Codec
-    from replay.player import bus_sender, play
-    from replay.schedule import concat, crash_test_schedule, restamp_counters
+    from observer_node.dbc import Codec
+    from observer_node.replay.player import bus_sender, play
+    from observer_node.replay.schedule import concat, crash_test_schedule, restamp_counters
 
     from .daemon.config import NodeConfig
     from .daemon.node import ObserverNode

@@ -17,7 +17,7 @@ import argparse
 import sys
 from collections import Counter
 
-from dbc import Codec, fd_frame_time_s, frame_bits
+from observer_node.dbc import Codec, fd_frame_time_s, frame_bits
 
 from .player import bus_sender, play
 from .schedule import Schedule, concat, restamp_counters

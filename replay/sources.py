@@ -15,8 +15,8 @@ import re
 from pathlib import Path
 
 import numpy as np
+from observer_node.dbc import Codec
 
-from dbc import Codec
 from observer_node.data import ChannelCodes, CrashDataError, find_tests, load_test
 
 from .schedule import Schedule, crash_test_schedule

@@ -12,6 +12,7 @@ import time
 from pathlib import Path
 
 import numpy as np
+from observer_node.replay.schedule import crash_test_schedule
 
 from observer_node.daemon.core import ACCEL_TIMEOUT
 from observer_node.daemon.ports import PortError, PythonCanPort
@@ -19,7 +20,6 @@ from observer_node.data import bundled_campaign, read_isomme
 from observer_node.ident import greybox
 from observer_node.ident.dataset import make_dataset
 from observer_node.recording import analyze, read_recording
-from replay.schedule import crash_test_schedule
 
 from .daemon_feed import CODEC, Harness, r16_schedule
 
@@ -268,7 +268,7 @@ def test_two_tests_back_to_back_are_two_events_without_spikes(model, tmp_path):
     """The bench replays tests 0.3 s apart: the silence between them ends the first event,
     the second test's BRS reset (-218 counts to 0) is a sensor fault, not a belt movement,
     and each event equals the offline simulation; no valid estimate is a spike."""
-    from replay.schedule import concat, restamp_counters
+    from observer_node.replay.schedule import concat, restamp_counters
 
     sched = restamp_counters(concat([r16_schedule(), r16_schedule()], gap_s=0.3), CODEC)
     c, _, rec = _play_recorded(model, "b2b", sched, tmp_path / "run.mcap")
@@ -331,8 +331,8 @@ def test_moving_bits_in_the_dbc_needs_no_other_edit(model, tmp_path):
     """The DBC is the only place that knows where a bit is: swap the alive counter and the
     flags of the accelerometer, BRS and estimate frames and move two invalid-cause bits, and
     replay and daemon follow without another edit."""
-    from dbc import DBC_PATH, Codec
-    from replay.schedule import crash_test_schedule
+    from observer_node.dbc import DBC_PATH, Codec
+    from observer_node.replay.schedule import crash_test_schedule
 
     text = DBC_PATH.read_text()
     for old, new in (

@@ -15,12 +15,12 @@ from pathlib import Path
 
 import can
 import pytest
+from observer_node.replay.player import play
 
 from observer_node.daemon.ports import SocketCanPort
 from observer_node.evaluation import identify
 from observer_node.ident.dataset import make_dataset
 from observer_node.recording import analyze, read_recording
-from replay.player import play
 
 from .daemon_feed import CODEC, r16_schedule
 
@@ -153,7 +153,7 @@ def test_replay_tool_into_daemon_matches_offline_evaluation(model_path, tmp_path
     p = _start_daemon(model_path, record, tmp_path)
     test = bundled_campaign() / "R16_004.zip"
     try:
-        r = subprocess.run([sys.executable, "-m", "replay", str(test), "--reference",
+        r = subprocess.run([sys.executable, "-m", "observer_node.replay", str(test), "--reference",
                             "--interface", "socketcan", "--channel", CHANNEL,
                             "--rate", str(SLOW), "--quiet"], cwd=ROOT, capture_output=True,
                            text=True, timeout=600)
@@ -174,7 +174,7 @@ def test_replay_tool_into_daemon_matches_offline_evaluation(model_path, tmp_path
 
 def test_can_fd_is_a_configuration():
     """The same frame layouts go out as CAN FD frames when the port is configured for FD."""
-    from dbc import Codec
+    from observer_node.dbc import Codec
 
     acc = Codec()["TunnelAccel"]
     rx = SocketCanPort(CHANNEL, [acc.frame_id], fd=True)
@@ -204,7 +204,7 @@ def test_10_khz_as_can_fd_input_bursts(campaign, tmp_path):
     record = tmp_path / "run.mcap"
     p = _start_daemon(model_path, record, tmp_path, fd=True)
     try:
-        r = subprocess.run([sys.executable, "-m", "replay",
+        r = subprocess.run([sys.executable, "-m", "observer_node.replay",
                             str(bundled_campaign() / "R16_002.zip"), "--reference", "--fd",
                             "--burst", "--tick-rate", "10000", "--interface", "socketcan",
                             "--channel", CHANNEL, "--rate", str(SLOW), "--quiet"],

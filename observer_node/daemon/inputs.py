@@ -14,7 +14,7 @@ import math
 from collections.abc import Callable
 from dataclasses import dataclass
 
-from dbc import Codec, FrameCodec, e2e_crc
+from observer_node.dbc import Codec, FrameCodec, e2e_crc
 
 from .core import BAD_E2E, OUT_OF_RANGE, SENSOR_FAULT, ObserverCore
 

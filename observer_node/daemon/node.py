@@ -28,7 +28,7 @@ from collections.abc import Callable
 from dataclasses import asdict
 from typing import BinaryIO
 
-from dbc import DBC_PATH, Codec
+from observer_node.dbc import DBC_PATH, Codec
 
 from .. import __version__
 from ..model.modelfile import ModelFile

@@ -8,7 +8,7 @@ the one-bit signal of that name (``Invalid_<Name>``, ``Fault_<Name>``).
 
 from __future__ import annotations
 
-from dbc import Codec, e2e_crc
+from observer_node.dbc import Codec, e2e_crc
 
 from ..recording.writer import OFF, Recorder
 from .core import (

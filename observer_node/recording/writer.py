@@ -189,7 +189,7 @@ def _write(rings: Rings, capacity: int, f: Any, clock: tuple[int, float],
     # daemon waits for READY.
     from mcap.writer import CompressionType, Writer
 
-    from dbc import Codec
+    from observer_node.dbc import Codec
 
     codec = Codec(dbc_path)
     status = {codec[name].frame_id: (codec[name], topic)
