@@ -32,13 +32,13 @@ from pathlib import Path
 
 import can
 import numpy as np
-from observer_node.dbc import Codec, e2e_crc
 
 from observer_node.daemon.config import NodeConfig
 from observer_node.daemon.node import ObserverNode
 from observer_node.daemon.ports import PythonCanPort
 from observer_node.daemon.realtime import hold_cpu_latency
 from observer_node.data import bundled_campaign, read_isomme
+from observer_node.dbc import Codec, e2e_crc
 from observer_node.evaluation import identify
 from observer_node.ident.dataset import make_dataset
 from observer_node.recording import read_recording

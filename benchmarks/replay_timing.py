@@ -24,12 +24,12 @@ from pathlib import Path
 
 import can
 import numpy as np
+
+from observer_node.data import bundled_campaign, read_isomme
 from observer_node.dbc import Codec
 from observer_node.replay.player import bus_sender, lateness_report, play
 from observer_node.replay.schedule import Schedule, crash_test_schedule
 from observer_node.replay.sources import read_candump
-
-from observer_node.data import bundled_campaign, read_isomme
 
 
 def write_candump(s: Schedule, path: Path) -> None:

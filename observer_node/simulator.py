@@ -33,8 +33,9 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from .data.crashtest import STANDARD_GRAVITY, CrashTest
+from .data.crashtest import CrashTest
 from .data.filters import cfc_filter
+from .units import STANDARD_GRAVITY
 
 EFFECTS = {
     "chest_stiffening": "cubic hardening of the rib cage stiffness k1",

@@ -18,10 +18,10 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
-from observer_node.dbc import Codec
 
 from observer_node.data import CrashTest
 from observer_node.data.crashtest import resample_inputs, resample_reference
+from observer_node.dbc import Codec
 
 
 @dataclass

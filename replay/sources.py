@@ -15,9 +15,9 @@ import re
 from pathlib import Path
 
 import numpy as np
-from observer_node.dbc import Codec
 
 from observer_node.data import ChannelCodes, CrashDataError, find_tests, load_test
+from observer_node.dbc import Codec
 
 from .schedule import Schedule, crash_test_schedule
 

@@ -12,15 +12,15 @@ import time
 from pathlib import Path
 
 import can
-from observer_node.dbc import Codec
-from observer_node.replay.player import play
-from observer_node.replay.schedule import Schedule, crash_test_schedule
 
 from observer_node.daemon.config import NodeConfig
 from observer_node.daemon.node import ObserverNode
 from observer_node.daemon.ports import PythonCanPort
 from observer_node.data import bundled_campaign, read_isomme
+from observer_node.dbc import Codec
 from observer_node.model import ModelFile
+from observer_node.replay.player import play
+from observer_node.replay.schedule import Schedule, crash_test_schedule
 
 CODEC = Codec()
 

@@ -8,6 +8,7 @@ import time
 
 import can
 import numpy as np
+
 from observer_node.dbc import e2e_crc
 
 from .daemon_feed import CODEC, Harness

@@ -16,11 +16,11 @@ from collections.abc import Callable
 from pathlib import Path
 
 import pytest
-from observer_node.replay import cli as replay_cli
 
 from observer_node import cli
 from observer_node.evaluation import identify
 from observer_node.ident.dataset import make_dataset
+from observer_node.replay import cli as replay_cli
 
 DATA = Path(__file__).parent / "data"
 

@@ -12,7 +12,6 @@ import time
 from pathlib import Path
 
 import numpy as np
-from observer_node.replay.schedule import crash_test_schedule
 
 from observer_node.daemon.core import ACCEL_TIMEOUT
 from observer_node.daemon.ports import PortError, PythonCanPort
@@ -20,6 +19,7 @@ from observer_node.data import bundled_campaign, read_isomme
 from observer_node.ident import greybox
 from observer_node.ident.dataset import make_dataset
 from observer_node.recording import analyze, read_recording
+from observer_node.replay.schedule import crash_test_schedule
 
 from .daemon_feed import CODEC, Harness, r16_schedule
 

@@ -5,6 +5,7 @@ from __future__ import annotations
 import random
 
 import pytest
+
 from observer_node.dbc import Codec, bus_load, crc8_j1850, e2e_crc, frame_bits
 
 CODEC = Codec()

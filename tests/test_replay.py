@@ -8,13 +8,13 @@ from pathlib import Path
 import can
 import numpy as np
 import pytest
+
+from observer_node.data import bundled_campaign, read_isomme, write_csv
 from observer_node.dbc import Codec
 from observer_node.replay.cli import main
 from observer_node.replay.player import play
 from observer_node.replay.schedule import concat, crash_test_schedule, restamp_counters
 from observer_node.replay.sources import SourceError, load_source, read_candump
-
-from observer_node.data import bundled_campaign, read_isomme, write_csv
 
 from .conftest import DATA
 

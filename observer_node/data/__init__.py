@@ -4,8 +4,8 @@ from __future__ import annotations
 
 from pathlib import Path
 
+from ..units import STANDARD_GRAVITY
 from .crashtest import (
-    STANDARD_GRAVITY,
     THESIS_WINDOW_S,
     CrashDataError,
     CrashTest,

@@ -22,8 +22,6 @@ from dataclasses import dataclass, field, replace
 import numpy as np
 from scipy import signal
 
-STANDARD_GRAVITY = 9.80665  # m/s^2 per g
-
 # The thesis window (section 2.2): before 10 ms the pretensioner still takes slack, after
 # 150 ms the crash is over.
 THESIS_WINDOW_S = (0.01, 0.15)

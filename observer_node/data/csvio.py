@@ -21,7 +21,8 @@ from pathlib import Path
 
 import numpy as np
 
-from .crashtest import STANDARD_GRAVITY, CrashDataError, CrashTest
+from ..units import STANDARD_GRAVITY
+from .crashtest import CrashDataError, CrashTest
 from .isomme import decode_text
 
 _UNITS = {

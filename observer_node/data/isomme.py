@@ -27,7 +27,8 @@ from pathlib import Path, PurePosixPath
 
 import numpy as np
 
-from .crashtest import STANDARD_GRAVITY, CrashDataError, CrashTest
+from ..units import STANDARD_GRAVITY
+from .crashtest import CrashDataError, CrashTest
 
 NOVALUE = "NOVALUE"
 # Bounds of what a crash-test file can be: anything beyond is a broken or hostile file.

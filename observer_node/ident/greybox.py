@@ -23,9 +23,9 @@ from dataclasses import dataclass
 import numpy as np
 from scipy import linalg, optimize
 
-from ..data.crashtest import STANDARD_GRAVITY
 from ..model.modelfile import ModelFile
 from ..model.observer import simulate_ss, transform_inputs
+from ..units import STANDARD_GRAVITY
 from .dataset import Dataset
 from .metrics import fit_table
 from .progress import Progress

@@ -22,7 +22,7 @@ import math
 import numpy as np
 from scipy import linalg
 
-from ..data.crashtest import STANDARD_GRAVITY
+from ..units import STANDARD_GRAVITY
 from .effects import FORCE_KINDS, effect_forces
 from .observer import transform_inputs
 

@@ -19,7 +19,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..data.crashtest import STANDARD_GRAVITY
+from ..units import STANDARD_GRAVITY
 
 TRANSFORMS = ("velocity_brs_rate", "raw")
 
