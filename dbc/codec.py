@@ -168,13 +168,6 @@ class FrameCodec:
     def scale(self, name: str) -> float:
         return self._by_name[name].scale
 
-    def bit_shift(self, name: str) -> int:
-        """Bit position of a sub-byte signal inside its byte (for hand-packed hot paths)."""
-        f = self._by_name[name]
-        if not f.sub_byte:
-            raise LayoutError(f"{self.name}.{name} is not a sub-byte signal")
-        return f.shift
-
     @property
     def slots(self) -> int:
         """How many values ``struct`` packs: whole fields, and one per byte of sub-byte

@@ -48,6 +48,7 @@ class _Layout:
         self.crc = fc.locate(f"{prefix}_CRC")[0]
         self.cnt_slot, self.cnt_shift, self.cnt_mask = fc.locate(f"{prefix}_Counter")
         self.faults = tuple(fc.locate(f"{prefix}_{name}")[:2] for name in faults)
+        self.last = -1  # the last accepted alive counter, -1: none yet
 
 
 # Publish one tick: (receive time, accelerometer g, send the estimate frame?, ticks in frame)
@@ -88,21 +89,23 @@ class Inputs:
 
     def reset(self) -> None:
         """No alive counter seen yet (a new run, or the bus came back)."""
-        self.acc_counter = self.brs_counter = self.burst_counter = -1
+        self.acc.last = self.brs.last = self.burst.last = -1
         self.ref_cr = self.ref_cd = math.nan
 
     # ------------------------------------------------------------------ per frame
-    def _admit(self, lay: _Layout, data: bytes, last: int) -> tuple[tuple, int]:
+    def _admit(self, lay: _Layout, data: bytes) -> tuple[tuple, int]:
         """Unpack and E2E-check an input frame of the right length: its values and how many
         frames were lost before it (alive-counter gap, counted), or -1 for a bad CRC or a
-        repeated counter (counted, flagged)."""
+        repeated counter (counted, flagged). An accepted frame's counter becomes the last."""
         v = lay.struct.unpack_from(data)
         counter = v[lay.cnt_slot] >> lay.cnt_shift & lay.cnt_mask
+        last = lay.last
         if v[lay.crc] != e2e_crc(lay.id, data) or counter == last:
             self.counters.bad_e2e += 1
             self.core.fault(BAD_E2E)
             return v, -1
         self.counters.accepted += 1
+        lay.last = counter
         if last < 0:
             return v, 0
         gap = (counter - last - 1) & lay.cnt_mask
@@ -123,10 +126,9 @@ class Inputs:
         lay = self.acc
         if len(data) != lay.length:
             return self._wrong_length()
-        v, gap = self._admit(lay, data, self.acc_counter)
+        v, gap = self._admit(lay, data)
         if gap < 0:
             return None
-        self.acc_counter = v[lay.cnt_slot] >> lay.cnt_shift & lay.cnt_mask
         core = self.core
         if gap:
             core.bridge(gap)
@@ -146,10 +148,9 @@ class Inputs:
         lay, n = self.burst, self.burst_n
         if len(data) != lay.length:
             return self._wrong_length()
-        v, gap = self._admit(lay, data, self.burst_counter)
+        v, gap = self._admit(lay, data)
         if gap < 0:
             return None
-        self.burst_counter = v[lay.cnt_slot] >> lay.cnt_shift & lay.cnt_mask
         core = self.core
         if gap:
             core.bridge(gap * n)
@@ -171,10 +172,9 @@ class Inputs:
         lay = self.brs
         if len(data) != lay.length:
             return self._wrong_length()
-        v, gap = self._admit(lay, data, self.brs_counter)
+        v, gap = self._admit(lay, data)
         if gap < 0:
             return None
-        self.brs_counter = v[lay.cnt_slot] >> lay.cnt_shift & lay.cnt_mask
         self._flags(lay, v)
         self.core.set_brs(float(v[self.brs_count]), v[self.brs_per_rev] or self.default_per_rev)
         return None
