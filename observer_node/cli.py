@@ -4,13 +4,20 @@ Estimates the dummy's chest acceleration (CR) and deflection (CD) from the crash
 belt spindle rotation (BRS): identify models from crash tests, score them as the thesis does,
 close the loop on what they lack, and run them as a real-time CAN observer.
 
+The 24 crash tests bundled with the package are named campaign-a wherever tests are asked
+for: campaign-a (all), or campaign-a/PATTERN for those whose names match (R16_001-012 on the
+sled rig, SLED_001-006 sled with interior, FULL_001-006 full vehicle; 'campaign-a/*[13579]'
+are the odd-numbered ones). Any other argument is a path: an ISO-MME folder, .zip or .csv
+test, or a folder of them.
+
 Examples::
 
     observer-node bench                               # the whole bench on bundled data
     observer-node evaluate                            # thesis Tables 4.1-4.3, plots
-    observer-node identify --model greybox --data tests/data --out model.json
-    observer-node evaluate --model model.json --data tests/data/R16_002 --out out/
-    observer-node loop --estimate odd/ --validate even/ --out out/loop
+    observer-node identify --model greybox --data 'campaign-a/R16_*[13579]' --out model.json
+    observer-node evaluate --model model.json --data campaign-a/R16_002 --out out/eval
+    observer-node loop --estimate 'campaign-a/*[13579]' --validate 'campaign-a/*[02468]' \
+        --out out/loop
     observer-node run --interface socketcan --channel vcan0 --model model.json --record run.mcap
     observer-node analyze run.mcap
 """
@@ -25,14 +32,28 @@ from pathlib import Path
 from . import __version__
 from .data import ChannelCodes, CrashDataError, bundled_campaign, load_tests
 from .data.crashtest import THESIS_WINDOW_S
+from .model.effects import EFFECTS as MODEL_EFFECTS
 from .model.modelfile import ModelFileError
 
+# The simulator can switch on every effect the model library knows, bar the fitted formula.
+SIM_EFFECTS = tuple(k for k in MODEL_EFFECTS if k != "other")
 
-def _data_options(p: argparse.ArgumentParser, required: bool) -> None:
+
+class UsageError(ValueError):
+    """A command-line value that cannot be used; the message names the option."""
+
+
+_TESTS_HELP = "an ISO-MME test folder, .zip or .csv, a folder of them, or campaign-a[/PATTERN]"
+
+
+def _data_options(p: argparse.ArgumentParser, data: str | None) -> None:
+    """Options that say how to read crash tests; ``data``: "required", "optional" (default the
+    bundled campaign) or None (the command names its tests in other options)."""
     g = p.add_argument_group("crash-test data")
-    g.add_argument("--data", nargs="+", required=required, metavar="DIR",
-                   help="crash tests: an ISO-MME test folder, .zip or .csv, or a folder of them"
-                   + ("" if required else " (default: the bundled campaign)"))
+    if data is not None:
+        g.add_argument("--data", nargs="+", required=data == "required", metavar="TEST",
+                       help="crash tests: " + _TESTS_HELP
+                       + ("" if data == "required" else " (default: campaign-a)"))
     g.add_argument("--pulse-code", action="append", metavar="CODE",
                    help="channel code of the crash pulse ('?' matches any character; "
                    "repeatable; default S0SLED000000ACXP, 10TUNN000000ACXP)")
@@ -120,8 +141,12 @@ def cmd_simulate(a: argparse.Namespace) -> int:
     for spec in a.effect or []:
         name, _, value = spec.partition("=")
         if name not in EFFECTS:
-            raise SystemExit(f"unknown effect {name!r}; known: {', '.join(EFFECTS)}")
-        effects[name] = float(value) if value else 1.0
+            raise UsageError(f"--effect {spec}: unknown effect {name!r} (known: "
+                             f"{', '.join(EFFECTS)})")
+        try:
+            effects[name] = float(value) if value else 1.0
+        except ValueError:
+            raise UsageError(f"--effect {spec}: SCALE {value!r} is not a number") from None
     tests = simulate_campaign(a.setup, a.count, seed=a.seed,
                               config=PlantConfig(effects=effects, noise=not a.no_noise))
     out = Path(a.out)
@@ -254,20 +279,22 @@ def build_parser() -> argparse.ArgumentParser:
         "residual, trace it to a physical effect of the library (or a sparse formula), add it, "
         "refit, accept it only if cross-validation inside the estimation tests improves, "
         "repeat; report fits before and after on the validation tests.")
-    s.add_argument("--estimate", nargs="+", required=True, metavar="DIR")
-    s.add_argument("--validate", nargs="+", required=True, metavar="DIR")
+    s.add_argument("--estimate", nargs="+", required=True, metavar="TEST",
+                   help="tests to identify and cross-validate effects on: " + _TESTS_HELP)
+    s.add_argument("--validate", nargs="+", required=True, metavar="TEST",
+                   help="held-out tests the report scores before and after (never fitted on)")
     s.add_argument("--out", required=True, help="output folder")
     s.add_argument("--margin", type=float, default=1.0,
                    help="fit_TOT points an effect must add in cross-validation (default 1)")
-    _data_options(s, required=False)
+    _data_options(s, data=None)
     s.add_argument("--rate", type=float, default=1000.0, help="tick rate in Hz (1000)")
-    s.add_argument("--quiet", action="store_true")
+    s.add_argument("--quiet", action="store_true", help="no progress display")
     s.set_defaults(func=cmd_loop)
 
     s = sub.add_parser("identify", help="fit a grey-box, ARX or N4SID model to crash tests",
                        description="Fit one model to crash tests and write its JSON model file.")
     s.add_argument("--model", choices=("greybox", "arx", "n4sid"), required=True)
-    _data_options(s, required=True)
+    _data_options(s, data="required")
     s.add_argument("--out", required=True, help="model file to write (JSON)")
     s.add_argument("--rate", type=float, default=1000.0,
                    help="tick rate in Hz the model runs at (default 1000, the bus rate)")
@@ -287,7 +314,7 @@ def build_parser() -> argparse.ArgumentParser:
         "with the thesis's numbers beside them, and write plots and evaluation.json. "
         "With --model: score that model on the data and write OUT/fits.json and plots.")
     s.add_argument("--model", help="model file to score (default: identify and compare all)")
-    _data_options(s, required=False)
+    _data_options(s, data="optional")
     s.add_argument("--out", default="out/evaluate", help="output folder (default out/evaluate)")
     s.add_argument("--rate", type=float, default=1000.0, help="tick rate in Hz (default 1000)")
     s.add_argument("--quiet", action="store_true", help="no progress display")
@@ -297,11 +324,15 @@ def build_parser() -> argparse.ArgumentParser:
                        description="Simulate crash tests with known truth (the thesis model, "
                        "optionally with extra physical effects) and write them as ISO-MME.")
     s.add_argument("--out", required=True, help="folder to write tests into")
-    s.add_argument("--setup", choices=("R16", "SLED", "FULL"), default="R16")
-    s.add_argument("--count", type=int, default=4)
-    s.add_argument("--seed", type=int, default=1)
+    s.add_argument("--setup", choices=("R16", "SLED", "FULL"), default="R16",
+                   help="R16 sled rig (hard seat), SLED sled with interior, FULL full vehicle "
+                   "(default R16)")
+    s.add_argument("--count", type=int, default=4, help="number of tests (default 4)")
+    s.add_argument("--seed", type=int, default=1,
+                   help="random seed of pulses, dummies and noise (default 1)")
     s.add_argument("--effect", action="append", metavar="NAME[=SCALE]",
-                   help="switch on a physical effect beyond the thesis model (repeatable)")
+                   help="switch on a physical effect beyond the thesis model, its magnitude "
+                   "scaled by SCALE (repeatable); NAME is one of: " + ", ".join(SIM_EFFECTS))
     s.add_argument("--no-noise", action="store_true", help="no sensor noise or CFC filtering")
     s.add_argument("--zip", action="store_true", help="write each test as a .zip")
     s.add_argument("--csv", action="store_true", help="write CSV instead of ISO-MME")
@@ -337,7 +368,7 @@ def build_parser() -> argparse.ArgumentParser:
     s.add_argument("--event-s", type=float, help="observer run time after trigger (0.2 s)")
     s.add_argument("--counts-per-rev", type=int,
                    help="BRS counts/rev if the BRS frame does not say (default 96)")
-    s.add_argument("--quiet", action="store_true")
+    s.add_argument("--quiet", action="store_true", help="log warnings and errors only")
     s.set_defaults(func=cmd_run)
 
     s = sub.add_parser("analyze", help="read a recording back: fits, offline check, plots",
@@ -355,7 +386,7 @@ def main(argv: list[str] | None = None) -> int:
     args = build_parser().parse_args(argv)
     try:
         return int(args.func(args) or 0)
-    except (CrashDataError, ModelFileError) as e:
+    except (CrashDataError, ModelFileError, UsageError) as e:
         print(f"observer-node: error: {e}", file=sys.stderr)
         return 2
     except KeyboardInterrupt:

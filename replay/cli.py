@@ -3,12 +3,15 @@
 Sources, played one after another: ISO-MME test folders or zips (or a folder of them), CSV
 crash tests, MCAP recordings of observer-node run (their raw frames, exactly), and candump
 -L, ASC, BLF or TRC logs. Every source is read and checked before the first frame is sent.
+The crash tests bundled with the package are named campaign-a (all 24) or
+campaign-a/PATTERN (by test name, e.g. campaign-a/R16_002 or 'campaign-a/SLED_*').
 
 Examples::
 
-    crash-replay observer_node/examples/R16_002.zip --reference
+    crash-replay campaign-a/R16_002 --reference --dry-run     # what would be sent
+    crash-replay campaign-a/R16_002 --reference               # onto vcan0
     crash-replay run.mcap --interface socketcan --channel vcan0 --rate 0.1
-    crash-replay tests/ --dry-run
+    crash-replay 'campaign-a/FULL_*' --channel can0 --fd --burst --tick-rate 10000
 """
 
 from __future__ import annotations
@@ -38,7 +41,9 @@ def _remap(s: str) -> tuple[int, int]:
 def build_parser() -> argparse.ArgumentParser:
     p = argparse.ArgumentParser(prog="crash-replay", description=__doc__,
                                 formatter_class=argparse.RawDescriptionHelpFormatter)
-    p.add_argument("sources", nargs="+", metavar="SOURCE")
+    p.add_argument("sources", nargs="+", metavar="SOURCE",
+                   help="crash test (ISO-MME folder, .zip, .mme, .csv), folder of tests, "
+                   "campaign-a[/PATTERN], .mcap recording, or .log/.asc/.blf/.trc bus log")
     p.add_argument("--interface", default="socketcan", help="python-can interface (socketcan)")
     p.add_argument("--channel", default="vcan0", help="bus channel (vcan0)")
     p.add_argument("--fd", action="store_true", help="send as CAN FD frames")

@@ -13,6 +13,7 @@ import time
 from collections.abc import Callable
 from dataclasses import dataclass
 
+import can
 import numpy as np
 
 from .schedule import Schedule
@@ -46,19 +47,14 @@ def lateness_report(lateness_s: np.ndarray, failed: int, duration_s: float,
                         float(us.max()), duration_s)
 
 
-def bus_sender(bus, schedule: Schedule, fd: bool = False) -> Callable[[int, bytes], bool]:
-    """A ``send`` for :func:`play` onto a python-can bus: every message is built before
-    playing, so sending allocates nothing; frames go out in schedule order."""
-    import can
-
+def bus_sender(bus: can.BusABC, schedule: Schedule, fd: bool = False) -> Callable[[int], bool]:
+    """A ``send(k)`` for :func:`play` that sends frame ``k`` of ``schedule`` onto a python-can
+    bus: every message is built before playing, so sending allocates nothing."""
     msgs = [can.Message(arbitration_id=cid, data=d, is_extended_id=cid > 0x7FF,
                         is_fd=fd, bitrate_switch=fd)
             for cid, d in zip(schedule.ids.tolist(), schedule.data, strict=True)]
-    position = [0]
 
-    def send(_: int, __: bytes) -> bool:
-        k = position[0]
-        position[0] = k + 1
+    def send(k: int) -> bool:
         try:
             bus.send(msgs[k])
             return True
@@ -68,20 +64,19 @@ def bus_sender(bus, schedule: Schedule, fd: bool = False) -> Callable[[int, byte
     return send
 
 
-def play(schedule: Schedule, send: Callable[[int, bytes], bool], rate: float = 1.0,
+def play(schedule: Schedule, send: Callable[[int], bool], rate: float = 1.0,
          spin_s: float = 0.0003, progress: Callable[[int, int], None] | None = None,
          should_stop: Callable[[], bool] | None = None) -> TimingReport:
     """Send every frame of ``schedule`` at its due time scaled by 1/``rate``.
 
-    ``send(can_id, data)`` returns False when the frame could not be sent (counted).
+    ``send(k)`` sends frame ``k`` of the schedule (``schedule.ids[k]``, ``schedule.data[k]``)
+    and returns False when it could not be sent (counted).
     """
     n = len(schedule)
     due = schedule.t_s / rate
     if n:
         due = due - due[0]
     lateness = np.zeros(n)
-    ids = schedule.ids.tolist()
-    data = schedule.data
     clock = time.perf_counter
     sleep = time.sleep
     step = max(1, n // 200)
@@ -91,15 +86,16 @@ def play(schedule: Schedule, send: Callable[[int, bytes], bool], rate: float = 1
     gc_was_enabled = gc.isenabled()
     gc.disable()
     try:
-        return _play(n, due, lateness, ids, data, send, clock, sleep, spin_s, step, progress,
-                     should_stop)
+        return _play(n, due, lateness, send, clock, sleep, spin_s, step, progress, should_stop)
     finally:
         if gc_was_enabled:
             gc.enable()
 
 
-def _play(n, due, lateness, ids, data, send, clock, sleep, spin_s, step, progress,
-          should_stop) -> TimingReport:
+def _play(n: int, due: np.ndarray, lateness: np.ndarray, send: Callable[[int], bool],
+          clock: Callable[[], float], sleep: Callable[[float], None], spin_s: float, step: int,
+          progress: Callable[[int, int], None] | None,
+          should_stop: Callable[[], bool] | None) -> TimingReport:
     failed = 0
     start = clock() + 0.001
     for k in range(n):
@@ -110,7 +106,7 @@ def _play(n, due, lateness, ids, data, send, clock, sleep, spin_s, step, progres
         while clock() < target:
             pass
         lateness[k] = clock() - target  # when the frame is handed to the bus
-        if not send(ids[k], data[k]):
+        if not send(k):
             failed += 1
         if progress is not None and k % step == 0:
             progress(k, n)

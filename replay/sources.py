@@ -114,10 +114,10 @@ def load_source(path: str | Path, codec: Codec, rate_hz: float = 1000.0,
     """Schedules for one source path (a folder of tests gives one schedule per test).
     ``burst``: lab data as InputBurst FD frames (eight samples each)."""
     p = Path(path)
-    if not p.exists():
-        raise SourceError(f"{p}: no such file or folder")
     suffix = p.suffix.lower()
     try:
+        if suffix in (".mcap", ".log", ".asc", ".blf", ".trc") and not p.is_file():
+            raise SourceError(f"{p}: no such file")
         if suffix == ".mcap":
             return [_window(read_mcap_frames(p, all_frames), start_s, end_s)]
         if suffix == ".log":
@@ -125,7 +125,7 @@ def load_source(path: str | Path, codec: Codec, rate_hz: float = 1000.0,
         if suffix in (".asc", ".blf", ".trc"):
             return [_window(read_python_can_log(p), start_s, end_s)]
         tests = [load_test(t, codes, counts_per_rev, require_outputs=reference)
-                 for t in find_tests([p])]
+                 for t in find_tests([str(path)])]  # a test, a folder, or campaign-a[/PATTERN]
     except CrashDataError as e:
         raise SourceError(str(e)) from None
     return [crash_test_schedule(t, codec, rate_hz, reference and t.has_outputs,

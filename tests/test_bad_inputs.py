@@ -43,7 +43,12 @@ def _expect_one_line_error(code: int, err: str, says: str) -> None:
 
 # ---------------------------------------------------------------------------- model files
 def _unstable(d):
+    d.pop("parameters")  # a grey-box given by its matrices alone
     d["state_space"]["A"] = [[2.0 if i == j else 0.0 for j in range(5)] for i in range(5)]
+
+
+def _not_its_parameters(d):
+    d["state_space"]["A"][0][0] *= 1.01
 
 
 def _set(key, value):
@@ -60,6 +65,9 @@ def _effect(effect):
 
 MODEL_CASES: dict[str, tuple[Callable[[dict], object] | bytes, str]] = {
     "unstable A=2I": (_unstable, "unstable"),
+    "A not the parameters'": (_not_its_parameters, "'state_space.A' disagrees with 'parameters'"),
+    "negative stiffness": (lambda d: d["parameters"]["k1"].__setitem__("value", -1.0),
+                           "parameters"),
     "tick rate 0": (_set("tick_rate_hz", 0), "tick_rate_hz"),
     "tick rate -1000": (_set("tick_rate_hz", -1000), "tick_rate_hz"),
     "tick rate 1e9": (_set("tick_rate_hz", 1e9), "tick_rate_hz"),
@@ -107,7 +115,8 @@ def test_bad_model_file(case, good_model, tmp_path, capsys):
         p.write_text(json.dumps(d))
     code = cli.main(["run", "--model", str(p), "--interface", "virtual", "--channel",
                      "bad-model", "--record", str(tmp_path / "run.mcap")])
-    _expect_one_line_error(code, capsys.readouterr().err, says)
+    # the message, not the path (which holds the case's name), must say it
+    _expect_one_line_error(code, capsys.readouterr().err.replace(str(p), "FILE"), says)
     assert not (tmp_path / "run.mcap").exists()
 
 

@@ -189,3 +189,23 @@ def test_bad_zip_and_missing_paths(tmp_path: Path):
         f.writestr("readme.txt", "nothing")
     with pytest.raises(CrashDataError, match=r"no \.mme"):
         read_isomme(z)
+
+
+@pytest.mark.parametrize("unit, per_rev", [("counts", None), ("cnt", None), ("deg", 360.0),
+                                           ("°", 360.0), ("rad", 2 * np.pi), ("rev", 1.0)])
+def test_csv_and_isomme_read_the_same_brs_units(unit, per_rev, tmp_path):
+    """One conversion serves both readers: a CSV in any BRS unit gives the ISO-MME counts."""
+    from observer_node.data.csvio import read_csv, write_csv
+
+    test = read_isomme(DATA / "R16_002")
+    text = write_csv(test, tmp_path / "t.csv").read_text(encoding="utf-8")
+    head, rows = text.split("brs[counts]", 1)
+    lines = rows.splitlines()
+    data = np.loadtxt(lines[1:], delimiter=",")
+    if per_rev is not None:
+        data[:, 2] *= per_rev / test.counts_per_rev
+    out = tmp_path / f"brs_{unit}.csv"
+    with out.open("w", encoding="utf-8") as f:
+        f.write(head + f"brs[{unit}]" + lines[0] + "\n")
+        np.savetxt(f, data, delimiter=",", fmt="%.12g")
+    np.testing.assert_array_equal(read_csv(out).brs, test.brs)

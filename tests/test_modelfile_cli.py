@@ -113,3 +113,13 @@ def test_cli_simulate_writes_readable_tests(tmp_path: Path):
                  "--effect", "airbag_contact", "--zip"]) == 0
     t = read_isomme(tmp_path / "SLED_002.zip")
     assert t.setup == "SLED" and t.has_outputs and t.cd_mm.max() > 5
+
+
+def test_simulate_help_names_every_effect_the_simulator_has(capsys):
+    from observer_node.cli import SIM_EFFECTS
+    from observer_node.simulator import EFFECTS
+
+    assert set(SIM_EFFECTS) == set(EFFECTS)
+    assert main(["simulate", "--out", "x", "--effect", "airbag"]) == 2
+    err = capsys.readouterr().err.strip()
+    assert err.count("\n") == 0 and "unknown effect 'airbag'" in err and "airbag_contact" in err

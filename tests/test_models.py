@@ -9,7 +9,7 @@ from observer_node.data import THESIS_WINDOW_S
 from observer_node.ident import arx, greybox, n4sid
 from observer_node.ident.dataset import Dataset, make_dataset
 from observer_node.ident.metrics import fit_percent, fit_table
-from observer_node.model import simulate_ss
+from observer_node.model import chest, simulate_ss
 from observer_node.simulator import ChestParams, PlantConfig, simulate_campaign
 
 TRUTH = ChestParams()
@@ -33,9 +33,8 @@ def test_fit_measure_eq_3_15():
 
 def test_zoh_is_exact_across_tick_rates():
     p = {**TRUTH.as_dict()}
-    A, B, _, _ = greybox.continuous_matrices(p)
-    Ad1, Bd1 = greybox.zoh(A, B, 1000.0)
-    Ad10, Bd10 = greybox.zoh(A, B, 10_000.0)
+    Ad1, Bd1, _, _ = chest.discrete_thesis(p, 1000.0)
+    Ad10, Bd10, _, _ = chest.discrete_thesis(p, 10_000.0)
     # Ten steps at 10 kHz with a held input equal one step at 1 kHz.
     x1 = Ad1 @ np.ones(5) + Bd1 @ np.array([1.0, 2.0])
     x10 = np.ones(5)

@@ -113,7 +113,7 @@ def test_csv_source_and_dry_run(tmp_path: Path, capsys):
 def test_player_keeps_an_absolute_schedule():
     s = crash_test_schedule(read_isomme(DATA / "R16_002"), CODEC, 1000.0)
     sent: list[float] = []
-    rep = play(s, lambda i, d: sent.append(time.perf_counter()) or True)
+    rep = play(s, lambda k: sent.append(time.perf_counter()) or True)
     assert rep.sent == len(s) and rep.failed == 0
     # no drift: the last frame leaves at its due time after the first, not later by the sum
     # of per-frame errors (a generous bound: this is a correctness check, not a benchmark)
@@ -131,3 +131,19 @@ def test_replay_cli_onto_a_virtual_bus(capsys):
     rx.shutdown()
     assert got == [0x101] * 220
     assert "lateness p50" in capsys.readouterr().out
+
+
+def test_bundled_campaign_by_name(tmp_path: Path, monkeypatch, capsys):
+    """An installed user has no repository: campaign-a[/PATTERN] names the bundled tests."""
+    from observer_node.data import find_tests
+
+    monkeypatch.chdir(tmp_path)  # no local file called campaign-a
+    assert len(find_tests(["campaign-a"])) == 24
+    odd = find_tests(["campaign-a/*[13579]"])
+    assert [p.stem for p in odd][:3] == ["FULL_001", "FULL_003", "FULL_005"] and len(odd) == 12
+    assert main(["campaign-a/R16_002", "--reference", "--dry-run"]) == 0
+    out = capsys.readouterr().out
+    assert "from R16_002" in out and "0x310:" in out
+    assert main(["campaign-a/R99_*", "--dry-run"]) == 2
+    err = capsys.readouterr().err.strip()
+    assert err.count("\n") == 0 and "no bundled test matches 'R99_*'" in err

@@ -20,7 +20,7 @@ from observer_node.daemon.ports import SocketCanPort
 from observer_node.evaluation import identify
 from observer_node.ident.dataset import make_dataset
 from observer_node.recording import analyze, read_recording
-from observer_node.replay.player import play
+from observer_node.replay.player import bus_sender, play
 
 from .daemon_feed import CODEC, r16_schedule
 
@@ -88,9 +88,7 @@ def test_daemon_on_vcan_handles_every_frame_and_matches_offline(model_path, tmp_
     est_rx = SocketCanPort(CHANNEL, [CODEC["ChestEstimate"].frame_id])
     try:
         sched = r16_schedule(pre_s=0.15)
-        rep = play(sched, lambda i, d: tx.send(can.Message(arbitration_id=i, data=d,
-                                                           is_extended_id=False)) or True,
-                   rate=SLOW)
+        rep = play(sched, bus_sender(tx, sched), rate=SLOW)
         assert rep.failed == 0
         time.sleep(1.0)
         estimates = 0

@@ -132,7 +132,7 @@ class ObserverNode:
         try:
             if on_ready is not None:
                 on_ready()
-            self._loop(max_seconds, idle_exit_s)
+            self._tick_until_stopped(max_seconds, idle_exit_s)
         finally:
             self.close()
         return self.counters
@@ -142,7 +142,7 @@ class ObserverNode:
         """The recording is not the whole run (a writer failed, or ticks were lost)."""
         return self.recorder is not None and self.recorder.degraded
 
-    def _loop(self, max_seconds: float | None, idle_exit_s: float | None) -> None:
+    def _tick_until_stopped(self, max_seconds: float | None, idle_exit_s: float | None) -> None:
         cnt, core = self.counters, self.core
         rec_frame = self.recorder.put_frame if self.recorder else None
         keep_up = self.recorder.keep_up if self.recorder else None

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import fnmatch
 from pathlib import Path
 
 from ..units import STANDARD_GRAVITY
@@ -32,9 +33,30 @@ __all__ = [
 ]
 
 
+BUNDLED_NAME = "campaign-a"
+
+
 def bundled_campaign() -> Path:
-    """Folder of the example crash tests shipped with the package (24 zipped ISO-MME tests)."""
+    """Folder of the example crash tests shipped with the package: campaign A, 24 zipped
+    ISO-MME tests (R16_001-012 sled rig, SLED_001-006 sled with interior, FULL_001-006 full
+    vehicle). Data arguments name it ``campaign-a``, or ``campaign-a/PATTERN`` for the tests
+    whose names match a shell pattern (``campaign-a/*[13579]``: the odd-numbered ones)."""
     return Path(__file__).resolve().parent.parent / "examples"
+
+
+def _bundled(raw: str) -> list[Path] | None:
+    """The bundled tests ``raw`` names (``campaign-a`` or ``campaign-a/PATTERN``), else None."""
+    name, _, pattern = raw.replace("\\", "/").partition("/")
+    if name != BUNDLED_NAME:
+        return None
+    tests = sorted(bundled_campaign().glob("*.zip"))
+    if not pattern:
+        return tests
+    chosen = [t for t in tests if fnmatch.fnmatchcase(t.stem, pattern.removesuffix(".zip"))]
+    if not chosen:
+        raise CrashDataError(f"{raw}: no bundled test matches {pattern!r} (tests: "
+                             f"{tests[0].stem} .. {tests[-1].stem})")
+    return chosen
 
 
 def _is_test(p: Path) -> bool:
@@ -44,11 +66,17 @@ def _is_test(p: Path) -> bool:
 
 
 def find_tests(paths: list[str | Path]) -> list[Path]:
-    """Expand each path to crash tests: a test (folder, zip, csv, .mme) or a folder of tests."""
+    """Expand each path to crash tests: a test (folder, zip, csv, .mme), a folder of tests, or
+    the bundled campaign by name (see :func:`bundled_campaign`; a local file of that name wins).
+    """
     found: list[Path] = []
     for raw in paths:
         p = Path(raw)
         if not p.exists():
+            bundled = _bundled(str(raw))
+            if bundled is not None:
+                found.extend(bundled)
+                continue
             raise CrashDataError(f"{p}: no such file or folder")
         if _is_test(p):
             found.append(p)

@@ -98,6 +98,30 @@ class CrashTest:
         )
 
 
+# BRS units a data file may use, as the fraction of a revolution per unit (counts need the
+# sensor's resolution; "-" and "1" are how some ISO-MME writers mark a dimensionless count).
+BRS_COUNT_UNITS = ("counts", "count", "cnt", "-", "1")
+BRS_UNITS_PER_REV = {"deg": 360.0, "°": 360.0, "rad": 2 * np.pi, "rev": 1.0}
+
+
+def brs_to_counts(values: np.ndarray, unit: str, counts_per_rev: int | None, where: str,
+                  source: str, how_to_give: str) -> np.ndarray:
+    """BRS in ``unit`` (counts or an angle) as sensor counts; ``where`` names the file and key
+    of the unit and ``source`` the file (for the messages), ``how_to_give`` where a user states
+    the resolution."""
+    unit = unit.strip().lower() or "counts"
+    if unit in BRS_COUNT_UNITS:
+        return np.array(values, dtype=float)
+    per_rev = BRS_UNITS_PER_REV.get(unit)
+    if per_rev is None:
+        raise CrashDataError(f"{where}: BRS unit {unit!r} is not a count or angle unit "
+                             f"({', '.join(BRS_COUNT_UNITS[:3] + tuple(BRS_UNITS_PER_REV))})")
+    if counts_per_rev is None:
+        raise CrashDataError(f"{source}: BRS is in {unit} but counts/rev is unknown: give it "
+                             f"{how_to_give}")
+    return np.round(values * counts_per_rev / per_rev)
+
+
 def decimation_step(fs_in_hz: float, fs_out_hz: float) -> int:
     step = fs_in_hz / fs_out_hz
     if step < 1 or abs(step - round(step)) > 1e-6:

@@ -22,7 +22,7 @@ from pathlib import Path
 import numpy as np
 
 from ..units import STANDARD_GRAVITY
-from .crashtest import CrashDataError, CrashTest
+from .crashtest import CrashDataError, CrashTest, brs_to_counts
 from .isomme import decode_text
 
 _UNITS = {
@@ -130,13 +130,5 @@ def _int(v: str | None) -> int | None:
 
 
 def _brs(values: np.ndarray, unit: str, per_rev: int | None, path: Path) -> np.ndarray:
-    unit = unit.lower() or "counts"
-    if unit in ("counts", "count"):
-        return values
-    scale = {"deg": 360.0, "rad": 2 * np.pi}.get(unit)
-    if scale is None:
-        raise CrashDataError(f"{path}: brs unit {unit!r} unknown (counts, deg, rad)")
-    if per_rev is None:
-        raise CrashDataError(
-            f"{path}: brs in {unit} needs '# counts_per_rev: N' or --counts-per-rev")
-    return np.round(values * per_rev / scale)
+    return brs_to_counts(values, unit, per_rev, f"{path}: column brs", str(path),
+                         "in a '# counts_per_rev: N' line or with --counts-per-rev")

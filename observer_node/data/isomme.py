@@ -28,7 +28,7 @@ from pathlib import Path, PurePosixPath
 import numpy as np
 
 from ..units import STANDARD_GRAVITY
-from .crashtest import CrashDataError, CrashTest
+from .crashtest import CrashDataError, CrashTest, brs_to_counts
 
 NOVALUE = "NOVALUE"
 # Bounds of what a crash-test file can be: anything beyond is a broken or hostile file.
@@ -237,18 +237,9 @@ def _convert(ch: Channel, table: dict[str, float], quantity: str) -> np.ndarray:
 
 
 def _brs_counts(ch: Channel, counts_per_rev: int | None) -> np.ndarray:
-    unit = (ch.get("Unit") or "").strip().lower()
-    if unit in ("counts", "count", "cnt", "-", "1"):
-        return ch.values.copy()
-    per_rev = {"deg": 360.0, "°": 360.0, "rad": 2 * np.pi, "rev": 1.0}.get(unit)
-    if per_rev is None:
-        raise CrashDataError(f"{ch.where('Unit')}: unit {unit!r} is not an angle or count unit")
-    if counts_per_rev is None:
-        raise CrashDataError(
-            f"{ch.path}: BRS is in {unit} but counts/rev is unknown: give it on the command line "
-            "(--counts-per-rev) or in the .mme Comments ('96 counts/rev')"
-        )
-    return np.round(ch.values * counts_per_rev / per_rev)
+    return brs_to_counts(ch.values, ch.get("Unit") or "", counts_per_rev, ch.where("Unit"),
+                         str(ch.path), "on the command line (--counts-per-rev) or in the .mme "
+                         "Comments ('96 counts/rev')")
 
 
 def _time_base(ch: Channel, channels: dict[str, Channel]) -> tuple[float, float]:

@@ -1,14 +1,7 @@
-"""The thesis's grey-box chest model (eq. 3.1-3.8) and its prediction-error estimation.
+"""Prediction-error estimation of the thesis's grey-box chest (eq. 3.12-3.14).
 
-Two masses: the spine m1 (CR is its acceleration) and the sternum m2, joined by the rib cage
-(k1, c1); the belt point w drives the sternum through belt, flesh and clothing (k2, c2).
-w = R * BRS + double integral of the pulse (eq. 3.1), so with the spindle angle in rad, R is the
-effective spool radius in m/rad. Coordinates point rearward into the chest (the thesis's
-"increasing w compresses the springs"); SI units inside.
-
-States (xdot, x, sdot, s, w); inputs u1 = integral of pulse [m/s], u2 = d/dt BRS [rad/s];
-outputs CR = xddot [g] and CD = s - x [mm]. Eq. 3.4 writes CD = x - s; in these coordinates that
-is negative in compression, so the sign is flipped to publish compression positive.
+The model itself (eq. 3.1-3.8: states, matrices, discretisation) is
+:mod:`observer_node.model.chest`.
 
 Identifiability: multiplying every mass, stiffness and damping by the same factor leaves both
 outputs unchanged, so only six of the seven parameters can be estimated. m1 is fixed (default
@@ -21,58 +14,23 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
-from scipy import linalg, optimize
+from scipy import optimize
 
+from ..model.chest import PARAM_NAMES, PARAM_UNITS, THESIS_STATES, discrete_thesis
 from ..model.modelfile import ModelFile
 from ..model.observer import simulate_ss, transform_inputs
-from ..units import STANDARD_GRAVITY
 from .dataset import Dataset
 from .metrics import fit_table
 from .progress import Progress
 
-PARAM_NAMES = ("k1", "c1", "k2", "c2", "m1", "m2", "R")
-PARAM_UNITS = {"k1": "N/m", "c1": "N s/m", "k2": "N/m", "c2": "N s/m", "m1": "kg", "m2": "kg",
-               "R": "m/rad"}
 FREE = ("k1", "c1", "k2", "c2", "m2", "R")
 DEFAULT_M1_KG = 20.0
-STATES = ("xdot", "x", "sdot", "s", "w")
 TRANSFORM = "velocity_brs_rate"
-
-
-def continuous_matrices(p: dict[str, float]) -> tuple[np.ndarray, ...]:
-    """Eq. 3.7-3.8 with outputs in g and mm (CD = s - x, compression positive)."""
-    k1, c1, k2, c2, m1, m2, R = (p[n] for n in PARAM_NAMES)
-    A = np.array([
-        [-c1 / m1, -k1 / m1, c1 / m1, k1 / m1, 0.0],
-        [1.0, 0.0, 0.0, 0.0, 0.0],
-        [c1 / m2, k1 / m2, -(c1 + c2) / m2, -(k1 + k2) / m2, k2 / m2],
-        [0.0, 0.0, 1.0, 0.0, 0.0],
-        [0.0, 0.0, 0.0, 0.0, 0.0],
-    ])
-    B = np.array([[0.0, 0.0], [0.0, 0.0], [c2 / m2, c2 / m2 * R], [0.0, 0.0], [1.0, R]])
-    C = np.vstack([A[0] / STANDARD_GRAVITY, [0.0, -1000.0, 0.0, 1000.0, 0.0]])
-    D = np.zeros((2, 2))
-    return A, B, C, D
-
-
-def zoh(A: np.ndarray, B: np.ndarray, fs_hz: float) -> tuple[np.ndarray, np.ndarray]:
-    """Exact zero-order-hold discretisation at ``fs_hz``."""
-    nx, nu = B.shape
-    M = np.zeros((nx + nu, nx + nu))
-    M[:nx, :nx], M[:nx, nx:] = A, B
-    E = linalg.expm(M / fs_hz)
-    return E[:nx, :nx], E[:nx, nx:]
-
-
-def discrete(p: dict[str, float], fs_hz: float) -> tuple[np.ndarray, ...]:
-    A, B, C, D = continuous_matrices(p)
-    Ad, Bd = zoh(A, B, fs_hz)
-    return Ad, Bd, C, D
 
 
 def simulate(p: dict[str, float], data: Dataset) -> np.ndarray:
     """Outputs (tests, n, 2) of the grey-box model on ``data`` from rest at t = 0."""
-    Ad, Bd, C, D = discrete(p, data.fs_hz)
+    Ad, Bd, C, D = discrete_thesis(p, data.fs_hz)
     u = transform_inputs(TRANSFORM, data.pulse_g, data.brs_rad, data.fs_hz)
     return simulate_ss(Ad, Bd, C, D, u)
 
@@ -149,13 +107,13 @@ def to_model_file(fit: GreyBoxFit, data: Dataset, name: str = "greybox",
                   tick_rate_hz: float | None = None) -> ModelFile:
     """Model file at ``tick_rate_hz`` (default: the rate it was fitted at)."""
     rate = tick_rate_hz or data.fs_hz
-    Ad, Bd, C, D = discrete(fit.params, rate)
+    Ad, Bd, C, D = discrete_thesis(fit.params, rate)
     return ModelFile(
         kind="greybox", name=name, tick_rate_hz=rate, input_transform=TRANSFORM,
         A=Ad, B=Bd, C=C, D=D,
         parameters={n: {"value": fit.params[n], "std_err": fit.std_err[n],
                         "unit": PARAM_UNITS[n], "fixed": n == "m1"} for n in PARAM_NAMES},
-        structure={"states": list(STATES), "equations": "thesis eq. 3.1-3.8, CD = s - x",
+        structure={"states": list(THESIS_STATES), "equations": "thesis eq. 3.1-3.8, CD = s - x",
                    "fixed": {"m1": "overall mass scale is not identifiable from CR and CD"}},
         fitted_on=_fitted_on(data),
         fits=fit.fits,

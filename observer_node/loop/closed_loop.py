@@ -33,9 +33,10 @@ from ..data.crashtest import THESIS_WINDOW_S
 from ..ident import greybox
 from ..ident.dataset import Dataset, make_dataset
 from ..ident.progress import Progress
+from ..model.chest import PARAM_NAMES, PARAM_UNITS, STATES, discrete
 from ..model.effects import FORCE_KINDS, describe
 from ..model.modelfile import ModelFile
-from ..model.nonlinear import NonlinearGreyBox, matrices
+from ..model.nonlinear import NonlinearGreyBox
 from .analysis import candidates, correlation_tests, explained_share, force_signature
 from .refit import cross_validate, refit, score
 
@@ -200,16 +201,16 @@ def _rms_ratio(tests: dict) -> float:
 
 def _model_file(base: dict, effects: list[dict], est: Dataset, rate_hz: float,
                 gb: greybox.GreyBoxFit) -> ModelFile:
-    Ad, Bd, Gd, C, Df = matrices(base, rate_hz)
+    Ad, Bd, Gd, C, Df = discrete(base, rate_hz)
     fits = score(base, effects, est)
     return ModelFile(
         kind="greybox", name="greybox+" + "+".join(e["kind"] for e in effects) if effects
         else "greybox", tick_rate_hz=rate_hz, input_transform="velocity_brs_rate",
         A=Ad, B=Bd, C=C, D=np.zeros((2, 2)),
         parameters={n: {"value": float(base[n]), "std_err": float(gb.std_err.get(n, 0.0))
-                        if not effects else None, "unit": greybox.PARAM_UNITS[n],
-                        "fixed": n == "m1"} for n in greybox.PARAM_NAMES},
-        structure={"states": ["xdot", "x", "sdot", "s", "w", "p"],
+                        if not effects else None, "unit": PARAM_UNITS[n],
+                        "fixed": n == "m1"} for n in PARAM_NAMES},
+        structure={"states": list(STATES),
                    "equations": "thesis eq. 3.1-3.8 plus effect forces held over the tick; "
                    "a slack belt switches to the belt-free matrices for the tick",
                    "force_input_matrix_G": Gd.tolist(), "force_output_matrix_Df": Df.tolist()},

@@ -8,9 +8,16 @@ A model file is JSON (never pickle)::
      "inputs": [...], "outputs": [...],          # names, units, sign conventions
      "state_space": {"A": [[...]], "B": ..., "C": ..., "D": ...},   # discrete, at tick_rate_hz
      "parameters": {...},                        # kind-specific, with standard errors
+     "effects": [...],                           # grey-box only: added physical effects
      "structure": {...},                         # kind-specific orders
      "fitted_on": {"tests": [...], "window_s": [0.01, 0.15], ...},
      "fits": {...}}                              # thesis fit (eq. 3.15-3.18) on its tests
+
+A grey-box model's state space is its physical parameters discretised at ``tick_rate_hz``
+(:mod:`.chest`: the thesis's 5 states, or 6 with effects, whose forces enter through
+``structure.force_input_matrix_G``). The daemon steps an effects model from the parameters;
+the loader checks that the stored matrices are those of the parameters, so what a reader of
+the file sees is what runs.
 """
 
 from __future__ import annotations
@@ -24,6 +31,7 @@ from typing import Any
 import numpy as np
 
 from .. import __version__
+from . import chest
 from .effects import EFFECTS
 from .nonlinear import NonlinearGreyBox
 from .observer import LinearObserver
@@ -143,6 +151,9 @@ class ModelFile:
         for k, m in (("A", mf.A), ("B", mf.B), ("C", mf.C), ("D", mf.D)):
             if not np.all(np.isfinite(m)):
                 raise ModelFileError(f"{where}: key 'state_space.{k}' has non-finite values")
+        said = _greybox_disagrees(mf)
+        if said is not None:
+            raise ModelFileError(f"{where}: {said}")
         try:
             obs = mf.observer()
         except (ValueError, KeyError) as e:
@@ -186,3 +197,32 @@ class ModelFile:
         except RecursionError:
             raise ModelFileError(f"{path}: nested too deeply to be a model file") from None
         return cls.from_dict(d, str(path))
+
+
+def _greybox_disagrees(mf: ModelFile) -> str | None:
+    """None unless ``mf`` is a grey-box whose matrices are not its parameters' (rel. 1e-9)."""
+    if mf.kind != "greybox":
+        return None
+    try:
+        p = {n: float(mf.parameters[n]["value"]) for n in chest.PARAM_NAMES}
+    except (KeyError, TypeError, ValueError):
+        if mf.effects:
+            return "key 'parameters': a grey-box with effects needs k1 c1 k2 c2 m1 m2 R values"
+        return None  # a grey-box given by its matrices alone: they are the model
+    if not all(np.isfinite(v) and v >= 0.0 for v in p.values()) or p["m1"] <= 0 or p["m2"] <= 0:
+        return "key 'parameters': grey-box values must be finite, masses positive, others >= 0"
+    if mf.effects:
+        Ad, Bd, _, C, _ = chest.discrete(p, mf.tick_rate_hz)
+        D = np.zeros((2, 2))
+    else:
+        Ad, Bd, C, D = chest.discrete_thesis(p, mf.tick_rate_hz)
+    for key, stored, expected in (("A", mf.A, Ad), ("B", mf.B, Bd), ("C", mf.C, C), ("D", mf.D, D)):
+        if stored.shape != expected.shape:
+            return (f"key 'state_space.{key}': shape {stored.shape} is not the grey-box's "
+                    f"{expected.shape}")
+        tol = 1e-9 * max(float(np.max(np.abs(expected))), 1.0)
+        worst = float(np.max(np.abs(stored - expected)))
+        if worst > tol:
+            return (f"key 'state_space.{key}' disagrees with 'parameters' discretised at "
+                    f"{mf.tick_rate_hz:g} Hz (largest difference {worst:.3g})")
+    return None

@@ -1,8 +1,8 @@
 """The grey-box chest with added physical effects, as a real-time observer.
 
-The linear part (thesis eq. 3.7, plus the vehicle displacement p as a sixth state so effects
-can use the forward excursion) is discretised exactly (zero-order hold); the effects' forces
-enter as extra inputs held over the tick:
+The linear part (:mod:`.chest`: thesis eq. 3.7 plus the vehicle displacement p as a sixth
+state, so effects can use the forward excursion) is discretised exactly (zero-order hold); the
+effects' forces enter as extra inputs held over the tick:
 
     z[k+1] = Ad z[k] + Bd u[k] + Gd f(z[k], u[k], theta[k])
     y[k]   = C z[k] + Df f(z[k], u[k], theta[k]) + offsets
@@ -20,45 +20,13 @@ from __future__ import annotations
 import math
 
 import numpy as np
-from scipy import linalg
 
 from ..units import STANDARD_GRAVITY
+from .chest import discrete
 from .effects import FORCE_KINDS, effect_forces
 from .observer import transform_inputs
 
 G0 = STANDARD_GRAVITY
-
-
-def matrices(base: dict[str, float], fs_hz: float):
-    """(Ad, Bd, Gd, C, Df) of the 6-state model at ``fs_hz``."""
-    k1, c1, k2, c2, m1, m2, R = (base[n] for n in ("k1", "c1", "k2", "c2", "m1", "m2", "R"))
-    A = np.zeros((6, 6))
-    A[0, :4] = [-c1 / m1, -k1 / m1, c1 / m1, k1 / m1]
-    A[1, 0] = 1.0
-    A[2, :5] = [c1 / m2, k1 / m2, -(c1 + c2) / m2, -(k1 + k2) / m2, k2 / m2]
-    A[3, 2] = 1.0
-    B = np.zeros((6, 2))
-    B[2] = [c2 / m2, c2 / m2 * R]
-    B[4] = [1.0, R]
-    B[5] = [0.0, 0.0]
-    A[5, :] = 0.0
-    # p' = u1 (vehicle velocity change): a state fed by the input
-    Bp = np.zeros((6, 1))
-    Bp[5, 0] = 1.0
-    F = np.zeros((6, 2))
-    F[0, 0] = 1.0 / m1
-    F[2, 1] = 1.0 / m2
-    Ball = np.hstack([B + np.hstack([Bp, np.zeros((6, 1))]), F])
-    n, m = 6, 4
-    M = np.zeros((n + m, n + m))
-    M[:n, :n], M[:n, n:] = A, Ball
-    E = linalg.expm(M / fs_hz)
-    Ad, Bd, Gd = E[:n, :n], E[:n, n:n + 2], E[:n, n + 2:]
-    C = np.zeros((2, 6))
-    C[0] = A[0] / G0
-    C[1, 1], C[1, 3] = -1000.0, 1000.0
-    Df = np.array([[1.0 / (m1 * G0), 0.0], [0.0, 0.0]])
-    return Ad, Bd, Gd, C, Df
 
 
 class NonlinearGreyBox:
@@ -68,12 +36,12 @@ class NonlinearGreyBox:
         self.base = dict(base)
         self.effects = [dict(e) for e in effects]
         self.fs_hz = fs_hz
-        self.Ad, self.Bd, self.Gd, self.C, self.Df = matrices(self.base, fs_hz)
+        self.Ad, self.Bd, self.Gd, self.C, self.Df = discrete(self.base, fs_hz)
         self.force_effects = [(e["kind"], e.get("parameters", {})) for e in self.effects
                               if e["kind"] in FORCE_KINDS and e["kind"] != "belt_unloading"]
         self.unloading = any(e["kind"] == "belt_unloading" for e in self.effects)
         self._k2, self._c2, self._R = self.base["k2"], self.base["c2"], self.base["R"]
-        slack = matrices({**self.base, "k2": 0.0, "c2": 0.0}, fs_hz)
+        slack = discrete({**self.base, "k2": 0.0, "c2": 0.0}, fs_hz)
         self.Ad_slack, self.Bd_slack, self.Gd_slack = slack[:3]
         delay: dict[str, float] = next((e["parameters"] for e in self.effects
                                         if e["kind"] == "input_delay"), {})
@@ -93,10 +61,6 @@ class NonlinearGreyBox:
         self._pulse_ring = np.zeros(self.n_pulse + 1)
         self._brs_ring = np.zeros(self.n_brs + 1)
         self.reset()
-
-    @property
-    def order(self) -> int:
-        return 6
 
     # ------------------------------------------------------------------ per tick
     def reset(self) -> None:

@@ -69,10 +69,6 @@ class LinearObserver:
         self._du = np.zeros(2)
         self.reset()
 
-    @property
-    def order(self) -> int:
-        return self.A.shape[0]
-
     def reset(self) -> None:
         """Back to rest: zero state, zero integral, BRS reference taken at the next step."""
         self.x[:] = 0.0
