@@ -13,6 +13,7 @@ run ``observer-node run`` and ``crash-replay`` as separate processes instead.
 
 from __future__ import annotations
 
+import sys
 import threading
 import time
 from pathlib import Path
@@ -83,8 +84,10 @@ def run_bench(out: Path, model_path: str | None = None, interface: str = "auto",
     bus.shutdown()
     print(f"bench: replay {report.summary()}")
     c = node.counters
+    core = node.core
     print(f"bench: daemon ticks {c.ticks}, lost {c.lost}, rejected {c.rejected}, bad E2E "
-          f"{c.bad_e2e}, overruns {c.overruns}")
+          f"{c.bad_e2e}, overruns {c.overruns}, sensor faults {core.brs_jumps} BRS jumps "
+          f"{core.bias_faults} bias {core.hold_timeouts} hold timeouts")
 
     rec = read_recording(record)
     result = analyze(rec, out_dir=out)
@@ -102,6 +105,11 @@ def run_bench(out: Path, model_path: str | None = None, interface: str = "auto",
         print(f"  {name:<10}{lcr:9.1f}{lcd:9.1f}      {ocr:9.1f}{ocd:9.1f}      {diff:.1e}")
     print("\n  Fits are eq. 3.15 over 0.01..0.15 s; the daemon's window starts at its detected "
           "onset, the offline one at the lab's t = 0, hence small differences.")
+    for (name, *_, diff), ev in zip(rows, result["events"], strict=False):
+        if not diff < 1e-6:  # the daemon must step exactly what an offline run of its inputs does
+            print(f"bench: WARNING: {name}: the daemon differs from the offline re-run of its own "
+                  f"inputs by {diff:.3g} ({ev['invalid_ticks']} invalid ticks): see "
+                  f"{out}/analysis.json", file=sys.stderr)
     print(f"bench: wrote {out}/model.json, run.mcap, analysis.json and event plots")
     result["offline"] = offline
     return result

@@ -19,7 +19,7 @@ from observer_node.daemon.ports import PythonCanPort
 from observer_node.data import bundled_campaign, read_isomme
 from observer_node.dbc import Codec
 from observer_node.model import ModelFile
-from observer_node.replay.player import play
+from observer_node.replay.player import bus_sender, play
 from observer_node.replay.schedule import Schedule, crash_test_schedule
 
 CODEC = Codec()
@@ -56,7 +56,7 @@ class Harness:
         return True
 
     def play(self, schedule: Schedule, rate: float = 1.0):
-        return play(schedule, self.send, rate=rate)
+        return play(schedule, bus_sender(self.tx, schedule), rate=rate)
 
     def estimates(self) -> list[tuple[float, dict]]:
         out = []

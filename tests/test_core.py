@@ -195,3 +195,19 @@ def test_core_validity_recovers_after_faults(model):
     assert core.valid and core.cause == 0 and core.faults & BAD_E2E
     core.bridge(2)  # two lost samples are stepped with the held pulse
     assert core.tick_index == 6 and core.faults & LOST_FRAME
+
+
+@pytest.mark.parametrize("name", sorted(p.stem for p in bundled_campaign().glob("*.zip")))
+def test_every_bundled_test_is_stepped_as_offline_with_no_fault(model, name):
+    """Real belts move fast (load limiters pay out at ~2000 rad/s in FULL_002): no bundled
+    test may trip a sensor fault, and every one is stepped exactly as offline."""
+    t = read_isomme(bundled_campaign() / f"{name}.zip")
+    p, b, step = resample_inputs(t.pulse_g, t.brs, t.fs_hz, FS)
+    after = t.t0_s + np.arange(len(p)) * step / t.fs_hz >= 0
+    rng = np.random.default_rng(7)
+    core = ObserverCore(model.observer())
+    ticks = run_core(core, np.concatenate([quiet(rng, 300, 0.0), p[after]]),
+                     np.concatenate([np.full(300, b[after][0]), b[after]]))
+    assert core.faults == 0 and core.brs_jumps == 0, core.faults
+    assert ticks["valid"][300:].all()
+    assert_events_equal_offline(model, ticks, 1)

@@ -220,11 +220,12 @@ def test_killed_daemon_loses_at_most_100_ms(model_path, tmp_path):
 def test_bench_main_job_on_the_virtual_bus(tmp_path, capsys):
     from observer_node.bench import run_bench
 
-    result = run_bench(tmp_path, interface="virtual", tests=("R16_002",))
-    (event,) = result["events"]
-    live, off = event["fit_vs_reference"], result["offline"]["R16_002"]
-    assert abs(live["cr"] - off["cr"]) < 2 and abs(live["cd"] - off["cd"]) < 2
-    assert max(event["max_abs_diff_offline"].values()) < 1e-9
+    result = run_bench(tmp_path, interface="virtual")  # the README's bench: R16, SLED, FULL
+    assert len(result["events"]) == 3
+    for event, name in zip(result["events"], ("R16_002", "SLED_002", "FULL_002"), strict=True):
+        live, off = event["fit_vs_reference"], result["offline"][name]
+        assert abs(live["cr"] - off["cr"]) < 2 and abs(live["cd"] - off["cd"]) < 2, name
+        assert max(event["max_abs_diff_offline"].values()) < 1e-9, name
     assert (tmp_path / "run.mcap").exists() and (tmp_path / "event0.png").exists()
     assert "daemon ticks" in capsys.readouterr().out
 

@@ -25,7 +25,7 @@ def _run(effects: dict, setup: str, out: Path) -> dict:
     cfg = PlantConfig(effects=effects)
     est = simulate_campaign(setup, 6, seed=21, config=cfg, prefix="EST")
     val = simulate_campaign(setup, 6, seed=22, config=cfg, prefix="VAL")
-    return run_loop(est, val, out, verbose=False)
+    return run_loop(est, val, out, verbose=False, plots=False)  # plots: the campaign test
 
 
 def test_clean_data_accepts_no_effect(tmp_path):
@@ -71,5 +71,7 @@ def test_loop_improves_campaign_validation_fit(campaign, tmp_path):
     val = [t for t in campaign if t.name in ("R16_002", "R16_004", "R16_006")]
     r = run_loop(est, val, tmp_path, verbose=False)
     assert r["effects"], r["history"]
+    for name in ("fit_before_cr", "fit_after_cd", "residuals"):
+        assert (tmp_path / f"{name}.png").stat().st_size > 10_000
     assert r["final"]["fit"]["total"] > r["baseline"]["fit"]["total"] + 5
     assert r["validation"] == ["R16_002", "R16_004", "R16_006"]

@@ -65,7 +65,9 @@ class CoreConfig:
     rearm_s: float = 0.1  # shortest HOLD after an event
     hold_max_s: float = 2.0
     bias_max_g: float = 15.0  # beyond any zero a healthy sensor has, even after shocks
-    brs_max_rate_rad_s: float = 1000.0  # ~25 m/s of webbing on a 25 mm spool: none pulls so
+    # Real spindles reach ~2000 rad/s (campaign-a at 10 kHz: pretensioner and load-limiter
+    # pay-out in FULL_002, R16_007); 5000 rad/s is 125 m/s of webbing on a 25 mm spool.
+    brs_max_rate_rad_s: float = 5000.0
     recover_ticks: int = 5
     max_bridge_ticks: int = 10
     counts_per_rev: int = 96

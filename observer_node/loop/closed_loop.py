@@ -48,7 +48,9 @@ def _fit3(t: dict) -> dict:
 def run_loop(est_tests: list[CrashTest], val_tests: list[CrashTest], out: Path,
              rate_hz: float = 1000.0, window_s: tuple[float, float] = THESIS_WINDOW_S,
              margin: float = 1.0, top_k: int = 5, max_effects: int = 4,
-             verbose: bool = True) -> dict:
+             verbose: bool = True, plots: bool = True) -> dict:
+    """Run the loop and write report.json, report.md, model.json and (``plots``) the plots of
+    the validation tests before and after, into ``out``; returns the report."""
     t_start = time.monotonic()
     prog = Progress("loop", enabled=verbose)
     out.mkdir(parents=True, exist_ok=True)
@@ -157,7 +159,8 @@ def run_loop(est_tests: list[CrashTest], val_tests: list[CrashTest], out: Path,
         "seconds": round(time.monotonic() - t_start, 1),
     }
     (out / "report.json").write_text(json.dumps(report, indent=1, default=float) + "\n")
-    _plots(out, base, effects, gb.params, val)
+    if plots:
+        _plots(out, base, effects, gb.params, val)
     (out / "report.md").write_text(_markdown(report))
     prog.done(f"{len(accepted)} effect(s) accepted; validation fit "
               f"{baseline_val['fit']['total']:.1f} -> {final_val['fit']['total']:.1f} %")
