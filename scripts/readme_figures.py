@@ -1,0 +1,156 @@
+"""The README's result tables, from what the code prints today, so they cannot drift.
+
+Each table sits between ``<!-- figures:NAME -->`` and ``<!-- /figures:NAME -->`` in README.md
+and is made by running the product on the bundled campaign:
+
+    evaluate         observer-node evaluate (the thesis's Tables 4.1-4.3)
+    loop-campaign-a  observer-node loop, odd tests estimate, even tests validate
+    bench            observer-node bench on the in-process bus (daemon vs offline)
+
+    .venv/bin/python scripts/readme_figures.py            rewrite the tables (about 50 s)
+    .venv/bin/python scripts/readme_figures.py --check    exit 1 if a table drifted (CI)
+
+``--check`` allows 0.3 points on every number: BLAS builds differ in the last bits, which a
+least-squares fit can carry into the first decimal.
+"""
+
+from __future__ import annotations
+
+import argparse
+import contextlib
+import io
+import json
+import re
+import sys
+import tempfile
+from collections.abc import Callable
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parent.parent
+README = ROOT / "README.md"
+TOLERANCE = 0.3
+
+
+def _num(x: float) -> str:
+    return f"{x:.1f}".replace("-", "−")
+
+
+def evaluate_table(tmp: Path) -> str:
+    from observer_node.cli import main
+
+    with contextlib.redirect_stdout(io.StringIO()):
+        main(["evaluate", "--out", str(tmp / "evaluate"), "--quiet"])
+    d = json.loads((tmp / "evaluate" / "evaluation.json").read_text())
+    rows = ["| setup | model | fit CR | fit CD | fit TOT | thesis TOT |",
+            "|---|---|---|---|---|---|"]
+    for setup, s in d["setups"].items():
+        for name, m in s["models"].items():
+            f = m["validation"]["fit"]
+            thesis = s["thesis"].get(name, {}).get("total")
+            rows.append(f"| {setup} | {name} | {_num(f['cr'])} | {_num(f['cd'])} | "
+                        f"{_num(f['total'])} | {'' if thesis is None else _num(thesis)} |")
+    return "\n".join(rows)
+
+
+def loop_table(tmp: Path) -> str:
+    from observer_node.cli import main
+    from observer_node.model.effects import EFFECTS
+
+    out = tmp / "loop"
+    with contextlib.redirect_stdout(io.StringIO()):
+        main(["loop", "--estimate", "campaign-a/*[13579]", "--validate", "campaign-a/*[02468]",
+              "--out", str(out), "--quiet"])
+    r = json.loads((out / "report.json").read_text())
+    rows = ["| model | fit CR | fit CD | fit TOT | cross-validated fit_TOT (estimation tests) |",
+            "|---|---|---|---|---|"]
+    b = r["baseline"]["fit"]
+    cv0 = r["effects"][0]["evidence"]["cv_fit_before"] if r["effects"] else None
+    rows.append(f"| thesis grey-box | {_num(b['cr'])} | {_num(b['cd'])} | {_num(b['total'])} | "
+                f"{'' if cv0 is None else _num(cv0)} |")
+    for e in r["effects"]:
+        units = EFFECTS[e["kind"]][1] if e["kind"] in EFFECTS else {}
+        params = ", ".join(f"{k} = {v:.3g} {units.get(k, ('',))[0]}".rstrip()
+                           for k, v in e["parameters"].items())
+        f = e["fit"]
+        rows.append(f"| + {e['kind']}{f' ({params})' if params else ''} | {_num(f['cr'])} | "
+                    f"{_num(f['cd'])} | {_num(f['total'])} | "
+                    f"{_num(e['evidence']['cv_fit_after'])} |")
+    return "\n".join(rows)
+
+
+def bench_table(tmp: Path) -> str:
+    from observer_node.bench import run_bench
+
+    with contextlib.redirect_stdout(io.StringIO()):
+        result = run_bench(tmp / "bench", interface="virtual")
+    rows = ["| test | daemon fit CR | daemon fit CD | offline fit CR | offline fit CD | "
+            "max abs(daemon − offline re-run) |", "|---|---|---|---|---|---|"]
+    for ev, (name, off) in zip(result["events"], result["offline"].items(), strict=True):
+        live = ev["fit_vs_reference"]
+        diff = max(ev["max_abs_diff_offline"].values())
+        rows.append(f"| {name} | {_num(live['cr'])} | {_num(live['cd'])} | {_num(off['cr'])} | "
+                    f"{_num(off['cd'])} | {'< 1e-9' if diff < 1e-9 else f'{diff:.2g}'} |")
+    return "\n".join(rows)
+
+
+TABLES: dict[str, Callable[[Path], str]] = {
+    "evaluate": evaluate_table, "loop-campaign-a": loop_table, "bench": bench_table}
+
+
+def _block(name: str) -> re.Pattern[str]:
+    return re.compile(rf"(<!-- figures:{name} -->\n)(.*?)(\n<!-- /figures:{name} -->)", re.S)
+
+
+def _same(old: str, new: str) -> bool:
+    """Equal but for numbers within TOLERANCE."""
+    split = re.compile(r"(−?\d+\.\d+)")
+    a, b = split.split(old), split.split(new)
+    if len(a) != len(b):
+        return False
+    for x, y in zip(a, b, strict=True):
+        if x == y:
+            continue
+        try:
+            if abs(float(x.replace("−", "-")) - float(y.replace("−", "-"))) > TOLERANCE:
+                return False
+        except ValueError:
+            return False
+    return True
+
+
+def main(argv: list[str] | None = None) -> int:
+    p = argparse.ArgumentParser(description=__doc__,
+                                formatter_class=argparse.RawDescriptionHelpFormatter)
+    p.add_argument("--check", action="store_true", help="exit 1 if a table drifted")
+    p.add_argument("--only", choices=sorted(TABLES), action="append", help="these tables")
+    a = p.parse_args(argv)
+    text = README.read_text(encoding="utf-8")
+    drifted = []
+    with tempfile.TemporaryDirectory() as tmp:
+        for name in a.only or TABLES:
+            m = _block(name).search(text)
+            if m is None:
+                print(f"readme-figures: README.md has no figures:{name} block", file=sys.stderr)
+                return 2
+            print(f"readme-figures: {name} ...", file=sys.stderr)
+            new = TABLES[name](Path(tmp))
+            if not _same(m.group(2), new):
+                drifted.append(name)
+                print(f"readme-figures: {name} differs:\n--- README\n{m.group(2)}\n--- now\n{new}",
+                      file=sys.stderr)
+            text = text[:m.start(2)] + new + text[m.end(2):]
+    if a.check:
+        if drifted:
+            print(f"readme-figures: drifted: {', '.join(drifted)} (rerun without --check)",
+                  file=sys.stderr)
+            return 1
+        print("readme-figures: every table is what the code prints", file=sys.stderr)
+        return 0
+    README.write_text(text, encoding="utf-8")
+    print(f"readme-figures: wrote {len(a.only or TABLES)} table(s) into README.md",
+          file=sys.stderr)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
