@@ -30,7 +30,7 @@ import time
 from pathlib import Path
 
 from . import __version__
-from .data import ChannelCodes, CrashDataError, bundled_campaign, load_tests
+from .data import ChannelCodes, CrashDataError, CrashTest, bundled_campaign, load_tests
 from .data.crashtest import THESIS_WINDOW_S
 from .model.effects import EFFECTS as MODEL_EFFECTS
 from .model.modelfile import ModelFileError
@@ -77,7 +77,7 @@ def _codes(a: argparse.Namespace) -> ChannelCodes:
     )
 
 
-def _tests(a: argparse.Namespace):
+def _tests(a: argparse.Namespace) -> list[CrashTest]:
     paths = a.data or [bundled_campaign()]
     return load_tests(paths, _codes(a), a.counts_per_rev)
 

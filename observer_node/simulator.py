@@ -29,6 +29,7 @@ Outputs are filtered like a lab's (CR CFC 180, CD CFC 600); the pulse is left un
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -115,7 +116,8 @@ class _Chest:
         self.p = p
         self.e = effects
 
-    def accel(self, x, xd, s, sd, w, wd, pcar, vcar) -> tuple[float, float, float]:
+    def accel(self, x: float, xd: float, s: float, sd: float, w: float, wd: float, pcar: float,
+              vcar: float) -> tuple[float, float, float]:
         p, e = self.p, self.e
         d, dd = s - x, sd - xd  # chest compression and its rate
         k1 = p.k1 * (1 + e.get("chest_stiffening", 0.0) * (d / 0.02) ** 2)
@@ -138,7 +140,8 @@ class _Chest:
         return f_spine / p.m1, f_sternum / p.m2, f_belt
 
 
-def _rk4(f, y: np.ndarray, t: float, h: float) -> np.ndarray:
+def _rk4(f: Callable[[float, np.ndarray], np.ndarray], y: np.ndarray, t: float,
+         h: float) -> np.ndarray:
     k1 = f(t, y)
     k2 = f(t + h / 2, y + h / 2 * k1)
     k3 = f(t + h / 2, y + h / 2 * k2)

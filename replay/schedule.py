@@ -123,7 +123,8 @@ BURST_SAMPLES = 8  # samples per InputBurst frame (the DBC's layout)
 
 
 def _burst_schedule(test: CrashTest, codec: Codec, rate_hz: float, idx: np.ndarray, lo: int,
-                    pulse: np.ndarray, brs: np.ndarray, cr, cd) -> Schedule:
+                    pulse: np.ndarray, brs: np.ndarray, cr: np.ndarray | None,
+                    cd: np.ndarray | None) -> Schedule:
     fc, ref = codec["InputBurst"], codec["ReferenceChest"]
     times, ids, data = [], [], []
     n_frames = len(idx) // BURST_SAMPLES  # a partial last burst is not sent

@@ -112,7 +112,7 @@ class ObserverNode:
             self._pm_qos = None
 
     def install_signal_handlers(self) -> None:
-        def stop(_signum, _frame):
+        def stop(_signum: int, _frame: object) -> None:
             self.stop_event.set()
         signal.signal(signal.SIGINT, stop)
         signal.signal(signal.SIGTERM, stop)

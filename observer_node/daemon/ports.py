@@ -22,7 +22,11 @@ import errno
 import socket
 import struct
 import time
-from typing import Protocol
+from typing import TYPE_CHECKING, Any, Protocol
+
+if TYPE_CHECKING:  # python-can is imported when a port opens: the daemon starts faster
+    import can
+    from can.typechecking import CanFilter
 
 FLAG_ERROR = 1
 FLAG_FD = 2
@@ -145,13 +149,14 @@ class PythonCanPort:
     """Any python-can interface (virtual, socketcan, pcan, kvaser, ...)."""
 
     def __init__(self, interface: str, channel: str, ids: list[int], fd: bool = False,
-                 bus=None, **kwargs):
+                 bus: can.BusABC | None = None, **kwargs: Any):
         import can
 
         self.dropped = 0
         self._can = can
         self.fd = fd
-        filters = [{"can_id": i, "can_mask": 0x7FF, "extended": False} for i in ids]
+        filters: list[CanFilter] = [{"can_id": i, "can_mask": 0x7FF, "extended": False}
+                                    for i in ids]
         try:
             self.bus = bus or can.Bus(interface=interface, channel=channel,
                                       can_filters=filters, fd=fd, **kwargs)
@@ -167,7 +172,7 @@ class PythonCanPort:
 
             __slots__ = ()
 
-            def __deepcopy__(self, memo):
+            def __deepcopy__(self, memo: dict[int, Any] | None = None) -> can.Message:
                 return self
 
         self._message = _Sent

@@ -90,7 +90,7 @@ class CrashTest:
         if abs(fs_hz - self.fs_hz) < 1e-9:
             return self
         pulse, brs, step = resample_inputs(self.pulse_g, self.brs, self.fs_hz, fs_hz)
-        def ref(a):
+        def ref(a: np.ndarray | None) -> np.ndarray | None:
             return (None if a is None else resample_reference(a, step))
         return replace(
             self, fs_hz=self.fs_hz / step, pulse_g=pulse, brs=brs,

@@ -52,7 +52,8 @@ _STARTS = (
 )
 
 
-def fit_greybox(data: Dataset, m1_kg: float = DEFAULT_M1_KG, starts=_STARTS,
+def fit_greybox(data: Dataset, m1_kg: float = DEFAULT_M1_KG,
+                starts: tuple[dict[str, float], ...] = _STARTS,
                 progress: Progress | None = None, max_nfev: int = 400) -> GreyBoxFit:
     """Output-error (simulation) prediction-error fit, eq. 3.12-3.14, over all experiments.
 

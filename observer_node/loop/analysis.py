@@ -124,7 +124,8 @@ class Candidate:
     signature: np.ndarray | None = None
 
 
-def _regress(r: np.ndarray, sigs: list[np.ndarray], w: np.ndarray, win: slice):
+def _regress(r: np.ndarray, sigs: list[np.ndarray], w: np.ndarray,
+             win: slice) -> tuple[np.ndarray, float]:
     """Least squares of the weighted residual on weighted signatures; (coefs, explained)."""
     rw = (r * w[:, None, :]).ravel()
     S = np.stack([(s[:, win] * w[:, None, :]).ravel() for s in sigs], axis=1)
@@ -230,7 +231,8 @@ class _Scorer:
     """Share of the residual an effect explains when simulated as it is (non-linear, on the
     current model), with the base parameters re-estimated to first order beside it."""
 
-    def __init__(self, model: NonlinearGreyBox, data: Dataset, r, w, sens, y_hat):
+    def __init__(self, model: NonlinearGreyBox, data: Dataset, r: np.ndarray, w: np.ndarray,
+                 sens: list[np.ndarray], y_hat: np.ndarray):
         self.model, self.data, self.y_hat = model, data, y_hat
         self.w = w
         self.rw = (r * w[:, None, :]).ravel()
@@ -257,7 +259,7 @@ class _Scorer:
         pos = [n in POSITIVE for n in names]
         scale = [abs(start[n]) or EFFECTS[kind][1][n][1] for n in names]
 
-        def unpack(th):
+        def unpack(th: np.ndarray) -> dict[str, float]:
             return {n: float(sc * (np.exp(t) if ps else t))
                     for n, t, ps, sc in zip(names, th, pos, scale, strict=True)}
 
@@ -270,7 +272,8 @@ class _Scorer:
         return ex, p, sig
 
 
-def _sparse_other(model, data, r, w, tr) -> Candidate:
+def _sparse_other(model: NonlinearGreyBox, data: Dataset, r: np.ndarray, w: np.ndarray,
+                  tr: Trajectory) -> Candidate:
     """Sequentially thresholded least squares over polynomial force terms (SINDy-style)."""
     xd, x, sd, s, wst, _p = tr.z
     d, dd = s - x, sd - xd

@@ -37,7 +37,7 @@ from ..model.chest import PARAM_NAMES, PARAM_UNITS, STATES, discrete
 from ..model.effects import FORCE_KINDS, describe
 from ..model.modelfile import ModelFile
 from ..model.nonlinear import NonlinearGreyBox
-from .analysis import candidates, correlation_tests, explained_share, force_signature
+from .analysis import Candidate, candidates, correlation_tests, explained_share, force_signature
 from .refit import cross_validate, refit, score
 
 
@@ -172,7 +172,9 @@ def _residual(base: dict, effects: list[dict], data: Dataset) -> np.ndarray:
     return (data.y - y_hat)[:, data.win]
 
 
-def _signature_shares(c, effects, base, new_effects, new_base, resid_old, resid_new,
+def _signature_shares(c: Candidate, effects: list[dict], base: dict[str, float],
+                      new_effects: list[dict], new_base: dict[str, float],
+                      resid_old: np.ndarray, resid_new: np.ndarray,
                       data: Dataset) -> tuple[float, float]:
     """How much of the residual the candidate's signature explains before and after the
     refit, each along its own model's trajectory (would more of the effect still help?).

@@ -12,7 +12,14 @@ Knows nothing about how an effect was found or fitted.
 
 from __future__ import annotations
 
+from collections.abc import Sequence
+from typing import Any, TypeAlias
+
 import numpy as np
+
+# A float (the daemon, per tick) or an array over tests (identification). Any, because
+# numpy's stubs do not type arithmetic mixing the two.
+Num: TypeAlias = Any
 
 # kind -> (description, {parameter: (unit, typical magnitude)})
 EFFECTS: dict[str, tuple[str, dict[str, tuple[str, float]]]] = {
@@ -50,7 +57,8 @@ FORCE_KINDS = ("chest_stiffening", "chest_rate_damping", "belt_unloading", "belt
 OTHER_TERMS = ("d^2", "d^3", "d'|d'|", "e^2", "e^3", "e'|e'|", "d e", "d d'")
 
 
-def _kinematics(z, u1, u2, base):
+def _kinematics(z: np.ndarray | Sequence[Num], u1: Num, u2: Num,
+                base: dict[str, float]) -> tuple[Num, ...]:
     xd, x, sd, s, w, p = z
     d, dd = s - x, sd - xd
     e = w - s
@@ -58,12 +66,13 @@ def _kinematics(z, u1, u2, base):
     return xd, x, p, d, dd, e, ed
 
 
-def other_term(name: str, d, dd, e, ed):
+def other_term(name: str, d: Num, dd: Num, e: Num, ed: Num) -> Num:
     return {"d^2": d * d, "d^3": d * d * d, "d'|d'|": dd * abs(dd), "e^2": e * e,
             "e^3": e * e * e, "e'|e'|": ed * abs(ed), "d e": d * e, "d d'": d * dd}[name]
 
 
-def effect_forces(kind: str, p: dict, z, u1, u2, theta, base: dict):
+def effect_forces(kind: str, p: dict, z: np.ndarray | Sequence[Num], u1: Num, u2: Num, theta: Num,
+                  base: dict) -> tuple[Num, Num]:
     """(force on the spine, force on the sternum) [N] of one effect, + = rearward."""
     xd, x, pos, d, dd, e, ed = _kinematics(z, u1, u2, base)
     zero = 0.0 * d

@@ -23,7 +23,7 @@ import numpy as np
 
 from ..units import STANDARD_GRAVITY
 from .chest import discrete
-from .effects import FORCE_KINDS, effect_forces
+from .effects import FORCE_KINDS, Num, effect_forces
 from .observer import transform_inputs
 
 G0 = STANDARD_GRAVITY
@@ -113,7 +113,7 @@ class NonlinearGreyBox:
         self.x, self._xn = xn, z
         return y
 
-    def belt_slack(self, z, u1, u2):
+    def belt_slack(self, z: np.ndarray, u1: Num, u2: Num) -> Num:
         """True where the belt would push (force k2 e + c2 e' < 0): float or array."""
         return self._k2 * (z[4] - z[3]) + self._c2 * (u1 + self._R * u2 - z[2]) < 0.0
 

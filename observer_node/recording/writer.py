@@ -37,6 +37,7 @@ import multiprocessing as mp
 import os
 import struct
 import time
+from collections.abc import Callable
 from multiprocessing import reduction
 from pathlib import Path
 from typing import Any
@@ -71,7 +72,7 @@ class _Fd:
     def __init__(self, fd: int):
         self.fd = fd
 
-    def __reduce__(self):
+    def __reduce__(self) -> tuple[Callable[[Any], _Fd], tuple[Any]]:
         return _Fd._rebuild, (reduction.DupFd(self.fd),)
 
     @staticmethod
