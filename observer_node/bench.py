@@ -90,8 +90,8 @@ def run_bench(out: Path, model_path: str | None = None, interface: str = "auto",
           f"{core.bias_faults} bias {core.hold_timeouts} hold timeouts")
 
     rec = read_recording(record)
-    result = analyze(rec, out_dir=out)
-    offline = {t.name: evaluate_model(model, [t])["tests"][t.name] for t in crash}
+    result = analyze(rec, out_dir=out, ratings=False)  # ISO 18571: observer-node analyze
+    offline = {t.name: evaluate_model(model, [t], ratings=False)["tests"][t.name] for t in crash}
     rows = []
     for test, ev in zip(tests, result["events"], strict=False):
         live = ev.get("fit_vs_reference", {})

@@ -20,6 +20,7 @@ Examples::
         --out out/loop
     observer-node run --interface socketcan --channel vcan0 --model model.json --record run.mcap
     observer-node analyze run.mcap
+    observer-node export run.mcap --to run.blf           # for CANoe; .mf4 .asc .log .trc
 """
 
 from __future__ import annotations
@@ -109,7 +110,9 @@ def cmd_identify(a: argparse.Namespace) -> int:
 
 
 def cmd_evaluate(a: argparse.Namespace) -> int:
+    from .criteria import format_criteria
     from .evaluation import evaluate_model, format_tables, thesis_comparison
+    from .iso18571 import grade
     from .model.modelfile import ModelFile
 
     tests = _tests(a)
@@ -123,6 +126,16 @@ def cmd_evaluate(a: argparse.Namespace) -> int:
         for name, v in fits["tests"].items():
             print(f"  {name:<12} CR {v['cr']:6.1f} %  CD {v['cd']:6.1f} %")
         print(f"  {'total':<12} CR {f['cr']:6.1f} %  CD {f['cd']:6.1f} %  TOT {f['total']:.1f} %")
+        print("\nchest injury criteria, estimate vs measured (from t = 0):")
+        print(format_criteria(fits["criteria"]))
+        iso = fits.get("iso18571")
+        if iso:
+            print("\nISO/TS 18571 overall rating (0..1) on the fit window:")
+            for name, r in iso["tests"].items():
+                print(f"  {name:<12} CR {r['cr']['overall']:.3f} ({grade(r['cr']['overall'])})"
+                      f"  CD {r['cd']['overall']:.3f} ({grade(r['cd']['overall'])})")
+        else:
+            print("\n(ISO/TS 18571 ratings: pip install 'chest-observer[iso18571]')")
         print(f"wrote {out / 'fits.json'} and plots in {out}")
         return 0
     result = thesis_comparison(tests, out, a.rate, window or THESIS_WINDOW_S,
@@ -219,6 +232,21 @@ def cmd_analyze(a: argparse.Namespace) -> int:
             f = ev["fit_vs_reference"]
             print(f"    fit vs reference (eq. 3.15): CR {f['cr']:.1f} %  CD {f['cd']:.1f} %  "
                   f"TOT {f['total']:.1f} %")
+        c = ev["criteria"]
+        est = c["estimate"]
+        line = (f"    criteria: CD max {est['cd_max_mm']:.1f} mm, CR 3 ms {est['cr_3ms_g']:.1f} g,"
+                f" VC max {est['vc_max_m_s']:.2f} m/s")
+        if "reference" in c:
+            r, d = c["reference"], c["error"]
+            line += (f" (measured {r['cd_max_mm']:.1f} mm, {r['cr_3ms_g']:.1f} g, "
+                     f"{r['vc_max_m_s']:.2f} m/s; error {d['cd_max_mm']:+.1f} mm, "
+                     f"{d['cr_3ms_g']:+.1f} g, {d['vc_max_m_s']:+.2f} m/s)")
+        print(line)
+        if "iso18571" in ev:
+            iso = ev["iso18571"]
+            print(f"    ISO/TS 18571 overall rating: CR {iso['cr']['overall']:.3f}  "
+                  f"CD {iso['cd']['overall']:.3f} (0..1; corridor, phase, magnitude, slope "
+                  "in analysis.json)")
         if ev["invalid_ticks"]:
             v = ev.get("fit_vs_reference_valid")
             print(f"    {ev['invalid_ticks']} of {ev['ticks']} ticks flagged invalid (gaps in the "
@@ -227,6 +255,22 @@ def cmd_analyze(a: argparse.Namespace) -> int:
     if not result["events"]:
         print("  no crash event in the recording (the observer never triggered)")
     print(f"wrote {out / 'analysis.json'} and plots in {out}")
+    return 0
+
+
+def cmd_export(a: argparse.Namespace) -> int:
+    from .recording import RecordingError
+    from .recording.export import ExportError, export_frames
+
+    try:
+        n, salvaged = export_frames(a.recording, a.to, a.channel)
+    except (RecordingError, ExportError) as e:
+        print(f"observer-node: error: {e}", file=sys.stderr)
+        return 2
+    if salvaged:
+        print(f"observer-node: warning: {a.recording} was cut short ({salvaged}); every frame "
+              "before the cut was exported", file=sys.stderr)
+    print(f"wrote {n} frames to {a.to}")
     return 0
 
 
@@ -354,6 +398,11 @@ def build_parser() -> argparse.ArgumentParser:
     s.add_argument("--channel", help="bus channel (default vcan0)")
     s.add_argument("--model", help="model file (JSON) from identify or evaluate")
     s.add_argument("--record", help="MCAP file to record the run to")
+    s.add_argument("--live", nargs="?", const="127.0.0.1:8765", metavar="HOST:PORT",
+                   help="serve the run live to the Foxglove app (its WebSocket protocol; "
+                   "default 127.0.0.1:8765; needs --record: the recorder process serves it, "
+                   "so a slow viewer never delays a tick): the recording's topics and "
+                   "schemas, per-tick topics at about 100 Hz; layout in docker/foxglove/")
     s.add_argument("--config", help="TOML file with an [observer] table of these options")
     s.add_argument("--print-config", action="store_true",
                    help="print every config key with its default and range, and exit")
@@ -379,6 +428,17 @@ def build_parser() -> argparse.ArgumentParser:
     s.add_argument("recording", help="MCAP file")
     s.add_argument("--out", help="output folder (default: next to the recording)")
     s.set_defaults(func=cmd_analyze)
+
+    s = sub.add_parser("export", help="a recording's raw frames as MF4, BLF, ASC, candump or TRC",
+                       description="Write every CAN frame a recording holds (received and "
+                       "sent, with the recorded times and direction) in a bus-log format, by "
+                       "the file's suffix: .mf4 (ASAM MDF4: CANape, CANoe, loggers; needs the "
+                       "mf4 extra), .blf and .asc (Vector), .log (can-utils candump -L), .trc "
+                       "(PEAK). crash-replay plays the file back.")
+    s.add_argument("recording", help="MCAP file of observer-node run")
+    s.add_argument("--to", required=True, metavar="FILE", help="log file to write")
+    s.add_argument("--channel", default="can0", help="channel name written into the log")
+    s.set_defaults(func=cmd_export)
     return p
 
 

@@ -18,6 +18,7 @@ from .ident.dataset import Dataset, make_dataset
 from .ident.metrics import fit_table
 from .ident.progress import Progress
 from .model.modelfile import ModelFile
+from .scores import mean_abs_errors, scores
 
 # Tables 4.1-4.3 of the thesis: (fit_CR,tot, fit_CD,tot, fit_TOT) on its validation tests.
 THESIS_TABLES = {
@@ -82,11 +83,13 @@ def dataset_for(mf: ModelFile, tests: list[CrashTest],
 
 
 def evaluate_model(mf: ModelFile, tests: list[CrashTest], out_dir: Path | None = None,
-                   window_s: tuple[float, float] | None = None, title: str | None = None) -> dict:
-    """Fits (eq. 3.15-3.18) of a model on ``tests``; with ``out_dir``, plots and fits.json."""
+                   window_s: tuple[float, float] | None = None, title: str | None = None,
+                   ratings: bool = True) -> dict:
+    """Fits (eq. 3.15-3.18), injury criteria and ISO/TS 18571 ratings (see :func:`scores`)
+    of a model on ``tests``; with ``out_dir``, plots and fits.json."""
     data = dataset_for(mf, tests, window_s)
     y_hat = simulate_model(mf, data)
-    fits = fit_table(data.names, data.y[:, data.win], y_hat[:, data.win])
+    fits = scores(data, y_hat, ratings)
     if out_dir is not None:
         out_dir.mkdir(parents=True, exist_ok=True)
         (out_dir / "fits.json").write_text(json.dumps(fits, indent=1) + "\n")
@@ -146,7 +149,7 @@ def thesis_comparison(tests: list[CrashTest], out_dir: Path, rate_hz: float = 10
             mf = identify(data=est, name=f"{setup.lower()}-{slug}", **spec)
             mf.save(out_dir / "models" / f"{setup.lower()}-{slug}.json")
             y_hat = simulate_model(mf, val)
-            fits = fit_table(val.names, val.y[:, val.win], y_hat[:, val.win])
+            fits = scores(val, y_hat)
             pngs = _plot_pair(out_dir / "plots", f"{setup} {label} (validation)", val, y_hat,
                               fits, f"{setup.lower()}-{slug}")
             entry["models"][label] = {
@@ -203,14 +206,25 @@ def format_tables(result: dict) -> str:
                      f"{', '.join(entry['estimation'])}; validated on "
                      f"{', '.join(entry['validation'])}")
         lines.append(f"  {'model':<13}{'fit_CR':>8}{'fit_CD':>8}{'fit_TOT':>9}   "
-                     f"{'thesis CR':>9}{'CD':>6}{'TOT':>6}")
+                     f"{'thesis CR':>9}{'CD':>6}{'TOT':>6}   {'mean |error| CDmax':>18}"
+                     f"{'CR3ms':>7}{'VCmax':>7}   {'ISO 18571 CR':>12}{'CD':>6}")
         for label in MODELS:
             m = entry["models"].get(label)
             if m is None:
                 continue
-            f = m["validation"]["fit"]
+            v = m["validation"]
+            f = v["fit"]
             ref = entry.get("thesis", {}).get(label)
-            ref_s = (f"{ref['cr']:>9.1f}{ref['cd']:>6.1f}{ref['total']:>6.1f}" if ref else "")
+            ref_s = (f"{ref['cr']:>9.1f}{ref['cd']:>6.1f}{ref['total']:>6.1f}" if ref
+                     else " " * 21)
+            err = mean_abs_errors(v["criteria"])
+            iso = v.get("iso18571", {}).get("mean_overall")
+            iso_s = f"{iso['cr']:>12.3f}{iso['cd']:>6.3f}" if iso else f"{'(not installed)':>18}"
             lines.append(f"  {label:<13}{f['cr']:>8.1f}{f['cd']:>8.1f}{f['total']:>9.1f}   "
-                         f"{ref_s}")
+                         f"{ref_s}   {err['cd_max_mm']:>15.1f} mm{err['cr_3ms_g']:>5.1f} g"
+                         f"{err['vc_max_m_s']:>5.2f}m/s {iso_s}")
+    lines.append("")
+    lines.append("  Criteria (validation tests, estimate vs measured, from t = 0): peak chest "
+                 "deflection, chest X acceleration 3 ms clip, viscous criterion (HIII 50th). "
+                 "ISO 18571: mean overall rating, 0..1, on the fit window.")
     return "\n".join(lines)

@@ -11,6 +11,8 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 import numpy as np
 
+from .criteria import EURO_NCAP_CD_LIMITS_MM
+
 OUTPUT_LABELS = (("cr", "Chest acceleration CR [g]"), ("cd", "Chest deflection CD [mm]"))
 
 
@@ -26,6 +28,10 @@ def measured_vs_simulated(path: Path, title: str, names: list[str], t_s: np.ndar
         ax = axes[k // cols][k % cols]
         ax.plot(t_s * 1000, y[k, :, output], "k-", lw=1.2, label="measured")
         ax.plot(t_s * 1000, y_hat[k, :, output], "r--", lw=1.2, label="simulated")
+        if key == "cd":  # what a restraint engineer reads the deflection against
+            for limit, colour in zip(EURO_NCAP_CD_LIMITS_MM, ("tab:green", "tab:red"),
+                                     strict=True):
+                ax.axhline(limit, color=colour, ls=":", lw=0.9)
         ax.set_title(f"{name}: fit {fits['tests'][name][key]:.1f} %", fontsize=9)
         ax.set_xlabel("t [ms]")
         ax.set_ylabel(label, fontsize=8)
@@ -33,7 +39,10 @@ def measured_vs_simulated(path: Path, title: str, names: list[str], t_s: np.ndar
     for k in range(n, rows * cols):
         axes[k // cols][k % cols].axis("off")
     axes[0][0].legend(fontsize=8)
-    fig.suptitle(f"{title} — {label.split(' [')[0]}, fit {fits['fit'][key]:.1f} %")
+    limits = (f"; dotted: Euro NCAP chest compression limits {EURO_NCAP_CD_LIMITS_MM[0]:g} / "
+              f"{EURO_NCAP_CD_LIMITS_MM[1]:g} mm" if key == "cd" else "")
+    fig.suptitle(f"{title} — {label.split(' [')[0]}, fit {fits['fit'][key]:.1f} %{limits}",
+                 fontsize=10)
     fig.tight_layout()
     path.parent.mkdir(parents=True, exist_ok=True)
     fig.savefig(path, dpi=80)

@@ -2,7 +2,8 @@
 
 Sources, played one after another: ISO-MME test folders or zips (or a folder of them), CSV
 crash tests, MCAP recordings of observer-node run (their raw frames, exactly), and candump
--L, ASC, BLF or TRC logs. Every source is read and checked before the first frame is sent.
+-L, ASC, BLF, TRC or ASAM MDF4 (.mf4, CANape/CANoe/loggers; needs the mf4 extra) logs.
+Every source is read and checked before the first frame is sent.
 The crash tests bundled with the package are named campaign-a (all 24) or
 campaign-a/PATTERN (by test name, e.g. campaign-a/R16_002 or 'campaign-a/SLED_*').
 
@@ -43,7 +44,7 @@ def build_parser() -> argparse.ArgumentParser:
                                 formatter_class=argparse.RawDescriptionHelpFormatter)
     p.add_argument("sources", nargs="+", metavar="SOURCE",
                    help="crash test (ISO-MME folder, .zip, .mme, .csv), folder of tests, "
-                   "campaign-a[/PATTERN], .mcap recording, or .log/.asc/.blf/.trc bus log")
+                   "campaign-a[/PATTERN], .mcap recording, or .log/.asc/.blf/.trc/.mf4 bus log")
     p.add_argument("--interface", default="socketcan", help="python-can interface (socketcan)")
     p.add_argument("--channel", default="vcan0", help="bus channel (vcan0)")
     p.add_argument("--fd", action="store_true", help="send as CAN FD frames")
@@ -70,7 +71,8 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--remap", type=_remap, action="append", metavar="FROM=TO",
                    help="send frames of one ID under another (repeatable)")
     p.add_argument("--all-frames", action="store_true",
-                   help="MCAP: also the frames the daemon sent, not only those it received")
+                   help="MCAP, and logs that keep the direction (ASC, BLF, TRC, MF4): also the "
+                   "frames the recording node sent, not only those it received")
     p.add_argument("--counts-per-rev", type=int, help="BRS counts/rev if a test does not say")
     p.add_argument("--bitrate", type=float, default=500_000, help="for --dry-run's bus load")
     p.add_argument("--data-bitrate", type=float, default=2_000_000,

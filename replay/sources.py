@@ -54,13 +54,25 @@ def read_candump(path: Path) -> Schedule:
     return Schedule(t - t[0], np.array(ids), data, path.name)
 
 
-def read_python_can_log(path: Path) -> Schedule:
+# Logs read through python-can (MF4 through asammdf, python-can's mf4 extra)
+PYTHON_CAN_LOGS = (".asc", ".blf", ".trc", ".mf4")
+
+
+def read_python_can_log(path: Path, all_frames: bool = False) -> Schedule:
+    """Frames of an ASC, BLF, TRC or MF4 log; only those received by the logging node unless
+    ``all_frames`` (in the formats that keep the direction)."""
     import can
 
+    if path.suffix.lower() == ".mf4":
+        try:
+            import asammdf  # noqa: F401
+        except ImportError:
+            raise SourceError(f"{path}: reading MDF4 needs asammdf: pip install "
+                              "'chest-observer[mf4]'") from None
     times, ids, data = [], [], []
     try:
         for m in can.LogReader(str(path)):
-            if m.is_error_frame or m.is_remote_frame:
+            if m.is_error_frame or m.is_remote_frame or not (m.is_rx or all_frames):
                 continue
             times.append(m.timestamp)
             ids.append(m.arbitration_id)
@@ -116,14 +128,14 @@ def load_source(path: str | Path, codec: Codec, rate_hz: float = 1000.0,
     p = Path(path)
     suffix = p.suffix.lower()
     try:
-        if suffix in (".mcap", ".log", ".asc", ".blf", ".trc") and not p.is_file():
+        if suffix in (".mcap", ".log", *PYTHON_CAN_LOGS) and not p.is_file():
             raise SourceError(f"{p}: no such file")
         if suffix == ".mcap":
             return [_window(read_mcap_frames(p, all_frames), start_s, end_s)]
         if suffix == ".log":
             return [_window(read_candump(p), start_s, end_s)]
-        if suffix in (".asc", ".blf", ".trc"):
-            return [_window(read_python_can_log(p), start_s, end_s)]
+        if suffix in PYTHON_CAN_LOGS:
+            return [_window(read_python_can_log(p, all_frames), start_s, end_s)]
         tests = [load_test(t, codes, counts_per_rev, require_outputs=reference)
                  for t in find_tests([str(path)])]  # a test, a folder, or campaign-a[/PATTERN]
     except CrashDataError as e:

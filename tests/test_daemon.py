@@ -28,19 +28,19 @@ ROOT = Path(__file__).resolve().parents[1]
 
 # ------------------------------------------------------------------ daemon on a virtual bus
 
-def _play_recorded(model, channel: str, sched, record: Path):
+def _play_recorded(model, channel: str, sched, record: Path, settle_s: float = 0.1):
     """Play ``sched`` into a recording daemon: its counters, the estimate frames heard on
-    the bus, and the recording read back."""
+    the bus, and the recording read back (``settle_s`` after the last frame)."""
     with Harness(model, channel, record) as h:
         h.play(sched)
-        time.sleep(0.1)
+        time.sleep(settle_s)
         est = h.estimates()
     return h.node.counters, est, read_recording(record)
 
 
 def _assert_matches_offline(rec) -> None:
     """The recorded estimates are the offline simulation's, and fit the reference."""
-    (event,) = analyze(rec)["events"]
+    (event,) = analyze(rec, ratings=False)["events"]
     assert event["max_abs_diff_offline"]["cr_g"] < 1e-9
     assert event["max_abs_diff_offline"]["cd_mm"] < 1e-9
     assert event["fit_vs_reference"]["total"] > 55
@@ -273,7 +273,7 @@ def test_two_tests_back_to_back_are_two_events_without_spikes(model, tmp_path):
 
     sched = restamp_counters(concat([r16_schedule(), r16_schedule()], gap_s=0.3), CODEC)
     c, _, rec = _play_recorded(model, "b2b", sched, tmp_path / "run.mcap")
-    result = analyze(rec)
+    result = analyze(rec, ratings=False)
     assert c.ticks == int((sched.ids == CODEC["TunnelAccel"].frame_id).sum())
     assert [e["event"] for e in result["events"]] == [0, 1]
     for e in result["events"]:
@@ -302,6 +302,10 @@ def test_invalid_ticks_are_marked_not_scored_as_valid(model, tmp_path):
     assert event["fit_vs_reference_valid"]["ticks"] < event["ticks"]
     assert event["max_abs_diff_offline"]["cd_mm"] < 1e-9
     assert (tmp_path / "an" / "event0.png").stat().st_size > 10_000
+    # criteria of estimate and reference with their errors, and the ISO/TS 18571 rating
+    c = event["criteria"]
+    assert abs(c["error"]["cd_max_mm"]) < 10 and c["reference"]["cd_max_mm"] > 10
+    assert 0.3 < event["iso18571"]["cd"]["overall"] <= 1.0
 
 
 def test_every_message_matches_its_topics_schema(model, tmp_path):
@@ -314,7 +318,8 @@ def test_every_message_matches_its_topics_schema(model, tmp_path):
 
     from observer_node.recording import format as fmt
 
-    _play_recorded(model, "schemas", r16_schedule(), tmp_path / "run.mcap")
+    # long enough after the last frame for the event to end and its criteria to go out
+    _play_recorded(model, "schemas", r16_schedule(), tmp_path / "run.mcap", settle_s=0.5)
     seen: dict[str, int] = {}
     with (tmp_path / "run.mcap").open("rb") as f:
         for schema, channel, message in make_reader(f).iter_messages():
@@ -374,3 +379,34 @@ def test_moving_bits_in_the_dbc_needs_no_other_edit(model, tmp_path):
     assert any(s["Invalid_NotArmed"] for s in status)  # holding after the event
     assert not any(s["Invalid_AccelTimeout"] for s in status[:-3])
     _assert_matches_offline(read_recording(tmp_path / "run.mcap"))
+
+
+def test_each_event_ends_with_its_criteria_on_the_bus(model, tmp_path):
+    """ChestCriteria: once per event, E2E-protected, the criteria of the event's estimates
+    from the onset (as an offline run of the recorded inputs gives them), recorded."""
+    from observer_node.criteria import chest_criteria
+    from observer_node.dbc import e2e_crc
+    from observer_node.recording import offline_estimates
+
+    fc = CODEC["ChestCriteria"]
+    record = tmp_path / "run.mcap"
+    with Harness(model, "criteria", record) as h:
+        h.play(r16_schedule())
+        time.sleep(0.5)  # the event ends event_s after the trigger, or on the silence
+        frames = []
+        while (m := h.rx.recv(0)) is not None:
+            if m.arbitration_id == fc.frame_id:
+                frames.append(bytes(m.data))
+    assert len(frames) == 1, frames
+    data = frames[0]
+    assert data[0] == e2e_crc(fc.frame_id, data)
+    got = fc.decode(data)
+    rec = read_recording(record)
+    _, y = offline_estimates(rec, 0)
+    want = chest_criteria(y[:, 0], y[:, 1], model.tick_rate_hz)
+    assert got["CriteriaEvent"] == 0
+    assert abs(got["ChestDeflMax"] - want.cd_max_mm) <= 0.005 + 1e-9
+    assert abs(got["ChestAccel3ms"] - want.cr_3ms_g) <= 0.005 + 1e-9
+    assert abs(got["ViscousCritMax"] - want.vc_max_m_s) <= 0.00005 + 1e-9
+    assert 10 < got["ChestDeflMax"] < 80 and got["ViscousCritMax"] > 0.01
+    assert rec.topics["/observer/criteria"] == 1

@@ -25,7 +25,8 @@ def _run(effects: dict, setup: str, out: Path) -> dict:
     cfg = PlantConfig(effects=effects)
     est = simulate_campaign(setup, 6, seed=21, config=cfg, prefix="EST")
     val = simulate_campaign(setup, 6, seed=22, config=cfg, prefix="VAL")
-    return run_loop(est, val, out, verbose=False, plots=False)  # plots: the campaign test
+    # plots and ISO 18571 ratings: the campaign test checks them
+    return run_loop(est, val, out, verbose=False, plots=False, ratings=False)
 
 
 def test_clean_data_accepts_no_effect(tmp_path):
@@ -73,5 +74,14 @@ def test_loop_improves_campaign_validation_fit(campaign, tmp_path):
     assert r["effects"], r["history"]
     for name in ("fit_before_cr", "fit_after_cd", "residuals"):
         assert (tmp_path / f"{name}.png").stat().st_size > 10_000
+    # the criteria a restraint engineer reads, per validation test, before and after
+    for label in ("baseline", "final"):
+        assert set(r["criteria"][label]) == set(r["validation"])
+    err = {k: np.mean([abs(c["error"]["cd_max_mm"]) for c in r["criteria"][k].values()])
+           for k in ("baseline", "final")}
+    assert err["final"] < err["baseline"], err  # the effects bring peak deflection closer
+    assert r["iso18571"]["final"]["mean_overall"]["cd"] > r["iso18571"]["baseline"][
+        "mean_overall"]["cd"]
+    assert "Injury criteria on the validation tests" in (tmp_path / "report.md").read_text()
     assert r["final"]["fit"]["total"] > r["baseline"]["fit"]["total"] + 5
     assert r["validation"] == ["R16_002", "R16_004", "R16_006"]

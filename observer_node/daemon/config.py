@@ -28,6 +28,7 @@ class NodeConfig:
     raw_socketcan: bool = True
     model: str = ""
     record: str = ""
+    live: str = ""  # HOST:PORT of the Foxglove live view (served by the recorder process)
     status_period_s: float = 0.1
     accel_timeout_s: float = 0.0  # 0: two tick periods
     brs_timeout_s: float = 0.03
@@ -64,6 +65,9 @@ class NodeConfig:
 
     def check(self, where: str = "command line") -> None:
         check(asdict(self), where)
+        if self.live and not self.record:
+            raise ConfigError(f"{where}: live {self.live!r} needs record: the live view is "
+                              "served by the recorder process (give --record FILE)")
 
 
 def _num(lo: float, hi: float, integer: bool = False) -> dict[str, Any]:
@@ -75,6 +79,7 @@ _Schema = dict[str, dict[str, Any]]
 _NODE: _Schema = {
     "interface": {**_STR, "minLength": 1}, "channel": _STR, "fd": {"type": "boolean"},
     "raw_socketcan": {"type": "boolean"}, "model": _STR, "record": _STR,
+    "live": {"type": "string", "pattern": r"^$|^[^\s:]+:\d{1,5}$"},
     "status_period_s": _num(0.01, 10), "accel_timeout_s": _num(0, 60),
     "brs_timeout_s": _num(0.001, 10), "idle_after_s": _num(0.01, 3600),
     "reconnect_s": _num(0.01, 60), "cpu_latency_us": _num(-1, 100_000, True)}

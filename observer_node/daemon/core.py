@@ -93,6 +93,13 @@ class ObserverCore:
         self._bias_ring = np.zeros(self.n_bias)
         self._pre_pulse = np.zeros(self.n_pre)  # raw deceleration, bias not removed
         self._pre_brs = np.zeros(self.n_pre)
+        # The running event's estimates (for its injury criteria), and the last finished
+        # event's: two buffers swapped at the event's end, so nothing is allocated.
+        n_ev = self.n_event + self.n_pre
+        self._ev = np.zeros((2, n_ev))
+        self._done = np.zeros((2, n_ev))
+        self._ev_n = 0
+        self.finished: tuple[int, int] | None = None  # (event, ticks) not yet reported
         self.rad_per_count = 2 * math.pi / self.cfg.counts_per_rev
         self.hold_timeouts = 0
         self.bias_faults = 0
@@ -204,6 +211,9 @@ class ObserverCore:
             self._to_hold()
 
     def _to_hold(self) -> None:
+        """From RUNNING: the event is over; its estimates wait in ``finished_estimates``."""
+        self._ev, self._done = self._done, self._ev
+        self.finished = (self.event, self._ev_n)
         self.state = HOLD
         self._hold = 0
         self.event = -1
@@ -269,6 +279,16 @@ class ObserverCore:
                           self.rad_per_count)
         self.cr_g = y[0]
         self.cd_mm = y[1]
+        n = self._ev_n
+        if n < self._ev.shape[1]:
+            self._ev[0, n] = y[0]
+            self._ev[1, n] = y[1]
+            self._ev_n = n + 1
+
+    def finished_estimates(self) -> tuple[np.ndarray, np.ndarray]:
+        """CR [g] and CD [mm] of the last finished event, from its onset (views)."""
+        n = self.finished[1] if self.finished else 0
+        return self._done[0, :n], self._done[1, :n]
 
     def _armed(self, decel_g: float) -> None:
         self.cr_g = self.cd_mm = 0.0
@@ -309,6 +329,7 @@ class ObserverCore:
         self.onset_tick = self.tick_index - back
         self.brs_ref = self._pre_brs[start]
         self.obs.reset()
+        self._ev_n = 0
         self.state = RUNNING
         self.event = self.events
         self.events += 1

@@ -31,6 +31,7 @@ from typing import BinaryIO
 from observer_node.dbc import DBC_PATH, Codec
 
 from .. import __version__
+from ..criteria import chest_criteria
 from ..model.modelfile import ModelFile
 from ..recording.format import FLAG_TX, TickRow
 from ..recording.writer import Recorder, RecorderError
@@ -89,7 +90,8 @@ class ObserverNode:
                 atts = [("model.json", "application/json", self.model.dumps().encode()),
                         ("chest_observer.dbc", "text/plain", self.codec.path.read_bytes())]
                 self.recorder = Recorder(self.cfg.record, self.metadata(), atts,
-                                         self.codec.path, rows_per_s=self.model.tick_rate_hz)
+                                         self.codec.path, rows_per_s=self.model.tick_rate_hz,
+                                         live=self.cfg.live)
                 self.recorder.wait_ready()
             self.port = self._port_factory(self.input_ids)
         except BaseException:
@@ -215,6 +217,8 @@ class ObserverNode:
                     if not core.cause & BRS_TIMEOUT:
                         cnt.brs_timeouts += 1
                     core.fault(BRS_TIMEOUT)
+                if core.finished is not None:  # an event ended: its criteria, once
+                    self._send_criteria(now)
                 if keep_up is not None and now >= next_keep_up:
                     keep_up()  # the MCAP writer's priority: idle unless it lags
                     next_keep_up = now + 0.01
@@ -291,6 +295,21 @@ class ObserverNode:
                                  (done - t) * 1e6))
         if bus_gone is not None:
             raise bus_gone
+
+    def _send_criteria(self, now: float) -> None:
+        """The ChestCriteria frame of the event that just ended (~0.1 ms, once per event, in
+        the first loop pass after it, when the observer is holding), sent and recorded."""
+        core = self.core
+        assert core.finished is not None
+        event = core.finished[0]
+        cr, cd = core.finished_estimates()
+        core.finished = None
+        frame_id, data = self.outputs.criteria_frame(event, chest_criteria(cr, cd, core.fs_hz))
+        if self.port.send(frame_id, data):  # type: ignore[union-attr]
+            if self.recorder is not None:
+                self.recorder.put_frame(time.perf_counter(), frame_id, data, FLAG_TX)
+        else:
+            self.counters.tx_dropped += 1
 
     def _send_status(self, now: float, counter: int) -> None:
         for frame_id, data in self.outputs.status_frames(self.core, self.counters,

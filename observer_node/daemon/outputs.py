@@ -8,8 +8,11 @@ the one-bit signal of that name (``Invalid_<Name>``, ``Fault_<Name>``).
 
 from __future__ import annotations
 
+import math
+
 from observer_node.dbc import Codec, e2e_crc
 
+from ..criteria import ChestCriteria
 from ..recording.writer import OFF, Recorder
 from .core import (
     ACCEL_TIMEOUT,
@@ -61,6 +64,8 @@ class Outputs:
         table = self.status.choices("ObserverState")
         self.state_value = {s: table[name] for s, name in STATES.items()}
         self.model_id = model_id
+        self.criteria = codec["ChestCriteria"]
+        self._criteria_counter = 0
 
     def estimate(self, core: ObserverCore, cr: float, cd: float, valid: bool,
                  running: bool) -> bytes:
@@ -103,6 +108,18 @@ class Outputs:
                                          + core.brs_jumps)}
         return [(fc.frame_id, fc.encode(values, counter)) for fc, values in
                 ((self.status, status), (self.counters, counters), (self.health, health))]
+
+    def criteria_frame(self, event: int, crit: ChestCriteria) -> tuple[int, bytes]:
+        """ChestCriteria of a finished event (E2E-protected, values saturated to the
+        signals' ranges)."""
+        fc = self.criteria
+        values = {"CriteriaEvent": event % 16, "ChestDeflMax": crit.cd_max_mm,
+                  "ChestAccel3ms": crit.cr_3ms_g, "ViscousCritMax": crit.vc_max_m_s}
+        for name, v in values.items():
+            lo, hi = (r * fc.scale(name) for r in fc.raw_range(name))
+            values[name] = min(max(v, lo), hi) if math.isfinite(v) else 0.0
+        self._criteria_counter += 1
+        return fc.frame_id, fc.encode(values, self._criteria_counter)
 
     def state(self, core: ObserverCore) -> int:
         """The observer's state as the bus carries it."""

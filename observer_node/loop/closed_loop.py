@@ -37,6 +37,7 @@ from ..model.chest import PARAM_NAMES, PARAM_UNITS, STATES, discrete
 from ..model.effects import FORCE_KINDS, describe
 from ..model.modelfile import ModelFile
 from ..model.nonlinear import NonlinearGreyBox
+from ..scores import mean_abs_errors, scores
 from .analysis import Candidate, candidates, correlation_tests, explained_share, force_signature
 from .refit import cross_validate, refit, score
 
@@ -48,9 +49,10 @@ def _fit3(t: dict) -> dict:
 def run_loop(est_tests: list[CrashTest], val_tests: list[CrashTest], out: Path,
              rate_hz: float = 1000.0, window_s: tuple[float, float] = THESIS_WINDOW_S,
              margin: float = 1.0, top_k: int = 5, max_effects: int = 4,
-             verbose: bool = True, plots: bool = True) -> dict:
+             verbose: bool = True, plots: bool = True, ratings: bool = True) -> dict:
     """Run the loop and write report.json, report.md, model.json and (``plots``) the plots of
-    the validation tests before and after, into ``out``; returns the report."""
+    the validation tests before and after, into ``out``; returns the report. ``ratings``:
+    ISO/TS 18571 ratings beside the fits (when the optional package is installed)."""
     t_start = time.monotonic()
     prog = Progress("loop", enabled=verbose)
     out.mkdir(parents=True, exist_ok=True)
@@ -140,6 +142,10 @@ def run_loop(est_tests: list[CrashTest], val_tests: list[CrashTest], out: Path,
         prog.update(f"accepted {best.kind}: validation fit {val_fit['fit']['total']:.1f} %")
 
     final_val = score(base, effects, val)
+    judged = {label: scores(val, NonlinearGreyBox(b, e, rate_hz).simulate(val.pulse_g,
+                                                                          val.brs_rad),
+                            ratings)
+              for label, b, e in (("baseline", gb.params, []), ("final", base, effects))}
     mf = _model_file(base, effects, est, rate_hz, gb)
     mf.save(out / "model.json")
     resid_final = _residual(base, effects, est)
@@ -156,6 +162,9 @@ def run_loop(est_tests: list[CrashTest], val_tests: list[CrashTest], out: Path,
         "settings": {"rate_hz": rate_hz, "window_s": list(window_s), "margin": margin,
                      "top_k": top_k, "cross_validation": "two-fold inside estimation tests"},
         "validation_tests": {"baseline": baseline_val["tests"], "final": final_val["tests"]},
+        "criteria": {k: v["criteria"] for k, v in judged.items()},
+        **({"iso18571": {k: v["iso18571"] for k, v in judged.items()}}
+           if "iso18571" in judged["final"] else {}),
         "seconds": round(time.monotonic() - t_start, 1),
     }
     (out / "report.json").write_text(json.dumps(report, indent=1, default=float) + "\n")
@@ -256,6 +265,21 @@ def _markdown(r: dict) -> str:
     if not r["effects"]:
         lines += ["No effect was accepted: no candidate raised the cross-validated fit by "
                   f"{r['settings']['margin']} points.", ""]
+    lines += ["## Injury criteria on the validation tests", "",
+              "Mean |estimate - measured| over the validation tests (peak chest deflection, "
+              "chest X acceleration 3 ms clip, viscous criterion; per test in report.json)"
+              + (" and the mean ISO/TS 18571 overall rating (0..1):" if "iso18571" in r
+                 else ":"), "",
+              "| model | CD max [mm] | CR 3 ms [g] | VC max [m/s] |"
+              + (" ISO 18571 CR | CD |" if "iso18571" in r else ""),
+              "|---|---|---|---|" + ("---|---|" if "iso18571" in r else "")]
+    for label in ("baseline", "final"):
+        err = mean_abs_errors(r["criteria"][label])
+        iso = r["iso18571"][label]["mean_overall"] if "iso18571" in r else None
+        lines.append(f"| {'thesis grey-box' if label == 'baseline' else 'final'} | "
+                     f"{err['cd_max_mm']:.1f} | {err['cr_3ms_g']:.1f} | {err['vc_max_m_s']:.2f} |"
+                     + (f" {iso['cr']:.3f} | {iso['cd']:.3f} |" if iso else ""))
+    lines.append("")
     for e in r["effects"]:
         ev = e["evidence"]
         params = ", ".join(f"{k} = {v:.4g}" if isinstance(v, float) else f"{k} = {v}"

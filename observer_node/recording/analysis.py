@@ -8,6 +8,8 @@ from pathlib import Path
 
 import numpy as np
 
+from .. import iso18571
+from ..criteria import chest_criteria, compare
 from ..ident.metrics import fit_percent
 from .reader import Recording, RecordingError
 
@@ -39,9 +41,12 @@ def offline_estimates(rec: Recording, event: int) -> tuple[np.ndarray, np.ndarra
 
 
 def analyze(rec: Recording, window_s: tuple[float, float] = (0.01, 0.15),
-            out_dir: Path | None = None) -> dict:
+            out_dir: Path | None = None, ratings: bool = True) -> dict:
     """Per event: the fit (eq. 3.15) of the estimates against the reference and against the
-    offline simulation of the same model, and the largest difference from the offline run."""
+    offline simulation of the same model, the largest difference from the offline run, the
+    chest injury criteria of the estimates (beside the reference's, with their errors) over
+    the event's ticks from the onset, and (``ratings``, optional package) the ISO/TS 18571
+    ratings against the reference on the window."""
     T = rec.ticks
     fs = rec.model.tick_rate_hz if rec.model else rec.tick_rate_hz
     events = sorted({int(e) for e in T["event"][T["running"] > 0]})
@@ -85,8 +90,16 @@ def analyze(rec: Recording, window_s: tuple[float, float] = (0.01, 0.15),
                                                    "ticks": int(wv.sum())}
             entry["offline_fit_vs_reference"] = {"cr": fit_percent(r[w, 0], y_off[w, 0]),
                                                  "cd": fit_percent(r[w, 1], y_off[w, 1])}
+            m = running & have_ref
+            entry["criteria"] = compare(chest_criteria(y_est[m, 0], y_est[m, 1], fs),
+                                        chest_criteria(r[m, 0], r[m, 1], fs))
+            if ratings and iso18571.available():
+                entry["iso18571"] = {key: iso18571.rate(r[w, j], y_est[w, j], fs)
+                                     for j, key in enumerate(("cr", "cd"))}
         else:
             r = None
+            entry["criteria"] = {"estimate": chest_criteria(y_est[running, 0],
+                                                            y_est[running, 1], fs).as_dict()}
         if out_dir is not None:
             _plot_event(out_dir / f"event{e}.png", rec, e, t_rel, y_est, y_off, r, entry,
                         running & valid)

@@ -12,8 +12,9 @@ Foxglove offers it):
 ``/observer/inputs``     per tick: accelerometer (J211), deceleration, bias, BRS
 ``/observer/estimate``   per tick: CR, CD, valid, running, state, invalid cause
 ``/observer/reference``  per tick with reference frames: the dummy's measured CR, CD
-``/observer/status``     the ObserverStatus, ObserverCounters and ObserverHealth frames,
-                         decoded (their signals by name)
+``/observer/status``     the ObserverStatus frames, decoded (their signals by name);
+``/observer/counters``   likewise ObserverCounters, ``/observer/health`` ObserverHealth
+``/observer/criteria``   the ChestCriteria frame of each finished event, decoded
 
 Metadata records: ``chest-observer`` (software, model, DBC hash, configuration, start time)
 at the start, ``chest-observer-recorder`` (what was written and lost) at a clean end; a file
@@ -89,7 +90,7 @@ FRAME_FIELDS = {"t": "number", "id": "integer", "dir": "string", "error": "boole
 # The daemon's status frames, decoded: one topic and one message type per frame; the
 # fields are the frame's signals in the DBC (see :func:`status_fields`).
 STATUS_TOPICS = {"ObserverStatus": "/observer/status", "ObserverCounters": "/observer/counters",
-                 "ObserverHealth": "/observer/health"}
+                 "ObserverHealth": "/observer/health", "ChestCriteria": "/observer/criteria"}
 TITLES = {FRAMES: "chest_observer.CanFrame", INPUTS: "chest_observer.Inputs",
           ESTIMATE: "chest_observer.Estimate", REFERENCE: "chest_observer.Reference",
           **{topic: f"chest_observer.{name}" for name, topic in STATUS_TOPICS.items()}}

@@ -36,6 +36,7 @@ import mmap
 import multiprocessing as mp
 import os
 import struct
+import sys
 import time
 from collections.abc import Callable
 from multiprocessing import reduction
@@ -162,14 +163,15 @@ _BATCH = 250  # rows per drain step: a writer that is behind still flushes every
 def writer_main(rings_fd: _Fd, capacity: int, file_fd: _Fd, path: str, clock: tuple[int, float],
                 metadata: dict[str, str], attachments: list[tuple[str, str, bytes]],
                 dbc_path: str, flush_s: float = 0.05, ppid: int | None = None,
-                ) -> None:
+                live: str = "", live_every: int = 1) -> None:
     """The recorder process: drain the rings into the open file ``file_fd`` until told to
     stop. Any failure is written to the rings' error slot before the process ends."""
     rings = Rings(capacity, rings_fd.fd)
     f = None
     try:
         f = os.fdopen(file_fd.fd, "wb")
-        _write(rings, capacity, f, clock, metadata, attachments, dbc_path, flush_s, ppid)
+        _write(rings, capacity, f, clock, metadata, attachments, dbc_path, flush_s, ppid,
+               live, live_every)
     except BaseException as e:
         err = e.errno if isinstance(e, OSError) and e.errno else errno_mod.EIO
         why = e.strerror if isinstance(e, OSError) and e.strerror else f"{type(e).__name__}: {e}"
@@ -185,7 +187,7 @@ def writer_main(rings_fd: _Fd, capacity: int, file_fd: _Fd, path: str, clock: tu
 
 def _write(rings: Rings, capacity: int, f: Any, clock: tuple[int, float],
            metadata: dict[str, str], attachments: list[tuple[str, str, bytes]], dbc_path: str,
-           flush_s: float, ppid: int | None) -> None:
+           flush_s: float, ppid: int | None, live_addr: str, live_every: int) -> None:
     # Imports and set-up at normal priority: on a slow machine they take seconds, and the
     # daemon waits for READY.
     from mcap.writer import CompressionType, Writer
@@ -205,6 +207,8 @@ def _write(rings: Rings, capacity: int, f: Any, clock: tuple[int, float],
     for topic, f_ in fields.items():
         sid = w.register_schema(fmt.TITLES[topic], "jsonschema", fmt.json_schema(topic, f_))
         chan[topic] = w.register_channel(topic, "json", sid)
+    # The live view: the same topics and schemas, served from here, off the tick path.
+    live = _start_live(live_addr, fields) if live_addr else None
     w.add_metadata(fmt.META_RUN, metadata)
     for name, media, data in attachments:
         w.add_attachment(wall0_ns, wall0_ns, name, media, data)
@@ -242,12 +246,17 @@ def _write(rings: Rings, capacity: int, f: Any, clock: tuple[int, float],
             emit(fmt.FRAMES, t, fmt.frame_message(t - perf0, cid, flags, data))
             st = status.get(cid)
             if st is not None and n == st[0].length:
-                emit(st[1], t, {"t": t - perf0, **st[0].decode(data)})
+                msg = {"t": t - perf0, **st[0].decode(data)}
+                emit(st[1], t, msg)
+                if live is not None:
+                    live[st[1]].log(msg, log_time=wall0_ns + int((t - perf0) * 1e9))
         tail_f = head_f
         for k in range(tail_t, head_t):
             row = TickRow(*rings.ticks[k % capacity].tolist())
             for topic, msg in fmt.tick_messages(row, perf0):
                 emit(topic, row.t, msg)
+                if live is not None and int(row.tick) % live_every == 0:
+                    live[topic].log(msg, log_time=wall0_ns + int((row.t - perf0) * 1e9))
         tail_t = head_t
         now = time.monotonic()
         if wrote and now - last_flush >= flush_s:
@@ -269,7 +278,28 @@ def _write(rings: Rings, capacity: int, f: Any, clock: tuple[int, float],
     ctrl[FRAMES_FLUSHED], ctrl[TICKS_FLUSHED] = tail_f, tail_t
 
 
+def _start_live(addr: str, fields: dict[str, dict[str, str]]) -> dict[str, Any] | None:
+    """A Foxglove WebSocket server on ``addr`` (HOST:PORT) with a channel per topic but the
+    raw frames (too many for a screen); None, said in one line, if it cannot start: the
+    recording goes on without it. A client that stops reading loses its oldest messages
+    (the server's per-client backlog), never this process's time."""
+    host, _, port = addr.rpartition(":")
+    try:
+        import foxglove
+
+        foxglove.start_server(name="chest-observer", host=host, port=int(port))
+        return {topic: foxglove.Channel(topic, message_encoding="json", schema=foxglove.Schema(
+                    name=fmt.TITLES[topic], encoding="jsonschema",
+                    data=fmt.json_schema(topic, f)))
+                for topic, f in fields.items() if topic != fmt.FRAMES}
+    except Exception as e:  # ImportError, address in use, ...: the view is optional
+        print(f"observer-node: warning: live view on {addr} not started: {e}", file=sys.stderr,
+              flush=True)
+        return None
+
+
 FLUSH_S = 0.03  # the writer flushes a chunk this often
+LIVE_HZ = 100.0  # per-tick topics reach the live view at about this rate
 BOOST_LAG_S = 0.05  # flushed rows this far behind: normal priority
 CALM_LAG_S = 0.01  # caught up: idle priority again
 
@@ -316,12 +346,13 @@ class Recorder:
     def __init__(self, path: str | Path, metadata: dict[str, str],
                  attachments: list[tuple[str, str, bytes]], dbc_path: str | Path,
                  capacity: int = 1 << 16, rows_per_s: float = 1000.0, max_parts: int = 5,
-                 restart_after_s: float = 1.0):
+                 restart_after_s: float = 1.0, live: str = ""):
         self.path, fd = create_exclusive(Path(path))
         self.parts = [self.path]
         self.rings = Rings(capacity)
         self.clock = (time.time_ns(), time.perf_counter())
         self._args = (capacity, metadata, attachments, str(dbc_path))
+        self._live = (live, max(1, round(rows_per_s / LIVE_HZ)))
         # Writer priority (keep_up): idle while it keeps up, normal while it lags.
         self.can_boost = may_raise_priority()
         self._boost_rows = int(BOOST_LAG_S * rows_per_s)
@@ -350,7 +381,7 @@ class Recorder:
         self.proc = ctx.Process(
             target=writer_main, name="chest-observer-recorder", daemon=False,
             args=(_Fd(self.rings.fd), capacity, _Fd(fd), str(path), self.clock, metadata,
-                  attachments, dbc_path, FLUSH_S, os.getpid()))
+                  attachments, dbc_path, FLUSH_S, os.getpid(), *self._live))
         try:
             self.proc.start()
         finally:
