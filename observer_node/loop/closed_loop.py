@@ -27,13 +27,20 @@ from typing import Any
 
 import numpy as np
 
-from .. import plots
+from .. import __version__, plots
 from ..data import CrashTest
 from ..data.crashtest import THESIS_WINDOW_S
 from ..ident import greybox
 from ..ident.dataset import Dataset, make_dataset
 from ..ident.progress import Progress
-from ..model.chest import PARAM_NAMES, PARAM_UNITS, STATES, discrete
+from ..model.chest import (
+    PARAM_NAMES,
+    PARAM_UNITS,
+    STATES,
+    THESIS_STATES,
+    discrete,
+    discrete_thesis,
+)
 from ..model.effects import FORCE_KINDS, describe
 from ..model.modelfile import ModelFile
 from ..model.nonlinear import NonlinearGreyBox
@@ -148,13 +155,16 @@ def run_loop(est_tests: list[CrashTest], val_tests: list[CrashTest], out: Path,
               for label, b, e in (("baseline", gb.params, []), ("final", base, effects))}
     mf = _model_file(base, effects, est, rate_hz, gb)
     mf.save(out / "model.json")
+    # the thesis grey-box on the same tests, for a side-by-side run (observer-node bench)
+    _model_file(dict(gb.params), [], est, rate_hz, gb).save(out / "baseline-model.json")
     resid_final = _residual(base, effects, est)
     report = {
         "baseline": {"fit": _fit3(baseline_val), "parameters": gb.params,
                      "std_err": gb.std_err},
         "effects": accepted,
         "final": {"fit": _fit3(final_val), "parameters": base},
-        "model": "model.json",
+        "model": "model.json", "baseline_model": "baseline-model.json",
+        "software_version": __version__,
         "estimation": est.names, "validation": val.names,
         "residual_tests": {"baseline": tests0, "final": correlation_tests(resid_final, est)},
         "first_ranking": first_ranking,
@@ -215,22 +225,29 @@ def _rms_ratio(tests: dict) -> float:
 
 def _model_file(base: dict, effects: list[dict], est: Dataset, rate_hz: float,
                 gb: greybox.GreyBoxFit) -> ModelFile:
-    Ad, Bd, Gd, C, Df = discrete(base, rate_hz)
-    fits = score(base, effects, est)
+    """The model file the daemon runs: with effects the 6-state chest and its force input,
+    without them the thesis's 5-state grey-box."""
+    if effects:
+        Ad, Bd, Gd, C, Df = discrete(base, rate_hz)
+        D = np.zeros((2, 2))
+        structure = {"states": list(STATES),
+                     "equations": "thesis eq. 3.1-3.8 plus effect forces held over the tick; "
+                     "a slack belt switches to the belt-free matrices for the tick",
+                     "force_input_matrix_G": Gd.tolist(), "force_output_matrix_Df": Df.tolist()}
+    else:
+        Ad, Bd, C, D = discrete_thesis(base, rate_hz)
+        structure = {"states": list(THESIS_STATES), "equations": "thesis eq. 3.1-3.8, CD = s - x"}
     return ModelFile(
         kind="greybox", name="greybox+" + "+".join(e["kind"] for e in effects) if effects
         else "greybox", tick_rate_hz=rate_hz, input_transform="velocity_brs_rate",
-        A=Ad, B=Bd, C=C, D=np.zeros((2, 2)),
+        A=Ad, B=Bd, C=C, D=D,
         parameters={n: {"value": float(base[n]), "std_err": float(gb.std_err.get(n, 0.0))
                         if not effects else None, "unit": PARAM_UNITS[n],
                         "fixed": n == "m1"} for n in PARAM_NAMES},
-        structure={"states": list(STATES),
-                   "equations": "thesis eq. 3.1-3.8 plus effect forces held over the tick; "
-                   "a slack belt switches to the belt-free matrices for the tick",
-                   "force_input_matrix_G": Gd.tolist(), "force_output_matrix_Df": Df.tolist()},
+        structure=structure,
         fitted_on={"tests": est.names, "setups": sorted(set(est.setups)), "rate_hz": rate_hz,
                    "window_s": list(est.window_s), "simulation_start_s": 0.0},
-        fits=fits, effects=effects,
+        fits=score(base, effects, est), effects=effects,
     )
 
 
