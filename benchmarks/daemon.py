@@ -23,6 +23,7 @@ from __future__ import annotations
 
 import argparse
 import contextlib
+import subprocess
 import sys
 import tempfile
 import threading
@@ -166,23 +167,29 @@ def compute_per_tick(model, codec: Codec, n: int = 20000) -> np.ndarray:
     frames = [acc.encode({"TunnelAccelX": -20.0 if k > 100 else 0.0}, k) for k in range(n)]
     out = np.zeros(n)
     clock = time.perf_counter
-    counter = -1
+    accel = node.inputs.accel
+    node.inputs.reset()
     for k in range(n):
         t = clock()
-        counter = node._on_accel(t, frames[k], counter)
+        accel(t, frames[k])
         out[k] = clock() - t
     return out * 1e6
 
 
 def run_rate(model, codec: Codec, rate_hz: float, ticks: int, workdir: Path,
-             record: bool = True, burst: bool = False, cpu_latency_us: int = 0) -> dict:
+             record: bool = True, burst: bool = False, cpu_latency_us: int = 0,
+             live: str = "") -> dict:
     """With ``burst``: InputBurst frames of eight samples (CAN FD layout) every eight ticks;
-    the latency is per frame, and a late frame misses its eight ticks."""
+    the latency is per frame, and a late frame misses its eight ticks. ``live``: serve the
+    live view, with a client in its own process ("read": reading, "stall": subscribed and
+    never reading)."""
     model.tick_rate_hz = rate_hz  # the same matrices, re-labelled: timing only
-    channel = f"bench{int(rate_hz)}{'b' if burst else ''}"
+    channel = f"bench{int(rate_hz)}{'b' if burst else ''}{live}"
     path = workdir / f"{channel}.mcap"
+    port = 18765 + len(live)
     node = ObserverNode(NodeConfig(interface="virtual", channel=channel,
                                    record=str(path) if record else "",
+                                   live=f"127.0.0.1:{port}" if live else "",
                                    cpu_latency_us=cpu_latency_us),
                         model, codec,
                         port_factory=lambda ids: PythonCanPort("virtual", channel, ids))
@@ -215,6 +222,13 @@ def run_rate(model, codec: Codec, rate_hz: float, ticks: int, workdir: Path,
     td.start()
     while node.port is None:  # recorder process up, bus open
         time.sleep(0.01)
+    client = None
+    if live:
+        client = subprocess.Popen(
+            [sys.executable, str(Path(__file__).with_name("live_client.py")), str(port),
+             str(ticks / rate_hz + 3), *(["--stall"] if live == "stall" else [])],
+            stdout=subprocess.PIPE, text=True)
+        assert client.stdout is not None and client.stdout.readline().strip() == "subscribed"
     time.sleep(0.2)
     period = 1.0 / rate_hz
     sent_at = np.zeros(ticks)  # bus timestamp of each TunnelAccel frame (time.time())
@@ -235,6 +249,7 @@ def run_rate(model, codec: Codec, rate_hz: float, ticks: int, workdir: Path,
                             timestamp=sent_at[k]))
     wall = time.perf_counter() - start
     td.join()
+    live_got = int(client.communicate(timeout=30)[0].split()[-1]) if client else None
     # The estimates waited in this bus's queue, each stamped when the daemon sent it: the
     # latency is bus time to bus time, as a CAN logger on the wire would measure it.
     lat = np.full(ticks, np.nan)
@@ -255,7 +270,7 @@ def run_rate(model, codec: Codec, rate_hz: float, ticks: int, workdir: Path,
     lat = lat[n_per - 1::n_per]  # per frame
     return {"rate": rate_hz, "ticks": c.ticks, "missed": _missed(lat, n_per * period * 1e6, n_per),
             "overruns": c.overruns, "timeouts": c.accel_timeouts, "lat": lat, "proc": proc,
-            "cpu_share": cpu.get("daemon_s", float("nan")) / wall}
+            "cpu_share": cpu.get("daemon_s", float("nan")) / wall, "live_got": live_got}
 
 
 def _row(label: str, r: dict, proc: np.ndarray | None = None) -> str:
@@ -276,6 +291,9 @@ def main() -> None:
     ap.add_argument("--burst-rates", type=float, nargs="*", default=[5000, 10000],
                     help="tick rates to run again as InputBurst frames (8 samples each)")
     ap.add_argument("--no-record", action="store_true", help="run the daemon without MCAP")
+    ap.add_argument("--live-rates", type=float, nargs="*", default=[1000],
+                    help="tick rates to run again with the live view served and a Foxglove "
+                    "client connected (reading, then stalled)")
     ap.add_argument("--cpu-latency-us", type=int, default=0,
                     help="PM QoS CPU wake-up latency held during the whole benchmark, floor "
                     "rows included, as the daemon holds it by default (-1: none)")
@@ -312,11 +330,20 @@ def main() -> None:
                      a.cpu_latency_us)
         print(_row(f"{rate:.0f}Hz" + ("/8" if burst else ""), r,
                    None if a.no_record else r["proc"]))
+    if not a.no_record:
+        for rate in a.live_rates:
+            for mode in ("read", "stall"):
+                r = run_rate(model, codec, rate, a.ticks, workdir, True, False,
+                             a.cpu_latency_us, live=mode)
+                print(_row(f"{rate:.0f}Hz+{mode}", r, r["proc"])
+                      + f"  live client got {r['live_got']} messages")
     print("\n  e2e: bus timestamp of a TunnelAccel frame -> bus timestamp of its ChestEstimate "
           "(the echo's answer); tick: daemon's frame receipt -> estimate sent (its own "
           "measurement, in the MCAP); CPU: the answering thread's CPU time / wall time; /8: "
           "InputBurst frames of eight samples (latency per frame; a frame later than eight "
-          "periods misses its eight ticks).")
+          "periods misses its eight ticks); +read / +stall: the live view served by the "
+          "recorder process (--live) with a Foxglove WebSocket client in another process "
+          "reading everything, or subscribed and never reading.")
 
 
 if __name__ == "__main__":
