@@ -284,9 +284,15 @@ def _start_live(addr: str, fields: dict[str, dict[str, str]]) -> dict[str, Any] 
     recording goes on without it. A client that stops reading loses its oldest messages
     (the server's per-client backlog), never this process's time."""
     host, _, port = addr.rpartition(":")
+    # The server's threads start now and inherit this thread's policy: idle, always, so a
+    # viewer's traffic never competes with the daemon (the main thread's own priority is
+    # moved by Recorder.keep_up, which reaches this thread only).
+    policy, param = os.sched_getscheduler(0), os.sched_getparam(0)
     try:
         import foxglove
 
+        with contextlib.suppress(OSError):
+            os.sched_setscheduler(0, os.SCHED_IDLE, os.sched_param(0))
         foxglove.start_server(name="chest-observer", host=host, port=int(port))
         return {topic: foxglove.Channel(topic, message_encoding="json", schema=foxglove.Schema(
                     name=fmt.TITLES[topic], encoding="jsonschema",
@@ -296,6 +302,9 @@ def _start_live(addr: str, fields: dict[str, dict[str, str]]) -> dict[str, Any] 
         print(f"observer-node: warning: live view on {addr} not started: {e}", file=sys.stderr,
               flush=True)
         return None
+    finally:
+        with contextlib.suppress(OSError):
+            os.sched_setscheduler(0, policy, param)
 
 
 FLUSH_S = 0.03  # the writer flushes a chunk this often
