@@ -9,7 +9,7 @@ from pathlib import Path
 import numpy as np
 
 from .. import iso18571
-from ..criteria import chest_criteria, compare
+from ..criteria import EURO_NCAP_CD_LIMITS_MM, chest_criteria, compare
 from ..ident.metrics import fit_percent
 from .reader import Recording, RecordingError
 
@@ -131,6 +131,11 @@ def _plot_event(path: Path, rec: Recording, e: int, t: np.ndarray, y_est: np.nda
             ax.axvspan(t[a] * 1000, t[b - 1] * 1000 + tick_ms, color="0.85", lw=0,
                        label="estimate invalid or not running" if j == 0 else None)
         ax.plot(t * 1000, y_off[:, k], "b:", lw=1.5, label="offline simulation")
+        if k == 1:  # what a restraint engineer reads the deflection against
+            for limit, colour in zip(EURO_NCAP_CD_LIMITS_MM, ("tab:green", "tab:red"),
+                                     strict=True):
+                ax.axhline(limit, color=colour, ls=":", lw=0.9,
+                           label=f"Euro NCAP {limit:g} mm" if colour == "tab:green" else None)
         ax.set_ylabel(label)
         ax.grid(alpha=0.3)
     axes[-1].set_xlabel("t since onset [ms]")
