@@ -9,10 +9,9 @@ from .codec import (
     FrameCodec,
     bus_load,
     crc8_j1850,
-    e2e_crc,
     fd_frame_time_s,
     frame_bits,
 )
 
-__all__ = ["DBC_PATH", "Codec", "FrameCodec", "bus_load", "crc8_j1850", "e2e_crc",
-           "fd_frame_time_s", "frame_bits"]
+__all__ = ["DBC_PATH", "Codec", "FrameCodec", "bus_load", "crc8_j1850", "fd_frame_time_s",
+           "frame_bits"]

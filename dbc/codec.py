@@ -6,19 +6,22 @@ Supported layouts are what this DBC uses: little-endian (Intel) integer signals 
 byte-aligned 8/16/32-bit fields or sub-byte fields inside one byte. Anything else is refused at
 load time, naming the signal, so the DBC stays the single source of the layout.
 
-E2E protection (as in the DBC's comment): byte 0 is a CRC-8 SAE J1850 (poly 0x1D, init and
-xor-out 0xFF) over the frame ID as two little-endian bytes followed by data bytes 1..DLC-1;
-the low nibble of byte 1 is a 4-bit alive counter.
+E2E protection: standard AUTOSAR profiles, declared per message in the DBC by the attributes
+``E2EProfile`` ("P01" for the 8-byte classic frames, "P05" for the CAN FD InputBurst) and
+``E2EDataID``; the CRC and counter positions are the message's ``*_CRC`` and ``*_Counter``
+signals, checked at load against the profile's header layout. The CRCs are computed by a kept
+implementation, the ``autosar-e2e`` package (C); P01's alive counter runs 0..14, P05's 0..255.
 """
 
 from __future__ import annotations
 
 import struct
-from collections.abc import Mapping, Sequence
+from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass
 from pathlib import Path
 
 import cantools
+from e2e import p01, p05
 
 DBC_PATH = Path(__file__).with_name("chest_observer.dbc")
 
@@ -37,25 +40,23 @@ CRC8_TABLE = _crc8_table()
 
 
 def crc8_j1850(data: bytes | bytearray | memoryview, crc: int = 0xFF) -> int:
-    """CRC-8 SAE J1850 of ``data`` starting from ``crc`` (no final xor: see :func:`e2e_crc`)."""
+    """CRC-8 SAE J1850 (poly 0x1D) of ``data`` starting from ``crc``, no final xor: an
+    implementation of our own, kept to cross-check the E2E library in the tests."""
     t = CRC8_TABLE
     for b in data:
         crc = t[crc ^ b]
     return crc
 
 
-def e2e_crc(frame_id: int, data: bytes | bytearray | memoryview) -> int:
-    """The E2E CRC byte of a frame: over the ID (2 bytes LE) and data bytes 1.."""
-    t = CRC8_TABLE
-    crc = t[0xFF ^ (frame_id & 0xFF)]
-    crc = t[crc ^ ((frame_id >> 8) & 0xFF)]
-    for b in data[1:]:
-        crc = t[crc ^ b]
-    return crc ^ 0xFF
-
-
 class LayoutError(ValueError):
     """The DBC uses a layout this codec does not compile."""
+
+
+# profile -> (protect, check, CRC bits, counter bits, counter values)
+E2E_PROFILES: dict[str, tuple[Callable[..., None], Callable[..., bool], int, int, int]] = {
+    "P01": (p01.e2e_p01_protect, p01.e2e_p01_check, 8, 4, 15),
+    "P05": (p05.e2e_p05_protect, p05.e2e_p05_check, 16, 8, 256),
+}
 
 
 _CODES = {(8, False): "B", (8, True): "b", (16, False): "H", (16, True): "h",
@@ -115,10 +116,62 @@ class FrameCodec:
         self._fields_by_index = {f.index: f for f in fields}
         self._message = message
         self._nslots = slot + 1
-        self.has_e2e = self.signal_names[0].endswith("_CRC") and any(
-            n.endswith("_Counter") for n in self.signal_names)
         self.counter_index = next((i for i, n in enumerate(self.signal_names)
                                    if n.endswith("_Counter")), None)
+        self._e2e_setup(message)
+
+    def _e2e_setup(self, message: cantools.database.Message) -> None:
+        """The message's E2E profile from its DBC attributes, its header checked against the
+        *_CRC and *_Counter signals."""
+        attrs = message.dbc.attributes if message.dbc is not None else {}
+        profile = str(attrs["E2EProfile"].value) if "E2EProfile" in attrs else ""
+        self.e2e_profile = profile
+        self.has_e2e = bool(profile)
+        self.data_id = int(attrs["E2EDataID"].value) if "E2EDataID" in attrs else 0
+        cnt = self.counter_index
+        self.counter_modulus = (1 << self._fields_by_index[cnt].bits) if cnt is not None else 1
+        if not profile:
+            return
+        if profile not in E2E_PROFILES:
+            raise LayoutError(f"{self.name}: E2EProfile {profile!r} is not one of "
+                              f"{', '.join(E2E_PROFILES)}")
+        protect, check, crc_bits, cnt_bits, modulus = E2E_PROFILES[profile]
+        crc_sig = next((s for s in message.signals if s.name.endswith("_CRC")), None)
+        cnt_sig = next((s for s in message.signals if s.name.endswith("_Counter")), None)
+        if crc_sig is None or cnt_sig is None or crc_sig.length != crc_bits or \
+                crc_sig.start % 8 or cnt_sig.length != cnt_bits or \
+                cnt_sig.start != crc_sig.start + crc_bits:
+            raise LayoutError(f"{self.name}: {profile} needs a {crc_bits}-bit *_CRC signal on a "
+                              f"byte boundary followed by a {cnt_bits}-bit *_Counter")
+        if not 0 <= self.data_id <= 0xFFFF:
+            raise LayoutError(f"{self.name}: E2EDataID {self.data_id} is not 16-bit")
+        self.counter_modulus = modulus
+        self.e2e_offset = crc_sig.start // 8
+        self._protect, self._check = protect, check
+
+    def e2e_protect(self, buf: bytearray) -> None:
+        """Write the E2E CRC of ``buf`` (its counter already in place) into ``buf``."""
+        if self.has_e2e:
+            self._protect(buf, self.data_id, offset=self.e2e_offset, increment_counter=False)
+
+    def e2e_check(self, data: bytes | bytearray | memoryview) -> bool:
+        """True when ``data`` (of the frame's length) passes the profile's CRC and counter
+        checks (P01: counter 0..14)."""
+        return self.e2e_checker()(data)
+
+    def e2e_checker(self) -> Callable[[bytes | bytearray | memoryview], bool]:
+        """:meth:`e2e_check` bound once for a hot path: one copy into a preallocated buffer
+        (the library wants a mutable one) and one C call per frame, nothing looked up."""
+        if not self.has_e2e:
+            return lambda data: True
+        buf, check, data_id, offset = bytearray(self.length), self._check, self.data_id, \
+            self.e2e_offset
+
+        def checked(data: bytes | bytearray | memoryview) -> bool:
+            buf[:] = data
+            return bool(check(buf, data_id, offset=offset) if offset else check(buf, data_id))
+
+        return checked
 
     @property
     def unscaled_signals(self) -> set[str]:
@@ -195,22 +248,19 @@ class FrameCodec:
         raw = self.unpack(data)
         if self.counter_index is None:
             raise LayoutError(f"{self.name} has no alive counter")
-        raw[self.counter_index] = counter & ((1 << self._fields_by_index[
-            self.counter_index].bits) - 1)
+        raw[self.counter_index] = counter % self.counter_modulus
         out = bytearray(self.pack(raw))
-        if self.has_e2e:
-            out[0] = e2e_crc(self.frame_id, out)
+        self.e2e_protect(out)
         return bytes(out)
 
     def encode(self, values: Mapping[str, float], counter: int = 0) -> bytes:
-        """Frame bytes from physical values (missing signals 0), with E2E CRC and counter."""
+        """Frame bytes from physical values (missing signals 0), with the E2E counter
+        (modulo the profile's range) and CRC."""
         raw = [self.to_raw(n, values.get(n, 0.0)) for n in self.signal_names]
         if self.has_e2e and self.counter_index is not None:
-            raw[self.counter_index] = counter & ((1 << self._fields_by_index[
-                self.counter_index].bits) - 1)
+            raw[self.counter_index] = counter % self.counter_modulus
         data = bytearray(self.pack(raw))
-        if self.has_e2e:
-            data[0] = e2e_crc(self.frame_id, data)
+        self.e2e_protect(data)
         return bytes(data)
 
     def decode(self, data: bytes | bytearray | memoryview) -> dict[str, float]:
@@ -219,8 +269,6 @@ class FrameCodec:
         return {f.name: raw[f.index] * f.scale + f.offset if (f.scale != 1 or f.offset)
                 else raw[f.index] for f in self._fields}
 
-    def check_e2e(self, data: bytes | bytearray | memoryview) -> bool:
-        return not self.has_e2e or data[0] == e2e_crc(self.frame_id, data)
 
 
 class Codec:

@@ -4,7 +4,8 @@ source is an error naming the file and the place, never a half-played run.
 - an ISO-MME test (folder, ``.mme`` or ``.zip``) or a CSV crash test: resampled to the bus
   rate and encoded with the DBC (:mod:`replay.schedule`);
 - an MCAP recording of ``observer-node run``: its raw frames (``/can/frames``) with their
-  recorded timing; by default the frames the daemon received, so a run replays exactly;
+  recorded timing; by default the frames the daemon received, so a run replays exactly; one
+  made with another DBC (before the AUTOSAR E2E profiles, say) is translated into this one's;
 - python-can logs: candump ``-L`` (``.log``, parsed here with line numbers), ASC, BLF, TRC.
 """
 
@@ -12,6 +13,8 @@ from __future__ import annotations
 
 import json
 import re
+import tempfile
+from collections.abc import Callable
 from pathlib import Path
 
 import numpy as np
@@ -19,7 +22,7 @@ import numpy as np
 from observer_node.data import ChannelCodes, CrashDataError, find_tests, load_test
 from observer_node.dbc import Codec
 
-from .schedule import Schedule, crash_test_schedule
+from .schedule import Schedule, crash_test_schedule, restamp_counters
 
 
 class SourceError(ValueError):
@@ -85,16 +88,25 @@ def read_python_can_log(path: Path, all_frames: bool = False) -> Schedule:
     return Schedule(t - t[0], np.array(ids), data, path.name)
 
 
-def read_mcap_frames(path: Path, all_frames: bool = False) -> Schedule:
+def read_mcap_frames(path: Path, all_frames: bool = False, codec: Codec | None = None
+                     ) -> Schedule:
     """The frames a recording's daemon received (``all_frames``: and sent), with their
-    recorded times; errors name the file."""
+    recorded times; errors name the file. With ``codec``: a recording made with another DBC
+    (its own is attached) has its frames translated signal by signal into ``codec``'s layout
+    and E2E protection, so recordings from before a DBC change still replay."""
     from observer_node.recording import RecordingError, Scan
     from observer_node.recording import format as fmt
 
     times, ids, data = [], [], []
+    translate = None
     try:
         scan = Scan(path)
         for topic, _, raw in scan:
+            if topic == "#attachment":
+                name, blob = raw
+                if name == fmt.ATT_DBC and codec is not None:
+                    translate = _translator(bytes(blob), codec)
+                continue
             if topic != fmt.FRAMES:
                 continue
             m = json.loads(raw)
@@ -102,7 +114,8 @@ def read_mcap_frames(path: Path, all_frames: bool = False) -> Schedule:
                 continue
             times.append(m["t"])
             ids.append(m["id"])
-            data.append(bytes.fromhex(m["data"]))
+            d = bytes.fromhex(m["data"])
+            data.append(translate(m["id"], d) if translate else d)
     except RecordingError as e:
         raise SourceError(str(e)) from None
     except (ValueError, KeyError) as e:
@@ -115,7 +128,35 @@ def read_mcap_frames(path: Path, all_frames: bool = False) -> Schedule:
         raise SourceError(f"{path}: no {fmt.FRAMES} messages (not a chest-observer recording?)")
     order = np.argsort(np.array(times), kind="stable")
     t = np.array(times)[order]
-    return Schedule(t - t[0], np.array(ids)[order], [data[i] for i in order], path.name)
+    s = Schedule(t - t[0], np.array(ids)[order], [data[i] for i in order], path.name)
+    # Translated frames carry the new profile's CRC; their counters are renumbered per ID
+    # (the old ones may run past the new profile's range).
+    return restamp_counters(s, codec) if translate and codec is not None else s
+
+
+def _translator(old_dbc: bytes, codec: Codec) -> Callable[[int, bytes], bytes] | None:
+    """None when the recording was made with ``codec``'s DBC; else a function re-encoding a
+    frame of the old DBC's layout (by signal name) in ``codec``'s."""
+    if old_dbc == codec.path.read_bytes():
+        return None
+    with tempfile.TemporaryDirectory() as tmp:
+        old_path = Path(tmp) / "recorded.dbc"
+        old_path.write_bytes(old_dbc)
+        try:
+            old = Codec(old_path)
+        except Exception as e:  # a DBC this codec cannot compile: replay the frames as they are
+            raise SourceError(f"the recording's own DBC cannot be read ({e}); replay it with "
+                              "the DBC it was made with") from None
+    pairs = {cid: (fc, codec.by_id[cid]) for cid, fc in old.by_id.items()
+             if cid in codec.by_id and codec.by_id[cid].name == fc.name}
+
+    def translate(cid: int, data: bytes) -> bytes:
+        pair = pairs.get(cid)
+        if pair is None or len(data) != pair[0].length:
+            return data
+        return pair[1].encode(pair[0].decode(data))
+
+    return translate
 
 
 def load_source(path: str | Path, codec: Codec, rate_hz: float = 1000.0,
@@ -131,7 +172,7 @@ def load_source(path: str | Path, codec: Codec, rate_hz: float = 1000.0,
         if suffix in (".mcap", ".log", *PYTHON_CAN_LOGS) and not p.is_file():
             raise SourceError(f"{p}: no such file")
         if suffix == ".mcap":
-            return [_window(read_mcap_frames(p, all_frames), start_s, end_s)]
+            return [_window(read_mcap_frames(p, all_frames, codec), start_s, end_s)]
         if suffix == ".log":
             return [_window(read_candump(p), start_s, end_s)]
         if suffix in PYTHON_CAN_LOGS:

@@ -9,8 +9,6 @@ import time
 import can
 import numpy as np
 
-from observer_node.dbc import e2e_crc
-
 from .daemon_feed import CODEC, Harness
 
 INPUTS = ("TunnelAccel", "BeltSpindle", "ReferenceChest", "InputBurst")
@@ -41,8 +39,11 @@ def fuzz_frame(rng: np.random.Generator, counters: dict[int, int]) -> can.Messag
         if kind == 6:
             k += int(rng.integers(0, 16))  # a counter that repeats or jumps
         counters[fc.frame_id] = k + 1
-        data[1] = (data[1] & 0xE0) | (k & 0xF)  # status bits kept mostly clear
-        data[0] = e2e_crc(fc.frame_id, data)
+        raw = fc.unpack(bytes(data))
+        for i, name in enumerate(fc.signal_names):  # sensor faults mostly clear
+            if "Fault" in name:
+                raw[i] = int(rng.random() < 0.1)
+        data = bytearray(fc.with_counter(fc.pack(raw), k))  # the DBC's profile and CRC
     return can.Message(arbitration_id=fc.frame_id, data=bytes(data), is_extended_id=False,
                        is_fd=fc.length > 8)
 

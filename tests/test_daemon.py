@@ -345,24 +345,27 @@ def test_every_message_matches_its_topics_schema(model, tmp_path):
 
 
 def test_moving_bits_in_the_dbc_needs_no_other_edit(model, tmp_path):
-    """The DBC is the only place that knows where a bit is: swap the alive counter and the
-    flags of the accelerometer, BRS and estimate frames and move two invalid-cause bits, and
-    replay and daemon follow without another edit."""
+    """The DBC is the only place that knows where a bit is and how a frame is protected:
+    move the flags of the accelerometer, BRS and estimate frames, swap the estimate's CR and
+    CD and the BRS count and resolution, move two invalid-cause bits, give the accelerometer
+    another E2E data ID, and replay and daemon follow without another edit."""
     from observer_node.dbc import DBC_PATH, Codec
     from observer_node.replay.schedule import crash_test_schedule
 
     text = DBC_PATH.read_text()
     for old, new in (
-            ("TunnelAccel_Counter : 8|4", "TunnelAccel_Counter : 12|4"),
-            ("TunnelAccel_SensorFault : 12|1", "TunnelAccel_SensorFault : 8|1"),
-            ("BeltSpindle_Counter : 8|4", "BeltSpindle_Counter : 12|4"),
-            ("BeltSpindle_SensorFault : 12|1", "BeltSpindle_SensorFault : 8|1"),
-            ("BeltSpindle_Bidirectional : 13|1", "BeltSpindle_Bidirectional : 9|1"),
-            ("ChestEstimate_Counter : 8|4", "ChestEstimate_Counter : 12|4"),
-            ("ChestEstimate_Valid : 12|1", "ChestEstimate_Valid : 9|1"),
-            ("ChestEstimate_Running : 13|1", "ChestEstimate_Running : 8|1"),
+            ("TunnelAccel_SensorFault : 12|1", "TunnelAccel_SensorFault : 15|1"),
+            ("BeltSpindle_SensorFault : 12|1", "BeltSpindle_SensorFault : 14|1"),
+            ("BeltSpindle_Bidirectional : 13|1", "BeltSpindle_Bidirectional : 15|1"),
+            ("BrsCount : 16|16", "BrsCount : 24|16"),
+            ("BrsCountsPerRev : 32|8", "BrsCountsPerRev : 16|8"),
+            ("ChestEstimate_Valid : 12|1", "ChestEstimate_Valid : 13|1"),
+            ("ChestEstimate_Running : 13|1", "ChestEstimate_Running : 12|1"),
+            ("ChestAccelCR : 16|16", "ChestAccelCR : 32|16"),
+            ("ChestDeflCD : 32|16", "ChestDeflCD : 16|16"),
             ("Invalid_AccelTimeout : 48|1", "Invalid_AccelTimeout : 55|1"),
-            ("Invalid_NotArmed : 55|1", "Invalid_NotArmed : 48|1")):
+            ("Invalid_NotArmed : 55|1", "Invalid_NotArmed : 48|1"),
+            ('BA_ "E2EDataID" BO_ 256 256;', 'BA_ "E2EDataID" BO_ 256 4660;')):
         assert old in text
         text = text.replace(old, new)
     moved_path = tmp_path / "moved.dbc"
@@ -396,7 +399,6 @@ def test_each_event_ends_with_its_criteria_on_the_bus(model, tmp_path):
     """ChestCriteria: once per event, E2E-protected, the criteria of the event's estimates
     from the onset (as an offline run of the recorded inputs gives them), recorded."""
     from observer_node.criteria import chest_criteria
-    from observer_node.dbc import e2e_crc
     from observer_node.recording import offline_estimates
 
     fc = CODEC["ChestCriteria"]
@@ -410,7 +412,7 @@ def test_each_event_ends_with_its_criteria_on_the_bus(model, tmp_path):
                 frames.append(bytes(m.data))
     assert len(frames) == 1, frames
     data = frames[0]
-    assert data[0] == e2e_crc(fc.frame_id, data)
+    assert fc.e2e_check(data)
     got = fc.decode(data)
     rec = read_recording(record)
     _, y = offline_estimates(rec, 0)

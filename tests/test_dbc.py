@@ -6,7 +6,7 @@ import random
 
 import pytest
 
-from observer_node.dbc import Codec, bus_load, crc8_j1850, e2e_crc, frame_bits
+from observer_node.dbc import Codec, bus_load, crc8_j1850, frame_bits
 
 CODEC = Codec()
 
@@ -33,12 +33,74 @@ def test_precompiled_codec_equals_cantools(name):
 def test_e2e_protects_safety_frames():
     acc = CODEC["TunnelAccel"]
     data = acc.encode({"TunnelAccelX": -12.3}, counter=7)
-    assert data[1] & 0xF == 7 and acc.check_e2e(data)
-    assert data[0] == e2e_crc(acc.frame_id, data)
-    assert not acc.check_e2e(bytes([data[0], data[1], data[2] ^ 1, data[3]]))
-    # the ID is in the CRC: the same payload under another ID is caught
-    assert e2e_crc(acc.frame_id + 1, data) != data[0]
+    assert data[1] & 0xF == 7 and acc.e2e_check(data)
+    assert not acc.e2e_check(bytes([data[0], data[1], data[2] ^ 1, data[3]]))
+    # the data ID (the frame ID here) is in the CRC: the same payload under another is caught
+    assert _p01_crc(acc.data_id + 1, data) != data[0]
     assert all(f.has_e2e for f in CODEC.frames.values())
+    assert {f.e2e_profile for f in CODEC.frames.values()} == {"P01", "P05"}
+    assert CODEC["InputBurst"].e2e_profile == "P05"
+
+
+def _p01_crc(data_id: int, data: bytes) -> int:
+    """AUTOSAR E2E P01 (data ID mode BOTH, CRC in byte 0), from the PRS's definition with our
+    own CRC-8 J1850: start 0x00 over the data ID's low and high bytes, then the data bytes
+    after the CRC, no final xor."""
+    return crc8_j1850(bytes([data_id & 0xFF, data_id >> 8]) + bytes(data[1:]), 0x00)
+
+
+def test_p01_of_the_library_equals_an_independent_implementation():
+    rng = random.Random(1)
+    for name, fc in CODEC.frames.items():
+        if fc.e2e_profile != "P01":
+            continue
+        for k in range(50):
+            raw = [rng.randint(*fc.raw_range(n)) for n in fc.signal_names]
+            data = fc.with_counter(fc.pack(raw), k)
+            assert data[0] == _p01_crc(fc.data_id, data), name
+            assert fc.e2e_check(data)
+
+
+def test_p01_counter_runs_0_to_14_and_15_is_refused():
+    acc = CODEC["TunnelAccel"]
+    assert [acc.encode({}, k)[1] & 0xF for k in range(13, 17)] == [13, 14, 0, 1]
+    raw = acc.unpack(acc.encode({}, 0))
+    raw[acc.signal_names.index("TunnelAccel_Counter")] = 15
+    bad = bytearray(acc.pack(raw))
+    bad[0] = _p01_crc(acc.data_id, bad)  # a right CRC, an impossible counter
+    assert not acc.e2e_check(bytes(bad))
+
+
+def test_p05_against_the_published_example_and_cantools():
+    """AUTOSAR PRS E2E profile 5 example (data ID 0x1234, 8 zero bytes: CRC 0xCA1C, and with
+    the counter at 1: 0x8DCF), and a second implementation (cantools.autosar) on the
+    InputBurst frame."""
+    from cantools.autosar import compute_profile5_crc
+    from e2e.p05 import e2e_p05_protect
+
+    data = bytearray(8)
+    e2e_p05_protect(data, 0x1234, increment_counter=False)
+    assert bytes(data[:2]) == b"\x1c\xca"
+    e2e_p05_protect(data, 0x1234, increment_counter=True)
+    assert bytes(data[:3]) == b"\xcf\x8d\x01"
+    burst = CODEC["InputBurst"]
+    rng = random.Random(2)
+    for k in range(50):
+        raw = [rng.randint(*burst.raw_range(n)) for n in burst.signal_names]
+        frame = burst.with_counter(burst.pack(raw), k)
+        assert int.from_bytes(frame[:2], "little") == compute_profile5_crc(frame, burst.data_id)
+        assert frame[2] == k and burst.e2e_check(frame)
+        assert not burst.e2e_check(frame[:5] + bytes([frame[5] ^ 0x40]) + frame[6:])
+
+
+def test_an_e2e_header_that_does_not_fit_its_profile_is_refused(tmp_path):
+    from observer_node.dbc.codec import LayoutError
+
+    text = CODEC.path.read_text()
+    bad = text.replace('BA_ "E2EProfile" BO_ 256 "P01";', 'BA_ "E2EProfile" BO_ 256 "P05";')
+    (tmp_path / "bad.dbc").write_text(bad)
+    with pytest.raises(LayoutError, match="TunnelAccel: P05 needs a 16-bit"):
+        Codec(tmp_path / "bad.dbc")
 
 
 def test_10_khz_fits_can_fd_only_as_bursts():

@@ -14,7 +14,7 @@ import math
 from collections.abc import Callable
 from dataclasses import dataclass
 
-from observer_node.dbc import Codec, FrameCodec, e2e_crc
+from observer_node.dbc import Codec, FrameCodec
 
 from .core import BAD_E2E, OUT_OF_RANGE, SENSOR_FAULT, ObserverCore
 
@@ -45,8 +45,9 @@ class _Layout:
 
     def __init__(self, fc: FrameCodec, prefix: str, faults: tuple[str, ...]):
         self.id, self.length, self.struct = fc.frame_id, fc.length, fc.struct
-        self.crc = fc.locate(f"{prefix}_CRC")[0]
+        self.e2e_check = fc.e2e_checker()  # the DBC's profile, by the E2E library
         self.cnt_slot, self.cnt_shift, self.cnt_mask = fc.locate(f"{prefix}_Counter")
+        self.cnt_modulus = fc.counter_modulus  # P01: 0..14, P05: 0..255
         self.faults = tuple(fc.locate(f"{prefix}_{name}")[:2] for name in faults)
         self.last = -1  # the last accepted alive counter, -1: none yet
 
@@ -80,6 +81,7 @@ class Inputs:
                                for j in range(self.burst_n))
         self.burst_per_rev = burst.locate("BurstCountsPerRev")[0]
         self.ref_id, self.ref_len, self.ref_struct = ref.frame_id, ref.length, ref.struct
+        self.ref_check = ref.e2e_checker()
         self.ref_cr_slot = ref.locate("RefChestAccelCR")[0]
         self.ref_cd_slot = ref.locate("RefChestDeflCD")[0]
         self.ref_scale_cr = ref.scale("RefChestAccelCR")
@@ -100,7 +102,7 @@ class Inputs:
         v = lay.struct.unpack_from(data)
         counter = v[lay.cnt_slot] >> lay.cnt_shift & lay.cnt_mask
         last = lay.last
-        if v[lay.crc] != e2e_crc(lay.id, data) or counter == last:
+        if counter == last or not lay.e2e_check(data):
             self.counters.bad_e2e += 1
             self.core.fault(BAD_E2E)
             return v, -1
@@ -108,7 +110,7 @@ class Inputs:
         lay.last = counter
         if last < 0:
             return v, 0
-        gap = (counter - last - 1) & lay.cnt_mask
+        gap = (counter - last - 1) % lay.cnt_modulus
         self.counters.lost += gap
         return v, gap
 
@@ -180,7 +182,7 @@ class Inputs:
         return None
 
     def reference(self, data: bytes) -> None:
-        if len(data) != self.ref_len or data[0] != e2e_crc(self.ref_id, data):
+        if len(data) != self.ref_len or not self.ref_check(data):
             self.counters.rejected += 1
             return
         self.counters.accepted += 1

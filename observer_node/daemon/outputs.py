@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import math
 
-from observer_node.dbc import Codec, e2e_crc
+from observer_node.dbc import Codec
 
 from ..criteria import ChestCriteria
 from ..recording.writer import OFF, Recorder
@@ -56,6 +56,8 @@ class Outputs:
         self.est_scale_cr = est.scale("ChestAccelCR")
         self.est_scale_cd = est.scale("ChestDeflCD")
         self.est_lo, self.est_hi = est.raw_range("ChestAccelCR")
+        self.est_protect = est.e2e_protect
+        self.est_modulus = est.counter_modulus
         self._slots = [0] * est.slots
         self._buf = bytearray(est.length)
         self.status, self.counters, self.health = (codec["ObserverStatus"],
@@ -72,18 +74,18 @@ class Outputs:
         """The ChestEstimate frame of this tick (CR and CD saturated to the signal)."""
         lo, hi = self.est_lo, self.est_hi
         s = self._slots
-        cs, csh, cm = self.est_cnt
+        cs, csh, _ = self.est_cnt
         vs, vsh = self.est_valid
         rs, rsh = self.est_running
         s[cs] = s[vs] = s[rs] = s[self.est_crc] = 0
-        s[cs] |= (core.tick_index & cm) << csh
+        s[cs] |= (core.tick_index % self.est_modulus) << csh
         s[vs] |= valid << vsh
         s[rs] |= running << rsh
         s[self.est_cr] = min(max(round(cr / self.est_scale_cr), lo), hi)
         s[self.est_cd] = min(max(round(cd / self.est_scale_cd), lo), hi)
         buf = self._buf
         self.est_struct.pack_into(buf, 0, *s)
-        buf[0] = e2e_crc(self.est_id, buf)
+        self.est_protect(buf)
         return bytes(buf)
 
     def status_frames(self, core: ObserverCore, cnt: Counters, rec: Recorder | None,
