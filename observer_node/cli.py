@@ -274,6 +274,21 @@ def cmd_export(a: argparse.Namespace) -> int:
     return 0
 
 
+def cmd_export_c(a: argparse.Namespace) -> int:
+    from .export_c import ExportError, export_c
+    from .model.modelfile import ModelFile
+
+    mf = ModelFile.load(a.model)
+    try:
+        paths = export_c(mf, Path(a.out), a.name)
+    except ExportError as e:
+        print(f"observer-node: error: {a.model}: {e}", file=sys.stderr)
+        return 2
+    print(f"wrote {', '.join(str(p) for p in paths)} ({mf.kind} {mf.name!r}, "
+          f"{mf.tick_rate_hz:g} Hz); compile with any C99 compiler, -DCO_REAL=float for float")
+    return 0
+
+
 def cmd_loop(a: argparse.Namespace) -> int:
     from .loop.closed_loop import run_loop
 
@@ -439,6 +454,16 @@ def build_parser() -> argparse.ArgumentParser:
     s.add_argument("--to", required=True, metavar="FILE", help="log file to write")
     s.add_argument("--channel", default="can0", help="channel name written into the log")
     s.set_defaults(func=cmd_export)
+
+    s = sub.add_parser("export-c", help="a model file as a dependency-free C99 observer",
+                       description="Write NAME.h and NAME.c: the model's per-tick step (input "
+                       "transform, discrete state space, and a grey-box's effects, delays and "
+                       "offsets) exactly as the daemon steps it, in double, or in float with "
+                       "-DCO_REAL=float. No heap, no library but fabs.")
+    s.add_argument("model", help="model file (JSON)")
+    s.add_argument("--out", required=True, metavar="DIR", help="folder to write into")
+    s.add_argument("--name", default="chest_observer", help="file and guard name")
+    s.set_defaults(func=cmd_export_c)
     return p
 
 

@@ -1,0 +1,143 @@
+"""export-c: the generated C99 observer compiles warning-free and steps as the Python one."""
+
+from __future__ import annotations
+
+import ctypes
+import shutil
+import subprocess
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from observer_node.data import bundled_campaign, read_isomme
+from observer_node.evaluation import dataset_for, identify
+from observer_node.export_c import export_c
+from observer_node.ident.dataset import make_dataset
+from observer_node.model.modelfile import ModelFile
+
+CC = shutil.which("cc") or shutil.which("gcc")
+pytestmark = pytest.mark.skipif(CC is None, reason="no C compiler")
+
+HARNESS = """#include <stddef.h>
+#include "chest_observer.h"
+size_t co_size(void) { return sizeof(co_observer); }
+void co_run(const co_real *pulse, const co_real *brs, int n, co_real *y)
+{
+    co_observer obs;
+    int k;
+    co_reset(&obs);
+    for (k = 0; k < n; k++) co_step(&obs, pulse[k], brs[k], y + 2 * k);
+}
+"""
+
+
+def build(mf: ModelFile, tmp: Path, real: str) -> tuple[ctypes.CDLL, type]:
+    export_c(mf, tmp)
+    (tmp / "harness.c").write_text(HARNESS)
+    lib = tmp / f"obs_{real}.so"
+    subprocess.run([CC, "-std=c99", "-Wall", "-Wextra", "-Werror", "-pedantic", "-O2",
+                    "-shared", "-fPIC", f"-DCO_REAL={real}", "-o", str(lib),
+                    str(tmp / "chest_observer.c"), str(tmp / "harness.c"), "-lm"],
+                   check=True, capture_output=True, text=True)
+    ct = ctypes.c_double if real == "double" else ctypes.c_float
+    return ctypes.CDLL(str(lib)), ct
+
+
+def run_c(mf: ModelFile, tmp: Path, real: str, pulse: np.ndarray, brs: np.ndarray) -> np.ndarray:
+    lib, ct = build(mf, tmp, real)
+    dtype = np.float64 if real == "double" else np.float32
+    p, b = np.ascontiguousarray(pulse, dtype), np.ascontiguousarray(brs, dtype)
+    y = np.zeros((len(p), 2), dtype)
+    ptr = ctypes.POINTER(ct)
+    lib.co_run.argtypes = [ptr, ptr, ctypes.c_int, ptr]
+    lib.co_run(p.ctypes.data_as(ptr), b.ctypes.data_as(ptr), len(p), y.ctypes.data_as(ptr))
+    return y.astype(float)
+
+
+def _inputs(mf: ModelFile) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """The bundled validation tests' inputs at the model's rate, end to end, and the Python
+    observer's outputs on them."""
+    tests = [read_isomme(bundled_campaign() / f"{n}.zip") for n in ("R16_002", "FULL_002")]
+    data = dataset_for(mf, tests)
+    pulse, brs = data.pulse_g.ravel(), data.brs_rad.ravel()
+    return pulse, brs, mf.observer().simulate(pulse, brs)
+
+
+@pytest.fixture(scope="module")
+def models(tmp_path_factory) -> dict[str, ModelFile]:
+    est = [read_isomme(bundled_campaign() / f"R16_00{i}.zip") for i in (1, 3, 5)]
+    data = make_dataset(est, 1000.0)
+    return {"greybox": identify("greybox", data), "arx": identify("arx", data, nmax=4),
+            "n4sid": identify("n4sid", data, order=7)}
+
+
+@pytest.mark.parametrize("kind", ["greybox", "arx", "n4sid"])
+def test_linear_models_in_c_equal_python(models, kind, tmp_path):
+    mf = models[kind]
+    pulse, brs, y_py = _inputs(mf)
+    y_c = run_c(mf, tmp_path, "double", pulse, brs)
+    scale = np.max(np.abs(y_py), axis=0)
+    assert np.max(np.abs(y_c - y_py) / scale) < 1e-9
+    y_f = run_c(mf, tmp_path, "float", pulse, brs)
+    err = np.max(np.abs(y_f - y_py) / scale)
+    print(f"{kind}: float's largest error {err:.2e} of the output's range")
+    assert err < 1e-3
+
+
+def test_the_loops_model_with_effects_in_c_equals_python(campaign, tmp_path):
+    from observer_node.loop.closed_loop import run_loop
+
+    est = [t for t in campaign if t.name in ("R16_001", "R16_003", "R16_005", "R16_007")]
+    val = [t for t in campaign if t.name in ("R16_002",)]
+    run_loop(est, val, tmp_path / "loop", verbose=False, plots=False, ratings=False)
+    mf = ModelFile.load(tmp_path / "loop" / "model.json")
+    assert mf.effects  # a switching belt at least
+    pulse, brs, y_py = _inputs(mf)
+    y_c = run_c(mf, tmp_path, "double", pulse, brs)
+    scale = np.max(np.abs(y_py), axis=0)
+    assert np.max(np.abs(y_c - y_py) / scale) < 1e-9
+
+
+def test_every_exportable_effect_with_delays_and_offsets(models, tmp_path):
+    """Each effect's force, the delays and the offsets, at once, against Python."""
+    base = {n: v["value"] for n, v in models["greybox"].parameters.items()}
+    effects = [
+        {"kind": "chest_stiffening", "parameters": {"k3": 3e7}},
+        {"kind": "chest_rate_damping", "parameters": {"c3": 50.0}},
+        {"kind": "belt_unloading", "parameters": {}},
+        {"kind": "belt_stiffening", "parameters": {"kb3": 5e6}},
+        {"kind": "airbag_contact", "parameters": {"kab": 3e4, "gap": 0.05, "cab": 300.0}},
+        {"kind": "pelvis_coupling", "parameters": {"kp": 1e4, "cp": 300.0}},
+        {"kind": "input_gain", "parameters": {"g": 0.02}},
+        {"kind": "input_delay", "parameters": {"n_pulse": 2, "n_brs": 3}},
+        {"kind": "sensor_offset", "parameters": {"cr_g": 0.5, "cd_mm": -1.0}},
+    ]
+    from observer_node.model.chest import PARAM_NAMES, discrete
+
+    Ad, Bd, _, C, _ = discrete(base, 1000.0)
+    mf = ModelFile(kind="greybox", name="all-effects", tick_rate_hz=1000.0,
+                   input_transform="velocity_brs_rate", A=Ad, B=Bd, C=C, D=np.zeros((2, 2)),
+                   parameters={n: {"value": base[n]} for n in PARAM_NAMES}, effects=effects)
+    mf = ModelFile.from_dict(mf.to_dict())  # what the loader accepts
+    pulse, brs, y_py = _inputs(mf)
+    assert np.all(np.isfinite(y_py)) and np.max(np.abs(y_py[:, 1])) > 5  # a real response
+    y_c = run_c(mf, tmp_path, "double", pulse, brs)
+    scale = np.max(np.abs(y_py), axis=0)
+    assert np.max(np.abs(y_c - y_py) / scale) < 1e-9
+
+
+def test_a_model_with_a_fitted_formula_is_refused_in_one_line(models, tmp_path, capsys):
+    from observer_node.cli import main
+
+    d = models["greybox"].to_dict()
+    mf = ModelFile.from_dict(d)
+    mf.effects = [{"kind": "other", "parameters": {"rib": {"d^3": 1e8}}}]
+    from observer_node.model.chest import discrete
+
+    base = {n: v["value"] for n, v in mf.parameters.items()}
+    mf.A, mf.B, _, mf.C, _ = discrete(base, mf.tick_rate_hz)
+    path = mf.save(tmp_path / "other.json")
+    assert main(["export-c", str(path), "--out", str(tmp_path / "c")]) == 2
+    err = capsys.readouterr().err.strip()
+    assert err.count("\n") == 0 and "effect 'other' has no C form" in err
