@@ -29,7 +29,8 @@ from observer_node.export_c import export_c
 from observer_node.ident.dataset import make_dataset
 from observer_node.model.modelfile import ModelFile
 
-BENCH = r"""#include <stdio.h>
+BENCH = r"""#define _POSIX_C_SOURCE 199309L
+#include <stdio.h>
 #include <stdlib.h>
 #include <time.h>
 #include "chest_observer.h"
