@@ -36,3 +36,18 @@ def model(campaign):
 @pytest.fixture(scope="session")
 def model_path(model, tmp_path_factory):
     return model.save(tmp_path_factory.mktemp("m") / "model.json")
+
+
+R16_LOOP_EST = ("R16_001", "R16_003", "R16_005", "R16_007")
+
+
+@pytest.fixture(scope="session")
+def r16_loop(campaign, tmp_path_factory) -> tuple[Path, dict]:
+    """observer-node loop on four odd R16 tests, validated on three even ones, with plots and
+    ratings: its folder and report, shared by the loop, export-c and bench tests."""
+    from observer_node.loop.closed_loop import run_loop
+
+    out = tmp_path_factory.mktemp("r16-loop")
+    est = [t for t in campaign if t.name in R16_LOOP_EST]
+    val = [t for t in campaign if t.name in ("R16_002", "R16_004", "R16_006")]
+    return out, run_loop(est, val, out, verbose=False)

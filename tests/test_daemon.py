@@ -217,30 +217,6 @@ def test_killed_daemon_loses_at_most_100_ms(model_path, tmp_path):
     assert set(os.listdir("/dev/shm")) <= shm_before  # the rings die with the processes
 
 
-def test_bench_main_job_on_the_virtual_bus(tmp_path, capsys):
-    """The README's bench: the loop's model on the bus beside the thesis grey-box, every
-    event stepped as offline; the loop's result is reused when it was made from the same
-    tests (a subset here, to keep the test short)."""
-    from observer_node.bench import loop_models, run_bench
-
-    est = ("R16_001", "R16_003", "R16_005", "R16_007")
-    result = run_bench(tmp_path, interface="virtual", loop_tests=est)
-    assert len(result["events"]) == 3
-    for event, name in zip(result["events"], ("R16_002", "SLED_002", "FULL_002"), strict=True):
-        live, off = event["fit_vs_reference"], result["offline"][name]
-        assert abs(live["cr"] - off["cr"]) < 2 and abs(live["cd"] - off["cd"]) < 2, name
-        assert max(event["max_abs_diff_offline"].values()) < 1e-9, name
-    # the loop's model beats the thesis grey-box on the bus, as offline
-    base, off = result["baseline_offline"], result["offline"]
-    assert sum(off[n]["cd"] for n in off) > sum(base[n]["cd"] for n in base)
-    assert (tmp_path / "run.mcap").exists() and (tmp_path / "event0.png").exists()
-    out = capsys.readouterr().out
-    assert "daemon ticks" in out and "thesis grey-box (offline)" in out
-    plain, model = loop_models(tmp_path / "loop", est, ("R16_002",))
-    assert "reusing the loop's result" in capsys.readouterr().out
-    assert model.effects and not plain.effects
-
-
 def test_cpu_latency_is_held_while_open_and_fails_soft(tmp_path):
     from observer_node.daemon.realtime import hold_cpu_latency
 

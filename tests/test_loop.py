@@ -67,10 +67,9 @@ def test_augmented_model_runs_in_the_daemon(tmp_path):
     np.testing.assert_allclose(np.array(online), offline, atol=1e-9)
 
 
-def test_loop_improves_campaign_validation_fit(campaign, tmp_path):
-    est = [t for t in campaign if t.name in ("R16_001", "R16_003", "R16_005", "R16_007")]
-    val = [t for t in campaign if t.name in ("R16_002", "R16_004", "R16_006")]
-    r = run_loop(est, val, tmp_path, verbose=False)
+@pytest.mark.xdist_group(name="r16_loop")  # one worker makes the shared loop
+def test_loop_improves_campaign_validation_fit(r16_loop):
+    tmp_path, r = r16_loop
     assert r["effects"], r["history"]
     for name in ("fit_before_cr", "fit_after_cd", "residuals"):
         assert (tmp_path / f"{name}.png").stat().st_size > 10_000
@@ -85,3 +84,29 @@ def test_loop_improves_campaign_validation_fit(campaign, tmp_path):
     assert "Injury criteria on the validation tests" in (tmp_path / "report.md").read_text()
     assert r["final"]["fit"]["total"] > r["baseline"]["fit"]["total"] + 5
     assert r["validation"] == ["R16_002", "R16_004", "R16_006"]
+
+
+@pytest.mark.xdist_group(name="r16_loop")  # one worker makes the shared loop
+def test_bench_main_job_on_the_virtual_bus(r16_loop, tmp_path, capsys):
+    """The README's bench: the loop's model on the bus beside the thesis grey-box, every
+    event stepped as offline; the loop's result is reused when it was made from the same
+    tests (a subset here, to keep the test short)."""
+    from observer_node.bench import loop_models, run_bench
+
+    from .conftest import R16_LOOP_EST as est
+
+    result = run_bench(tmp_path, interface="virtual", loop_tests=est, loop_dir=r16_loop[0])
+    assert len(result["events"]) == 3
+    for event, name in zip(result["events"], ("R16_002", "SLED_002", "FULL_002"), strict=True):
+        live, off = event["fit_vs_reference"], result["offline"][name]
+        assert abs(live["cr"] - off["cr"]) < 2 and abs(live["cd"] - off["cd"]) < 2, name
+        assert max(event["max_abs_diff_offline"].values()) < 1e-9, name
+    # the loop's model beats the thesis grey-box on the bus, as offline
+    base, off = result["baseline_offline"], result["offline"]
+    assert sum(off[n]["cd"] for n in off) > sum(base[n]["cd"] for n in base)
+    assert (tmp_path / "run.mcap").exists() and (tmp_path / "event0.png").exists()
+    out = capsys.readouterr().out
+    assert "daemon ticks" in out and "thesis grey-box (offline)" in out
+    assert "reusing the loop's result" in out  # made by the r16_loop fixture from these tests
+    plain, model = loop_models(r16_loop[0], est, ("R16_002",))
+    assert model.effects and not plain.effects
