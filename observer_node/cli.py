@@ -275,12 +275,12 @@ def cmd_export(a: argparse.Namespace) -> int:
 
 
 def cmd_export_c(a: argparse.Namespace) -> int:
-    from .export_c import ExportError, export_c
+    from .export_c import ExportError, export_c, export_codec
     from .model.modelfile import ModelFile
 
     mf = ModelFile.load(a.model)
     try:
-        paths = export_c(mf, Path(a.out), a.name)
+        paths = export_c(mf, Path(a.out), a.name) + export_codec(Path(a.out))
     except ExportError as e:
         print(f"observer-node: error: {a.model}: {e}", file=sys.stderr)
         return 2
@@ -459,7 +459,8 @@ def build_parser() -> argparse.ArgumentParser:
                        description="Write NAME.h and NAME.c: the model's per-tick step (input "
                        "transform, discrete state space, and a grey-box's effects, delays and "
                        "offsets) exactly as the daemon steps it, in double, or in float with "
-                       "-DCO_REAL=float. No heap, no library but fabs.")
+                       "-DCO_REAL=float. No heap, no library but fabs. Also the frame codec "
+                       "from the DBC (chest_observer_can.c/.h, by cantools' C generator).")
     s.add_argument("model", help="model file (JSON)")
     s.add_argument("--out", required=True, metavar="DIR", help="folder to write into")
     s.add_argument("--name", default="chest_observer", help="file and guard name")
