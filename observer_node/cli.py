@@ -458,7 +458,8 @@ def build_parser() -> argparse.ArgumentParser:
     s = sub.add_parser("export-c", help="a model file as a dependency-free C99 observer",
                        description="Write NAME.h and NAME.c: the model's per-tick step (input "
                        "transform, discrete state space, and a grey-box's effects, delays and "
-                       "offsets) exactly as the daemon steps it, in double, or in float with "
+                       "offsets) exactly as the daemon steps it, and the daemon's core "
+                       "(arming, trigger, bias, validity) around it, in double, or in float with "
                        "-DCO_REAL=float. No heap, no library but fabs. Also the frame codec "
                        "from the DBC (chest_observer_can.c/.h, by cantools' C generator).")
     s.add_argument("model", help="model file (JSON)")

@@ -22,6 +22,7 @@ from pathlib import Path
 
 import numpy as np
 
+from .daemon.core import CoreConfig
 from .model.chest import discrete
 from .model.effects import EFFECTS
 from .model.modelfile import ModelFile
@@ -55,6 +56,234 @@ def _matvec(out: str, name: str, rows: int, cols: int, vec: str, acc: bool) -> s
     return "\n".join(lines)
 
 
+CORE_H = """
+/* The daemon's core (observer_node/daemon/core.py): arming on a learned accelerometer zero,
+ * the crash trigger, the onset search and catch-up, the event's end, re-arming when the pulse
+ * is quiet again, and the estimate's validity. Per accelerometer sample:
+ *     co_core_set_brs(&core, brs_count, counts_per_rev);   (when a BRS count arrives)
+ *     co_core_tick(&core, decel_g);                         (deceleration positive, with bias)
+ * then core.cr_g, core.cd_mm, core.state, co_core_valid(&core). Faults: co_core_fault. */
+enum {{ CO_ARMED = 1, CO_RUNNING = 2, CO_HOLD = 3 }};
+enum {{ CO_ACCEL_TIMEOUT = 1, CO_BRS_TIMEOUT = 2, CO_BAD_E2E = 4, CO_LOST_FRAME = 8,
+       CO_OUT_OF_RANGE = 16, CO_BUS_ERROR = 32, CO_SENSOR_FAULT = 64, CO_NOT_ARMED = 128 }};
+#define CO_N_BIAS {n_bias}
+#define CO_N_PRE {n_pre}
+
+typedef struct {{
+    co_observer obs;
+    int state;
+    long tick_index, invalid_until, onset_tick, brs_tick;
+    int event, events, run_ticks, above, hold, pre_i, pre_n, bias_n, bias_i;
+    int unsettled, bias_bad, brs_seen;
+    unsigned cause, faults;
+    long hold_timeouts, bias_faults, brs_jumps, events_cut;
+    co_real bias_g, bias_sum, bias_sq, last_pulse, brs_count, brs_ref, rad_per_count;
+    co_real cr_g, cd_mm;
+    co_real bias_ring[CO_N_BIAS], pre_pulse[CO_N_PRE], pre_brs[CO_N_PRE];
+}} co_core;
+
+void co_core_init(co_core *c);
+void co_core_reset(co_core *c);
+void co_core_set_brs(co_core *c, co_real count, int counts_per_rev);
+void co_core_fault(co_core *c, unsigned cause);
+void co_core_tick(co_core *c, co_real decel_g);
+void co_core_bridge(co_core *c, int missing);
+void co_core_end_event(co_core *c);
+int co_core_armed(const co_core *c);
+int co_core_valid(const co_core *c);
+"""
+
+CORE_C = """
+/* ---- the daemon's core: see chest_observer.h and observer_node/daemon/core.py ---- */
+#define CO_TRIGGER_G ((co_real){trigger_g})
+#define CO_TRIGGER_TICKS {trigger_ticks}
+#define CO_ONSET_G ((co_real){onset_g})
+#define CO_N_EVENT {n_event}
+#define CO_N_REARM {n_rearm}
+#define CO_N_HOLD_MAX {n_hold_max}
+#define CO_QUIET_VAR ((co_real){quiet_var})
+#define CO_BIAS_MAX_G ((co_real){bias_max_g})
+#define CO_BRS_MAX_STEP ((co_real){brs_max_step})
+#define CO_RECOVER_TICKS {recover_ticks}
+#define CO_MAX_BRIDGE {max_bridge}
+#define CO_RAD_PER_COUNT ((co_real){rad_per_count})
+
+static void clear_window(co_core *c) {{ c->bias_n = c->bias_i = 0; c->bias_sum = c->bias_sq = 0; }}
+
+void co_core_init(co_core *c) {{ c->rad_per_count = CO_RAD_PER_COUNT; c->hold_timeouts =
+    c->bias_faults = c->brs_jumps = c->events_cut = 0; co_core_reset(c); }}
+
+void co_core_reset(co_core *c)
+{{
+    c->state = CO_ARMED; c->tick_index = -1; clear_window(c); c->bias_g = 0;
+    c->pre_i = c->pre_n = c->above = c->hold = 0; c->unsettled = c->bias_bad = 0;
+    c->brs_count = 0; c->brs_tick = -1; c->brs_seen = 0; c->brs_ref = 0;
+    c->event = -1; c->events = 0; c->onset_tick = -1; c->run_ticks = 0;
+    c->cr_g = c->cd_mm = 0; c->invalid_until = 0; c->cause = c->faults = 0;
+    c->last_pulse = 0; co_reset(&c->obs);
+}}
+
+void co_core_fault(co_core *c, unsigned cause)
+{{
+    c->cause |= cause; c->faults |= cause;
+    c->invalid_until = c->tick_index + 1 + CO_RECOVER_TICKS;
+}}
+
+void co_core_set_brs(co_core *c, co_real count, int counts_per_rev)
+{{
+    if (counts_per_rev > 0) c->rad_per_count = (co_real)(6.283185307179586 / counts_per_rev);
+    if (c->brs_seen) {{
+        long ticks = c->tick_index - c->brs_tick;
+        co_real step = count - c->brs_count;
+        if (ticks < 1) ticks = 1;
+        if (fabs(step) * c->rad_per_count > CO_BRS_MAX_STEP * ticks) {{
+            c->brs_jumps++; c->brs_ref += step; co_core_fault(c, CO_SENSOR_FAULT);
+        }}
+    }}
+    c->brs_seen = 1; c->brs_tick = c->tick_index; c->brs_count = count;
+}}
+
+int co_core_armed(const co_core *c)
+{{
+    if (c->state == CO_RUNNING) return 1;
+    return c->state == CO_ARMED && c->bias_n > 0 && !c->unsettled;
+}}
+
+int co_core_valid(const co_core *c)
+{{
+    return c->tick_index >= c->invalid_until && co_core_armed(c);
+}}
+
+static void to_hold(co_core *c)
+{{
+    c->state = CO_HOLD; c->hold = 0; c->event = -1; clear_window(c);
+}}
+
+static void push(co_core *c, co_real v)
+{{
+    int j = c->bias_i, k;
+    if (c->bias_n == CO_N_BIAS) {{
+        co_real old = c->bias_ring[j];
+        c->bias_sum -= old; c->bias_sq -= old * old;
+    }} else c->bias_n++;
+    c->bias_ring[j] = v; c->bias_sum += v; c->bias_sq += v * v;
+    if (++j == CO_N_BIAS) {{  /* once per window: exact again, no drift over days */
+        j = 0; c->bias_sum = c->bias_sq = 0;
+        for (k = 0; k < CO_N_BIAS; k++) {{
+            c->bias_sum += c->bias_ring[k]; c->bias_sq += c->bias_ring[k] * c->bias_ring[k];
+        }}
+    }}
+    c->bias_i = j;
+}}
+
+static int quiet(const co_core *c)
+{{
+    co_real mean;
+    if (c->bias_n < CO_N_BIAS) return 0;
+    mean = c->bias_sum / c->bias_n;
+    return c->bias_sq / c->bias_n - mean * mean < CO_QUIET_VAR;
+}}
+
+static void learn_bias(co_core *c)
+{{
+    int bad;
+    c->bias_g = c->bias_sum / c->bias_n;
+    bad = fabs(c->bias_g) > CO_BIAS_MAX_G;
+    if (bad) {{ if (!c->bias_bad) c->bias_faults++; co_core_fault(c, CO_SENSOR_FAULT); }}
+    c->bias_bad = bad;
+}}
+
+static void step(co_core *c, co_real decel_g)
+{{
+    co_real y[2];
+    co_step(&c->obs, decel_g - c->bias_g, (c->brs_count - c->brs_ref) * c->rad_per_count, y);
+    c->cr_g = y[0]; c->cd_mm = y[1];
+}}
+
+static void start(co_core *c)
+{{
+    int n = c->pre_n, last = (c->pre_i - 1 + CO_N_PRE) % CO_N_PRE, back = 0, first, m;
+    co_real brs_now = c->brs_count;
+    while (back + 1 < n) {{
+        int k = ((last - back - 1) % CO_N_PRE + CO_N_PRE) % CO_N_PRE;
+        if (c->pre_pulse[k] - c->bias_g < CO_ONSET_G) break;
+        back++;
+    }}
+    first = ((last - back) % CO_N_PRE + CO_N_PRE) % CO_N_PRE;
+    c->onset_tick = c->tick_index - back;
+    c->brs_ref = c->pre_brs[first];
+    co_reset(&c->obs);
+    c->state = CO_RUNNING; c->event = c->events++; c->run_ticks = back + 1;
+    for (m = 0; m <= back; m++) {{
+        int k = (first + m) % CO_N_PRE;
+        c->brs_count = c->pre_brs[k];
+        step(c, c->pre_pulse[k]);
+    }}
+    c->brs_count = brs_now;
+}}
+
+static void armed(co_core *c, co_real decel_g)
+{{
+    int i = c->pre_i;
+    c->cr_g = c->cd_mm = 0;
+    c->pre_pulse[i] = decel_g; c->pre_brs[i] = c->brs_count;
+    c->pre_i = (i + 1) % CO_N_PRE;
+    if (c->pre_n < CO_N_PRE) c->pre_n++;
+    if (c->bias_n && decel_g - c->bias_g >= CO_TRIGGER_G) {{
+        if (++c->above >= CO_TRIGGER_TICKS) start(c);
+        return;
+    }}
+    c->above = 0;
+    push(c, decel_g);
+    learn_bias(c);
+    if (c->unsettled) {{
+        if (quiet(c)) c->unsettled = 0; else co_core_fault(c, CO_SENSOR_FAULT);
+    }}
+}}
+
+static void holding(co_core *c, co_real decel_g)
+{{
+    int q;
+    c->cr_g = c->cd_mm = 0;
+    c->hold++;
+    push(c, decel_g);
+    q = quiet(c);
+    if ((q && c->hold >= CO_N_REARM) || c->hold >= CO_N_HOLD_MAX) {{
+        if (!q) {{ c->hold_timeouts++; c->unsettled = 1; co_core_fault(c, CO_SENSOR_FAULT); }}
+        learn_bias(c);
+        c->state = CO_ARMED; c->pre_n = 0; c->above = 0;
+    }}
+}}
+
+static void tick(co_core *c, co_real decel_g, int bridged)
+{{
+    c->tick_index++;
+    if (!bridged) {{
+        c->last_pulse = decel_g;
+        if (c->tick_index >= c->invalid_until) c->cause = 0;
+    }}
+    if (c->state == CO_ARMED) armed(c, decel_g);
+    else if (c->state == CO_RUNNING) {{
+        step(c, decel_g);
+        if (++c->run_ticks >= CO_N_EVENT) to_hold(c);
+    }} else holding(c, decel_g);
+}}
+
+void co_core_tick(co_core *c, co_real decel_g) {{ tick(c, decel_g, 0); }}
+
+void co_core_bridge(co_core *c, int missing)
+{{
+    int k;
+    co_core_fault(c, CO_LOST_FRAME);
+    for (k = 0; k < missing && k < CO_MAX_BRIDGE; k++) tick(c, c->last_pulse, 1);
+}}
+
+void co_core_end_event(co_core *c)
+{{
+    if (c->state == CO_RUNNING) {{ c->events_cut++; to_hold(c); }}
+}}
+"""
+
 HEADER = """/* {name}: chest observer generated by observer-node export-c {version} from a {kind}
  * model file ({model}), tick rate {rate:g} Hz. Do not edit: regenerate from the model file.
  *
@@ -87,14 +316,31 @@ typedef struct {{
 
 void co_reset(co_observer *obs);
 void co_step(co_observer *obs, co_real pulse_g, co_real brs_rad, co_real y[2]);
-
+{core}
 #endif
 """
 
 
-def export_c(mf: ModelFile, out_dir: str | Path, name: str = "chest_observer") -> list[Path]:
-    """Write ``name``.h and ``name``.c for ``mf`` into ``out_dir``; returns the paths."""
+def export_c(mf: ModelFile, out_dir: str | Path, name: str = "chest_observer",
+             core: CoreConfig | None = None) -> list[Path]:
+    """Write ``name``.h and ``name``.c for ``mf`` into ``out_dir``, with the daemon's core
+    at ``core`` (default: the daemon's defaults); returns the paths."""
     from . import __version__
+
+    cfg = core or CoreConfig()
+    fs = mf.tick_rate_hz
+    n_bias = max(2, round(cfg.bias_window_s * fs))
+    n_rearm = round(cfg.rearm_s * fs)
+    consts = {"n_bias": n_bias, "n_pre": max(2, round(cfg.pretrigger_s * fs)
+                                             + cfg.trigger_ticks + 1),
+              "trigger_g": _num(cfg.trigger_g), "trigger_ticks": cfg.trigger_ticks,
+              "onset_g": _num(cfg.onset_g), "n_event": round(cfg.event_s * fs),
+              "n_rearm": n_rearm,
+              "n_hold_max": max(n_bias, n_rearm, round(cfg.hold_max_s * fs)),
+              "quiet_var": _num(cfg.quiet_g ** 2), "bias_max_g": _num(cfg.bias_max_g),
+              "brs_max_step": _num(cfg.brs_max_rate_rad_s / fs),
+              "recover_ticks": cfg.recover_ticks, "max_bridge": cfg.max_bridge_ticks,
+              "rad_per_count": _num(2 * np.pi / cfg.counts_per_rev)}
 
     out = Path(out_dir)
     obs = mf.observer()
@@ -103,9 +349,11 @@ def export_c(mf: ModelFile, out_dir: str | Path, name: str = "chest_observer") -
     else:
         body, nx, n_pulse, n_brs = _linear(obs), obs.A.shape[0], 0, 0
     header = HEADER.format(name=name, version=__version__, kind=mf.kind, model=mf.name or "-",
-                           rate=mf.tick_rate_hz, nx=nx, np1=n_pulse + 1, nb1=n_brs + 1)
+                           rate=mf.tick_rate_hz, nx=nx, np1=n_pulse + 1, nb1=n_brs + 1,
+                           core=CORE_H.format(**consts))
     source = (f"/* Generated by observer-node export-c {__version__}: see {name}.h. */\n"
-              f"#include <math.h>\n#include \"{name}.h\"\n\n{body}")
+              f"#include <math.h>\n#include \"{name}.h\"\n\n{body}"
+              + CORE_C.format(**consts))
     out.mkdir(parents=True, exist_ok=True)
     h, c = out / f"{name}.h", out / f"{name}.c"
     h.write_text(header, encoding="utf-8")

@@ -168,3 +168,63 @@ def test_the_c_codec_from_the_dbc_round_trips_python_frames(tmp_path):
             out = ctypes.create_string_buffer(fc.length)
             assert so.roundtrip(k, frame, out, fc.length) == fc.length, n
             assert out.raw == frame, n
+
+
+CORE_HARNESS = """#include <stddef.h>
+#include "chest_observer.h"
+void core_run(const co_real *decel, const co_real *brs, int n, co_real *out)
+{
+    static co_core c;
+    int k;
+    co_core_init(&c);
+    for (k = 0; k < n; k++) {
+        co_core_set_brs(&c, brs[k], 96);
+        co_core_tick(&c, decel[k]);
+        out[6 * k] = c.cr_g; out[6 * k + 1] = c.cd_mm; out[6 * k + 2] = c.state;
+        out[6 * k + 3] = co_core_valid(&c); out[6 * k + 4] = c.event;
+        out[6 * k + 5] = c.faults;
+    }
+}
+"""
+
+
+def test_the_daemons_core_in_c_steps_as_the_python_core(models, tmp_path):
+    """Arming, bias, trigger, onset catch-up, event end, re-arming on a shifted zero, a BRS
+    counter reset: the C core and ObserverCore tick for tick."""
+    from observer_node.daemon.core import ObserverCore
+    from observer_node.data.crashtest import resample_inputs
+
+    mf = models["greybox"]
+    t = read_isomme(bundled_campaign() / "R16_002.zip")
+    p, b, step = resample_inputs(t.pulse_g, t.brs, t.fs_hz, 1000.0)
+    after = t.t0_s + np.arange(len(p)) * step / t.fs_hz >= 0
+    pulse, counts = p[after], b[after].astype(float)
+    rng = np.random.default_rng(4)
+    decel = np.concatenate([0.2 * rng.normal(size=300), pulse, 1.5 + 0.2 * rng.normal(size=400),
+                            1.5 + pulse, 1.5 + 0.2 * rng.normal(size=300)])
+    brs = np.concatenate([np.zeros(300), counts, np.full(400, counts[-1]), counts[-1] + counts,
+                          np.full(300, 0.0)])  # the last: a counter reset, a BRS jump
+    core = ObserverCore(mf.observer())
+    want = []
+    for d, c in zip(decel, brs, strict=True):
+        core.set_brs(c, 96)
+        core.tick(d)
+        want.append((core.cr_g, core.cd_mm, core.state, core.valid, core.event, core.faults))
+    want_a = np.array(want, dtype=float)
+    assert set(want_a[:, 4]) >= {0.0, 1.0} and core.brs_jumps == 1  # two events, one jump
+    export_c(mf, tmp_path)
+    (tmp_path / "core.c").write_text(CORE_HARNESS)
+    lib = tmp_path / "core.so"
+    subprocess.run([CC, "-std=c99", "-Wall", "-Wextra", "-Werror", "-pedantic", "-O2",
+                    "-shared", "-fPIC", "-o", str(lib), str(tmp_path / "chest_observer.c"),
+                    str(tmp_path / "core.c"), "-lm"], check=True, capture_output=True, text=True)
+    so = ctypes.CDLL(str(lib))
+    out = np.zeros((len(decel), 6))
+    ptr = ctypes.POINTER(ctypes.c_double)
+    so.core_run.argtypes = [ptr, ptr, ctypes.c_int, ptr]
+    d_, b_ = np.ascontiguousarray(decel), np.ascontiguousarray(brs)
+    so.core_run(d_.ctypes.data_as(ptr), b_.ctypes.data_as(ptr), len(decel),
+                out.ctypes.data_as(ptr))
+    np.testing.assert_array_equal(out[:, 2:], want_a[:, 2:])  # state, valid, event, faults
+    scale = np.max(np.abs(want_a[:, :2]), axis=0)
+    assert np.max(np.abs(out[:, :2] - want_a[:, :2]) / scale) < 1e-9
