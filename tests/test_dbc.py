@@ -75,10 +75,10 @@ def test_p01_counter_runs_0_to_14_and_15_is_refused():
     assert not acc.e2e_check(bytes(bad))
 
 
-def test_p05_against_the_published_example_and_cantools():
-    """AUTOSAR PRS E2E profile 5 example (data ID 0x1234, 8 zero bytes: CRC 0xCA1C, and with
-    the counter at 1: 0x8DCF), and a second implementation (cantools.autosar) on the
-    InputBurst frame."""
+def test_p05_against_the_example_vectors_and_cantools():
+    """The profile 5 example vectors of the library's test suite (data ID 0x1234, 8 zero
+    bytes: CRC 0xCA1C, and with the counter at 1: 0x8DCF), and a second implementation
+    (cantools.autosar) on the InputBurst frame."""
     from cantools.autosar import compute_profile5_crc
     from e2e.p05 import e2e_p05_protect
 
