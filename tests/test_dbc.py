@@ -11,8 +11,15 @@ from observer_node.dbc import Codec, bus_load, crc8_j1850, frame_bits
 CODEC = Codec()
 
 
-def test_crc8_j1850_check_value():
-    assert crc8_j1850(b"123456789") ^ 0xFF == 0x4B  # the SAE J1850 check value
+def test_crc_check_values_of_the_autosar_crc_specification():
+    """The check values AUTOSAR's Specification of CRC Routines publishes for "123456789":
+    CRC-8 SAE J1850 0x4B (P01's CRC) and CRC-16 CCITT-FALSE 0x29B1 (P05's), by the E2E
+    library's CRCs and by our own CRC-8."""
+    from e2e import crc
+
+    assert crc8_j1850(b"123456789") ^ 0xFF == 0x4B
+    assert crc.calculate_crc8(b"123456789") == 0x4B
+    assert crc.calculate_crc16(b"123456789") == 0x29B1
 
 
 @pytest.mark.parametrize("name", sorted(CODEC.frames))
