@@ -3,8 +3,10 @@
 The generated ``chest_observer.c`` and ``chest_observer.h`` step exactly what the daemon's
 Python observer steps (:mod:`observer_node.model.observer`, :mod:`observer_node.model.nonlinear`):
 the input transform (integrated pulse and BRS rate, or raw inputs), the discrete state space,
-and for a grey-box with effects, the effect forces held over the tick, the slack-belt switch to
-the belt-free matrices, input delays and sensor offsets. Numbers are written with 17
+and for a grey-box with effects, every effect's force held over the tick (the fitted formula
+too), the slack-belt switch to the belt-free matrices, input delays and sensor offsets; and
+the daemon's core around it (:mod:`observer_node.daemon.core`: arming, bias, trigger,
+validity). Numbers are written with 17
 significant digits, so the C model is the model file's.
 
 The arithmetic type is ``co_real``: ``double`` unless compiled with ``-DCO_REAL=float``. No
@@ -31,7 +33,10 @@ from .model.observer import LinearObserver
 
 SUPPORTED_EFFECTS = ("chest_stiffening", "chest_rate_damping", "belt_unloading",
                      "belt_stiffening", "airbag_contact", "pelvis_coupling", "input_gain",
-                     "input_delay", "sensor_offset")
+                     "input_delay", "sensor_offset", "other")
+# The fitted formula's terms (observer_node.model.effects.other_term) in C
+OTHER_TERMS_C = {"d^2": "d * d", "d^3": "d * d * d", "d'|d'|": "dd * fabs(dd)", "e^2": "e * e",
+                 "e^3": "e * e * e", "e'|e'|": "ed * fabs(ed)", "d e": "d * e", "d d'": "d * dd"}
 
 
 class ExportError(ValueError):
@@ -443,6 +448,13 @@ def _force(kind: str, p: dict, base: dict) -> str:
     if kind == "input_gain":
         return (f"    fn += {k2} * ({R} * {_num(p['g'])} * theta * theta / 2) + "
                 f"{c2} * ({R} * {_num(p['g'])} * theta * u[1]);\n")
+    if kind == "other":
+        def terms(where: str) -> str:
+            return " + ".join(f"{_num(c)} * ({OTHER_TERMS_C[n]})"
+                              for n, c in p.get(where, {}).items()) or "0"
+        return (f"    {{ co_real f_rib = {terms('rib')};\n"
+                f"      co_real f_belt = {terms('belt')};\n"
+                "      fs += f_rib; fn += -f_rib + f_belt; }\n")
     raise ExportError(f"effect {kind!r} has no C form (supported: "
                       f"{', '.join(SUPPORTED_EFFECTS)})")
 

@@ -86,8 +86,8 @@ def test_linear_models_in_c_equal_python(models, kind, tmp_path):
 
 
 def test_every_exportable_effect_with_delays_and_offsets(models, tmp_path):
-    """Each effect's force (the slack-belt switch among them), the delays and the offsets,
-    at once, against Python."""
+    """Each effect's force (the slack-belt switch and a fitted formula with every term among
+    them), the delays and the offsets, at once, against Python."""
     base = {n: v["value"] for n, v in models["greybox"].parameters.items()}
     effects = [
         {"kind": "chest_stiffening", "parameters": {"k3": 3e7}},
@@ -99,6 +99,9 @@ def test_every_exportable_effect_with_delays_and_offsets(models, tmp_path):
         {"kind": "input_gain", "parameters": {"g": 0.02}},
         {"kind": "input_delay", "parameters": {"n_pulse": 2, "n_brs": 3}},
         {"kind": "sensor_offset", "parameters": {"cr_g": 0.5, "cd_mm": -1.0}},
+        {"kind": "other", "parameters": {"rib": {"d^2": 2e5, "d'|d'|": 20.0, "d d'": 100.0},
+                                         "belt": {"e^3": 1e6, "e'|e'|": 10.0, "d e": 1e4,
+                                                  "e^2": 1e4, "d^3": 1e6}}},
     ]
     from observer_node.model.chest import PARAM_NAMES, discrete
 
@@ -112,22 +115,6 @@ def test_every_exportable_effect_with_delays_and_offsets(models, tmp_path):
     y_c = run_c(mf, tmp_path, "double", pulse, brs)
     scale = np.max(np.abs(y_py), axis=0)
     assert np.max(np.abs(y_c - y_py) / scale) < 1e-9
-
-
-def test_a_model_with_a_fitted_formula_is_refused_in_one_line(models, tmp_path, capsys):
-    from observer_node.cli import main
-
-    d = models["greybox"].to_dict()
-    mf = ModelFile.from_dict(d)
-    mf.effects = [{"kind": "other", "parameters": {"rib": {"d^3": 1e8}}}]
-    from observer_node.model.chest import discrete
-
-    base = {n: v["value"] for n, v in mf.parameters.items()}
-    mf.A, mf.B, _, mf.C, _ = discrete(base, mf.tick_rate_hz)
-    path = mf.save(tmp_path / "other.json")
-    assert main(["export-c", str(path), "--out", str(tmp_path / "c")]) == 2
-    err = capsys.readouterr().err.strip()
-    assert err.count("\n") == 0 and "effect 'other' has no C form" in err
 
 
 def test_the_c_codec_from_the_dbc_round_trips_python_frames(tmp_path):
