@@ -1,0 +1,130 @@
+"""Setups: which crash tests share a rig, told from the tests' own metadata.
+
+The rule, in order:
+
+1. ``--group NAME=PATTERN`` (a shell pattern on the test name; the first that matches wins)
+   puts a test in setup NAME.
+2. Otherwise tests whose ``.mme`` gives the same ``Type of the test``, ``Title`` and
+   ``Name of test object 1`` share a setup. It is named after the test-name prefix (before
+   ``_`` or ``-``) all its tests share, when no other setup shares it (R16_001 -> R16), else
+   after the fewest leading words (two at least) of its title that tell it apart
+   (FULL-FRONTAL).
+3. A test with none of these keys (a CSV without a header) is grouped by its name prefix
+   when the name has one, else it joins setup UNKNOWN.
+
+Placement: an effect that needs what a rig does not have is impossible there. Today that is the
+airbag, impossible where the metadata (title, type, comments) says hard seat, no interior or
+no airbag. ``loop --allow-anywhere`` lifts this.
+"""
+
+from __future__ import annotations
+
+import fnmatch
+import re
+from dataclasses import dataclass, field
+
+from .crashtest import CrashDataError, CrashTest
+
+KEYS = ("Type of the test", "Title", "Name of test object 1")
+# Words in the metadata that rule an effect out, and why.
+NEEDS_INTERIOR = re.compile(r"HARD SEAT|RIGID SEAT|NO INTERIOR|WITHOUT INTERIOR|NO AIRBAG|"
+                            r"WITHOUT AIRBAG|AIRBAG DEACTIVATED", re.IGNORECASE)
+NEEDS = {"airbag_contact": (NEEDS_INTERIOR, "an airbag needs an interior with an airbag")}
+
+
+@dataclass
+class Setup:
+    """Tests that share a rig (see the module's rule), and what their metadata rules out."""
+
+    name: str
+    tests: list[str]
+    how: str  # "--group PATTERN", "metadata: <key values>" or "name prefix"
+    text: str = ""  # the metadata the placement rules read
+    impossible: dict[str, str] = field(default_factory=dict)  # effect -> why not
+
+    def as_dict(self) -> dict:
+        return {"name": self.name, "tests": self.tests, "rule": self.how,
+                **({"impossible": self.impossible} if self.impossible else {})}
+
+
+def parse_groups(specs: list[str] | None) -> list[tuple[str, str]]:
+    """``NAME=PATTERN`` options -> [(name, pattern)]; one line naming the bad option."""
+    out = []
+    for spec in specs or []:
+        name, sep, pattern = spec.partition("=")
+        if not sep or not name.strip() or not pattern.strip():
+            raise CrashDataError(f"--group {spec!r}: expected NAME=PATTERN, e.g. R16='R16_*'")
+        out.append((name.strip(), pattern.strip()))
+    return out
+
+
+def _prefix(name: str) -> str | None:
+    parts = re.split(r"[_\-]", name, maxsplit=1)
+    return parts[0].upper() if len(parts) == 2 and parts[0] and not parts[0].isdigit() else None
+
+
+def assign_setups(tests: list[CrashTest], groups: list[tuple[str, str]] | None = None
+                  ) -> list[Setup]:
+    """Group ``tests`` by the rule above, set each test's ``setup`` to its group's name and
+    return the groups in order of first appearance."""
+    by_key: dict[tuple, list[CrashTest]] = {}
+    how: dict[tuple, str] = {}
+    for t in tests:
+        user = next((n for n, pat in groups or [] if fnmatch.fnmatchcase(t.name, pat)), None)
+        values = tuple(t.meta.get(k, "").strip().upper() for k in KEYS)
+        if user is not None:
+            key: tuple = ("user", user)
+            how[key] = "--group " + next(p for n, p in groups or [] if n == user)
+        elif any(values):
+            key = ("meta", *values)
+            how[key] = "metadata: " + "; ".join(v for v in values if v)
+        else:
+            key = ("prefix", _prefix(t.name) or "UNKNOWN")
+            how[key] = "name prefix" if key[1] != "UNKNOWN" else "no metadata, no name prefix"
+        by_key.setdefault(key, []).append(t)
+    names = _names(by_key)
+    out = []
+    for key, members in by_key.items():
+        text = " ".join(" ".join(t.meta.get(k, "") for k in (*KEYS, "Comments"))
+                        for t in members)
+        impossible = {kind: why for kind, (words, why) in NEEDS.items() if words.search(text)}
+        for t in members:
+            t.setup = names[key]
+        out.append(Setup(names[key], [t.name for t in members], how[key], text, impossible))
+    return out
+
+
+def _names(by_key: dict[tuple, list[CrashTest]]) -> dict[tuple, str]:
+    names: dict[tuple, str] = {}
+    prefixes: dict[tuple, str | None] = {}
+    for key, members in by_key.items():
+        if key[0] in ("user", "prefix"):
+            names[key] = key[1]
+            continue
+        p = {_prefix(t.name) for t in members}
+        prefixes[key] = p.pop() if len(p) == 1 else None
+    taken = list(names.values())
+    for key, pre in prefixes.items():
+        shared = [k for k, q in prefixes.items() if q == pre and k != key]
+        if pre and not shared and pre not in taken:
+            names[key] = pre
+    # the rest: the fewest leading title words (else type words) that tell them apart
+    rest = [k for k in prefixes if k not in names]
+    for key in rest:
+        words = re.findall(r"[A-Z0-9]+", (key[2] or key[1] or "SETUP"))
+        for n in range(min(2, len(words)), len(words) + 1):
+            cand = "-".join(words[:n])
+            others = [re.findall(r"[A-Z0-9]+", (k[2] or k[1] or "SETUP"))[:n]
+                      for k in rest if k != key]
+            if all("-".join(o) != cand for o in others) and cand not in taken:
+                break
+        while cand in taken:
+            cand += "+"
+        names[key] = cand
+        taken.append(cand)
+    return names
+
+
+def allowed_setups(kind: str, setups: list[Setup], anywhere: bool = False) -> list[str]:
+    """The setups where effect ``kind`` is physically possible."""
+    return [s.name for s in setups if anywhere or kind not in s.impossible]
