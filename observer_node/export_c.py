@@ -315,8 +315,9 @@ typedef struct {{
     co_real brs_prev;          /* last BRS angle, rad */
     int has_prev;              /* 0: the next BRS sample is the reference */
     long k;                    /* ticks since reset */
-    co_real pulse_ring[{np1}]; /* input delay of the pulse (ticks + 1) */
+    co_real pulse_ring[{np1}]; /* input delay of the pulse (whole ticks + 2) */
     co_real brs_ring[{nb1}];   /* input delay of the BRS */
+    co_real brs_first;         /* first BRS sample: the delayed BRS before it exists */
 }} co_observer;
 
 void co_reset(co_observer *obs);
@@ -327,9 +328,11 @@ void co_step(co_observer *obs, co_real pulse_g, co_real brs_rad, co_real y[2]);
 
 
 def export_c(mf: ModelFile, out_dir: str | Path, name: str = "chest_observer",
-             core: CoreConfig | None = None) -> list[Path]:
+             core: CoreConfig | None = None, setup: str | None = None) -> list[Path]:
     """Write ``name``.h and ``name``.c for ``mf`` into ``out_dir``, with the daemon's core
-    at ``core`` (default: the daemon's defaults); returns the paths."""
+    at ``core`` (default: the daemon's defaults); returns the paths. ``setup``: the bench's
+    setup, for a model with effects scoped to setups (only that setup's effects are
+    exported)."""
     from . import __version__
 
     cfg = core or CoreConfig()
@@ -348,7 +351,7 @@ def export_c(mf: ModelFile, out_dir: str | Path, name: str = "chest_observer",
               "rad_per_count": _num(2 * np.pi / cfg.counts_per_rev)}
 
     out = Path(out_dir)
-    obs = mf.observer()
+    obs = mf.observer(setup)
     if isinstance(obs, NonlinearGreyBox):
         body, nx, n_pulse, n_brs = _nonlinear(obs)
     else:
@@ -405,6 +408,7 @@ RESET = """void co_reset(co_observer *obs)
     obs->brs_prev = 0;
     obs->has_prev = 0;
     obs->k = 0;
+    obs->brs_first = 0;
     for (i = 0; i < (int)(sizeof obs->pulse_ring / sizeof obs->pulse_ring[0]); i++)
         obs->pulse_ring[i] = 0;
     for (i = 0; i < (int)(sizeof obs->brs_ring / sizeof obs->brs_ring[0]); i++)
@@ -473,35 +477,48 @@ def _nonlinear(obs: NonlinearGreyBox) -> tuple[str, int, int, int]:
         tables += (_matrix("Ad_slack", slack[0]) + _matrix("Bd_slack", slack[1])
                    + _matrix("Gd_slack", slack[2]))
     k2, c2, R = (_num(obs.base[n]) for n in ("k2", "c2", "R"))
-    forces = "".join(_force(kind, p, obs.base) for kind, p in obs.force_effects)
-    npl, nbr = obs.n_pulse, obs.n_brs
+    forces = "".join(_force(kind, p, obs.base) for kind, p, _ in obs.force_effects)
     delay = ""
-    if npl:  # the pulse of n_pulse ticks ago (0 before it exists)
-        delay += (f"    obs->pulse_ring[obs->k % {npl + 1}] = pulse_g;\n"
-                  f"    pulse_g = obs->k >= {npl} ? obs->pulse_ring[(obs->k + 1) % {npl + 1}]"
-                  " : 0;\n")
-    if nbr:  # the BRS of n_brs ticks ago (the first sample before it exists)
-        delay += (f"    obs->brs_ring[obs->k % {nbr + 1}] = brs_rad;\n"
-                  f"    brs_rad = obs->k >= {nbr} ? obs->brs_ring[(obs->k + 1) % {nbr + 1}]"
-                  " : obs->brs_ring[0];\n")
+    for sig, n, before in (("pulse_g", obs.n_pulse, "0"), ("brs_rad", obs.n_brs, "obs->brs_first")):
+        if not n:
+            continue
+        # the input n ticks ago, n = i + f: linear between the samples i and i + 1 ticks ago
+        # (``before`` until they exist: 0 for the pulse, the first sample for the BRS)
+        i, f, ring = int(n), n - int(n), sig.split("_")[0] + "_ring"
+        first = "    if (obs->k == 0) obs->brs_first = brs_rad;\n" if sig == "brs_rad" else ""
+        delay += (first + f"    obs->{ring}[obs->k % {i + 2}] = {sig};\n"
+                  f"    {{ co_real a = obs->k >= {i} ? obs->{ring}[(obs->k - {i}) % {i + 2}]"
+                  f" : {before};\n"
+                  f"      co_real b = obs->k >= {i + 1} ? obs->{ring}[(obs->k - {i + 1}) % {i + 2}]"
+                  f" : {before};\n"
+                  f"      {sig} = a + {_num(f)} * (b - a); }}\n")
+    # the effects' forces at a state (and whether the belt is slack there), used for the
+    # update and, with the output after the tick's inputs, again at the new state
+    forces_fn = ("static int co_forces(const co_real *z, const co_real u[2], co_real theta, "
+                 "co_real f[2])\n{\n"
+                 "    co_real d = z[3] - z[1];       /* chest compression s - x */\n"
+                 "    co_real dd = z[2] - z[0];\n"
+                 "    co_real e = z[4] - z[3];       /* belt penetration w - s */\n"
+                 "    co_real pos = z[5];            /* vehicle displacement */\n"
+                 f"    co_real ed = u[0] + {R} * u[1] - z[2];\n"
+                 "    co_real fs = 0, fn = 0;\n"
+                 "    (void)d; (void)dd; (void)e; (void)pos; (void)ed; (void)theta;\n"
+                 + forces + "    f[0] = fs;\n    f[1] = fn;\n"
+                 + (f"    return {k2} * e + {c2} * ed < 0;\n}}\n\n" if slack is not None
+                    else "    return 0;\n}\n\n"))
+
+    def output(state: str) -> str:
+        return (_matvec("y", "C", 2, nx, state, False) + "\n"
+                + _matvec("y", "Df", 2, 2, "f", True) + "\n"
+                + f"    y[0] += {_num(obs.offset[0])};\n    y[1] += {_num(obs.offset[1])};\n")
+
     step = ("void co_step(co_observer *obs, co_real pulse_g, co_real brs_rad, co_real y[2])\n"
             "{\n    co_real u[2], f[2], xn[CO_STATES];\n"
             "    const co_real *z = obs->x;\n"
-            "    co_real d, dd, e, theta, pos, fs = 0, fn = 0;\n    int i, slack = 0;\n"
+            "    int i, slack;\n"
             + delay + _inputs("velocity_brs_rate", obs.fs_hz)
-            + "    theta = brs_rad;\n"
-            "    d = z[3] - z[1];               /* chest compression s - x */\n"
-            "    dd = z[2] - z[0];\n"
-            "    e = z[4] - z[3];               /* belt penetration w - s */\n"
-            f"    pos = z[5];                    /* vehicle displacement */\n"
-            "    (void)d; (void)dd; (void)e; (void)theta; (void)pos;\n"
-            f"    {{ co_real ed = u[0] + {R} * u[1] - z[2]; (void)ed;\n"
-            + forces
-            + (f"      slack = {k2} * e + {c2} * ed < 0;\n" if slack is not None else "")
-            + "    }\n    f[0] = fs;\n    f[1] = fn;\n"
-            + _matvec("y", "C", 2, nx, "z", False) + "\n"
-            + _matvec("y", "Df", 2, 2, "f", True) + "\n"
-            + f"    y[0] += {_num(obs.offset[0])};\n    y[1] += {_num(obs.offset[1])};\n"
+            + "    slack = co_forces(z, u, brs_rad, f);\n"
+            + ("" if obs.after_input else output("z"))
             + ("    if (slack) {\n" + _matvec("xn", "Ad_slack", nx, nx, "z", False) + "\n"
                + _matvec("xn", "Bd_slack", nx, 2, "u", True) + "\n"
                + _matvec("xn", "Gd_slack", nx, 2, "f", True) + "\n    } else {\n"
@@ -510,5 +527,10 @@ def _nonlinear(obs: NonlinearGreyBox) -> tuple[str, int, int, int]:
             + _matvec("xn", "Bd", nx, 2, "u", True) + "\n"
             + _matvec("xn", "Gd", nx, 2, "f", True) + "\n    }\n"
             + "    (void)slack;\n"
-            "    for (i = 0; i < CO_STATES; i++) obs->x[i] = xn[i];\n    obs->k++;\n}\n")
-    return tables + "\n" + RESET + step, nx, npl, nbr
+            "    for (i = 0; i < CO_STATES; i++) obs->x[i] = xn[i];\n    obs->k++;\n"
+            + ("    /* the output of the state after this tick's inputs */\n"
+               "    (void)co_forces(obs->x, u, brs_rad, f);\n" + output("obs->x")
+               if obs.after_input else "")
+            + "}\n")
+    return (tables + "\n" + RESET + forces_fn + step, nx, int(obs.n_pulse) + 1,
+            int(obs.n_brs) + 1)

@@ -97,17 +97,17 @@ def test_every_exportable_effect_with_delays_and_offsets(models, tmp_path):
         {"kind": "airbag_contact", "parameters": {"kab": 3e4, "gap": 0.05, "cab": 300.0}},
         {"kind": "pelvis_coupling", "parameters": {"kp": 1e4, "cp": 300.0}},
         {"kind": "input_gain", "parameters": {"g": 0.02}},
-        {"kind": "input_delay", "parameters": {"n_pulse": 2, "n_brs": 3}},
+        {"kind": "input_delay", "parameters": {"n_pulse": 2.4, "n_brs": 3.7}},
         {"kind": "sensor_offset", "parameters": {"cr_g": 0.5, "cd_mm": -1.0}},
         {"kind": "other", "parameters": {"rib": {"d^2": 2e5, "d'|d'|": 20.0, "d d'": 100.0},
                                          "belt": {"e^3": 1e6, "e'|e'|": 10.0, "d e": 1e4,
                                                   "e^2": 1e4, "d^3": 1e6}}},
     ]
-    from observer_node.model.chest import PARAM_NAMES, discrete
+    from observer_node.model.chest import PARAM_NAMES, model_matrices
 
-    Ad, Bd, _, C, _ = discrete(base, 1000.0)
+    Ad, Bd, C, D = model_matrices(base, 1000.0, True)
     mf = ModelFile(kind="greybox", name="all-effects", tick_rate_hz=1000.0,
-                   input_transform="velocity_brs_rate", A=Ad, B=Bd, C=C, D=np.zeros((2, 2)),
+                   input_transform="velocity_brs_rate", A=Ad, B=Bd, C=C, D=D,
                    parameters={n: {"value": base[n]} for n in PARAM_NAMES}, effects=effects)
     mf = ModelFile.from_dict(mf.to_dict())  # what the loader accepts
     pulse, brs, y_py = _inputs(mf)

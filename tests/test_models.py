@@ -140,3 +140,32 @@ def test_nonlinear_model_without_effects_is_the_linear_greybox(clean_r16):
         m = NonlinearGreyBox(p, [{"kind": kind, "parameters": params}], 1000.0)
         assert np.abs(m.simulate(data.pulse_g, data.brs_rad) -
                       greybox.simulate(p, data)).max() > 0.1, kind
+
+
+def test_the_output_is_the_state_after_the_ticks_input_and_old_files_keep_theirs(clean_r16):
+    """Since 0.2 a grey-box publishes at tick k the state after tick k's inputs: the old
+    output one tick later. A model file without ``output_timing`` is read as before."""
+    from observer_node.evaluation import identify
+    from observer_node.model.modelfile import ModelFile
+
+    data = make_dataset(clean_r16[:2], 1000.0)
+    new = identify("greybox", data)
+    assert new.output_timing == "after_input"
+    old_dict = new.to_dict()
+    old_dict.pop("output_timing")
+    p = {n: v["value"] for n, v in new.parameters.items()}
+    _, _, C, D = chest.discrete_thesis(p, 1000.0, after_input=False)
+    old_dict["state_space"].update(C=C.tolist(), D=D.tolist())
+    old = ModelFile.from_dict(old_dict)
+    assert old.output_timing == "state"
+    y_new = new.observer().simulate(data.pulse_g, data.brs_rad)
+    y_old = old.observer().simulate(data.pulse_g, data.brs_rad)
+    np.testing.assert_allclose(y_new[:, :-1], y_old[:, 1:], atol=1e-9)
+    # and the model with effects (stepped from its parameters) does the same
+    from observer_node.model.nonlinear import NonlinearGreyBox
+
+    effects = [{"kind": "chest_stiffening", "parameters": {"k3": 3e8}}]
+    after = NonlinearGreyBox(p, effects, 1000.0).simulate(data.pulse_g, data.brs_rad)
+    before = NonlinearGreyBox(p, effects, 1000.0, after_input=False).simulate(data.pulse_g,
+                                                                              data.brs_rad)
+    np.testing.assert_allclose(after[:, :-1], before[:, 1:], atol=1e-9)

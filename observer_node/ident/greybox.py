@@ -45,7 +45,7 @@ class GreyBoxFit:
 
 
 # Several starts because the cost has local minima (the two modes can swap roles).
-_STARTS = (
+STARTS = (
     {"k1": 2e5, "c1": 1e3, "k2": 5e5, "c2": 2e3, "m2": 2.0, "R": 0.03},
     {"k1": 5e4, "c1": 300.0, "k2": 2e5, "c2": 500.0, "m2": 0.5, "R": 0.02},
     {"k1": 8e5, "c1": 4e3, "k2": 1e6, "c2": 8e3, "m2": 8.0, "R": 0.05},
@@ -53,7 +53,7 @@ _STARTS = (
 
 
 def fit_greybox(data: Dataset, m1_kg: float = DEFAULT_M1_KG,
-                starts: tuple[dict[str, float], ...] = _STARTS,
+                starts: tuple[dict[str, float], ...] = STARTS,
                 progress: Progress | None = None, max_nfev: int = 400) -> GreyBoxFit:
     """Output-error (simulation) prediction-error fit, eq. 3.12-3.14, over all experiments.
 
@@ -117,7 +117,7 @@ def to_model_file(fit: GreyBoxFit, data: Dataset, name: str = "greybox",
         structure={"states": list(THESIS_STATES), "equations": "thesis eq. 3.1-3.8, CD = s - x",
                    "fixed": {"m1": "overall mass scale is not identifiable from CR and CD"}},
         fitted_on=_fitted_on(data),
-        fits=fit.fits,
+        fits=fit.fits, output_timing="after_input",
     )
 
 

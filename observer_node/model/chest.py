@@ -69,8 +69,39 @@ def discrete(p: dict[str, float], fs_hz: float) -> tuple[np.ndarray, ...]:
     return Ad, BGd[:, :2], BGd[:, 2:], C, Df
 
 
-def discrete_thesis(p: dict[str, float], fs_hz: float) -> tuple[np.ndarray, ...]:
-    """(Ad, Bd, C, D) of the thesis's linear 5-state model (eq. 3.7-3.8) at ``fs_hz``."""
+def discrete_thesis(p: dict[str, float], fs_hz: float,
+                    after_input: bool = True) -> tuple[np.ndarray, ...]:
+    """(Ad, Bd, C, D) of the thesis's linear 5-state model (eq. 3.7-3.8) at ``fs_hz``.
+
+    ``after_input``: the output of tick k is that of the state after tick k's input,
+    y[k] = C x[k+1] = C Ad x[k] + C Bd u[k] (see :func:`after_input_output`); else y = C x[k],
+    the form of model files written before version 0.2."""
     A, B, _, C, _ = continuous(p)
     Ad, Bd = zoh(A[:5, :5], B[:5], fs_hz)
+    if after_input:
+        return (Ad, Bd, *after_input_output(Ad, Bd, C[:, :5]))
     return Ad, Bd, C[:, :5], np.zeros((2, 2))
+
+
+def after_input_output(Ad: np.ndarray, Bd: np.ndarray, C: np.ndarray
+                       ) -> tuple[np.ndarray, np.ndarray]:
+    """(C Ad, C Bd): the output matrices that publish, at tick k, the state after tick k's
+    inputs instead of the state before them.
+
+    Why: with inputs held over the tick, C x[k] has not yet seen the pulse and BRS received at
+    tick k, and the inputs themselves (velocity summed to the sample, BRS rate over the last
+    tick) already stand for the tick just past. The state after the update is causal (it uses
+    nothing later than tick k) and, on the simulator, takes the true model's fit at 1000 Hz from
+    93.6 to 97.7 % (97.4 % at 10 kHz, where the choice does not matter)."""
+    return C @ Ad, C @ Bd
+
+
+def model_matrices(p: dict[str, float], fs_hz: float, effects: bool,
+                   after_input: bool = True) -> tuple[np.ndarray, ...]:
+    """(A, B, C, D) a model file stores for a grey-box: the 6-state chest when it has effects
+    (stepped from its parameters), else the thesis's 5-state model."""
+    if not effects:
+        return discrete_thesis(p, fs_hz, after_input)
+    Ad, Bd, _, C, _ = discrete(p, fs_hz)
+    C, D = after_input_output(Ad, Bd, C) if after_input else (C, np.zeros((2, 2)))
+    return Ad, Bd, C, D

@@ -38,7 +38,8 @@ EFFECTS: dict[str, tuple[str, dict[str, tuple[str, float]]]] = {
     "pelvis_coupling": ("extra load path spine-vehicle (pelvis, lap belt, seat): "
                         "F = kp (p - x) + cp (p' - x') on the spine",
                         {"kp": ("N/m", 1e4), "cp": ("N s/m", 300.0)}),
-    "input_delay": ("transport delay of the inputs: pulse by n_pulse ticks, BRS by n_brs ticks",
+    "input_delay": ("transport delay of the inputs: pulse by n_pulse ticks, BRS by n_brs ticks "
+                    "(fractions of a tick: linear between samples)",
                     {"n_pulse": ("ticks", 1.0), "n_brs": ("ticks", 1.0)}),
     "input_gain": ("BRS gain changing with the spindle angle: belt travel R (theta + g "
                    "theta^2 / 2)", {"g": ("1/rad", 0.02)}),
@@ -49,7 +50,7 @@ EFFECTS: dict[str, tuple[str, dict[str, tuple[str, float]]]] = {
 }
 # Parameters that must be positive to mean what their name says (a hardening stiffness, a
 # damping, a contact, a gap); the others (offsets, gain change, "other") may take any sign.
-POSITIVE = frozenset({"k3", "c3", "kb3", "kab", "gap", "cab", "kp", "cp"})
+POSITIVE = frozenset({"k3", "c3", "kb3", "kab", "gap", "cab", "kp", "cp", "n_pulse", "n_brs"})
 FORCE_KINDS = ("chest_stiffening", "chest_rate_damping", "belt_unloading", "belt_stiffening",
                "airbag_contact", "pelvis_coupling", "input_gain", "other")
 

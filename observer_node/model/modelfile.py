@@ -24,7 +24,7 @@ from __future__ import annotations
 
 import hashlib
 import json
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import Any
 
@@ -33,7 +33,7 @@ import numpy as np
 from .. import __version__
 from . import chest
 from .effects import EFFECTS
-from .nonlinear import NonlinearGreyBox
+from .nonlinear import NonlinearGreyBox, applies
 from .observer import LinearObserver
 from .schema import MAX_BYTES, validate
 
@@ -73,12 +73,42 @@ class ModelFile:
     fits: dict[str, Any] = field(default_factory=dict)
     software_version: str = __version__
     effects: list[dict[str, Any]] = field(default_factory=list)
+    # grey-box: "after_input" (the output of the state after the tick's inputs, this version)
+    # or "state" (C x[k], files without the key); ARX and N4SID: their matrices say it all
+    output_timing: str = "after_input"
 
-    def observer(self) -> LinearObserver | NonlinearGreyBox:
-        """The run-time observer: linear, or the grey-box with its added effects."""
+    def setups(self) -> list[str]:
+        """The setups some effect is scoped to (empty: every effect acts on every setup)."""
+        return sorted({s for e in self.effects for s in e.get("setups", ())})
+
+    def for_setup(self, setup: str, where: str = "model") -> ModelFile:
+        """The model a bench of ``setup`` runs: the effects that act there, unscoped. A model
+        without scoped effects is returned as it is; ModelFileError when the model is scoped
+        and ``setup`` is empty or not one it knows."""
+        scoped = self.setups()
+        if not scoped:
+            return self
+        known = sorted(set(scoped) | set(self.fitted_on.get("setups", [])))
+        if not setup:
+            raise ModelFileError(f"{where}: effects act on setups {', '.join(scoped)} only: say "
+                                 f"which setup this bench is (--setup, one of {', '.join(known)})")
+        if setup not in known:
+            raise ModelFileError(f"{where}: setup {setup!r} is not one the model knows "
+                                 f"({', '.join(known)})")
+        effects = [{k: v for k, v in e.items() if k != "setups"} for e in self.effects
+                   if applies(e, setup)]
+        return replace(self, name=f"{self.name}@{setup}", effects=effects,
+                       fitted_on={**self.fitted_on, "setup": setup})
+
+    def observer(self, setup: str | list[str] | None = None
+                 ) -> LinearObserver | NonlinearGreyBox:
+        """The run-time observer: linear, or the grey-box with its added effects (those of
+        ``setup`` when effects are scoped to setups, or each simulated test's setup, a list;
+        raises ScopeError without it)."""
         if self.effects:
             base = {n: float(v["value"]) for n, v in self.parameters.items()}
-            return NonlinearGreyBox(base, self.effects, self.tick_rate_hz)
+            return NonlinearGreyBox(base, self.effects, self.tick_rate_hz, setup,
+                                    after_input=self.output_timing == "after_input")
         return LinearObserver(self.A, self.B, self.C, self.D, self.input_transform,
                               self.tick_rate_hz)
 
@@ -93,6 +123,7 @@ class ModelFile:
             "parameters": self.parameters, "structure": self.structure,
             "fitted_on": self.fitted_on, "fits": self.fits,
             **({"effects": self.effects} if self.effects else {}),
+            **({"output_timing": self.output_timing} if self.kind == "greybox" else {}),
         }
 
     def dumps(self) -> str:
@@ -135,6 +166,7 @@ class ModelFile:
                 fitted_on=d.get("fitted_on", {}), fits=d.get("fits", {}),
                 software_version=d.get("software_version", "?"),
                 effects=list(d.get("effects", [])),
+                output_timing=d.get("output_timing", "state"),
             )
         except KeyError as e:
             raise ModelFileError(f"{where}: missing key {e.args[0]!r}") from None
@@ -154,8 +186,8 @@ class ModelFile:
         said = _greybox_disagrees(mf)
         if said is not None:
             raise ModelFileError(f"{where}: {said}")
-        try:
-            obs = mf.observer()
+        try:  # (a scoped model's matrices are the same for every setup)
+            obs = mf.observer(mf.setups()[0] if mf.setups() else None)
         except (ValueError, KeyError) as e:
             key = "effects" if mf.effects else "state_space"
             raise ModelFileError(f"{where}: key '{key}': {e}") from None
@@ -211,11 +243,8 @@ def _greybox_disagrees(mf: ModelFile) -> str | None:
         return None  # a grey-box given by its matrices alone: they are the model
     if not all(np.isfinite(v) and v >= 0.0 for v in p.values()) or p["m1"] <= 0 or p["m2"] <= 0:
         return "key 'parameters': grey-box values must be finite, masses positive, others >= 0"
-    if mf.effects:
-        Ad, Bd, _, C, _ = chest.discrete(p, mf.tick_rate_hz)
-        D = np.zeros((2, 2))
-    else:
-        Ad, Bd, C, D = chest.discrete_thesis(p, mf.tick_rate_hz)
+    Ad, Bd, C, D = chest.model_matrices(p, mf.tick_rate_hz, bool(mf.effects),
+                                        mf.output_timing == "after_input")
     for key, stored, expected in (("A", mf.A, Ad), ("B", mf.B, Bd), ("C", mf.C, C), ("D", mf.D, D)):
         if stored.shape != expected.shape:
             return (f"key 'state_space.{key}': shape {stored.shape} is not the grey-box's "

@@ -13,6 +13,14 @@ state moves with the belt-free matrices (k2 = c2 = 0), which is exact within the
 cancelling the belt force with a held force lags a stiff spring by a tick.
 ``simulate`` runs many tests at once (numpy over the test axis); ``step`` is the daemon's
 per-tick call.
+
+An input delay may be a fraction of a tick: the delayed input is interpolated linearly between
+the two samples around it (a sensor ECU's filter lag is rarely a whole tick).
+
+Scope: an effect with ``"setups": [names]`` acts only on tests of those setups (an airbag on
+the sled and full-vehicle tests, not on the hard-seat rig). The daemon builds the observer for
+its bench's one setup (the other setups' effects are left out); identification simulates many
+tests at once with each test's setup, and a scoped effect acts where its mask is true.
 """
 
 from __future__ import annotations
@@ -29,26 +37,56 @@ from .observer import transform_inputs
 G0 = STANDARD_GRAVITY
 
 
-class NonlinearGreyBox:
-    """Same interface as :class:`LinearObserver`: ``reset``, ``step``, ``simulate``."""
+class ScopeError(ValueError):
+    """A model with effects scoped to setups, run without saying which setup."""
 
-    def __init__(self, base: dict[str, float], effects: list[dict], fs_hz: float):
+
+def applies(effect: dict, setup: str) -> bool:
+    """Whether ``effect`` acts on a test of ``setup`` (unscoped effects act everywhere)."""
+    return "setups" not in effect or setup in effect["setups"]
+
+
+class NonlinearGreyBox:
+    """Same interface as :class:`LinearObserver`: ``reset``, ``step``, ``simulate``.
+
+    ``setups``: the bench's setup (a name: the observer of that setup, for ``step``), or each
+    test's setup (a list, for ``simulate`` over that many tests); needed when an effect is
+    scoped to setups."""
+
+    def __init__(self, base: dict[str, float], effects: list[dict], fs_hz: float,
+                 setups: str | list[str] | None = None, after_input: bool = True):
+        scoped = sorted({s for e in effects for s in e.get("setups", ())})
+        if scoped and setups is None:
+            raise ScopeError("the model has effects scoped to setups " + ", ".join(scoped)
+                             + ": say which setup this is")
+        if isinstance(setups, str):
+            effects = [e for e in effects if applies(e, setups)]
+            setups = None
         self.base = dict(base)
         self.effects = [dict(e) for e in effects]
         self.fs_hz = fs_hz
+        self.after_input = after_input
+        # per effect: None (acts on every test) or a bool mask over the tests of simulate()
+        self.test_setups = setups
+        self.masks = [None if setups is None or "setups" not in e else
+                      np.array([applies(e, s) for s in setups]) for e in self.effects]
         self.Ad, self.Bd, self.Gd, self.C, self.Df = discrete(self.base, fs_hz)
-        self.force_effects = [(e["kind"], e.get("parameters", {})) for e in self.effects
+        self.force_effects = [(e["kind"], e.get("parameters", {}), m)
+                              for e, m in zip(self.effects, self.masks, strict=True)
                               if e["kind"] in FORCE_KINDS and e["kind"] != "belt_unloading"]
         self.unloading = any(e["kind"] == "belt_unloading" for e in self.effects)
+        self.unloading_mask = next((m for e, m in zip(self.effects, self.masks, strict=True)
+                                    if e["kind"] == "belt_unloading"), None)
         self._k2, self._c2, self._R = self.base["k2"], self.base["c2"], self.base["R"]
         slack = discrete({**self.base, "k2": 0.0, "c2": 0.0}, fs_hz)
         self.Ad_slack, self.Bd_slack, self.Gd_slack = slack[:3]
-        delay: dict[str, float] = next((e["parameters"] for e in self.effects
-                                        if e["kind"] == "input_delay"), {})
-        self.n_pulse = round(delay.get("n_pulse", 0))
-        self.n_brs = round(delay.get("n_brs", 0))
-        off: dict[str, float] = next((e["parameters"] for e in self.effects
-                                      if e["kind"] == "sensor_offset"), {})
+        delay, self.delay_mask = self._params_of("input_delay")
+        # delays in ticks, possibly fractional: whole ticks i and the fraction f
+        self.n_pulse = float(delay.get("n_pulse", 0.0))
+        self.n_brs = float(delay.get("n_brs", 0.0))
+        self._ip, self._fp = _whole(self.n_pulse), self.n_pulse - _whole(self.n_pulse)
+        self._ib, self._fb = _whole(self.n_brs), self.n_brs - _whole(self.n_brs)
+        off, self.offset_mask = self._params_of("sensor_offset")
         self.offset = np.array([off.get("cr_g", 0.0), off.get("cd_mm", 0.0)])
         self._dt_g = G0 / fs_hz
         self.x = np.zeros(6)
@@ -58,9 +96,15 @@ class NonlinearGreyBox:
         self._y = np.zeros(2)
         self._u = np.zeros(2)
         self._f = np.zeros(2)
-        self._pulse_ring = np.zeros(self.n_pulse + 1)
-        self._brs_ring = np.zeros(self.n_brs + 1)
+        self._pulse_ring = np.zeros(self._ip + 2)
+        self._brs_ring = np.zeros(self._ib + 2)
         self.reset()
+
+    def _params_of(self, kind: str) -> tuple[dict[str, float], np.ndarray | None]:
+        for e, m in zip(self.effects, self.masks, strict=True):
+            if e["kind"] == kind:
+                return e["parameters"], m
+        return {}, None
 
     # ------------------------------------------------------------------ per tick
     def reset(self) -> None:
@@ -69,18 +113,29 @@ class NonlinearGreyBox:
         self._theta_prev: float | None = None
         self._pulse_ring[:] = 0.0
         self._brs_ring[:] = math.nan
+        self._brs_first = 0.0
         self._k = 0
+
+    @staticmethod
+    def _delayed(ring: np.ndarray, k: int, i: int, f: float, before: float) -> float:
+        """The input ``i + f`` ticks ago from a ring holding sample j at j % len(ring);
+        ``before``: its value before the first sample."""
+        n = len(ring)
+        a = ring[(k - i) % n] if k >= i else before
+        b = ring[(k - i - 1) % n] if k >= i + 1 else before
+        return float(a + f * (b - a))
 
     def step(self, pulse_g: float, brs_rad: float) -> np.ndarray:
         k = self._k
         self._k = k + 1
         if self.n_pulse:
-            self._pulse_ring[k % (self.n_pulse + 1)] = pulse_g
-            pulse_g = self._pulse_ring[(k + 1) % (self.n_pulse + 1)] if k >= self.n_pulse else 0.0
+            self._pulse_ring[k % len(self._pulse_ring)] = pulse_g
+            pulse_g = self._delayed(self._pulse_ring, k, self._ip, self._fp, 0.0)
         if self.n_brs:
-            self._brs_ring[k % (self.n_brs + 1)] = brs_rad
-            old = self._brs_ring[(k + 1) % (self.n_brs + 1)]
-            brs_rad = old if k >= self.n_brs else self._brs_ring[0]
+            if k == 0:
+                self._brs_first = brs_rad
+            self._brs_ring[k % len(self._brs_ring)] = brs_rad
+            brs_rad = self._delayed(self._brs_ring, k, self._ib, self._fb, self._brs_first)
         self._velocity += pulse_g * self._dt_g
         prev = brs_rad if self._theta_prev is None else self._theta_prev
         self._theta_prev = brs_rad
@@ -88,19 +143,16 @@ class NonlinearGreyBox:
         u[0] = self._velocity
         u[1] = (brs_rad - prev) * self.fs_hz
         f = self._f
-        f[0] = f[1] = 0.0
         z = self.x
-        for kind, p in self.force_effects:
-            fs, fn = effect_forces(kind, p, z, u[0], u[1], brs_rad, self.base)
-            f[0] += fs
-            f[1] += fn
+        self._forces(z, u[0], u[1], brs_rad, f)
         # Preallocated buffers only: no array is created per tick (the effect forces are
         # floats).
         y = self._y
-        np.dot(self.C, z, out=y)
-        np.dot(self.Df, f, out=self._y2)
-        y += self._y2
-        y += self.offset
+        if not self.after_input:  # files before 0.2: the output of the state before the tick
+            np.dot(self.C, z, out=y)
+            np.dot(self.Df, f, out=self._y2)
+            y += self._y2
+            y += self.offset
         Ad, Bd, Gd = self.Ad, self.Bd, self.Gd
         if self.unloading and self.belt_slack(z, u[0], u[1]):
             Ad, Bd, Gd = self.Ad_slack, self.Bd_slack, self.Gd_slack
@@ -111,7 +163,20 @@ class NonlinearGreyBox:
         np.dot(Gd, f, out=tmp)
         xn += tmp
         self.x, self._xn = xn, z
+        if self.after_input:  # the state after this tick's inputs, its forces evaluated there
+            self._forces(xn, u[0], u[1], brs_rad, f)
+            np.dot(self.C, xn, out=y)
+            np.dot(self.Df, f, out=self._y2)
+            y += self._y2
+            y += self.offset
         return y
+
+    def _forces(self, z: np.ndarray, u1: float, u2: float, theta: float, f: np.ndarray) -> None:
+        f[0] = f[1] = 0.0
+        for kind, p, _ in self.force_effects:
+            fs, fn = effect_forces(kind, p, z, u1, u2, theta, self.base)
+            f[0] += fs
+            f[1] += fn
 
     def belt_slack(self, z: np.ndarray, u1: Num, u2: Num) -> Num:
         """True where the belt would push (force k2 e + c2 e' < 0): float or array."""
@@ -123,10 +188,11 @@ class NonlinearGreyBox:
         squeeze = pulse_g.ndim == 1
         P = np.atleast_2d(pulse_g).astype(float)
         T = np.atleast_2d(brs_rad).astype(float)
+        self._check_tests(P.shape[0])
         if self.n_pulse:
-            P = np.concatenate([np.zeros((P.shape[0], self.n_pulse)), P[:, :-self.n_pulse]], 1)
+            P = _shift(P, self.n_pulse, np.zeros((P.shape[0], 1)), self.delay_mask)
         if self.n_brs:
-            T = np.concatenate([np.repeat(T[:, :1], self.n_brs, 1), T[:, :-self.n_brs]], 1)
+            T = _shift(T, self.n_brs, T[:, :1], self.delay_mask)
         u = transform_inputs("velocity_brs_rate", P, T, self.fs_hz)
         y = self.run_transformed(u[..., 0], u[..., 1], T)
         return y[0] if squeeze else y
@@ -142,20 +208,57 @@ class NonlinearGreyBox:
             if states is not None:
                 states[:, :, k] = z
             a, b, th = u1[:, k], u2[:, k], theta[:, k]
-            fs = np.zeros(ntest)
-            fn = np.zeros(ntest)
-            for kind, p in self.force_effects:
-                s1, s2 = effect_forces(kind, p, z, a, b, th, self.base)
-                fs = fs + s1
-                fn = fn + s2
-            f = np.vstack([fs, fn])
+            f = self._forces_all(z, a, b, th)
             ab = np.vstack([a, b])
-            y[:, k] = (C @ z + Df @ f).T
+            if not self.after_input:
+                y[:, k] = (C @ z + Df @ f).T
             zn = Ad @ z + Bd @ ab + Gd @ f
             if self.unloading:
                 slack = self.belt_slack(z, a, b)
+                if self.unloading_mask is not None:
+                    slack = slack & self.unloading_mask
                 if slack.any():
                     z_slack = self.Ad_slack @ z + self.Bd_slack @ ab + self.Gd_slack @ f
                     zn = np.where(slack, z_slack, zn)
             z = zn
+            if self.after_input:
+                y[:, k] = (C @ z + Df @ self._forces_all(z, a, b, th)).T
+        if self.offset_mask is not None:
+            return y + self.offset_mask[:, None, None] * self.offset
         return y + self.offset
+
+    def _forces_all(self, z: np.ndarray, a: np.ndarray, b: np.ndarray,
+                    th: np.ndarray) -> np.ndarray:
+        """Forces (2, tests) of the effects at states z (6, tests), scoped by their masks."""
+        fs = np.zeros(a.shape[0])
+        fn = np.zeros(a.shape[0])
+        for kind, p, mask in self.force_effects:
+            s1, s2 = effect_forces(kind, p, z, a, b, th, self.base)
+            if mask is not None:
+                s1, s2 = s1 * mask, s2 * mask
+            fs = fs + s1
+            fn = fn + s2
+        return np.vstack([fs, fn])
+
+    def _check_tests(self, ntest: int) -> None:
+        if self.test_setups is not None and len(self.test_setups) != ntest:
+            raise ScopeError(f"{ntest} tests simulated, setups given for "
+                             f"{len(self.test_setups)}")
+
+
+def _whole(n_ticks: float) -> int:
+    """Whole ticks of a delay; a negative delay (down to -1 tick) extrapolates linearly from
+    the last two samples: i = 0, f < 0."""
+    return max(math.floor(n_ticks), 0)
+
+
+def _shift(X: np.ndarray, n_ticks: float, before: np.ndarray,
+           mask: np.ndarray | None) -> np.ndarray:
+    """Rows of ``X`` delayed by ``n_ticks`` (fractional: linear between samples), ``before``
+    (a column) filling the start; only the rows where ``mask`` is true when it is given."""
+    i = _whole(n_ticks)
+    f = n_ticks - i
+    n = X.shape[1]
+    padded = np.concatenate([np.repeat(before, i + 1, axis=1), X], axis=1)
+    out = (1 - f) * padded[:, 1:1 + n] + f * padded[:, :n]
+    return out if mask is None else np.where(mask[:, None], out, X)

@@ -69,6 +69,7 @@ SCHEMA: dict[str, Any] = {
         "name": {"type": "string", "maxLength": 200},
         "tick_rate_hz": {"type": "number", "minimum": 100, "maximum": 10_000},
         "input_transform": {"enum": ["velocity_brs_rate", "raw"]},
+        "output_timing": {"enum": ["after_input", "state"]},
         "state_space": {
             "type": "object", "required": ["A", "B", "C", "D"],
             "properties": {"A": _matrix(None, None), "B": _matrix(None, 2),
@@ -77,7 +78,11 @@ SCHEMA: dict[str, Any] = {
         "effects": {
             "type": "array", "maxItems": 32,
             "items": {"type": "object", "required": ["kind"],
-                      "properties": {"kind": {"enum": sorted(EFFECTS)}},
+                      "properties": {
+                          "kind": {"enum": sorted(EFFECTS)},
+                          # scope: the setups the effect acts on (absent: all)
+                          "setups": {"type": "array", "minItems": 1, "uniqueItems": True,
+                                     "items": {"type": "string", "minLength": 1}}},
                       "allOf": [_effect(k) for k in EFFECTS]}},
     },
     # A grey-box with effects is stepped from its physical parameters, not its matrices.
