@@ -79,6 +79,10 @@ class PlantConfig:
     counts_per_rev: int = 96
     load_limit_n: float = 4000.0
     pretension_rad: float = 2.0
+    # transport delays of one input only (a sensor ECU's filter, a slow BRS decoder), ms;
+    # the effect ``input_delay`` delays both by 2 ms times its scale
+    pulse_delay_ms: float = 0.0
+    brs_delay_ms: float = 0.0
 
     def __post_init__(self) -> None:
         unknown = set(self.effects) - set(EFFECTS)
@@ -224,12 +228,14 @@ def simulate_test(setup: str, name: str, rng: np.random.Generator,
 
     pulse_g = a / STANDARD_GRAVITY
     brs = counts
-    if eff.get("input_delay"):
-        # The physics above ran on delayed inputs: record them as they were before the delay.
-        lag = round(0.002 * eff["input_delay"] * FS_HZ)
-        if lag:
-            pulse_g = np.concatenate([pulse_g[lag:], np.full(lag, pulse_g[-1])])
-            brs = np.concatenate([brs[lag:], np.full(lag, brs[-1])])
+    both_ms = 2.0 * eff.get("input_delay", 0.0)
+    # The physics above ran on delayed inputs: record them as they were before the delay.
+    lag = round((both_ms + cfg.pulse_delay_ms) * 1e-3 * FS_HZ)
+    if lag:
+        pulse_g = np.concatenate([pulse_g[lag:], np.full(lag, pulse_g[-1])])
+    lag = round((both_ms + cfg.brs_delay_ms) * 1e-3 * FS_HZ)
+    if lag:
+        brs = np.concatenate([brs[lag:], np.full(lag, brs[-1])])
     if eff.get("sensor_offset"):
         cr = cr + 1.0 * eff["sensor_offset"]
         cd = cd + 1.5 * eff["sensor_offset"]
@@ -240,8 +246,37 @@ def simulate_test(setup: str, name: str, rng: np.random.Generator,
     return CrashTest(
         name=name, fs_hz=FS_HZ, t0_s=T0_S, pulse_g=pulse_g, brs=brs, cr_g=cr, cd_mm=cd,
         setup=setup, counts_per_rev=cfg.counts_per_rev, source=f"simulator:{name}",
-        meta={"Title": f"SIMULATED {setup} TEST", "effects": ",".join(sorted(eff)) or "none"},
+        meta=dict(METADATA[setup]),
     )
+
+
+# What a lab's .mme says of each setup (the loop groups tests by it, and rules the airbag
+# out where it says hard seat); the effects simulated are not written anywhere.
+METADATA = {
+    "R16": {"Title": "ECE R16 SLED RIG, HARD SEAT, 3-POINT BELT", "Type of the test": "SLED",
+            "Name of test object 1": "HYBRID III 50TH MALE, DRIVER"},
+    "SLED": {"Title": "SLED TEST WITH INTERIOR AND DRIVER AIRBAG", "Type of the test": "SLED",
+             "Name of test object 1": "HYBRID III 50TH MALE, DRIVER"},
+    "FULL": {"Title": "FULL FRONTAL RIGID BARRIER", "Type of the test": "VEHICLE INTO BARRIER",
+             "Name of test object 1": "HYBRID III 50TH MALE, DRIVER"},
+}
+
+
+def simulate_mixed(counts: dict[str, int], seed: int, configs: dict[str, PlantConfig],
+                   prefix: str = "T", meta: dict[str, dict[str, str]] | None = None
+                   ) -> list[CrashTest]:
+    """A mixed campaign: ``counts[setup]`` tests of each setup, each setup with its own plant
+    (``configs[setup]``: an effect on some setups only), named ``<prefix>01``, ... in order,
+    without the setup in the name; ``meta`` replaces a setup's metadata."""
+    rng = np.random.default_rng(seed)
+    out: list[CrashTest] = []
+    for setup, n in counts.items():
+        for _ in range(n):
+            t = simulate_test(setup, f"{prefix}{len(out) + 1:02d}", rng, configs[setup])
+            if meta and setup in meta:
+                t.meta = dict(meta[setup])
+            out.append(t)
+    return out
 
 
 def simulate_campaign(setup: str, count: int, seed: int = 1,

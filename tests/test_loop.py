@@ -13,7 +13,7 @@ import pytest
 from observer_node.daemon.core import ObserverCore
 from observer_node.loop.closed_loop import run_loop
 from observer_node.model import ModelFile
-from observer_node.simulator import PlantConfig, simulate_campaign
+from observer_node.simulator import PlantConfig, simulate_campaign, simulate_mixed
 
 # Effects the loop must find at their default magnitude (a 2 ms input delay is too weak to
 # matter at 1 kHz and is not in the pool; see README).
@@ -110,3 +110,38 @@ def test_bench_main_job_on_the_virtual_bus(r16_loop, tmp_path, capsys):
     assert "reusing the loop's result" in out  # made by the r16_loop fixture from these tests
     plain, model = loop_models(r16_loop[0], est, ("R16_002",))
     assert model.effects and not plain.effects
+
+
+def _mixed(configs: dict, out: Path, seed: int = 61) -> dict:
+    counts = {"R16": 2, "SLED": 2, "FULL": 2}  # named T01.., the setup only in the .mme
+    est = simulate_mixed(counts, seed, configs, "E")
+    val = simulate_mixed(counts, seed + 1, configs, "V")
+    return run_loop(est, val, out, verbose=False, plots=False, ratings=False)
+
+
+def test_an_airbag_on_some_setups_is_found_with_its_scope(tmp_path):
+    bag = PlantConfig(effects={"airbag_contact": 1.0})
+    r = _mixed({"R16": PlantConfig(), "SLED": bag, "FULL": bag}, tmp_path)
+    assert [s["name"] for s in r["setups"]] == ["ECE-R16", "SLED-TEST", "FULL-FRONTAL"]
+    bags = [e for e in r["effects"] if e["kind"] == "airbag_contact"]
+    assert len(bags) == 1, r["history"]
+    e = bags[0]
+    assert sorted(e["setups"]) == ["FULL-FRONTAL", "SLED-TEST"]
+    assert e["applies_to"] == ["E03", "E04", "E05", "E06", "V03", "V04", "V05", "V06"]
+    assert set(e["std_err"]) == {"kab", "gap", "cab"}
+    assert all(0 < e["std_err"][k] < abs(e["parameters"][k]) for k in e["std_err"])
+    assert "runner_up" in e["evidence"] and e["evidence"]["margin_points"] > 0
+    mf = ModelFile.load(tmp_path / "model.json")
+    assert mf.setups() == ["FULL-FRONTAL", "SLED-TEST"]
+    assert "airbag_contact" not in [x["kind"] for x in mf.for_setup("ECE-R16").effects]
+    md = (tmp_path / "report.md").read_text()
+    assert "why this and not that" in md and "acts on setups" in md
+
+
+def test_a_late_brs_is_named_a_delay_of_a_fraction_of_a_tick(tmp_path):
+    late = PlantConfig(brs_delay_ms=3.0)
+    r = _mixed(dict.fromkeys(("R16", "SLED", "FULL"), late), tmp_path)
+    assert [e["kind"] for e in r["effects"]][:1] == ["input_delay"], r["history"]
+    p = r["effects"][0]["parameters"]
+    assert 2.0 <= p["n_brs"] <= 3.5 and p["n_pulse"] < 0.5, p
+    assert r["final"]["fit"]["total"] > r["baseline"]["fit"]["total"] + 5

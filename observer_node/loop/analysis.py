@@ -13,6 +13,7 @@
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass
 
 import numpy as np
@@ -97,8 +98,12 @@ def propagate(model: NonlinearGreyBox, f_spine: np.ndarray, f_sternum: np.ndarra
     y = np.empty((ntest, n, 2))
     for k in range(n):
         f = np.vstack([f_spine[:, k], f_sternum[:, k]])
-        y[:, k] = (model.C @ z + model.Df @ f).T
+        if not model.after_input:
+            y[:, k] = (model.C @ z + model.Df @ f).T
         z = model.Ad @ z + model.Gd @ f
+        if model.after_input:  # the output of the state after the tick (see the model)
+            j = min(k + 1, n - 1)
+            y[:, k] = (model.C @ z + model.Df @ np.vstack([f_spine[:, j], f_sternum[:, j]])).T
     return y
 
 
@@ -122,6 +127,23 @@ class Candidate:
     explained: float  # share of the residual's weighted variance explained
     parameters: dict  # initial parameter values from the regression
     signature: np.ndarray | None = None
+    setups: list[str] | None = None  # scope: the setups it acts on (None: every test)
+    # share explained with each scope tried ("all" or setups joined by "+")
+    scope_shares: dict[str, float] | None = None
+
+    def effect(self) -> dict:
+        """The effect as the model takes it."""
+        return {"kind": self.kind, "parameters": self.parameters,
+                **({"setups": self.setups} if self.setups is not None else {})}
+
+
+def scope_label(setups: list[str] | None) -> str:
+    return "all" if setups is None else "+".join(setups)
+
+
+# Input delays searched: 0..10 ms, every half millisecond, then refined to 0.05 ms.
+DELAY_MAX_S = 0.010
+DELAY_STEP_S = 0.0005
 
 
 def _regress(r: np.ndarray, sigs: list[np.ndarray], w: np.ndarray,
@@ -142,13 +164,19 @@ def base_sensitivities(model: NonlinearGreyBox, data: Dataset, y_hat: np.ndarray
     out = []
     for name in FREE:
         b = {**model.base, name: model.base[name] * 1.01}
-        m = NonlinearGreyBox(b, model.effects, model.fs_hz)
+        m = NonlinearGreyBox(b, model.effects, model.fs_hz, model.test_setups,
+                             after_input=model.after_input)
         out.append(m.simulate(data.pulse_g, data.brs_rad) - y_hat)
     return out
 
 
-def candidates(model: NonlinearGreyBox, data: Dataset, present: set[str]) -> list[Candidate]:
+def candidates(model: NonlinearGreyBox, data: Dataset, present: set[str],
+               scopes: dict[str, list[list[str] | None]] | None = None) -> list[Candidate]:
     """Every effect not yet in the model, scored on the residual, best first.
+
+    ``scopes``: per effect, the scopes to try (None: every test; a list of setups); each
+    candidate keeps the scope that explains most (default: every test only). An effect with
+    no scope to try (impossible everywhere) is not a candidate.
 
     The refit re-estimates the base parameters with the effect, so each signature is
     regressed *together with* the base parameters' sensitivities: an effect the fitted
@@ -173,58 +201,105 @@ def candidates(model: NonlinearGreyBox, data: Dataset, present: set[str]) -> lis
         return propagate(model, np.asarray(fs, float), np.asarray(fn, float))
 
     scorer = _Scorer(model, data, r, w, sens, y_hat)
-    for kind, (_, params) in EFFECTS.items():
+    for kind in EFFECTS:
         if kind in present or kind == "other":
             continue
-        unit = {n: mag for n, (_, mag) in params.items()}
-        if kind == "sensor_offset":
-            n = data.y.shape[1]
-            s_cr = np.zeros((data.n_tests, n, 2))
-            s_cr[:, :, 0] = 1.0
-            s_cd = np.zeros((data.n_tests, n, 2))
-            s_cd[:, :, 1] = 1.0
-            _, ex = regress([s_cr, s_cd])
-            # A sensor offset is there at rest too: the first 2 ms after contact, before the
-            # chest moves, must show it (> 1 % of the output's range); if they do not, what
-            # looks like an offset in the window is something else.
-            rest = data.y[:, :max(2, round(0.002 * data.fs_hz))].mean(axis=(0, 1))
-            span = np.ptp(data.y[:, data.win], axis=1).mean(axis=0)
-            if np.any(np.abs(rest) > 0.01 * span):
-                out.append(Candidate(kind, ex, {"cr_g": float(rest[0]),
-                                                "cd_mm": float(rest[1])}))
-        elif kind == "input_delay":
-            best = None
-            for which in ("n_pulse", "n_brs", "both"):
-                for lag in range(1, 6):
-                    p = ({"n_pulse": lag, "n_brs": lag} if which == "both" else
-                         {"n_pulse": 0, "n_brs": 0, which: lag})
-                    ex, sig = scorer.share(kind, p)
-                    if best is None or ex > best.explained:
-                        best = Candidate(kind, ex, p, sig)
-            if best:
-                out.append(best)
-        elif kind == "belt_unloading":
-            ex, sig = scorer.share(kind, {})
-            out.append(Candidate(kind, ex, {}, sig))
-        else:
-            # Start from the linearised regression (its size, and for the airbag its gap),
-            # then let a short non-linear fit of the effect's own parameters finish.
-            if kind == "airbag_contact":
-                start, best_ex = {"kab": unit["kab"], "gap": 0.1}, -np.inf
-                for gap in (0.04, 0.07, 0.1, 0.13, 0.16, 0.2, 0.25):
-                    coef, ex = regress([force_sig(kind, {**unit, "gap": gap})])
-                    if ex > best_ex:
-                        best_ex, start = ex, {"kab": abs(coef[0]) * unit["kab"], "gap": gap,
-                                              "cab": abs(coef[0]) * unit["cab"]}
-            else:
-                coef, _ = regress([force_sig(kind, unit)])
-                c = coef[0] if kind == "input_gain" else max(abs(coef[0]), 0.1)
-                start = {n: float(c * mag) for n, mag in unit.items()}
-            ex, p, sig = scorer.fit(kind, start)
-            out.append(Candidate(kind, ex, p, sig))
+        tried: list[Candidate] = []
+        for scope in (scopes or {}).get(kind, [None]):
+            mask = (np.ones(data.n_tests, bool) if scope is None else
+                    np.array([s in scope for s in data.setups]))
+            if not mask.any():
+                continue
+            c = _candidate(kind, scope, mask, scorer, data, regress, force_sig)
+            if c is not None:
+                tried.append(c)
+        if tried:
+            # the widest scope among those within 0.2 % of the best share: a wider scope is
+            # the simpler claim (cross-validation still compares it with the rest)
+            top = max(c.explained for c in tried)
+            best = max((c for c in tried if c.explained >= top - 0.002),
+                       key=lambda c: (len(c.setups) if c.setups is not None else 1e9,
+                                      c.explained))
+            best.scope_shares = {scope_label(c.setups): round(c.explained, 4) for c in tried}
+            out.append(best)
     if "other" not in present:
         out.append(_sparse_other(model, data, r, w, tr))
     return sorted(out, key=lambda c: -c.explained)
+
+
+def _candidate(kind: str, scope: list[str] | None, mask: np.ndarray, scorer: _Scorer,
+               data: Dataset, regress: Callable[[list[np.ndarray]], tuple[np.ndarray, float]],
+               force_sig: Callable[[str, dict], np.ndarray]) -> Candidate | None:
+    """One effect on one scope: its initial parameters and the share it explains."""
+    unit = {n: mag for n, (_, mag) in EFFECTS[kind][1].items()}
+    m3 = mask[:, None, None]
+    if kind == "sensor_offset":
+        n = data.y.shape[1]
+        s_cr = np.zeros((data.n_tests, n, 2))
+        s_cr[:, :, 0] = 1.0
+        s_cd = np.zeros((data.n_tests, n, 2))
+        s_cd[:, :, 1] = 1.0
+        _, ex = regress([s_cr * m3, s_cd * m3])
+        # A sensor offset is there at rest too: the first 2 ms after contact, before the
+        # chest moves, must show it (> 1 % of the output's range); if they do not, what
+        # looks like an offset in the window is something else.
+        rest = data.y[mask, :max(2, round(0.002 * data.fs_hz))].mean(axis=(0, 1))
+        span = np.ptp(data.y[mask][:, data.win], axis=1).mean(axis=0)
+        if not np.any(np.abs(rest) > 0.01 * span):
+            return None
+        return Candidate(kind, ex, {"cr_g": float(rest[0]), "cd_mm": float(rest[1])},
+                         setups=scope)
+    if kind == "input_delay":
+        ex, p, sig = _search_delay(scorer, data.fs_hz, scope)
+        return Candidate(kind, ex, p, sig, setups=scope)
+    if kind == "belt_unloading":
+        ex, sig = scorer.share(kind, {}, scope)
+        return Candidate(kind, ex, {}, sig, setups=scope)
+    # Start from the linearised regression (its size, and for the airbag its gap), then let a
+    # short non-linear fit of the effect's own parameters finish.
+    if kind == "airbag_contact":
+        start, best_ex = {"kab": unit["kab"], "gap": 0.1}, -np.inf
+        for gap in (0.04, 0.07, 0.1, 0.13, 0.16, 0.2, 0.25):
+            coef, ex = regress([force_sig(kind, {**unit, "gap": gap}) * m3])
+            if ex > best_ex:
+                best_ex, start = ex, {"kab": abs(coef[0]) * unit["kab"], "gap": gap,
+                                      "cab": abs(coef[0]) * unit["cab"]}
+    else:
+        coef, _ = regress([force_sig(kind, unit) * m3])
+        c = coef[0] if kind == "input_gain" else max(abs(coef[0]), 0.1)
+        start = {n: float(c * mag) for n, mag in unit.items()}
+    ex, p, sig = scorer.fit(kind, start, scope)
+    return Candidate(kind, ex, p, sig, setups=scope)
+
+
+def _search_delay(scorer: _Scorer, fs_hz: float, scope: list[str] | None
+                  ) -> tuple[float, dict, np.ndarray]:
+    """The input delays (fractional ticks) that explain most: each input alone on a grid
+    over 0..10 ms, then the other input given the better one, each refined around its best
+    by golden-section search."""
+    grid = np.arange(0.0, DELAY_MAX_S + 1e-12, DELAY_STEP_S) * fs_hz
+    h = DELAY_STEP_S * fs_hz
+
+    def share(p: dict) -> float:
+        return scorer.share("input_delay", p, scope)[0]
+
+    def best_along(which: str, fixed: dict) -> tuple[float, dict]:
+        vals = [share({**fixed, which: n}) for n in grid]
+        n0 = float(grid[int(np.argmax(vals))])
+        res = optimize.minimize_scalar(lambda n: -share({**fixed, which: n}),
+                                       bounds=(max(0.0, n0 - h), min(grid[-1], n0 + h)),
+                                       method="bounded", options={"xatol": 0.05e-3 * fs_hz})
+        n = float(res.x) if -res.fun > max(vals) else n0
+        return max(-float(res.fun), max(vals)), {**fixed, which: round(n, 3)}
+
+    zero = {"n_pulse": 0.0, "n_brs": 0.0}
+    ex_p, p_p = best_along("n_pulse", zero)
+    ex_b, p_b = best_along("n_brs", zero)
+    first, other, ex1 = (p_p, "n_brs", ex_p) if ex_p >= ex_b else (p_b, "n_pulse", ex_b)
+    ex2, both = best_along(other, first)
+    p = both if ex2 > ex1 + 0.002 else first
+    ex, sig = scorer.share("input_delay", p, scope)
+    return ex, p, sig
 
 
 class _Scorer:
@@ -239,21 +314,25 @@ class _Scorer:
         S = np.stack([(x[:, data.win] * w[:, None, :]).ravel() for x in sens], axis=1)
         self.Q = np.linalg.qr(S)[0]
 
-    def _rest(self, kind: str, p: dict) -> tuple[np.ndarray, np.ndarray]:
+    def _rest(self, kind: str, p: dict, scope: list[str] | None = None
+              ) -> tuple[np.ndarray, np.ndarray]:
         m = self.model
-        trial = NonlinearGreyBox(m.base, [*m.effects, {"kind": kind, "parameters": p}],
-                                 m.fs_hz)
+        effect = {"kind": kind, "parameters": p, **({"setups": scope} if scope else {})}
+        trial = NonlinearGreyBox(m.base, [*m.effects, effect], m.fs_hz, m.test_setups,
+                                 after_input=m.after_input)
         with np.errstate(all="ignore"):
             sig = trial.simulate(self.data.pulse_g, self.data.brs_rad) - self.y_hat
         v = self.rw - (sig[:, self.data.win] * self.w[:, None, :]).ravel()
         v = v - self.Q @ (self.Q.T @ v)
         return np.where(np.isfinite(v), v, 1e3), sig
 
-    def share(self, kind: str, p: dict) -> tuple[float, np.ndarray]:
-        v, sig = self._rest(kind, p)
+    def share(self, kind: str, p: dict, scope: list[str] | None = None
+              ) -> tuple[float, np.ndarray]:
+        v, sig = self._rest(kind, p, scope)
         return float(1 - v @ v / (self.rw @ self.rw)), sig
 
-    def fit(self, kind: str, start: dict, max_nfev: int = 12) -> tuple[float, dict, np.ndarray]:
+    def fit(self, kind: str, start: dict, scope: list[str] | None = None,
+            max_nfev: int = 12) -> tuple[float, dict, np.ndarray]:
         """Least squares over the effect's parameters (positive ones as logarithms)."""
         names = list(start)
         pos = [n in POSITIVE for n in names]
@@ -265,10 +344,10 @@ class _Scorer:
 
         th0 = np.array([0.0 if ps else np.sign(start[n]) or 1.0
                         for n, ps in zip(names, pos, strict=True)])
-        res = optimize.least_squares(lambda th: self._rest(kind, unpack(th))[0], th0,
+        res = optimize.least_squares(lambda th: self._rest(kind, unpack(th), scope)[0], th0,
                                      max_nfev=max_nfev, diff_step=1e-3)
         p = unpack(res.x)
-        ex, sig = self.share(kind, p)
+        ex, sig = self.share(kind, p, scope)
         return ex, p, sig
 
 

@@ -20,6 +20,7 @@
 
 from __future__ import annotations
 
+import itertools
 import json
 import time
 from pathlib import Path
@@ -30,6 +31,7 @@ import numpy as np
 from .. import __version__, plots
 from ..data import CrashTest
 from ..data.crashtest import THESIS_WINDOW_S
+from ..data.setups import Setup, allowed_setups, assign_setups
 from ..ident import greybox
 from ..ident.dataset import Dataset, make_dataset
 from ..ident.progress import Progress
@@ -39,35 +41,67 @@ from ..model.chest import (
     STATES,
     THESIS_STATES,
     discrete,
-    discrete_thesis,
+    model_matrices,
 )
-from ..model.effects import FORCE_KINDS, describe
+from ..model.effects import EFFECTS, FORCE_KINDS, POSITIVE, describe
 from ..model.modelfile import ModelFile
-from ..model.nonlinear import NonlinearGreyBox
 from ..scores import mean_abs_errors, scores
-from .analysis import Candidate, candidates, correlation_tests, explained_share, force_signature
-from .refit import cross_validate, refit, score
+from .analysis import (
+    DELAY_MAX_S,
+    Candidate,
+    candidates,
+    correlation_tests,
+    explained_share,
+    force_signature,
+    scope_label,
+)
+from .refit import cross_validate, model, refit, score
 
 
 def _fit3(t: dict) -> dict:
     return {k: round(float(v), 2) for k, v in t["fit"].items()}
 
 
+def scope_options(kind: str, setups: list[Setup], est_setups: list[str],
+                  anywhere: bool = False) -> list[list[str] | None]:
+    """The scopes effect ``kind`` is tried on: every test (None) when every setup could have
+    it, and the groups of setups that could (all of them for up to four setups, else each
+    alone); never a setup where it is physically impossible."""
+    possible = set(allowed_setups(kind, setups, anywhere))
+    allowed = [s for s in est_setups if s in possible]
+    out: list[list[str] | None] = [None] if allowed == est_setups else []
+    if len(est_setups) > 1:
+        subsets = ([list(c) for n in range(1, len(allowed) + 1)
+                    for c in itertools.combinations(allowed, n)] if len(allowed) <= 4
+                   else [[s] for s in allowed] + [allowed])
+        out += [c for c in subsets if c != est_setups]
+    elif allowed and not out:
+        out = [allowed]
+    return out
+
+
 def run_loop(est_tests: list[CrashTest], val_tests: list[CrashTest], out: Path,
              rate_hz: float = 1000.0, window_s: tuple[float, float] = THESIS_WINDOW_S,
              margin: float = 1.0, top_k: int = 5, max_effects: int = 4,
-             verbose: bool = True, plots: bool = True, ratings: bool = True) -> dict:
+             verbose: bool = True, plots: bool = True, ratings: bool = True,
+             groups: list[tuple[str, str]] | None = None, anywhere: bool = False) -> dict:
     """Run the loop and write report.json, report.md, model.json and (``plots``) the plots of
     the validation tests before and after, into ``out``; returns the report. ``ratings``:
-    ISO/TS 18571 ratings beside the fits (when the optional package is installed)."""
+    ISO/TS 18571 ratings beside the fits (when the optional package is installed).
+    ``groups``: (setup name, test-name pattern) overrides of the setups the metadata gives;
+    ``anywhere``: try effects on setups whose metadata rules them out, too."""
     t_start = time.monotonic()
     prog = Progress("loop", enabled=verbose)
     out.mkdir(parents=True, exist_ok=True)
+    setups = assign_setups([*est_tests, *val_tests], groups)
     est = make_dataset(est_tests, rate_hz, window_s)
     val = make_dataset(val_tests, rate_hz, window_s)
+    est_setups = list(dict.fromkeys(est.setups))
+    scopes = {k: scope_options(k, setups, est_setups, anywhere) for k in EFFECTS}
     prog.update("identifying the thesis grey-box model")
     gb = greybox.fit_greybox(est)
     base = dict(gb.params)
+    base_se: dict[str, float] = dict(gb.std_err)
     effects: list[dict] = []
     baseline_val = score(base, effects, val)
     cv_now = cross_validate(base, effects, est)
@@ -76,93 +110,106 @@ def run_loop(est_tests: list[CrashTest], val_tests: list[CrashTest], out: Path,
     first_ranking: list[dict] = []
     resid0 = _residual(base, effects, est)
     tests0 = correlation_tests(resid0, est)
-    while len(accepted) < max_effects:
-        model = NonlinearGreyBox(base, effects, rate_hz)
-        prog.update(f"residual analysis with {len(effects)} effect(s)")
-        ranked = candidates(model, est, {e["kind"] for e in effects})
-        ranking = [{"kind": c.kind, "explained_share": round(c.explained, 4),
-                    "initial_parameters": c.parameters} for c in ranked]
-        if not first_ranking:
-            first_ranking = ranking
-        tried = []
-        # Named effects first; the generic formula only when none of them helps.
-        named = [c for c in ranked if c.kind != "other" and c.explained > 0.01][:top_k]
-        # A parameter-free switching force (the one-sided belt) is predicted badly by its
-        # signature linearised around a trajectory that never switches: always try it.
-        named += [c for c in ranked if not c.parameters and c.kind in FORCE_KINDS
-                  and c.kind != "other" and c not in named]
-        other = [c for c in ranked if c.kind == "other" and c.explained > 0.01]
-        for group in (named, other):
-            for c in group:
-                prog.update(f"cross-validating {c.kind} (explains {100 * c.explained:.1f} %)")
-                trial = [*effects, {"kind": c.kind, "parameters": c.parameters}]
-                cv = cross_validate(base, trial, est)
-                tried.append((cv, c))
-            if tried and max(t[0] for t in tried) - cv_now >= margin:
+    pool = _pool()
+    try:
+        while len(accepted) < max_effects:
+            current = model(base, effects, est)
+            prog.update(f"residual analysis with {len(effects)} effect(s)")
+            ranked = candidates(current, est, {e["kind"] for e in effects}, scopes)
+            ranking = [{"kind": c.kind, "explained_share": round(c.explained, 4),
+                        "scope": scope_label(c.setups), "scope_shares": c.scope_shares,
+                        "initial_parameters": c.parameters} for c in ranked]
+            if not first_ranking:
+                first_ranking = ranking
+            tried: list[tuple[float, Candidate]] = []
+            # Named effects first; the generic formula only when none of them helps.
+            named = [c for c in ranked if c.kind != "other" and c.explained > 0.01][:top_k]
+            # A parameter-free switching force (the one-sided belt) is predicted badly by its
+            # signature linearised around a trajectory that never switches: always try it.
+            named += [c for c in ranked if not c.parameters and c.kind in FORCE_KINDS
+                      and c.kind != "other" and c not in named]
+            other = [c for c in ranked if c.kind == "other" and c.explained > 0.01]
+            for group in (named, other):
+                # the scope the residual points to, and the widest scope it could have:
+                # cross-validation chooses; the trials are independent, one per core
+                trials = [t for c in group for t in _with_widest_scope(c, scopes[c.kind])]
+                prog.update(f"cross-validating {len(trials)} candidate(s): "
+                            + ", ".join(f"{t.kind} on {scope_label(t.setups)}" for t in trials))
+                cvs = pool.map(_cross_validate, [(base, [*effects, t.effect()], est)
+                                                 for t in trials])
+                tried += list(zip(cvs, trials, strict=True))
+                if tried and max(t[0] for t in tried) - cv_now >= margin:
+                    break
+            step: dict[str, Any] = {
+                "effects_before": [e["kind"] for e in effects], "cv_fit_before": cv_now,
+                "ranking": ranking, "tried": [{"kind": c.kind, "scope": scope_label(c.setups),
+                                               "cv_fit": cv} for cv, c in tried]}
+            history.append(step)
+            if not tried:
+                step["decision"] = "no candidate explains more than 1 % of the residual"
                 break
-        step: dict[str, Any] = {
-            "effects_before": [e["kind"] for e in effects], "cv_fit_before": cv_now,
-            "ranking": ranking, "tried": [{"kind": c.kind, "cv_fit": cv} for cv, c in tried]}
-        history.append(step)
-        if not tried:
-            step["decision"] = "no candidate explains more than 1 % of the residual"
-            break
-        cv_best, best = max(tried, key=lambda t: t[0])
-        if cv_best - cv_now < margin:
-            step["decision"] = (f"best candidate {best.kind} raises the cross-validated fit by "
-                                f"{cv_best - cv_now:.2f} < {margin} points: not accepted")
-            break
-        prog.update(f"refitting with {best.kind} on all estimation tests")
-        new_base, new_effects, _ = refit(base, [*effects, {"kind": best.kind,
-                                                           "parameters": best.parameters}],
-                                         est, max_nfev=120)
-        resid_old = _residual(base, effects, est)
-        resid_new = _residual(new_base, new_effects, est)
-        share_before, share_after = _signature_shares(best, effects, base, new_effects,
-                                                      new_base, resid_old, resid_new, est)
-        ct_old, ct_new = correlation_tests(resid_old, est), correlation_tests(resid_new, est)
-        xc_before, xc_after = _rms_ratio(ct_old), _rms_ratio(ct_new)
-        # The input cross-correlation is reported, not decisive: on simulator data it rose
-        # for true effects too (what remains is discretisation error correlated with the pulse).
-        # Less correlated than before, or no longer worth mentioning (< 2 % of the residual).
-        if share_after >= share_before and share_after >= 0.02:
-            step["decision"] = (f"{best.kind}: the refitted residual is not less correlated "
-                                f"with its signature ({share_before:.3f} -> {share_after:.3f}): "
-                                "not accepted")
-            break
-        base, effects, cv_now = new_base, new_effects, cv_best
-        val_fit = score(base, effects, val)
-        entry = {"kind": best.kind, "description": describe(best.kind, effects[-1]["parameters"]),
-                 "parameters": effects[-1]["parameters"],
-                 "evidence": {"ranking_share": round(best.explained, 4),
-                              "explained_share_before": round(share_before, 4),
-                              "explained_share_after": round(share_after, 4),
-                              "cv_fit_before": round(step["cv_fit_before"], 2),
-                              "cv_fit_after": round(cv_best, 2),
-                              "input_xcorr_rms_ratio_before": round(xc_before, 2),
-                              "input_xcorr_rms_ratio_after": round(xc_after, 2),
-                              "input_xcorr_max_ratio_before": round(_max_ratio(ct_old), 2),
-                              "input_xcorr_max_ratio_after": round(_max_ratio(ct_new), 2)},
-                 "fit": _fit3(val_fit)}
-        accepted.append(entry)
-        step["decision"] = f"accepted {best.kind}"
-        prog.update(f"accepted {best.kind}: validation fit {val_fit['fit']['total']:.1f} %")
+            tried.sort(key=lambda t: -t[0])
+            cv_best, best = tried[0]
+            if cv_best - cv_now < margin:
+                step["decision"] = (f"best candidate {best.kind} raises the cross-validated fit by "
+                                    f"{cv_best - cv_now:.2f} < {margin} points: not accepted")
+                break
+            prog.update(f"refitting with {best.kind} on all estimation tests")
+            fit = refit(base, [*effects, best.effect()], est, max_nfev=120)
+            resid_old = _residual(base, effects, est)
+            resid_new = _residual(fit.base, fit.effects, est)
+            share_before, share_after = _signature_shares(best, effects, base, fit.effects,
+                                                          fit.base, resid_old, resid_new, est)
+            ct_old, ct_new = correlation_tests(resid_old, est), correlation_tests(resid_new, est)
+            xc_before, xc_after = _rms_ratio(ct_old), _rms_ratio(ct_new)
+            # The input cross-correlation is reported, not decisive: on simulator data it rose
+            # for true effects too (what remains is discretisation error correlated with the pulse).
+            # Less correlated than before, or no longer worth mentioning (< 2 % of the residual).
+            if share_after >= share_before and share_after >= 0.02:
+                step["decision"] = (f"{best.kind}: the refitted residual is not less "
+                                    "correlated with its signature "
+                                    f"({share_before:.3f} -> {share_after:.3f}): not accepted")
+                break
+            base, effects, cv_now, base_se = fit.base, fit.effects, cv_best, fit.base_std_err
+            val_fit = score(base, effects, val)
+            params, se = effects[-1]["parameters"], fit.effect_std_err[-1]
+            entry = {"kind": best.kind, "description": describe(best.kind, params),
+                     "parameters": params, "std_err": se,
+                     **_scope_entry(best.setups, est, val),
+                     "warnings": parameter_warnings(best.kind, params, se, rate_hz),
+                     "evidence": {"ranking_share": round(best.explained, 4),
+                                  "scope_shares": best.scope_shares,
+                                  "explained_share_before": round(share_before, 4),
+                                  "explained_share_after": round(share_after, 4),
+                                  "cv_fit_before": round(step["cv_fit_before"], 2),
+                                  "cv_fit_after": round(cv_best, 2),
+                                  **_rival(tried),
+                                  "input_xcorr_rms_ratio_before": round(xc_before, 2),
+                                  "input_xcorr_rms_ratio_after": round(xc_after, 2),
+                                  "input_xcorr_max_ratio_before": round(_max_ratio(ct_old), 2),
+                                  "input_xcorr_max_ratio_after": round(_max_ratio(ct_new), 2)},
+                     "fit": _fit3(val_fit)}
+            accepted.append(entry)
+            step["decision"] = f"accepted {best.kind} on {scope_label(best.setups)}"
+            prog.update(f"accepted {best.kind} on {scope_label(best.setups)}: validation fit "
+                        f"{val_fit['fit']['total']:.1f} %")
 
+    finally:
+        pool.terminate()
     final_val = score(base, effects, val)
-    judged = {label: scores(val, NonlinearGreyBox(b, e, rate_hz).simulate(val.pulse_g,
-                                                                          val.brs_rad),
-                            ratings)
+    judged = {label: scores(val, model(b, e, val).simulate(val.pulse_g, val.brs_rad), ratings)
               for label, b, e in (("baseline", gb.params, []), ("final", base, effects))}
-    mf = _model_file(base, effects, est, rate_hz, gb)
+    mf = _model_file(base, effects, est, rate_hz, gb, setups)
     mf.save(out / "model.json")
     # the thesis grey-box on the same tests, for a side-by-side run (observer-node bench)
-    _model_file(dict(gb.params), [], est, rate_hz, gb).save(out / "baseline-model.json")
+    _model_file(dict(gb.params), [], est, rate_hz, gb, setups).save(out / "baseline-model.json")
     resid_final = _residual(base, effects, est)
     report = {
         "baseline": {"fit": _fit3(baseline_val), "parameters": gb.params,
                      "std_err": gb.std_err},
         "effects": accepted,
-        "final": {"fit": _fit3(final_val), "parameters": base},
+        "final": {"fit": _fit3(final_val), "parameters": base, "std_err": base_se},
+        "setups": [s.as_dict() for s in setups],
         "model": "model.json", "baseline_model": "baseline-model.json",
         "software_version": __version__,
         "estimation": est.names, "validation": val.names,
@@ -170,7 +217,10 @@ def run_loop(est_tests: list[CrashTest], val_tests: list[CrashTest], out: Path,
         "first_ranking": first_ranking,
         "history": history,
         "settings": {"rate_hz": rate_hz, "window_s": list(window_s), "margin": margin,
-                     "top_k": top_k, "cross_validation": "two-fold inside estimation tests"},
+                     "top_k": top_k, "groups": [f"{n}={p}" for n, p in groups or []],
+                     "allow_anywhere": anywhere,
+                     "cross_validation": "two-fold inside estimation tests, each setup's "
+                     "tests alternating between the folds"},
         "validation_tests": {"baseline": baseline_val["tests"], "final": final_val["tests"]},
         "criteria": {k: v["criteria"] for k, v in judged.items()},
         **({"iso18571": {k: v["iso18571"] for k, v in judged.items()}}
@@ -186,8 +236,101 @@ def run_loop(est_tests: list[CrashTest], val_tests: list[CrashTest], out: Path,
     return report
 
 
+class _Serial:
+    """The pool's interface without processes (one core, or where fork is unavailable)."""
+
+    def map(self, f: Any, items: list) -> list:
+        return [f(x) for x in items]
+
+    def terminate(self) -> None:
+        pass
+
+
+def _pool() -> Any:
+    """Worker processes for the cross-validation trials, one per core (at most 4)."""
+    import multiprocessing
+    import os
+
+    n = min(4, len(os.sched_getaffinity(0)))
+    if n < 2 or "fork" not in multiprocessing.get_all_start_methods():
+        return _Serial()
+    return multiprocessing.get_context("fork").Pool(n)
+
+
+def _cross_validate(args: tuple[dict, list[dict], Dataset]) -> float:
+    with np.errstate(all="ignore"):
+        return cross_validate(*args)
+
+
+def _with_widest_scope(c: Candidate, options: list[list[str] | None]) -> list[Candidate]:
+    """``c`` on the scope the residual chose, and on the widest scope it is allowed."""
+    widest = options[0] if None in options else max(options, key=lambda o: len(o or []))
+    if c.setups == widest or (c.setups is not None and widest is not None
+                              and sorted(c.setups) == sorted(widest)):
+        return [c]
+    return [c, Candidate(c.kind, c.explained, c.parameters, None, widest, c.scope_shares)]
+
+
+def _scope_entry(scope: list[str] | None, est: Dataset, val: Dataset) -> dict:
+    """``setups`` and ``applies_to`` (the estimation and validation tests it acts on) of a
+    scoped effect; nothing for an effect on every test."""
+    if scope is None:
+        return {}
+    names = [n for d in (est, val) for n, s in zip(d.names, d.setups, strict=True) if s in scope]
+    return {"setups": scope, "applies_to": names}
+
+
+def _rival(tried: list[tuple[float, Candidate]]) -> dict:
+    """The runner-up (the best of another kind, and the winner's other scope) and margins."""
+    cv_best, best = tried[0]
+    out: dict[str, Any] = {}
+    other = next(((cv, c) for cv, c in tried if c.kind != best.kind), None)
+    if other is not None:
+        out["runner_up"] = {"kind": other[1].kind, "scope": scope_label(other[1].setups),
+                            "cv_fit": round(other[0], 2)}
+        out["margin_points"] = round(cv_best - other[0], 2)
+    scope = next(((cv, c) for cv, c in tried if c.kind == best.kind and c is not best), None)
+    if scope is not None:
+        out["other_scope"] = {"scope": scope_label(scope[1].setups),
+                              "cv_fit": round(scope[0], 2),
+                              "margin_points": round(cv_best - scope[0], 2)}
+    return out
+
+
+def parameter_warnings(kind: str, params: dict, std_err: dict[str, float],
+                       rate_hz: float) -> list[str]:
+    """Warnings an engineer should read before trusting an accepted effect's parameters: a
+    value at the edge of what was searched, a physically negligible or absurd size, or one the
+    data do not determine (standard error above the value)."""
+    out = []
+    spec = EFFECTS[kind][1]
+    for name, v in params.items():
+        if not isinstance(v, float | int):
+            continue
+        unit, typical = spec.get(name, ("", 0.0))
+        se = std_err.get(name)
+        if name in ("n_pulse", "n_brs"):
+            ms = 1000.0 * v / rate_hz
+            if ms >= 1000.0 * DELAY_MAX_S - 0.05:
+                out.append(f"{name} = {ms:.2f} ms is at the searched bound "
+                           f"({1000 * DELAY_MAX_S:g} ms)")
+            continue
+        if name == "gap" and not 0.005 <= v <= 0.4:
+            out.append(f"gap = {v:.3g} m is not a plausible airbag distance (5..400 mm)")
+        elif name in POSITIVE and typical and abs(v) < 1e-3 * typical:
+            out.append(f"{name} = {v:.3g} {unit} is physically nothing (typical {typical:g})")
+        elif typical and abs(v) > 1e3 * typical:
+            out.append(f"{name} = {v:.3g} {unit} is over 1000 times a typical {typical:g}")
+        if se is not None and np.isfinite(se) and abs(v) > 0 and se > abs(v):
+            out.append(f"{name} is not determined by the data: std err {se:.3g} > |value| "
+                       f"{abs(v):.3g}")
+        elif se is not None and not np.isfinite(se):
+            out.append(f"{name}: the data say nothing about it (singular Jacobian)")
+    return out
+
+
 def _residual(base: dict, effects: list[dict], data: Dataset) -> np.ndarray:
-    y_hat = NonlinearGreyBox(base, effects, data.fs_hz).simulate(data.pulse_g, data.brs_rad)
+    y_hat = model(base, effects, data).simulate(data.pulse_g, data.brs_rad)
     return (data.y - y_hat)[:, data.win]
 
 
@@ -205,10 +348,14 @@ def _signature_shares(c: Candidate, effects: list[dict], base: dict[str, float],
         params = {}
     elif not any(params.values()):
         return 1.0, 0.0
-    old = NonlinearGreyBox(base, effects, data.fs_hz)
-    new = NonlinearGreyBox(new_base, new_effects[:-1], data.fs_hz)
-    before = explained_share(resid_old, force_signature(old, data, c.kind, params), data)
-    after = explained_share(resid_new, force_signature(new, data, c.kind, params), data)
+    old = model(base, effects, data)
+    new = model(new_base, new_effects[:-1], data)
+    mask = (np.ones(data.n_tests) if c.setups is None else
+            np.array([s in c.setups for s in data.setups], float))[:, None, None]
+    before = explained_share(resid_old, mask * force_signature(old, data, c.kind, params),
+                             data)
+    after = explained_share(resid_new, mask * force_signature(new, data, c.kind, params),
+                            data)
     return before, after
 
 
@@ -224,19 +371,19 @@ def _rms_ratio(tests: dict) -> float:
 
 
 def _model_file(base: dict, effects: list[dict], est: Dataset, rate_hz: float,
-                gb: greybox.GreyBoxFit) -> ModelFile:
+                gb: greybox.GreyBoxFit, setups: list[Setup]) -> ModelFile:
     """The model file the daemon runs: with effects the 6-state chest and its force input,
     without them the thesis's 5-state grey-box."""
     if effects:
-        Ad, Bd, Gd, C, Df = discrete(base, rate_hz)
-        D = np.zeros((2, 2))
+        _, _, Gd, _, Df = discrete(base, rate_hz)
         structure = {"states": list(STATES),
                      "equations": "thesis eq. 3.1-3.8 plus effect forces held over the tick; "
-                     "a slack belt switches to the belt-free matrices for the tick",
+                     "a slack belt switches to the belt-free matrices for the tick; the output "
+                     "is the state's after the tick's inputs, effect forces evaluated there",
                      "force_input_matrix_G": Gd.tolist(), "force_output_matrix_Df": Df.tolist()}
     else:
-        Ad, Bd, C, D = discrete_thesis(base, rate_hz)
         structure = {"states": list(THESIS_STATES), "equations": "thesis eq. 3.1-3.8, CD = s - x"}
+    Ad, Bd, C, D = model_matrices(base, rate_hz, bool(effects))
     return ModelFile(
         kind="greybox", name="greybox+" + "+".join(e["kind"] for e in effects) if effects
         else "greybox", tick_rate_hz=rate_hz, input_transform="velocity_brs_rate",
@@ -245,18 +392,19 @@ def _model_file(base: dict, effects: list[dict], est: Dataset, rate_hz: float,
                         if not effects else None, "unit": PARAM_UNITS[n],
                         "fixed": n == "m1"} for n in PARAM_NAMES},
         structure=structure,
-        fitted_on={"tests": est.names, "setups": sorted(set(est.setups)), "rate_hz": rate_hz,
+        fitted_on={"tests": est.names, "setups": sorted(set(est.setups)),
+                   "setup_rules": [s.as_dict() for s in setups if s.name in est.setups],
+                   "rate_hz": rate_hz,
                    "window_s": list(est.window_s), "simulation_start_s": 0.0},
-        fits=score(base, effects, est), effects=effects,
+        fits=score(base, effects, est), effects=effects, output_timing="after_input",
     )
 
 
 def _plots(out: Path, base: dict, effects: list[dict], base0: dict, val: Dataset) -> None:
     t = np.arange(val.y.shape[1])[val.win] / val.fs_hz
     y = val.y[:, val.win]
-    before = NonlinearGreyBox(base0, [], val.fs_hz).simulate(val.pulse_g, val.brs_rad)[:, val.win]
-    after = NonlinearGreyBox(base, effects, val.fs_hz).simulate(val.pulse_g, val.brs_rad)[:,
-                                                                                           val.win]
+    before = model(base0, [], val).simulate(val.pulse_g, val.brs_rad)[:, val.win]
+    after = model(base, effects, val).simulate(val.pulse_g, val.brs_rad)[:, val.win]
     from ..ident.metrics import fit_table
 
     for label, y_hat in (("before", before), ("after", after)):
@@ -273,12 +421,18 @@ def _markdown(r: dict) -> str:
     lines = ["# Closed loop: residual, missing effect, refit", "",
              f"Estimation tests: {', '.join(r['estimation'])}  ",
              f"Validation tests: {', '.join(r['validation'])} (fits below are on these)", "",
-             "| model | fit CR | fit CD | fit TOT |", "|---|---|---|---|",
-             f"| thesis grey-box | {b['cr']:.1f} | {b['cd']:.1f} | {b['total']:.1f} |"]
+             "## Setups", "", "| setup | tests | from | impossible here |", "|---|---|---|---|"]
+    lines += [f"| {s['name']} | {', '.join(s['tests'])} | {s['rule']} | "
+              f"{'; '.join(f'{k} ({v})' for k, v in s.get('impossible', {}).items()) or '-'} |"
+              for s in r["setups"]]
+    lines += ["", "## Fits", "",
+              "| model | acts on | fit CR | fit CD | fit TOT |", "|---|---|---|---|---|",
+              f"| thesis grey-box | all | {b['cr']:.1f} | {b['cd']:.1f} | {b['total']:.1f} |"]
     for e in r["effects"]:
-        lines.append(f"| + {e['kind']} | {e['fit']['cr']:.1f} | {e['fit']['cd']:.1f} | "
-                     f"{e['fit']['total']:.1f} |")
-    lines += [f"| **final** | **{f['cr']:.1f}** | **{f['cd']:.1f}** | **{f['total']:.1f}** |", ""]
+        lines.append(f"| + {e['kind']} | {'+'.join(e.get('setups', ['all']))} | "
+                     f"{e['fit']['cr']:.1f} | {e['fit']['cd']:.1f} | {e['fit']['total']:.1f} |")
+    lines += [f"| **final** | | **{f['cr']:.1f}** | **{f['cd']:.1f}** | **{f['total']:.1f}** |",
+              ""]
     if not r["effects"]:
         lines += ["No effect was accepted: no candidate raised the cross-validated fit by "
                   f"{r['settings']['margin']} points.", ""]
@@ -299,10 +453,28 @@ def _markdown(r: dict) -> str:
     lines.append("")
     for e in r["effects"]:
         ev = e["evidence"]
-        params = ", ".join(f"{k} = {v:.4g}" if isinstance(v, float) else f"{k} = {v}"
+        se = e.get("std_err", {})
+        params = ", ".join((f"{k} = {v:.4g}" + (f" ± {se[k]:.2g}" if k in se else ""))
+                           if isinstance(v, float) else f"{k} = {v}"
                            for k, v in e["parameters"].items())
+        rival = ""
+        if "runner_up" in ev:
+            ru = ev["runner_up"]
+            rival = (f"- why this and not that: the runner-up, {ru['kind']} on {ru['scope']}, "
+                     f"cross-validated {ru['cv_fit']:.1f} %, {ev['margin_points']:.1f} points "
+                     "lower")
+        if "other_scope" in ev:
+            os_ = ev["other_scope"]
+            rival += (("\n" if rival else "") + f"- on {os_['scope']} instead it "
+                      f"cross-validated {os_['cv_fit']:.1f} % ({os_['margin_points']:+.1f} "
+                      "points from the accepted scope)")
+        where = (f"acts on setups {', '.join(e['setups'])}: {', '.join(e['applies_to'])}"
+                 if "setups" in e else "acts on every test")
         lines += [f"## {e['kind']}", "", e["description"], "",
-                  f"- parameters: {params or '(none)'}",
+                  f"- {where}",
+                  f"- parameters (± standard error): {params or '(none)'}",
+                  *(f"- **warning**: {w}" for w in e.get("warnings", [])),
+                  *([rival] if rival else []),
                   f"- explained {100 * ev['explained_share_before']:.1f} % of the residual before"
                   f" the refit, {100 * ev['explained_share_after']:.1f} % after",
                   f"- cross-validated fit_TOT inside the estimation tests: "
@@ -314,8 +486,9 @@ def _markdown(r: dict) -> str:
                   f"{ev['input_xcorr_max_ratio_after']:.2f})",
                   ""]
     lines += ["## First ranking of candidates (share of the residual explained)", "",
-              "| effect | explained |", "|---|---|"]
-    lines += [f"| {c['kind']} | {100 * c['explained_share']:.1f} % |" for c in r["first_ranking"]]
+              "| effect | scope | explained |", "|---|---|---|"]
+    lines += [f"| {c['kind']} | {c['scope']} | {100 * c['explained_share']:.1f} % |"
+              for c in r["first_ranking"]]
     rt = r["residual_tests"]
     lines += ["", "## Residual tests on the estimation tests", "",
               "| | lag-1 autocorr CR | CD | input xcorr / band CR | CD |", "|---|---|---|---|---|"]
