@@ -21,8 +21,11 @@ import sys
 import threading
 import time
 from pathlib import Path
+from typing import Any
 
 from .data import bundled_campaign, read_isomme
+from .data.setups import assign_setups
+from .dbc import Codec
 from .evaluation import evaluate_model
 from .model.modelfile import ModelFile
 from .recording import analyze, read_recording
@@ -59,16 +62,6 @@ def run_bench(out: Path, model_path: str | None = None, interface: str = "auto",
               channel: str = "vcan0", tests: tuple[str, ...] = DEFAULT_TESTS,
               rate: float = 1.0, loop_tests: tuple[str, ...] = LOOP_TESTS,
               loop_dir: Path | None = None) -> dict:
-    import can
-
-    from observer_node.dbc import Codec
-    from observer_node.replay.player import bus_sender, play
-    from observer_node.replay.schedule import concat, crash_test_schedule, restamp_counters
-
-    from .daemon.config import NodeConfig
-    from .daemon.node import ObserverNode
-    from .daemon.ports import PythonCanPort
-
     out.mkdir(parents=True, exist_ok=True)
     codec = Codec()
     plain: ModelFile | None = None
@@ -82,43 +75,23 @@ def run_bench(out: Path, model_path: str | None = None, interface: str = "auto",
         interface = "socketcan" if Path(f"/sys/class/net/{channel}").exists() else "virtual"
     if interface == "virtual":
         channel = "bench"
-    record = out / "run.mcap"
-    cfg = NodeConfig(interface=interface, channel=channel, record=str(record))
-    factory = (lambda ids: PythonCanPort("virtual", channel, ids)) if interface == "virtual" \
-        else None
-    node = ObserverNode(cfg, model, codec, port_factory=factory)
-    ready = threading.Event()
-    thread = threading.Thread(target=node.run, kwargs={"on_ready": ready.set})
-    thread.start()
-    if not ready.wait(60):
-        node.stop_event.set()
-        thread.join()
-        raise RuntimeError("the daemon did not start")
-    print(f"bench: daemon listening on {interface}:{channel}, recording to {record}; "
-          f"{node.cpu_latency}")
-
     crash = [read_isomme(bundled_campaign() / f"{name}.zip") for name in tests]
-    sched = restamp_counters(concat([
-        crash_test_schedule(t, codec, model.tick_rate_hz, reference=True, pre_s=0.2)
-        for t in crash], gap_s=0.3), codec)
-    bus = can.Bus(interface=interface, channel=channel)
-    send = bus_sender(bus, sched)
-    print(f"bench: replaying {', '.join(tests)} ({len(sched)} frames, "
-          f"{sched.t_s[-1] / rate:.1f} s)")
-    report = play(sched, send, rate=rate)
-    time.sleep(0.3)
-    node.stop_event.set()
-    thread.join()
-    bus.shutdown()
-    print(f"bench: replay {report.summary()}")
-    c = node.counters
-    core = node.core
-    print(f"bench: daemon ticks {c.ticks}, lost {c.lost}, rejected {c.rejected}, bad E2E "
-          f"{c.bad_e2e}, overruns {c.overruns}, sensor faults {core.brs_jumps} BRS jumps "
-          f"{core.bias_faults} bias {core.hold_timeouts} hold timeouts")
-
-    rec = read_recording(record)
-    result = analyze(rec, out_dir=out, ratings=False)  # ISO 18571: observer-node analyze
+    # A model with effects on some setups only runs as a bench of one setup does: one daemon
+    # session per setup, each with that setup's effects, each into its own folder.
+    sessions: dict[str, list] = {}
+    if model.setups():
+        for s in assign_setups(crash):
+            sessions[s.name] = [t for t in crash if t.setup == s.name]
+    else:
+        sessions[""] = crash
+    events: list[dict] = []
+    for setup, group in sessions.items():
+        where = out / setup if setup else out
+        events += _session(where, model.for_setup(setup), group, codec, interface, channel,
+                           rate, setup)
+    result: dict[str, Any] = {"events": events}
+    crash = [t for group in sessions.values() for t in group]
+    tests = tuple(t.name for t in crash)
     offline = _offline(model, crash)
     rows = []
     for test, ev in zip(tests, result["events"], strict=False):
@@ -150,11 +123,62 @@ def run_bench(out: Path, model_path: str | None = None, interface: str = "auto",
             print(f"bench: WARNING: {name}: the daemon differs from the offline re-run of its own "
                   f"inputs by {diff:.3g} ({ev['invalid_ticks']} invalid ticks): see "
                   f"{out}/analysis.json", file=sys.stderr)
-    print(f"bench: wrote {out}/model.json, run.mcap, analysis.json and event plots")
+    print(f"bench: wrote {out}/model.json, " + (", ".join(f"{s}/" for s in sessions)
+          if len(sessions) > 1 or "" not in sessions else "")
+          + "run.mcap, analysis.json and event plots")
     result["offline"] = offline
     if plain is not None:
         result["baseline_offline"] = base
     return result
+
+
+def _session(out: Path, model: ModelFile, crash: list, codec: Codec, interface: str,
+             channel: str, rate: float, setup: str) -> list[dict]:
+    """The daemon (``model``) on the bus recording to ``out``/run.mcap, ``crash`` replayed
+    into it, the recording analysed; the analysis's events."""
+    import can
+
+    from .daemon.config import NodeConfig
+    from .daemon.node import ObserverNode
+    from .daemon.ports import PythonCanPort
+    from .replay.player import bus_sender, play
+    from .replay.schedule import concat, crash_test_schedule, restamp_counters
+
+    out.mkdir(parents=True, exist_ok=True)
+    record = out / "run.mcap"
+    cfg = NodeConfig(interface=interface, channel=channel, record=str(record), setup=setup)
+    factory = (lambda ids: PythonCanPort("virtual", channel, ids)) if interface == "virtual" \
+        else None
+    node = ObserverNode(cfg, model, codec, port_factory=factory)
+    ready = threading.Event()
+    thread = threading.Thread(target=node.run, kwargs={"on_ready": ready.set})
+    thread.start()
+    if not ready.wait(60):
+        node.stop_event.set()
+        thread.join()
+        raise RuntimeError("the daemon did not start")
+    print(f"bench: daemon {'for setup ' + setup + ' ' if setup else ''}listening on "
+          f"{interface}:{channel}, recording to {record}; {node.cpu_latency}")
+    sched = restamp_counters(concat([
+        crash_test_schedule(t, codec, model.tick_rate_hz, reference=True, pre_s=0.2)
+        for t in crash], gap_s=0.3), codec)
+    bus = can.Bus(interface=interface, channel=channel)
+    send = bus_sender(bus, sched)
+    print(f"bench: replaying {', '.join(t.name for t in crash)} ({len(sched)} frames, "
+          f"{sched.t_s[-1] / rate:.1f} s)")
+    report = play(sched, send, rate=rate)
+    time.sleep(0.3)
+    node.stop_event.set()
+    thread.join()
+    bus.shutdown()
+    print(f"bench: replay {report.summary()}")
+    c = node.counters
+    core = node.core
+    print(f"bench: daemon ticks {c.ticks}, lost {c.lost}, rejected {c.rejected}, bad E2E "
+          f"{c.bad_e2e}, overruns {c.overruns}, sensor faults {core.brs_jumps} BRS jumps "
+          f"{core.bias_faults} bias {core.hold_timeouts} hold timeouts")
+    events: list[dict] = analyze(read_recording(record), out_dir=out, ratings=False)["events"]
+    return events
 
 
 def _offline(model: ModelFile, crash: list) -> dict[str, dict[str, float]]:

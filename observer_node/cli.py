@@ -33,6 +33,7 @@ from pathlib import Path
 from . import __version__
 from .data import ChannelCodes, CrashDataError, CrashTest, bundled_campaign, load_tests
 from .data.crashtest import THESIS_WINDOW_S
+from .data.setups import parse_groups
 from .model.effects import EFFECTS as MODEL_EFFECTS
 from .model.modelfile import ModelFileError
 
@@ -280,6 +281,7 @@ def cmd_export_c(a: argparse.Namespace) -> int:
 
     mf = ModelFile.load(a.model)
     try:
+        mf = mf.for_setup(a.setup or "", a.model)
         paths = export_c(mf, Path(a.out), a.name) + export_codec(Path(a.out))
     except ExportError as e:
         print(f"observer-node: error: {a.model}: {e}", file=sys.stderr)
@@ -296,7 +298,8 @@ def cmd_loop(a: argparse.Namespace) -> int:
     est = load_tests(a.estimate, codes, cpr)
     val = load_tests(a.validate, codes, cpr)
     r = run_loop(est, val, Path(a.out), a.rate, tuple(a.window or THESIS_WINDOW_S),
-                 a.margin, verbose=not a.quiet)
+                 a.margin, verbose=not a.quiet, groups=parse_groups(a.group),
+                 anywhere=a.allow_anywhere)
     print((Path(a.out) / "report.md").read_text())
     print(f"wrote {a.out}/report.json, report.md, model.json and plots "
           f"({r['seconds']} s)")
@@ -337,7 +340,11 @@ def build_parser() -> argparse.ArgumentParser:
         description="Identify the thesis grey-box model on the estimation tests, analyse its "
         "residual, trace it to a physical effect of the library (or a sparse formula), add it, "
         "refit, accept it only if cross-validation inside the estimation tests improves, "
-        "repeat; report fits before and after on the validation tests.")
+        "repeat; report fits before and after on the validation tests. Tests are grouped in "
+        "setups by their .mme metadata (or --group); each effect is tried on every test and on "
+        "the setups that could have it (never an airbag on a hard-seat rig), and "
+        "cross-validation chooses. The report gives each effect's scope, the runner-up and its "
+        "margin, standard errors and warnings; model.json carries the scope (run --setup).")
     s.add_argument("--estimate", nargs="+", required=True, metavar="TEST",
                    help="tests to identify and cross-validate effects on: " + _TESTS_HELP)
     s.add_argument("--validate", nargs="+", required=True, metavar="TEST",
@@ -345,6 +352,13 @@ def build_parser() -> argparse.ArgumentParser:
     s.add_argument("--out", required=True, help="output folder")
     s.add_argument("--margin", type=float, default=1.0,
                    help="fit_TOT points an effect must add in cross-validation (default 1)")
+    s.add_argument("--group", action="append", metavar="NAME=PATTERN",
+                   help="put tests whose name matches PATTERN in setup NAME (repeatable; "
+                   "default: tests whose .mme has the same type of test, title and test object "
+                   "share a setup)")
+    s.add_argument("--allow-anywhere", action="store_true",
+                   help="try effects on setups whose metadata rules them out too (an airbag "
+                   "on a rig that says hard seat or no interior)")
     _data_options(s, data=None)
     s.add_argument("--rate", type=float, default=1000.0, help="tick rate in Hz (1000)")
     s.add_argument("--quiet", action="store_true", help="no progress display")
@@ -411,7 +425,11 @@ def build_parser() -> argparse.ArgumentParser:
         "default and range.")
     s.add_argument("--interface", help="python-can interface (default socketcan)")
     s.add_argument("--channel", help="bus channel (default vcan0)")
-    s.add_argument("--model", help="model file (JSON) from identify or evaluate")
+    s.add_argument("--model", help="model file (JSON) from identify, evaluate or loop")
+    s.add_argument("--setup", metavar="NAME",
+                   help="this bench's setup (R16, SLED, ...): needed for a model whose effects "
+                   "act on some setups only (loop's model.json says which); the daemon runs "
+                   "that setup's effects")
     s.add_argument("--record", help="MCAP file to record the run to")
     s.add_argument("--live", nargs="?", const="127.0.0.1:8765", metavar="HOST:PORT",
                    help="serve the run live to the Foxglove app (its WebSocket protocol; "
@@ -465,6 +483,8 @@ def build_parser() -> argparse.ArgumentParser:
     s.add_argument("model", help="model file (JSON)")
     s.add_argument("--out", required=True, metavar="DIR", help="folder to write into")
     s.add_argument("--name", default="chest_observer", help="file and guard name")
+    s.add_argument("--setup", metavar="NAME",
+                   help="the ECU's setup, for a model with effects scoped to setups")
     s.set_defaults(func=cmd_export_c)
     return p
 

@@ -13,6 +13,7 @@ import numpy as np
 from . import plots
 from .data import CrashTest
 from .data.crashtest import THESIS_WINDOW_S
+from .data.setups import assign_setups
 from .ident import arx, greybox, n4sid
 from .ident.dataset import Dataset, make_dataset
 from .ident.metrics import fit_table
@@ -70,10 +71,12 @@ def identify(kind: str, data: Dataset, nmax: int = 6, order: int = 7,
 
 
 def simulate_model(mf: ModelFile, data: Dataset) -> np.ndarray:
-    """Outputs (tests, n, 2) of a model file on a dataset made at the model's tick rate."""
+    """Outputs (tests, n, 2) of a model file on a dataset made at the model's tick rate; a
+    model with effects scoped to setups acts on each test as its setup says."""
     if abs(data.fs_hz - mf.tick_rate_hz) > 1e-9:
         raise ValueError(f"data at {data.fs_hz:g} Hz, model at {mf.tick_rate_hz:g} Hz")
-    return mf.observer().simulate(data.pulse_g, data.brs_rad)
+    return mf.observer(list(data.setups) if mf.setups() else None).simulate(data.pulse_g,
+                                                                             data.brs_rad)
 
 
 def dataset_for(mf: ModelFile, tests: list[CrashTest],
@@ -86,7 +89,10 @@ def evaluate_model(mf: ModelFile, tests: list[CrashTest], out_dir: Path | None =
                    window_s: tuple[float, float] | None = None, title: str | None = None,
                    ratings: bool = True) -> dict:
     """Fits (eq. 3.15-3.18), injury criteria and ISO/TS 18571 ratings (see :func:`scores`)
-    of a model on ``tests``; with ``out_dir``, plots and fits.json."""
+    of a model on ``tests``; with ``out_dir``, plots and fits.json. For a model with effects
+    scoped to setups, the tests' setups are told from their metadata as the loop does."""
+    if mf.setups():
+        assign_setups(tests)
     data = dataset_for(mf, tests, window_s)
     y_hat = simulate_model(mf, data)
     fits = scores(data, y_hat, ratings)

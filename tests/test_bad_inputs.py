@@ -63,6 +63,17 @@ def _effect(effect):
     return f
 
 
+def _scoped(d):
+    """A grey-box whose one effect acts on the SLED setup only (loop's model.json)."""
+    from observer_node.model.chest import model_matrices
+
+    base = {k: v["value"] for k, v in d["parameters"].items()}
+    Ad, Bd, C, D = model_matrices(base, d["tick_rate_hz"], True)
+    d["state_space"] = {"A": Ad.tolist(), "B": Bd.tolist(), "C": C.tolist(),
+                        "D": D.tolist()}
+    d["effects"] = [{"kind": "belt_unloading", "parameters": {}, "setups": ["SLED"]}]
+
+
 MODEL_CASES: dict[str, tuple[Callable[[dict], object] | bytes, str]] = {
     "unstable A=2I": (_unstable, "unstable"),
     "A not the parameters'": (_not_its_parameters, "'state_space.A' disagrees with 'parameters'"),
@@ -86,6 +97,9 @@ MODEL_CASES: dict[str, tuple[Callable[[dict], object] | bytes, str]] = {
     "effect kind unknown": (_effect({"kind": "warp_drive", "parameters": {}}), "effects[0]"),
     "effect delay 1e6 ticks": (_effect({"kind": "input_delay",
                                         "parameters": {"n_pulse": 1e6}}), "n_pulse"),
+    "scoped effect, bench setup not said": (_scoped, "--setup"),
+    "scope not a list": (_effect({"kind": "belt_unloading", "setups": "SLED"}),
+                         "effects[0].setups"),
     "effects on ARX": (lambda d: (d.__setitem__("kind", "arx"),
                                   _effect({"kind": "belt_unloading"})(d)), "kind"),
     "effects without grey-box parameters": (lambda d: (d["parameters"].pop("k2"), _effect(

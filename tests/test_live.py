@@ -72,9 +72,13 @@ def test_a_live_client_receives_the_recorded_estimates(model, tmp_path):
         reader.join(30)
     rec = read_recording(record)
     rows = {int(t): k for k, t in enumerate(rec.ticks["tick"])}
-    # decimated to 100 Hz of a 1 kHz run: every tenth tick, all of them, each as recorded
+    # decimated to 100 Hz of a 1 kHz run: every tenth tick, each as recorded, none lost from
+    # the moment the server took the subscription (the protocol does not acknowledge it, so on
+    # a loaded machine the first few may go out before it: a live view joins a run anyway)
     want = [int(t) for t in rec.ticks["tick"] if t >= 0 and int(t) % 10 == 0]
-    assert sorted(m["tick"] for m in got) == want
+    ticks = sorted(m["tick"] for m in got)
+    assert ticks and ticks == want[want.index(ticks[0]):], ticks[:5]
+    assert len(ticks) >= 0.8 * len(want), (len(ticks), len(want))
     for m in got:
         k = rows[m["tick"]]
         assert m["cr_g"] == rec.ticks["cr_g"][k] and m["cd_mm"] == rec.ticks["cd_mm"][k]

@@ -27,6 +27,7 @@ class NodeConfig:
     fd: bool = False
     raw_socketcan: bool = True
     model: str = ""
+    setup: str = ""  # the bench's setup, for a model with effects scoped to setups
     record: str = ""
     live: str = ""  # HOST:PORT of the Foxglove live view (served by the recorder process)
     status_period_s: float = 0.1
@@ -78,7 +79,7 @@ _STR = {"type": "string", "maxLength": 4096}
 _Schema = dict[str, dict[str, Any]]
 _NODE: _Schema = {
     "interface": {**_STR, "minLength": 1}, "channel": _STR, "fd": {"type": "boolean"},
-    "raw_socketcan": {"type": "boolean"}, "model": _STR, "record": _STR,
+    "raw_socketcan": {"type": "boolean"}, "model": _STR, "setup": _STR, "record": _STR,
     "live": {"type": "string", "pattern": r"^$|^[^\s:]+:\d{1,5}$"},
     "status_period_s": _num(0.01, 10), "accel_timeout_s": _num(0, 60),
     "brs_timeout_s": _num(0.001, 10), "idle_after_s": _num(0.01, 3600),

@@ -327,7 +327,8 @@ class ObserverNode:
 
 def run_daemon(cfg: NodeConfig, quiet: bool = False) -> int:
     """The ``observer-node run`` command."""
-    model = ModelFile.load(cfg.model)
+    # a model scoped to setups runs the effects of this bench's setup only
+    model = ModelFile.load(cfg.model).for_setup(cfg.setup, cfg.model)
     node = ObserverNode(cfg, model)
     node.install_signal_handlers()
     def ready() -> None:
