@@ -65,20 +65,25 @@ def loop_table(tmp: Path) -> str:
               "--out", str(out), "--quiet"])
     r = json.loads((out / "report.json").read_text())
     PICTURES.append((out / "fit_after_cd.png", ROOT / "docs" / "loop-campaign-a-cd.png"))
-    rows = ["| model | fit CR | fit CD | fit TOT | cross-validated fit_TOT (estimation tests) |",
-            "|---|---|---|---|---|"]
+    rows = ["| model | acts on | fit CR | fit CD | fit TOT | cross-validated fit_TOT "
+            "(estimation tests) | runner-up (its cross-validated fit_TOT) |",
+            "|---|---|---|---|---|---|---|"]
     b = r["baseline"]["fit"]
     cv0 = r["effects"][0]["evidence"]["cv_fit_before"] if r["effects"] else None
-    rows.append(f"| thesis grey-box | {_num(b['cr'])} | {_num(b['cd'])} | {_num(b['total'])} | "
-                f"{'' if cv0 is None else _num(cv0)} |")
+    rows.append(f"| thesis grey-box | all | {_num(b['cr'])} | {_num(b['cd'])} | "
+                f"{_num(b['total'])} | {'' if cv0 is None else _num(cv0)} | |")
     for e in r["effects"]:
         units = EFFECTS[e["kind"]][1] if e["kind"] in EFFECTS else {}
-        params = ", ".join(f"{k} = {v:.3g} {units.get(k, ('',))[0]}".rstrip()
+        se = e.get("std_err", {})
+        params = ", ".join(f"{k} = {v:.3g}" + (f" ± {se[k]:.2g}" if k in se else "")
+                           + f" {units.get(k, ('',))[0]}".rstrip()
                            for k, v in e["parameters"].items())
-        f = e["fit"]
-        rows.append(f"| + {e['kind']}{f' ({params})' if params else ''} | {_num(f['cr'])} | "
-                    f"{_num(f['cd'])} | {_num(f['total'])} | "
-                    f"{_num(e['evidence']['cv_fit_after'])} |")
+        f, ev = e["fit"], e["evidence"]
+        ru = ev.get("runner_up")
+        rows.append(f"| + {e['kind']}{f' ({params})' if params else ''} | "
+                    f"{', '.join(e.get('setups', ['all']))} | {_num(f['cr'])} | "
+                    f"{_num(f['cd'])} | {_num(f['total'])} | {_num(ev['cv_fit_after'])} | "
+                    + (f"{ru['kind']} on {ru['scope']} ({_num(ru['cv_fit'])}) |" if ru else "|"))
     return "\n".join(rows)
 
 
