@@ -310,7 +310,7 @@ def cmd_bench(a: argparse.Namespace) -> int:
     from .bench import DEFAULT_TESTS, run_bench
 
     run_bench(Path(a.out), a.model, a.interface, a.channel, tuple(a.test or DEFAULT_TESTS),
-              a.rate)
+              a.rate, rerun_loop=a.rerun_loop)
     return 0
 
 
@@ -322,10 +322,16 @@ def build_parser() -> argparse.ArgumentParser:
 
     s = sub.add_parser(
         "bench", help="the whole bench: replay bundled tests into the daemon, record, analyse",
-        description="Identify (or load) a model, start the daemon on vcan0 if it exists (else "
-        "on an in-process virtual bus), replay bundled crash tests with reference frames, "
-        "record to MCAP and print the analysis beside the offline evaluation.")
-    s.add_argument("--model", help="model file (default: identify the grey-box on R16)")
+        description="Take the loop's model (shipped with this version, reused from an earlier "
+        "bench, or made here with --rerun-loop) or --model, start the daemon on vcan0 if it "
+        "exists (else on an in-process virtual bus), replay bundled crash tests with reference "
+        "frames, record to MCAP and print the analysis beside the offline evaluation of the "
+        "thesis grey-box and the loop's model.")
+    s.add_argument("--model", help="model file (default: the loop's model on the bundled "
+                   "campaign's odd-numbered tests)")
+    s.add_argument("--rerun-loop", action="store_true",
+                   help="run observer-node loop here (about 2 min) instead of reusing its "
+                   "result from an earlier bench or the one shipped with this version")
     s.add_argument("--interface", default="auto",
                    help="auto (socketcan if the channel exists, else virtual), socketcan, ...")
     s.add_argument("--channel", default="vcan0")

@@ -6,7 +6,9 @@ and is made by running the product on the bundled campaign:
     evaluate         observer-node evaluate (the thesis's Tables 4.1-4.3)
     loop-campaign-a  observer-node loop, odd tests estimate, even tests validate (and the
                      picture docs/loop-campaign-a-cd.png)
-    bench            observer-node bench on the in-process bus (daemon vs offline)
+    bench            observer-node bench on the in-process bus (daemon vs offline), with the
+                     loop run here; its result is shipped in observer_node/examples/bench-loop
+                     (--check: and must equal the shipped one, parameters within 2 %)
 
     .venv/bin/python scripts/readme_figures.py            rewrite the tables (about 50 s)
     .venv/bin/python scripts/readme_figures.py --check    exit 1 if a table drifted (CI)
@@ -32,6 +34,8 @@ ROOT = Path(__file__).resolve().parent.parent
 README = ROOT / "README.md"
 TOLERANCE = 0.3
 PICTURES: list[tuple[Path, Path]] = []  # (made, where the README shows it)
+SHIPPED: list[tuple[Path, Path]] = []  # (a loop's result made here, where the package ships it)
+PARAM_RTOL = 0.02  # shipped vs new loop parameters: the fits' 0.3 points, in parameter terms
 
 
 def _num(x: float) -> str:
@@ -88,10 +92,11 @@ def loop_table(tmp: Path) -> str:
 
 
 def bench_table(tmp: Path) -> str:
-    from observer_node.bench import run_bench
+    from observer_node.bench import SHIPPED_LOOP, run_bench
 
-    with contextlib.redirect_stdout(io.StringIO()):
-        result = run_bench(tmp / "bench", interface="virtual")
+    with contextlib.redirect_stdout(io.StringIO()):  # the loop runs here, never the shipped one
+        result = run_bench(tmp / "bench", interface="virtual", rerun_loop=True)
+    SHIPPED.append((tmp / "bench" / "loop", SHIPPED_LOOP))
     rows = ["| test | thesis grey-box: fit CR | fit CD | CD max error [mm] | loop's model on the "
             "bus: fit CR | fit CD | CD max error [mm] | measured CD max [mm] | "
             "max abs(daemon − offline) |", "|---|---|---|---|---|---|---|---|---|"]
@@ -107,6 +112,50 @@ def bench_table(tmp: Path) -> str:
 
 TABLES: dict[str, Callable[[Path], str]] = {
     "evaluate": evaluate_table, "loop-campaign-a": loop_table, "bench": bench_table}
+
+
+def _models(folder: Path) -> dict[str, object]:
+    """What a loop's result says, without the numbers' last bits: each model's parameters,
+    and its effects' kinds, scopes and parameters; and what it was made from."""
+    from observer_node.bench import STAMP
+
+    out: dict[str, object] = {"made_from": json.loads((folder / STAMP).read_text())}
+    for name in ("baseline-model.json", "model.json"):
+        m = json.loads((folder / name).read_text())
+        out[name] = {"parameters": m["parameters"],
+                     "effects": [(e["kind"], e.get("setups"), e.get("parameters", {}))
+                                 for e in m.get("effects", [])]}
+    return out
+
+
+def _loop_drift(made: Path, shipped: Path) -> str | None:
+    """Where the shipped loop result differs from the one just made, or None."""
+    import numpy as np
+
+    if not shipped.is_dir():
+        return f"{shipped} does not exist"
+    a, b = _models(made), _models(shipped)
+
+    def walk(x: object, y: object, where: str) -> str | None:
+        if isinstance(x, dict) and isinstance(y, dict):
+            if x.keys() != y.keys():
+                return f"{where}: keys {sorted(x)} now, {sorted(y)} shipped"
+            pairs = [(x[k], y[k], f"{where}.{k}") for k in x]
+        elif isinstance(x, (list, tuple)) and isinstance(y, (list, tuple)):
+            if len(x) != len(y):
+                return f"{where}: {len(x)} items now, {len(y)} shipped"
+            pairs = [(u, v, f"{where}[{i}]") for i, (u, v) in enumerate(zip(x, y, strict=True))]
+        elif isinstance(x, float) and isinstance(y, (int, float)):
+            return None if np.isclose(x, y, rtol=PARAM_RTOL, atol=0) else \
+                f"{where}: {x:.6g} now, {y:.6g} shipped"
+        else:
+            return None if x == y else f"{where}: {x!r} now, {y!r} shipped"
+        for u, v, w in pairs:
+            if (d := walk(u, v, w)) is not None:
+                return d
+        return None
+
+    return walk(a, b, "loop")
 
 
 def _block(name: str) -> re.Pattern[str]:
@@ -151,6 +200,18 @@ def main(argv: list[str] | None = None) -> int:
                 print(f"readme-figures: {name} differs:\n--- README\n{m.group(2)}\n--- now\n{new}",
                       file=sys.stderr)
             text = text[:m.start(2)] + new + text[m.end(2):]
+        for made, shipped in SHIPPED:  # the bench's loop result, shipped in the package
+            drift = _loop_drift(made, shipped)
+            if drift and a.check:
+                drifted.append(str(shipped.relative_to(ROOT)))
+                print(f"readme-figures: the shipped loop result differs: {drift}",
+                      file=sys.stderr)
+            elif not a.check:
+                from observer_node.bench import LOOP_FILES
+
+                shipped.mkdir(parents=True, exist_ok=True)
+                for f in LOOP_FILES:
+                    shutil.copyfile(made / f, shipped / f)
         if not a.check:  # the pictures the README shows, from the same runs
             for made, shown in PICTURES:
                 shown.parent.mkdir(exist_ok=True)

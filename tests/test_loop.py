@@ -112,6 +112,27 @@ def test_bench_main_job_on_the_virtual_bus(r16_loop, tmp_path, capsys):
     assert model.effects and not plain.effects
 
 
+def test_first_bench_uses_the_loop_result_shipped_with_this_version(tmp_path, capsys):
+    """The loop's two minutes are not a newcomer's first bench: the result made from the same
+    test files by this version ships with the package (scripts/readme_figures.py --check runs
+    the loop again in CI and fails when it drifts)."""
+    from observer_node.bench import (
+        DEFAULT_TESTS,
+        LOOP_TESTS,
+        SHIPPED_LOOP,
+        STAMP,
+        loop_models,
+        loop_stamp,
+    )
+
+    assert json.loads((SHIPPED_LOOP / STAMP).read_text()) == loop_stamp(LOOP_TESTS)
+    plain, model = loop_models(tmp_path / "loop", LOOP_TESTS, DEFAULT_TESTS)
+    assert "shipped with this version" in capsys.readouterr().out
+    assert model.effects and not plain.effects
+    loop_models(tmp_path / "loop", LOOP_TESTS, DEFAULT_TESTS)  # now from the copy
+    assert "reusing the loop's result" in capsys.readouterr().out
+
+
 def _mixed(configs: dict, out: Path, seed: int = 61) -> dict:
     counts = {"R16": 2, "SLED": 2, "FULL": 2}  # named T01.., the setup only in the .mme
     est = simulate_mixed(counts, seed, configs, "E")
