@@ -179,7 +179,7 @@ def compute_per_tick(model, codec: Codec, n: int = 20000) -> np.ndarray:
 
 def run_rate(model, codec: Codec, rate_hz: float, ticks: int, workdir: Path,
              record: bool = True, burst: bool = False, cpu_latency_us: int = 0,
-             live: str = "") -> dict:
+             live: str = "", rt_priority: int = 0) -> dict:
     """With ``burst``: InputBurst frames of eight samples (CAN FD layout) every eight ticks;
     the latency is per frame, and a late frame misses its eight ticks. ``live``: serve the
     live view, with a client in its own process ("read": reading, "stall": subscribed and
@@ -191,7 +191,7 @@ def run_rate(model, codec: Codec, rate_hz: float, ticks: int, workdir: Path,
     node = ObserverNode(NodeConfig(interface="virtual", channel=channel,
                                    record=str(path) if record else "",
                                    live=f"127.0.0.1:{port}" if live else "",
-                                   cpu_latency_us=cpu_latency_us),
+                                   cpu_latency_us=cpu_latency_us, rt_priority=rt_priority),
                         model, codec,
                         port_factory=lambda ids: PythonCanPort("virtual", channel, ids))
     # One bus object sends the inputs and hears the estimates, as a test rig's single
@@ -298,6 +298,9 @@ def main() -> None:
     ap.add_argument("--cpu-latency-us", type=int, default=0,
                     help="PM QoS CPU wake-up latency held during the whole benchmark, floor "
                     "rows included, as the daemon holds it by default (-1: none)")
+    ap.add_argument("--rt-priority", type=int, default=0,
+                    help="the daemon's tick loop under SCHED_FIFO at this priority in every "
+                    "daemon row (0: normal scheduling, the default)")
     a = ap.parse_args()
     sys.setswitchinterval(1e-4)
     _qos, qos_said = hold_cpu_latency(a.cpu_latency_us)
@@ -324,18 +327,19 @@ def main() -> None:
     for rate in a.rates:
         print(_row(f"{rate:.0f}Hz", bus_floor(rate, a.ticks)))
     print(f"  observer daemon ({'not ' if a.no_record else ''}recording to MCAP), grey-box "
-          "model (5 states):")
+          "model (5 states)" + (f", tick loop SCHED_FIFO {a.rt_priority}" if a.rt_priority
+                                else "") + ":")
     workdir = Path(tempfile.mkdtemp())
     for rate, burst in [(r, False) for r in a.rates] + [(r, True) for r in a.burst_rates]:
         r = run_rate(model, codec, rate, a.ticks, workdir, not a.no_record, burst,
-                     a.cpu_latency_us)
+                     a.cpu_latency_us, rt_priority=a.rt_priority)
         print(_row(f"{rate:.0f}Hz" + ("/8" if burst else ""), r,
                    None if a.no_record else r["proc"]))
     if not a.no_record:
         for rate in a.live_rates:
             for mode in ("read", "stall"):
                 r = run_rate(model, codec, rate, a.ticks, workdir, True, False,
-                             a.cpu_latency_us, live=mode)
+                             a.cpu_latency_us, live=mode, rt_priority=a.rt_priority)
                 print(_row(f"{rate:.0f}Hz+{mode}", r, r["proc"])
                       + f"  live client got {r['live_got']} messages")
     print("\n  e2e: bus timestamp of a TunnelAccel frame -> bus timestamp of its ChestEstimate "

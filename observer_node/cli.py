@@ -452,6 +452,11 @@ def build_parser() -> argparse.ArgumentParser:
                    help="hold every CPU's wake-up latency at most US microseconds while running "
                    "(Linux PM QoS, needs root; default 0, as cyclictest does; -1: leave "
                    "power management alone)")
+    s.add_argument("--rt-priority", type=int, metavar="N",
+                   help="run the tick loop under SCHED_FIFO at priority N (1-99), so a viewer "
+                   "or any other process on the bench PC never delays a tick (needs root, "
+                   "CAP_SYS_NICE or RLIMIT_RTPRIO; said at start-up when refused; default 0: "
+                   "normal scheduling)")
     s.add_argument("--trigger-g", type=float, help="crash trigger threshold in g (default 3)")
     s.add_argument("--event-s", type=float, help="observer run time after trigger (0.2 s)")
     s.add_argument("--counts-per-rev", type=int,

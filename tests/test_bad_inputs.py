@@ -158,6 +158,8 @@ CONFIG_CASES = {
     "fd a number": ("[observer]\nfd = 1", "fd"),
     "core not a table": ("[observer]\ncore = 3", "core"),
     "cpu latency text": ("[observer]\ncpu_latency_us = 'low'", "cpu_latency_us"),
+    "rt priority 100": ("[observer]\nrt_priority = 100", "rt_priority"),
+    "rt priority negative": ("[observer]\nrt_priority = -5", "rt_priority"),
     "hold max 0": ("[observer.core]\nhold_max_s = 0", "hold_max_s"),
     "interface empty": ("[observer]\ninterface = ''", "interface"),
 }

@@ -231,6 +231,40 @@ def test_cpu_latency_is_held_while_open_and_fails_soft(tmp_path):
     assert hold_cpu_latency(-1, str(dev))[0] is None
 
 
+def test_rt_priority_is_the_tick_threads_only_and_fails_soft():
+    """SCHED_FIFO for the calling thread, normal scheduling for processes it starts later
+    (the recorder), restored on close; without the right to it, one line and no change."""
+    import os
+    import resource
+    import subprocess
+    import threading
+
+    from observer_node.daemon.realtime import restore_scheduling, set_rt_priority
+
+    may = os.geteuid() == 0 or resource.getrlimit(resource.RLIMIT_RTPRIO)[0] >= 10
+    seen: dict[str, object] = {}
+
+    def tick_thread() -> None:
+        old, said = set_rt_priority(10)
+        seen["said"], seen["policy"] = said, os.sched_getscheduler(0) & ~os.SCHED_RESET_ON_FORK
+        seen["child"] = subprocess.run(
+            [sys.executable, "-c", "import os; print(os.sched_getscheduler(0))"],
+            capture_output=True, text=True, check=True).stdout.strip()
+        restore_scheduling(old)
+        seen["after"] = os.sched_getscheduler(0)
+
+    t = threading.Thread(target=tick_thread)
+    t.start()
+    t.join()
+    assert os.sched_getscheduler(0) == os.SCHED_OTHER  # the test's own thread: untouched
+    assert seen["child"] == str(os.SCHED_OTHER) and seen["after"] == os.SCHED_OTHER
+    if may:
+        assert seen["said"] == "SCHED_FIFO priority 10" and seen["policy"] == os.SCHED_FIFO
+    else:
+        assert "not set" in str(seen["said"]) and seen["policy"] == os.SCHED_OTHER
+    assert set_rt_priority(0) == (None, "normal scheduling")
+
+
 def test_virtual_port_frames_are_not_aliased():
     # The port hands its frames to python-can's virtual bus without the bus's defensive copy:
     # each send must still arrive as its own frame with its own data and bus timestamp.

@@ -40,7 +40,7 @@ from .core import ACCEL_TIMEOUT, BRS_TIMEOUT, BUS_ERROR, OUT_OF_RANGE, RUNNING, 
 from .inputs import Counters, Inputs
 from .outputs import Outputs
 from .ports import FLAG_ERROR, FLAG_REMOTE, Port, PortError, open_port
-from .realtime import hold_cpu_latency
+from .realtime import hold_cpu_latency, restore_scheduling, set_rt_priority
 
 EXIT_RECORDING_LOST = 3  # run's exit code when the recording is not the whole run
 
@@ -71,6 +71,8 @@ class ObserverNode:
         self._pm_qos: BinaryIO | None = None
         self._last_reconnect = -math.inf
         self.cpu_latency = ""  # what hold_cpu_latency said
+        self._old_sched: tuple[int, int] | None = None
+        self.scheduling = ""  # what set_rt_priority said
 
     # ------------------------------------------------------------------ lifecycle
     def metadata(self) -> dict[str, str]:
@@ -79,6 +81,7 @@ class ObserverNode:
                 "model_kind": self.model.kind, "model_id": str(self.model_id),
                 "tick_rate_hz": str(self.model.tick_rate_hz), "dbc_sha256": self.codec.sha256(),
                 "config": json.dumps(cfg), "cpu_latency": self.cpu_latency,
+                "scheduling": self.scheduling,
                 "started_utc": time.strftime("%Y-%m-%dT%H:%M:%SZ", time.gmtime())}
 
     def open(self) -> None:
@@ -86,6 +89,8 @@ class ObserverNode:
         any failure what was opened is closed again (the caller sees the error)."""
         try:
             self._pm_qos, self.cpu_latency = hold_cpu_latency(self.cfg.cpu_latency_us)
+            # this thread runs the ticks; the recorder started below runs at normal priority
+            self._old_sched, self.scheduling = set_rt_priority(self.cfg.rt_priority)
             if self.cfg.record:
                 atts = [("model.json", "application/json", self.model.dumps().encode()),
                         ("chest_observer.dbc", "text/plain", self.codec.path.read_bytes())]
@@ -112,6 +117,8 @@ class ObserverNode:
         if self._pm_qos is not None:
             self._pm_qos.close()
             self._pm_qos = None
+        restore_scheduling(self._old_sched)
+        self._old_sched = None
 
     def install_signal_handlers(self) -> None:
         def stop(_signum: int, _frame: object) -> None:
@@ -336,7 +343,7 @@ def run_daemon(cfg: NodeConfig, quiet: bool = False) -> int:
             print(f"observer-node: {model.kind} model {model.name!r} (id {node.model_id:#06x}) "
                   f"at {model.tick_rate_hz:g} Hz listening on {cfg.interface}:{cfg.channel}"
                   + (f", recording to {node.recorder.path}" if node.recorder else "")
-                  + f"; {node.cpu_latency}", file=sys.stderr, flush=True)
+                  + f"; {node.cpu_latency}; {node.scheduling}", file=sys.stderr, flush=True)
 
     try:
         cnt = node.run(on_ready=ready)

@@ -1,4 +1,4 @@
-"""Keeping the CPUs awake for the tick loop.
+"""Keeping the CPUs awake for the tick loop, and the tick loop ahead of other processes.
 
 A tick starts with a wake-up: the daemon sleeps in ``recv`` until a frame arrives. When the
 CPU it wakes on has gone into a deep idle state (or, in a VM, halted its virtual CPU), that
@@ -10,6 +10,7 @@ which keeps idle CPUs polling. It costs power, nothing else, and ends with the p
 
 from __future__ import annotations
 
+import contextlib
 import os
 import struct
 from typing import BinaryIO
@@ -36,3 +37,32 @@ def hold_cpu_latency(max_us: int, device: str = PM_QOS_DEVICE) -> tuple[BinaryIO
         f.close()
         return None, f"CPU wake-up latency not held ({device}: {e.strerror})"
     return f, f"CPU wake-up latency held at {int(max_us)} us ({device})"
+
+
+def set_rt_priority(priority: int) -> tuple[tuple[int, int] | None, str]:
+    """Run the calling thread under ``SCHED_FIFO`` at ``priority`` (1-99), as real-time
+    tools do (cyclictest, EtherCAT masters): a frame's arrival then preempts every normal
+    process at once, a Foxglove app or a browser on the same PC included. 0 asks nothing.
+    ``SCHED_RESET_ON_FORK``: processes started later (the recorder) run at normal priority.
+    Returns ``(the previous (policy, priority) or None, a line saying what happened)``; it
+    fails soft, as :func:`hold_cpu_latency` does: it needs root, CAP_SYS_NICE or
+    RLIMIT_RTPRIO >= ``priority``. The kernel's real-time throttling (95 % of each second
+    by default) keeps a runaway thread from freezing the machine; this one sleeps in recv."""
+    if priority <= 0:
+        return None, "normal scheduling"
+    old = os.sched_getscheduler(0), os.sched_getparam(0).sched_priority
+    try:
+        os.sched_setscheduler(0, os.SCHED_FIFO | os.SCHED_RESET_ON_FORK,
+                              os.sched_param(priority))
+    except OSError as e:
+        return None, (f"real-time priority not set (SCHED_FIFO {priority}: {e.strerror}; needs "
+                      "root, CAP_SYS_NICE or RLIMIT_RTPRIO); ticks share the CPUs with "
+                      "every other process")
+    return old, f"SCHED_FIFO priority {priority}"
+
+
+def restore_scheduling(old: tuple[int, int] | None) -> None:
+    """Undo :func:`set_rt_priority` for the calling thread."""
+    if old is not None:
+        with contextlib.suppress(OSError):
+            os.sched_setscheduler(0, old[0], os.sched_param(old[1]))
