@@ -181,16 +181,16 @@ def main() -> None:
         cases = [c for c in CASES + HELD_OUT if c.name in a.cases]
     work = a.out or Path(tempfile.mkdtemp())
     print(f"loop reports in {work}/CASE/report.md", flush=True)
-    print(f"{'case':<28}{'accepted (kind@scope)':<44}{'right':>6}{'before':>8}{'after':>7}"
+    print(f"{'case':<34}{'accepted (kind@scope)':<44}{'right':>6}{'before':>8}{'after':>7}"
           f"{'reach':>7}{'gap':>6}{'time s':>8}", flush=True)
     for case in cases:
         r = run_case(case, work, not a.no_reachable)
         reach = r.get("reachable", math.nan)
-        print(f"{case.name:<28}{', '.join(r['found']) or '(none)':<44}"
+        print(f"{case.name:<34}{', '.join(r['found']) or '(none)':<44}"
               f"{'yes' if r['right'] else 'NO':>6}{r['before']:8.1f}{r['after']:7.1f}"
               f"{reach:7.1f}{reach - r['after']:6.1f}{r['seconds']:8.1f}", flush=True)
         if not r["right"]:
-            print(f"{'':<28}true: {', '.join(r['truth']) or '(none)'}", flush=True)
+            print(f"{'':<34}true: {', '.join(r['truth']) or '(none)'}", flush=True)
 
 
 if __name__ == "__main__":

@@ -6,7 +6,8 @@ and is made by running the product on the bundled campaign:
     evaluate         observer-node evaluate (the thesis's Tables 4.1-4.3)
     loop-campaign-a  observer-node loop, odd tests estimate, even tests validate (and the
                      picture docs/loop-campaign-a-cd.png)
-    bench            observer-node bench on the in-process bus (daemon vs offline), with the
+    bench            observer-node bench on the in-process bus (daemon vs offline; the picture
+                     docs/bench-full-002-on-the-bus.png), with the
                      loop run here; its result is shipped in observer_node/examples/bench-loop
                      (--check: and must equal the shipped one, parameters within 2 %)
 
@@ -97,6 +98,9 @@ def bench_table(tmp: Path) -> str:
     with contextlib.redirect_stdout(io.StringIO()):  # the loop runs here, never the shipped one
         result = run_bench(tmp / "bench", interface="virtual", rerun_loop=True)
     SHIPPED.append((tmp / "bench" / "loop", SHIPPED_LOOP))
+    full = tmp / "bench" / "FULL"  # a session per setup when the loop's model is scoped
+    PICTURES.append((full / "event0.png" if full.is_dir() else tmp / "bench" / "event2.png",
+                     ROOT / "docs" / "bench-full-002-on-the-bus.png"))
     rows = ["| test | thesis grey-box: fit CR | fit CD | CD max error [mm] | loop's model on the "
             "bus: fit CR | fit CD | CD max error [mm] | measured CD max [mm] | "
             "max abs(daemon − offline) |", "|---|---|---|---|---|---|---|---|---|"]
