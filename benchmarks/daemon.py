@@ -255,11 +255,12 @@ def run_rate(model, codec: Codec, rate_hz: float, ticks: int, workdir: Path,
     # latency is bus time to bus time, as a CAN logger on the wire would measure it.
     lat = np.full(ticks, np.nan)
     k, prev = -1, -1
+    modulus = codec["ChestEstimate"].counter_modulus  # the E2E profile's range (P01: 0..14)
     while (m := rx.recv(0.05)) is not None:  # 0 would stop at the first filtered-out frame
         counter = m.data[1] & 0xF
         if counter == prev:
             continue  # a watchdog publish between ticks repeats the last tick's counter
-        k += (counter - prev) & 0xF if k >= 0 else counter + 1  # skips inputs with none
+        k += (counter - prev) % modulus if k >= 0 else counter + 1  # skips inputs with none
         prev = counter
         if k < ticks:
             lat[k] = (m.timestamp - sent_at[k]) * 1e6
