@@ -40,7 +40,7 @@ from observer_node.daemon.ports import PythonCanPort
 from observer_node.daemon.realtime import hold_cpu_latency
 from observer_node.data import bundled_campaign, read_isomme
 from observer_node.dbc import Codec
-from observer_node.evaluation import identify
+from observer_node.ident import greybox
 from observer_node.ident.dataset import make_dataset
 from observer_node.recording import read_recording
 
@@ -184,7 +184,6 @@ def run_rate(model, codec: Codec, rate_hz: float, ticks: int, workdir: Path,
     the latency is per frame, and a late frame misses its eight ticks. ``live``: serve the
     live view, with a client in its own process ("read": reading, "stall": subscribed and
     never reading)."""
-    model.tick_rate_hz = rate_hz  # the same matrices, re-labelled: timing only
     channel = f"bench{int(rate_hz)}{'b' if burst else ''}{live}"
     path = workdir / f"{channel}.mcap"
     port = 18765 + len(live)
@@ -307,7 +306,9 @@ def main() -> None:
     _qos, qos_said = hold_cpu_latency(a.cpu_latency_us)
     codec = Codec()
     tests = [read_isomme(bundled_campaign() / f"R16_00{i}.zip") for i in (1, 3, 5)]
-    model = identify("greybox", make_dataset(tests, 1000.0))
+    data = make_dataset(tests, 1000.0)
+    fit = greybox.fit_greybox(data)
+    model = greybox.to_model_file(fit, data)
 
     print("Per-frame codec cost (median of 20,000 calls, this machine):")
     for name, t in codec_costs(codec):
@@ -332,14 +333,16 @@ def main() -> None:
                                 else "") + ":")
     workdir = Path(tempfile.mkdtemp())
     for rate, burst in [(r, False) for r in a.rates] + [(r, True) for r in a.burst_rates]:
-        r = run_rate(model, codec, rate, a.ticks, workdir, not a.no_record, burst,
+        r = run_rate(greybox.to_model_file(fit, data, tick_rate_hz=rate), codec, rate,
+                     a.ticks, workdir, not a.no_record, burst,
                      a.cpu_latency_us, rt_priority=a.rt_priority)
         print(_row(f"{rate:.0f}Hz" + ("/8" if burst else ""), r,
                    None if a.no_record else r["proc"]))
     if not a.no_record:
         for rate in a.live_rates:
             for mode in ("read", "stall"):
-                r = run_rate(model, codec, rate, a.ticks, workdir, True, False,
+                r = run_rate(greybox.to_model_file(fit, data, tick_rate_hz=rate), codec, rate,
+                             a.ticks, workdir, True, False,
                              a.cpu_latency_us, live=mode, rt_priority=a.rt_priority)
                 print(_row(f"{rate:.0f}Hz+{mode}", r, r["proc"])
                       + f"  live client got {r['live_got']} messages")
