@@ -1,8 +1,9 @@
 """observer-node bench: the whole bench in one command.
 
 1. a model: ``--model``, or what the product is for: ``observer-node loop`` on the bundled
-   campaign's odd-numbered tests (or its result from an earlier bench, reused and said so),
-   giving the thesis grey-box and the grey-box with the effects the loop found;
+   campaign's odd-numbered tests (its result shipped with the package or left by an earlier
+   bench when made from the same test files by this version, said so; ``--rerun-loop`` runs
+   it), giving the thesis grey-box and the grey-box with the effects the loop found;
 2. the daemon on vcan0 if this machine has it (SocketCAN), else on an in-process python-can
    virtual bus, recording to MCAP, running the loop's model;
 3. crash-replay's schedule of bundled validation tests (even numbers), with reference frames;
