@@ -147,12 +147,8 @@ class NonlinearGreyBox:
         self._forces(z, u[0], u[1], brs_rad, f)
         # Preallocated buffers only: no array is created per tick (the effect forces are
         # floats).
-        y = self._y
         if not self.after_input:  # files before 0.2: the output of the state before the tick
-            np.dot(self.C, z, out=y)
-            np.dot(self.Df, f, out=self._y2)
-            y += self._y2
-            y += self.offset
+            self._output(z, f)
         Ad, Bd, Gd = self.Ad, self.Bd, self.Gd
         if self.unloading and self.belt_slack(z, u[0], u[1]):
             Ad, Bd, Gd = self.Ad_slack, self.Bd_slack, self.Gd_slack
@@ -165,11 +161,16 @@ class NonlinearGreyBox:
         self.x, self._xn = xn, z
         if self.after_input:  # the state after this tick's inputs, its forces evaluated there
             self._forces(xn, u[0], u[1], brs_rad, f)
-            np.dot(self.C, xn, out=y)
-            np.dot(self.Df, f, out=self._y2)
-            y += self._y2
-            y += self.offset
-        return y
+            self._output(xn, f)
+        return self._y
+
+    def _output(self, z: np.ndarray, f: np.ndarray) -> None:
+        """y = C z + Df f + offset, into the preallocated output."""
+        y = self._y
+        np.dot(self.C, z, out=y)
+        np.dot(self.Df, f, out=self._y2)
+        y += self._y2
+        y += self.offset
 
     def _forces(self, z: np.ndarray, u1: float, u2: float, theta: float, f: np.ndarray) -> None:
         f[0] = f[1] = 0.0
