@@ -34,6 +34,7 @@ from . import __version__
 from .data import ChannelCodes, CrashDataError, CrashTest, bundled_campaign, load_tests
 from .data.crashtest import THESIS_WINDOW_S
 from .data.setups import parse_groups
+from .loop.cluster import ClusterError
 from .model.effects import EFFECTS as MODEL_EFFECTS
 from .model.modelfile import ModelFileError
 
@@ -294,12 +295,14 @@ def cmd_export_c(a: argparse.Namespace) -> int:
 def cmd_loop(a: argparse.Namespace) -> int:
     from .loop.closed_loop import run_loop
 
+    if a.workers is not None and a.workers < 1:
+        raise UsageError(f"--workers {a.workers}: needs at least one worker")
     codes, cpr = _codes(a), a.counts_per_rev
     est = load_tests(a.estimate, codes, cpr)
     val = load_tests(a.validate, codes, cpr)
     r = run_loop(est, val, Path(a.out), a.rate, tuple(a.window or THESIS_WINDOW_S),
                  a.margin, verbose=not a.quiet, groups=parse_groups(a.group),
-                 anywhere=a.allow_anywhere)
+                 anywhere=a.allow_anywhere, scheduler=a.scheduler, workers=a.workers)
     print((Path(a.out) / "report.md").read_text())
     print(f"wrote {a.out}/report.json, report.md, model.json and plots "
           f"({r['seconds']} s)")
@@ -367,6 +370,11 @@ def build_parser() -> argparse.ArgumentParser:
                    "on a rig that says hard seat or no interior)")
     _data_options(s, data=None)
     s.add_argument("--rate", type=float, default=1000.0, help="tick rate in Hz (1000)")
+    s.add_argument("--scheduler", metavar="ADDRESS",
+                   help="run the refits on the Dask cluster at ADDRESS (tcp://HOST:8786); "
+                   "default: a local cluster in this process, one worker per core")
+    s.add_argument("--workers", type=int, metavar="N",
+                   help="workers of the local cluster (default: one per core, at most 4)")
     s.add_argument("--quiet", action="store_true", help="no progress display")
     s.set_defaults(func=cmd_loop)
 
@@ -504,7 +512,7 @@ def main(argv: list[str] | None = None) -> int:
     args = build_parser().parse_args(argv)
     try:
         return int(args.func(args) or 0)
-    except (CrashDataError, ModelFileError, UsageError) as e:
+    except (CrashDataError, ModelFileError, UsageError, ClusterError) as e:
         print(f"observer-node: error: {e}", file=sys.stderr)
         return 2
     except KeyboardInterrupt:

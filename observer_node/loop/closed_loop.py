@@ -30,7 +30,7 @@ import numpy as np
 
 from .. import __version__, plots
 from ..data import CrashTest
-from ..data.crashtest import THESIS_WINDOW_S
+from ..data.crashtest import THESIS_WINDOW_S, CrashDataError
 from ..data.setups import Setup, allowed_setups, assign_setups
 from ..ident import greybox
 from ..ident.dataset import Dataset, make_dataset
@@ -55,7 +55,11 @@ from .analysis import (
     force_signature,
     scope_label,
 )
-from .refit import cross_validate, model, refit, score
+from .cluster import Runner, cluster
+from .diagnosis import sensor_fold_scores, unexplained
+from .evidence import POSSIBLE_MIN, SETUP_TOLERANCE, Evidence, judge
+from .refit import fold_scores, folds, model, refit, score
+from .screening import BrokenTest, residual_outliers, screen_channels
 
 
 def _fit3(t: dict) -> dict:
@@ -84,119 +88,174 @@ def run_loop(est_tests: list[CrashTest], val_tests: list[CrashTest], out: Path,
              rate_hz: float = 1000.0, window_s: tuple[float, float] = THESIS_WINDOW_S,
              margin: float = 1.0, top_k: int = 5, max_effects: int = 4,
              verbose: bool = True, plots: bool = True, ratings: bool = True,
-             groups: list[tuple[str, str]] | None = None, anywhere: bool = False) -> dict:
+             groups: list[tuple[str, str]] | None = None, anywhere: bool = False,
+             scheduler: str | None = None, workers: int | None = None) -> dict:
     """Run the loop and write report.json, report.md, model.json and (``plots``) the plots of
     the validation tests before and after, into ``out``; returns the report. ``ratings``:
     ISO/TS 18571 ratings beside the fits (when the optional package is installed).
     ``groups``: (setup name, test-name pattern) overrides of the setups the metadata gives;
-    ``anywhere``: try effects on setups whose metadata rules them out, too."""
+    ``anywhere``: try effects on setups whose metadata rules them out, too. The refits run
+    on Dask: the scheduler at ``scheduler``, else a local cluster of ``workers`` processes."""
+    with cluster(scheduler, workers) as runner:
+        return _run(est_tests, val_tests, out, rate_hz, window_s, margin, top_k, max_effects,
+                    verbose, plots, ratings, groups, anywhere, runner)
+
+
+def _run(est_tests: list[CrashTest], val_tests: list[CrashTest], out: Path, rate_hz: float,
+         window_s: tuple[float, float], margin: float, top_k: int, max_effects: int,
+         verbose: bool, plots: bool, ratings: bool, groups: list[tuple[str, str]] | None,
+         anywhere: bool, runner: Runner) -> dict:
     t_start = time.monotonic()
     prog = Progress("loop", enabled=verbose)
     out.mkdir(parents=True, exist_ok=True)
     setups = assign_setups([*est_tests, *val_tests], groups)
-    est = make_dataset(est_tests, rate_hz, window_s)
-    val = make_dataset(val_tests, rate_hz, window_s)
+    # Broken channels are found on the recorded data, before anything is fitted on them.
+    broken = [b for t in (*est_tests, *val_tests) for b in screen_channels(t, window_s[1])]
+    left_out = {b.test for b in broken}
+    est_kept = [t for t in est_tests if t.name not in left_out]
+    val_kept = [t for t in val_tests if t.name not in left_out]
+    if len(est_kept) < 2 or not val_kept:
+        raise CrashDataError("too few tests left after leaving out broken ones: "
+                             + "; ".join(f"{b.test} {b.channel}: {b.reason}" for b in broken))
+    est = make_dataset(est_kept, rate_hz, window_s)
+    val = make_dataset(val_kept, rate_hz, window_s)
+    prog.update(f"identifying the thesis grey-box model (using {runner.workers} worker(s))")
+    gb = greybox.fit_greybox(est)
+    # A test the thesis model fits far worse than every other is left out too, and the model
+    # identified again without it.
+    outliers = residual_outliers(_per_test_total(score(dict(gb.params), [], est)))
+    if outliers and est.n_tests - len(outliers) >= 2:
+        broken += outliers
+        left_out |= {b.test for b in outliers}
+        est_kept = [t for t in est_kept if t.name not in left_out]
+        est = make_dataset(est_kept, rate_hz, window_s)
+        gb = greybox.fit_greybox(est)
     est_setups = list(dict.fromkeys(est.setups))
     scopes = {k: scope_options(k, setups, est_setups, anywhere) for k in EFFECTS}
-    prog.update("identifying the thesis grey-box model")
-    gb = greybox.fit_greybox(est)
+    test_setup = dict(zip(est.names, est.setups, strict=True))
     base = dict(gb.params)
     base_se: dict[str, float] = dict(gb.std_err)
     effects: list[dict] = []
     baseline_val = score(base, effects, val)
-    cv_now = cross_validate(base, effects, est)
+    folds_ = folds(est)
+    cv_now = _cv(runner, [(base, effects)], est, folds_)[0]
     history: list[dict] = []
     accepted: list[dict] = []
+    possible: list[dict] = []
+    sensor: dict | None = None
     first_ranking: list[dict] = []
     resid0 = _residual(base, effects, est)
     tests0 = correlation_tests(resid0, est)
-    pool = _pool()
-    try:
-        while len(accepted) < max_effects:
-            current = model(base, effects, est)
-            prog.update(f"residual analysis with {len(effects)} effect(s)")
-            ranked = candidates(current, est, {e["kind"] for e in effects}, scopes)
-            ranking = [{"kind": c.kind, "explained_share": round(c.explained, 4),
-                        "scope": scope_label(c.setups), "scope_shares": c.scope_shares,
-                        "initial_parameters": c.parameters} for c in ranked]
-            if not first_ranking:
-                first_ranking = ranking
-            tried: list[tuple[float, Candidate]] = []
-            # Named effects first; the generic formula only when none of them helps.
-            named = [c for c in ranked if c.kind != "other" and c.explained > 0.01][:top_k]
-            # A parameter-free switching force (the one-sided belt) is predicted badly by its
-            # signature linearised around a trajectory that never switches: always try it.
-            named += [c for c in ranked if not c.parameters and c.kind in FORCE_KINDS
-                      and c.kind != "other" and c not in named]
-            other = [c for c in ranked if c.kind == "other" and c.explained > 0.01]
-            for group in (named, other):
-                # the scope the residual points to, and the widest scope it could have:
-                # cross-validation chooses; the trials are independent, one per core
-                trials = [t for c in group for t in _with_widest_scope(c, scopes[c.kind])]
-                prog.update(f"cross-validating {len(trials)} candidate(s): "
-                            + ", ".join(f"{t.kind} on {scope_label(t.setups)}" for t in trials))
-                cvs = pool.map(_cross_validate, [(base, [*effects, t.effect()], est)
-                                                 for t in trials])
-                tried += list(zip(cvs, trials, strict=True))
-                if tried and max(t[0] for t in tried) - cv_now >= margin:
-                    break
-            step: dict[str, Any] = {
-                "effects_before": [e["kind"] for e in effects], "cv_fit_before": cv_now,
-                "ranking": ranking, "tried": [{"kind": c.kind, "scope": scope_label(c.setups),
-                                               "cv_fit": cv} for cv, c in tried]}
-            history.append(step)
-            if not tried:
-                step["decision"] = "no candidate explains more than 1 % of the residual"
+    while len(accepted) < max_effects:
+        current = model(base, effects, est)
+        prog.update(f"residual analysis with {len(effects)} effect(s)")
+        ranked = candidates(current, est, {e["kind"] for e in effects}, scopes)
+        ranking = [{"kind": c.kind, "explained_share": round(c.explained, 4),
+                    "scope": scope_label(c.setups), "scope_shares": c.scope_shares,
+                    "initial_parameters": c.parameters} for c in ranked]
+        if not first_ranking:
+            first_ranking = ranking
+        # Named effects first; the generic formula only when none of them helps.
+        named = [c for c in ranked if c.kind != "other" and c.explained > 0.01][:top_k]
+        # A parameter-free switching force (the one-sided belt) is predicted badly by its
+        # signature linearised around a trajectory that never switches: always try it.
+        named += [c for c in ranked if not c.parameters and c.kind in FORCE_KINDS
+                  and c.kind != "other" and c not in named]
+        other = [c for c in ranked if c.kind == "other" and c.explained > 0.01]
+        tried: list[tuple[float, Candidate, Evidence]] = []
+        per_test: dict[int, dict[str, float]] = {}
+        for group in (named, other):
+            # the scope the residual points to, and the widest scope it could have:
+            # cross-validation chooses; each fold of each trial is a task on the cluster
+            trials = [t for c in group for t in _with_widest_scope(c, scopes[c.kind])]
+            prog.update(f"cross-validating {len(trials)} candidate(s): "
+                        + ", ".join(f"{t.kind} on {scope_label(t.setups)}" for t in trials))
+            cvs = _cv(runner, [(base, [*effects, t.effect()]) for t in trials], est, folds_)
+            for cv, t in zip(cvs, trials, strict=True):
+                tried.append((_mean(cv), t, judge(cv_now, cv, test_setup, t.setups, margin)))
+                per_test[id(t)] = cv
+            if any(ev.accepted for _, _, ev in tried):
                 break
-            tried.sort(key=lambda t: -t[0])
-            cv_best, best = tried[0]
-            if cv_best - cv_now < margin:
-                step["decision"] = (f"best candidate {best.kind} raises the cross-validated fit by "
-                                    f"{cv_best - cv_now:.2f} < {margin} points: not accepted")
-                break
-            prog.update(f"refitting with {best.kind} on all estimation tests")
-            fit = refit(base, [*effects, best.effect()], est, max_nfev=120)
-            resid_old = _residual(base, effects, est)
-            resid_new = _residual(fit.base, fit.effects, est)
-            share_before, share_after = _signature_shares(best, effects, base, fit.effects,
-                                                          fit.base, resid_old, resid_new, est)
-            ct_old, ct_new = correlation_tests(resid_old, est), correlation_tests(resid_new, est)
-            xc_before, xc_after = _rms_ratio(ct_old), _rms_ratio(ct_new)
-            # The input cross-correlation is reported, not decisive: on simulator data it rose
-            # for true effects too (what remains is discretisation error correlated with the pulse).
-            # Less correlated than before, or no longer worth mentioning (< 2 % of the residual).
-            if share_after >= share_before and share_after >= 0.02:
-                step["decision"] = (f"{best.kind}: the refitted residual is not less "
-                                    "correlated with its signature "
-                                    f"({share_before:.3f} -> {share_after:.3f}): not accepted")
-                break
-            base, effects, cv_now, base_se = fit.base, fit.effects, cv_best, fit.base_std_err
-            val_fit = score(base, effects, val)
-            params, se = effects[-1]["parameters"], fit.effect_std_err[-1]
-            entry = {"kind": best.kind, "description": describe(best.kind, params),
-                     "parameters": params, "std_err": se,
-                     **_scope_entry(best.setups, est, val),
-                     "warnings": parameter_warnings(best.kind, params, se, rate_hz),
-                     "evidence": {"ranking_share": round(best.explained, 4),
-                                  "scope_shares": best.scope_shares,
-                                  "explained_share_before": round(share_before, 4),
-                                  "explained_share_after": round(share_after, 4),
-                                  "cv_fit_before": round(step["cv_fit_before"], 2),
-                                  "cv_fit_after": round(cv_best, 2),
-                                  **_rival(tried),
-                                  "input_xcorr_rms_ratio_before": round(xc_before, 2),
-                                  "input_xcorr_rms_ratio_after": round(xc_after, 2),
-                                  "input_xcorr_max_ratio_before": round(_max_ratio(ct_old), 2),
-                                  "input_xcorr_max_ratio_after": round(_max_ratio(ct_new), 2)},
-                     "fit": _fit3(val_fit)}
-            accepted.append(entry)
-            step["decision"] = f"accepted {best.kind} on {scope_label(best.setups)}"
-            prog.update(f"accepted {best.kind} on {scope_label(best.setups)}: validation fit "
-                        f"{val_fit['fit']['total']:.1f} %")
-
-    finally:
-        pool.terminate()
-    final_val = score(base, effects, val)
+        tried.sort(key=lambda t: -t[0])
+        sensor_ev = _sensor_candidates(runner, base, effects, est, folds_, cv_now, test_setup,
+                                       margin)
+        step: dict[str, Any] = {
+            "effects_before": [e["kind"] for e in effects], "cv_fit_before": _mean(cv_now),
+            "ranking": ranking,
+            "tried": [{"kind": c.kind, "scope": scope_label(c.setups), "cv_fit": cv,
+                       "evidence": ev.as_dict()} for cv, c, ev in tried],
+            "sensor": {o: ev.as_dict() for o, ev in sensor_ev.items()}}
+        history.append(step)
+        # "possible": what the data cannot defend against the model as it now stands
+        possible = [{"kind": c.kind, "scope": scope_label(c.setups),
+                     "after": [e["kind"] for e in effects], "evidence": ev.as_dict(),
+                     "why_not": ev.reason}
+                    for _, c, ev in tried if not ev.accepted and ev.gain_points >= POSSIBLE_MIN]
+        passing = [(cv, c, ev) for cv, c, ev in tried if ev.accepted]
+        best_sensor = max(sensor_ev.items(), key=lambda kv: kv[1].gain_points, default=None)
+        if best_sensor is not None and best_sensor[1].accepted and (
+                not passing or best_sensor[1].gain_points > passing[0][2].gain_points):
+            o, ev = best_sensor
+            sensor = {"output": o, "family": "sensor", "after": [e["kind"] for e in effects],
+                      "looks_like": f"a static function of {o.upper()}: the {o.upper()} "
+                      "transducer's gain or non-linearity, not the chest's physics",
+                      "evidence": ev.as_dict(), "confidence": ev.confidence}
+            step["decision"] = (f"a sensor effect on {o} explains the residual better than "
+                                "any physical effect: reported, not added to the model")
+            break
+        if not passing:
+            step["decision"] = ("no candidate passes the rule (mean paired gain >= "
+                                f"{margin:g} points, 95 % interval above zero, no setup "
+                                "lowered): " + "; ".join(f"{c.kind} on {scope_label(c.setups)}: "
+                                                          f"{ev.reason}"
+                                                          for _, c, ev in tried[:4]))
+            break
+        cv_best, best, ev_best = passing[0]
+        cv_tests_best = per_test[id(best)]
+        prog.update(f"refitting with {best.kind} on all estimation tests")
+        fit = refit(base, [*effects, best.effect()], est, max_nfev=120)
+        resid_old = _residual(base, effects, est)
+        resid_new = _residual(fit.base, fit.effects, est)
+        share_before, share_after = _signature_shares(best, effects, base, fit.effects,
+                                                      fit.base, resid_old, resid_new, est)
+        ct_old, ct_new = correlation_tests(resid_old, est), correlation_tests(resid_new, est)
+        xc_before, xc_after = _rms_ratio(ct_old), _rms_ratio(ct_new)
+        # The input cross-correlation is reported, not decisive: on simulator data it rose
+        # for true effects too (what remains is discretisation error correlated with the pulse).
+        # Less correlated than before, or no longer worth mentioning (< 2 % of the residual).
+        if share_after >= share_before and share_after >= 0.02:
+            step["decision"] = (f"{best.kind}: the refitted residual is not less "
+                                "correlated with its signature "
+                                f"({share_before:.3f} -> {share_after:.3f}): not accepted")
+            break
+        base, effects, base_se = fit.base, fit.effects, fit.base_std_err
+        cv_now = cv_tests_best
+        val_fit = score(base, effects, val)
+        params, se = effects[-1]["parameters"], fit.effect_std_err[-1]
+        entry = {"kind": best.kind, "description": describe(best.kind, params),
+                 "parameters": params, "std_err": se,
+                 **_scope_entry(best.setups, est, val),
+                 "warnings": parameter_warnings(best.kind, params, se, rate_hz),
+                 "confidence": ev_best.confidence,
+                 "evidence": {"ranking_share": round(best.explained, 4),
+                              "scope_shares": best.scope_shares,
+                              "rule": ev_best.as_dict(),
+                              "explained_share_before": round(share_before, 4),
+                              "explained_share_after": round(share_after, 4),
+                              "cv_fit_before": round(step["cv_fit_before"], 2),
+                              "cv_fit_after": round(cv_best, 2),
+                              **_rival([(cv_best, best), *((cv, c) for cv, c, _ in tried
+                                                           if c is not best)]),
+                              "input_xcorr_rms_ratio_before": round(xc_before, 2),
+                              "input_xcorr_rms_ratio_after": round(xc_after, 2),
+                              "input_xcorr_max_ratio_before": round(_max_ratio(ct_old), 2),
+                              "input_xcorr_max_ratio_after": round(_max_ratio(ct_new), 2)},
+                 "fit": _fit3(val_fit)}
+        accepted.append(entry)
+        step["decision"] = f"accepted {best.kind} on {scope_label(best.setups)}"
+        prog.update(f"accepted {best.kind} on {scope_label(best.setups)}: validation fit "
+                    f"{val_fit['fit']['total']:.1f} %")
+        final_val = score(base, effects, val)
     judged = {label: scores(val, model(b, e, val).simulate(val.pulse_g, val.brs_rad), ratings)
               for label, b, e in (("baseline", gb.params, []), ("final", base, effects))}
     mf = _model_file(base, effects, est, rate_hz, gb, setups)
@@ -204,10 +263,17 @@ def run_loop(est_tests: list[CrashTest], val_tests: list[CrashTest], out: Path,
     # the thesis grey-box on the same tests, for a side-by-side run (observer-node bench)
     _model_file(dict(gb.params), [], est, rate_hz, gb, setups).save(out / "baseline-model.json")
     resid_final = _residual(base, effects, est)
+    y_final = model(base, effects, est).simulate(est.pulse_g, est.brs_rad)
     report = {
         "baseline": {"fit": _fit3(baseline_val), "parameters": gb.params,
                      "std_err": gb.std_err},
         "effects": accepted,
+        "possible": sorted(possible, key=lambda p: -p["evidence"]["gain_points"]),
+        "sensor_effects": [sensor] if sensor else [],
+        "unexplained": [] if sensor else unexplained(est, y_final),
+        "warnings": [b.as_dict() for b in broken],
+        "left_out": _with_and_without(broken, base, effects, est_tests, val_tests, est_kept,
+                                      val, rate_hz, window_s),
         "final": {"fit": _fit3(final_val), "parameters": base, "std_err": base_se},
         "setups": [s.as_dict() for s in setups],
         "model": "model.json", "baseline_model": "baseline-model.json",
@@ -218,9 +284,12 @@ def run_loop(est_tests: list[CrashTest], val_tests: list[CrashTest], out: Path,
         "history": history,
         "settings": {"rate_hz": rate_hz, "window_s": list(window_s), "margin": margin,
                      "top_k": top_k, "groups": [f"{n}={p}" for n, p in groups or []],
-                     "allow_anywhere": anywhere,
+                     "allow_anywhere": anywhere, "workers": runner.workers,
                      "cross_validation": "two-fold inside estimation tests, each setup's "
-                     "tests alternating between the folds"},
+                     "tests alternating between the folds; per-test gains paired",
+                     "rule": f"mean paired gain >= {margin:g} points on the tests the effect "
+                     "acts on, its 95 % t-interval above zero, no setup's cross-validated fit "
+                     f"lowered by more than {SETUP_TOLERANCE:g} points"},
         "validation_tests": {"baseline": baseline_val["tests"], "final": final_val["tests"]},
         "criteria": {k: v["criteria"] for k, v in judged.items()},
         **({"iso18571": {k: v["iso18571"] for k, v in judged.items()}}
@@ -236,30 +305,77 @@ def run_loop(est_tests: list[CrashTest], val_tests: list[CrashTest], out: Path,
     return report
 
 
-class _Serial:
-    """The pool's interface without processes (one core, or where fork is unavailable)."""
-
-    def map(self, f: Any, items: list) -> list:
-        return [f(x) for x in items]
-
-    def terminate(self) -> None:
-        pass
+def _mean(per_test: dict[str, float]) -> float:
+    return float(np.mean(list(per_test.values())))
 
 
-def _pool() -> Any:
-    """Worker processes for the cross-validation trials, one per core (at most 4)."""
-    import multiprocessing
-    import os
-
-    n = min(4, len(os.sched_getaffinity(0)))
-    if n < 2 or "fork" not in multiprocessing.get_all_start_methods():
-        return _Serial()
-    return multiprocessing.get_context("fork").Pool(n)
+def _per_test_total(table: dict) -> dict[str, float]:
+    return {n: (v["cr"] + v["cd"]) / 2 for n, v in table["tests"].items()}
 
 
-def _cross_validate(args: tuple[dict, list[dict], Dataset]) -> float:
+def _fold(base: dict, effects: list[dict], data: Dataset, train: list[int],
+          test: list[int]) -> dict[str, float]:
+    """One fold of one model: a task on the cluster (quiet about overflowing trials)."""
     with np.errstate(all="ignore"):
-        return cross_validate(*args)
+        return fold_scores(base, effects, data, train, test)
+
+
+def _sensor_fold(base: dict, effects: list[dict], data: Dataset, train: list[int],
+                 test: list[int]) -> dict[str, dict[str, float]]:
+    with np.errstate(all="ignore"):
+        return sensor_fold_scores(base, effects, data, train, test)
+
+
+def _cv(runner: Runner, models: list[tuple[dict, list[dict]]], data: Dataset,
+        halves: tuple[list[int], list[int]]) -> list[dict[str, float]]:
+    """Per-test cross-validated fit_TOT [%] of each (base, effects), both folds as tasks."""
+    one, two = halves
+    args = [(b, e, data, tr, te) for b, e in models for tr, te in ((one, two), (two, one))]
+    res = runner.map(_fold, args)
+    return [{**res[2 * i], **res[2 * i + 1]} for i in range(len(models))]
+
+
+def _sensor_candidates(runner: Runner, base: dict, effects: list[dict], data: Dataset,
+                       halves: tuple[list[int], list[int]], cv_now: dict[str, float],
+                       test_setup: dict[str, str], margin: float) -> dict[str, Evidence]:
+    """The sensor family: a static correction of one output, judged by the same rule."""
+    one, two = halves
+    res = runner.map(_sensor_fold, [(base, effects, data, one, two),
+                                    (base, effects, data, two, one)])
+    return {o: judge(cv_now, {**res[0][o], **res[1][o]}, test_setup, None, margin)
+            for o in res[0]}
+
+
+def _with_and_without(broken: list[BrokenTest], base: dict, effects: list[dict],
+                      est_tests: list[CrashTest], val_tests: list[CrashTest],
+                      est_kept: list[CrashTest], val: Dataset, rate_hz: float,
+                      window_s: tuple[float, float]) -> dict:
+    """What the fits are with the left-out tests and without: the final structure refitted
+    with the left-out estimation tests back in, scored on the validation tests; and the final
+    model scored on the validation tests with the left-out ones back in."""
+    names = {b.test for b in broken}
+    if not names:
+        return {}
+    out: dict[str, Any] = {"tests": sorted(names),
+                           "validation_fit_without": _fit3(score(base, effects, val))}
+    back_est = [t for t in est_tests if t.name in names]
+    if back_est:
+        try:
+            est_all = make_dataset([*est_kept, *back_est], rate_hz, window_s)
+            with np.errstate(all="ignore"):
+                r = refit(base, effects, est_all, max_nfev=60)
+            out["validation_fit_if_fitted_with_them"] = _fit3(score(r.base, r.effects, val))
+        except (CrashDataError, ValueError) as e:  # missing samples: not fittable at all
+            out["validation_fit_if_fitted_with_them"] = f"cannot be fitted: {e}"
+    back_val = [t for t in val_tests if t.name in names]
+    if back_val:
+        try:
+            val_all = make_dataset([*[t for t in val_tests if t.name not in names],
+                                    *back_val], rate_hz, window_s)
+            out["validation_fit_with_them"] = _fit3(score(base, effects, val_all))
+        except (CrashDataError, ValueError) as e:
+            out["validation_fit_with_them"] = f"cannot be scored: {e}"
+    return out
 
 
 def _with_widest_scope(c: Candidate, options: list[list[str] | None]) -> list[Candidate]:
@@ -434,8 +550,9 @@ def _markdown(r: dict) -> str:
     lines += [f"| **final** | | **{f['cr']:.1f}** | **{f['cd']:.1f}** | **{f['total']:.1f}** |",
               ""]
     if not r["effects"]:
-        lines += ["No effect was accepted: no candidate raised the cross-validated fit by "
-                  f"{r['settings']['margin']} points.", ""]
+        lines += ["No effect was accepted: none passed the rule (" + r["settings"]["rule"]
+                  + ").", ""]
+    lines += _markdown_findings(r)
     lines += ["## Injury criteria on the validation tests", "",
               "Mean |estimate - measured| over the validation tests (peak chest deflection, "
               "chest X acceleration 3 ms clip, viscous criterion; per test in report.json)"
@@ -473,6 +590,7 @@ def _markdown(r: dict) -> str:
         lines += [f"## {e['kind']}", "", e["description"], "",
                   f"- {where}",
                   f"- parameters (± standard error): {params or '(none)'}",
+                  f"- confidence (cross-validated, paired over tests): {e['confidence']}",
                   *(f"- **warning**: {w}" for w in e.get("warnings", [])),
                   *([rival] if rival else []),
                   f"- explained {100 * ev['explained_share_before']:.1f} % of the residual before"
@@ -503,3 +621,50 @@ def _markdown(r: dict) -> str:
               f"Plots: fit_before_*.png, fit_after_*.png, residuals.png. Model: {r['model']}. "
               f"Run time {r['seconds']} s.", ""]
     return "\n".join(lines)
+
+
+def _markdown_findings(r: dict) -> list[str]:
+    """Warnings (broken tests), sensor effects, unexplained structure and possible effects."""
+    lines: list[str] = []
+    if r["warnings"]:
+        lines += ["## Warnings: tests left out of the fits", "",
+                  "| test | channel | why |", "|---|---|---|"]
+        lines += [f"| {w['test']} | {w['channel']} | {w['reason']} |" for w in r["warnings"]]
+        lo = r["left_out"]
+        lines += ["", f"- validation fit_TOT without them: {_pct(lo['validation_fit_without'])}"]
+        if "validation_fit_if_fitted_with_them" in lo:
+            lines.append("- with the left-out estimation tests fitted too: "
+                         + _pct(lo["validation_fit_if_fitted_with_them"]))
+        if "validation_fit_with_them" in lo:
+            lines.append("- scored on the left-out validation tests too: "
+                         + _pct(lo["validation_fit_with_them"]))
+        lines.append("")
+    for s in r["sensor_effects"]:
+        lines += ["## Sensor effect (not physics)", "",
+                  f"- **{s['output'].upper()}**: {s['looks_like']}",
+                  f"- confidence: {s['confidence']}",
+                  "- not added to model.json: check the transducer's calibration", ""]
+    for u in r["unexplained"]:
+        gains = ", ".join(f"{k} {v:+.1f}" for k, v in u["gain_points"].items())
+        lines += ["## Unexplained", "",
+                  f"- the residual of **{u['output'].upper()}** on {', '.join(u['setups'])} "
+                  f"is structured and no effect of the library explains it under the rule; "
+                  f"it looks like {u['looks_like']}",
+                  f"- a correction of that shape would add (fit points per setup): {gains}; "
+                  f"the same in the other output: {u['other_output_gain_points']:+.1f}", ""]
+    if r["possible"]:
+        lines += ["## Possible, not accepted", "",
+                  "| effect | scope | after | gain (95 % CI), tests improved | why not |",
+                  "|---|---|---|---|---|"]
+        for p in r["possible"]:
+            ev = p["evidence"]
+            lo, hi = ev["ci95_points"]
+            lines.append(f"| {p['kind']} | {p['scope']} | {'+'.join(p['after']) or '-'} | "
+                         f"{ev['gain_points']:+.2f} ({lo:+.2f}..{hi:+.2f}), "
+                         f"{ev['tests_improved']}/{ev['tests']} | {p['why_not']} |")
+        lines.append("")
+    return lines
+
+
+def _pct(f: dict | str) -> str:
+    return f"{f['total']:.1f} %" if isinstance(f, dict) else f

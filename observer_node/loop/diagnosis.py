@@ -1,0 +1,109 @@
+"""What a residual looks like when no physical effect explains it, and the sensor family.
+
+A transducer's error (a gain or a static non-linearity of one channel) leaves its mark in one
+output only, as a function of that output; physics moves the chest, so it shows in both CR and
+CD. Two shapes are looked for per output, each fitted by least squares to the residual:
+
+- ``static``: a static function of the output, y² and y³ of the model's own estimate (a
+  transducer over- or under-reading at large values);
+- ``lag``: the estimate's rate dy/dt (a time shift or a rate term the model lacks).
+
+Their size is given as the fit points [%, eq. 3.15] the correction would add. The sensor
+candidate (:func:`sensor_fold_scores`) is the static correction of one output, fitted on one
+half of the estimation tests and scored on the other, so it competes with physics under the
+same rule (:mod:`.evidence`).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from ..ident.dataset import Dataset
+from ..ident.metrics import OUTPUT_NAMES, fit_percent
+from .refit import model, refit
+
+SHAPES = {"static": "a static function of {o} (a transducer's non-linearity: its error grows "
+                    "with the value)",
+          "lag": "a lag or rate term in {o} (proportional to its rate of change)"}
+
+
+def _basis(y_hat: np.ndarray, shape: str, fs_hz: float, scale: float = 0.0) -> np.ndarray:
+    """Regressors (tests, n, m) of one output's estimate (tests, n); ``scale`` (the output's
+    unit) keeps the powers well conditioned, default the largest |estimate|."""
+    if shape == "static":
+        s = scale or float(np.max(np.abs(y_hat))) or 1.0
+        return np.stack([(y_hat / s) ** 2, (y_hat / s) ** 3, y_hat / s], axis=-1)
+    return np.gradient(y_hat, 1.0 / fs_hz, axis=1)[..., None]
+
+
+def _solve(r: np.ndarray, X: np.ndarray) -> np.ndarray:
+    coef, *_ = np.linalg.lstsq(X.reshape(-1, X.shape[-1]), r.ravel(), rcond=None)
+    return coef
+
+
+def _fits(y: np.ndarray, y_hat: np.ndarray) -> np.ndarray:
+    return np.array([fit_percent(y[i], y_hat[i]) for i in range(len(y))])
+
+
+def shape_gains(data: Dataset, y_hat: np.ndarray) -> dict[str, dict[str, np.ndarray]]:
+    """Per output and shape, each test's fit gain [points] from that correction of the
+    residual (in-sample; the corrections have 1-3 coefficients over thousands of samples)."""
+    y, yh = data.y[:, data.win], y_hat[:, data.win]
+    out: dict[str, dict[str, np.ndarray]] = {}
+    for k, o in enumerate(OUTPUT_NAMES):
+        base = _fits(y[..., k], yh[..., k])
+        out[o] = {}
+        for shape in SHAPES:
+            X = _basis(y_hat[..., k], shape, data.fs_hz)[:, data.win]
+            corr = yh[..., k] + X @ _solve(y[..., k] - yh[..., k], X)
+            out[o][shape] = _fits(y[..., k], corr) - base
+    return out
+
+
+def unexplained(data: Dataset, y_hat: np.ndarray, min_points: float = 1.0) -> list[dict]:
+    """Structure left in the residual: per output, the shape whose correction would add at
+    least ``min_points`` fit points on some setup, with the setups where it does."""
+    gains = shape_gains(data, y_hat)
+    setups = list(dict.fromkeys(data.setups))
+    out = []
+    for o, by_shape in gains.items():
+        shape, g = max(by_shape.items(), key=lambda kv: float(np.mean(kv[1])))
+        per_setup = {s: float(np.mean([g[i] for i, t in enumerate(data.setups) if t == s]))
+                     for s in setups}
+        where = [s for s, v in per_setup.items() if v >= min_points]
+        if where:
+            out.append({"output": o, "setups": where,
+                        "looks_like": SHAPES[shape].format(o=o.upper()), "shape": shape,
+                        "gain_points": {s: round(v, 2) for s, v in per_setup.items()},
+                        "other_output_gain_points": round(float(np.mean(
+                            [np.mean(v) for v in gains[_other(o)].values()])), 2)})
+    return out
+
+
+def _other(o: str) -> str:
+    return OUTPUT_NAMES[1 - OUTPUT_NAMES.index(o)]
+
+
+def sensor_fold_scores(base: dict, effects: list[dict], data: Dataset, train: list[int],
+                       test: list[int], max_nfev: int = 60) -> dict[str, dict[str, float]]:
+    """One fold of the sensor candidate: refit the current model on ``train``, fit a static
+    correction of each output there, score each ``test`` test's fit_TOT [%] with it. Returns
+    {output: {test: fit_TOT}}."""
+    r = refit(base, effects, data.subset(train), max_nfev)
+    tr, te = data.subset(train), data.subset(test)
+    with np.errstate(all="ignore"):
+        yh_tr = model(r.base, r.effects, tr).simulate(tr.pulse_g, tr.brs_rad)
+        yh_te = model(r.base, r.effects, te).simulate(te.pulse_g, te.brs_rad)
+    y = te.y[:, te.win]
+    out: dict[str, dict[str, float]] = {}
+    for k, o in enumerate(OUTPUT_NAMES):
+        scale = float(np.max(np.abs(yh_tr[..., k]))) or 1.0
+        X_tr = _basis(yh_tr[..., k], "static", tr.fs_hz, scale)[:, tr.win]
+        coef = _solve(tr.y[:, tr.win, k] - yh_tr[:, tr.win, k], X_tr)
+        corrected = yh_te[:, te.win].copy()
+        corrected[..., k] += _basis(yh_te[..., k], "static", te.fs_hz, scale)[:, te.win] @ coef
+        out[o] = {}
+        for i, n in enumerate(te.names):
+            f = np.mean([fit_percent(y[i, :, j], corrected[i, :, j]) for j in range(2)])
+            out[o][n] = float(f) if np.isfinite(f) else -1e3
+    return out

@@ -1,0 +1,94 @@
+"""The rule an effect must pass to be named: paired, per test, against test-to-test scatter.
+
+A candidate is judged by cross-validation inside the estimation tests: each test's fit_TOT by a
+model fitted on the other half, with the candidate and without it. The per-test gains are paired
+(the same test, the same fold), so the scatter between tests (dummy, belt routing, pulse) cancels
+and what is left is whether the effect helps test after test. An effect is **accepted** only if
+
+- its mean gain over the estimation tests is at least ``margin`` fit points,
+- the 95 % confidence interval of that mean (Student's t, paired) lies above zero, and
+- no setup's mean cross-validated fit falls by more than ``SETUP_TOLERANCE`` points.
+
+All tests count, those the effect does not act on too: the model is refitted whole, and a
+scoped effect that frees the shared parameters helps (or harms) the other setups' tests as
+well. The gain on the tests it acts on is reported beside.
+
+A candidate that gains something but fails the rule is **possible**: reported, never named as a
+finding. The sign test (how many tests improved, and its one-sided p-value) is reported beside
+the interval; with six tests even six of six gives p = 0.016, so it informs and does not decide.
+"""
+
+from __future__ import annotations
+
+from dataclasses import asdict, dataclass
+
+import numpy as np
+from scipy import stats
+
+SETUP_TOLERANCE = 0.3  # fit points: refit noise on setups an effect does not act on
+POSSIBLE_MIN = 0.25  # fit points: smaller mean gains are not worth listing
+
+
+@dataclass
+class Evidence:
+    """How well the data defend a candidate (fit points are eq. 3.15's, CR and CD averaged)."""
+
+    gain_points: float  # mean paired gain over the estimation tests
+    ci95_points: tuple[float, float]  # 95 % t-interval of that mean
+    gain_in_scope_points: float  # mean paired gain over the tests the effect acts on
+    test_gain_points: dict[str, float]  # per test
+    tests_improved: int
+    tests: int
+    sign_test_p: float  # one-sided: P(at least this many improve | no effect)
+    setup_gain_points: dict[str, float]  # mean paired gain per setup, over all its tests
+    accepted: bool
+    reason: str  # why not, when not accepted
+
+    def as_dict(self) -> dict:
+        d = asdict(self)
+        d["ci95_points"] = [round(v, 2) for v in self.ci95_points]
+        for k in ("gain_points", "sign_test_p", "gain_in_scope_points"):
+            d[k] = round(d[k], 3)
+        d["test_gain_points"] = {k: round(v, 2) for k, v in self.test_gain_points.items()}
+        d["setup_gain_points"] = {k: round(v, 2) for k, v in self.setup_gain_points.items()}
+        return d
+
+    @property
+    def confidence(self) -> str:
+        """One line for the report: gain, interval, tests improved."""
+        lo, hi = self.ci95_points
+        return (f"{self.gain_points:+.1f} points (95 % CI {lo:+.1f}..{hi:+.1f}), "
+                f"{self.tests_improved}/{self.tests} tests improved (sign test p = "
+                f"{self.sign_test_p:.3f})")
+
+
+def judge(before: dict[str, float], after: dict[str, float], setups: dict[str, str],
+          scope: list[str] | None, margin: float) -> Evidence:
+    """Judge a candidate from the per-test cross-validated fit_TOT [%] without it (``before``)
+    and with it (``after``); ``setups`` maps each test to its setup, ``scope`` is the setups
+    the effect acts on (None: every test)."""
+    names = [n for n in before if n in after]
+    gain = {n: after[n] - before[n] for n in names}
+    inside = [gain[n] for n in names if scope is None or setups[n] in scope] or [0.0]
+    d = np.array([gain[n] for n in names], float)
+    mean = float(np.mean(d))
+    if len(d) > 1 and np.std(d, ddof=1) > 0:
+        half = float(stats.t.ppf(0.975, len(d) - 1) * np.std(d, ddof=1) / np.sqrt(len(d)))
+    else:
+        half = float("inf")
+    improved = int(np.sum(d > 0))
+    sign_p = float(stats.binomtest(improved, len(d), 0.5, alternative="greater").pvalue)
+    per_setup = {s: float(np.mean([gain[n] for n in names if setups[n] == s]))
+                 for s in dict.fromkeys(setups[n] for n in names)}
+    worst = min(per_setup, key=lambda s: per_setup[s])
+    if mean < margin:
+        reason = f"gains {mean:.2f} < {margin:g} points"
+    elif per_setup[worst] < -SETUP_TOLERANCE:
+        reason = f"lowers setup {worst}'s cross-validated fit by {-per_setup[worst]:.2f} points"
+    elif mean - half <= 0:
+        reason = (f"gains {mean:.2f} points but the 95 % interval reaches "
+                  f"{mean - half:+.2f}: not above test-to-test scatter")
+    else:
+        reason = ""
+    return Evidence(mean, (mean - half, mean + half), float(np.mean(inside)), gain, improved,
+                    len(d), sign_p, per_setup, not reason, reason)

@@ -1,0 +1,131 @@
+"""Broken tests, found before they are fitted: one bad channel must not become physics.
+
+Per channel, on the recorded samples from first contact to the end of the scoring window:
+
+- **missing**: samples that are not numbers (NOVALUE, NaN) where the fit needs them;
+- **frozen**: a channel that stops changing while the crash goes on (a cable fault). CR and
+  CD, filtered analogue signals, never hold one value for 2 ms while the pulse is above a fifth
+  of its peak. The BRS does: a locked retractor stands still for 20-40 ms, and the spindle
+  stops for good once the load limiter is done. It is frozen when it stops for good with more
+  than 30 % of the crash's velocity change (the pulse's integral to the window's end) still
+  to come: on the bundled campaign it stops with at most 12 % to come;
+- **saturated**: a flat top at the channel's extreme (the same extreme value for 1 ms or more);
+- **spiking**: single samples far off their neighbours (over 10 robust scales of the
+  sample-to-sample change and over a tenth of the channel's range).
+
+Per test, after the thesis grey-box is fitted: a **residual far outside the others'**, a
+test whose fit_TOT lies more than 20 points and 4 robust deviations below the median of the
+estimation tests (scatter between setups is far smaller than that on every campaign we hold).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..data import CrashTest
+
+FROZEN_MS = {"cr": 2.0, "cd": 2.0}
+BRS_DV_LEFT = 0.3
+SATURATED_MS = 1.0
+SPIKE_SCALES = 10.0
+OUTLIER_POINTS = 20.0
+OUTLIER_DEVIATIONS = 4.0
+
+
+@dataclass
+class BrokenTest:
+    """A test left out of the fits, and why (for report.json's ``warnings``)."""
+
+    test: str
+    channel: str  # pulse, brs, cr, cd, or "residual"
+    reason: str
+
+    def as_dict(self) -> dict:
+        return {"test": self.test, "channel": self.channel, "reason": self.reason}
+
+
+def _longest_run(x: np.ndarray, where: np.ndarray) -> tuple[int, int]:
+    """Length and start index of the longest run of one value inside ``where``."""
+    best, start, run, run_start = 0, 0, 0, 0
+    for i in range(1, len(x)):
+        if where[i] and x[i] == x[i - 1]:
+            if run == 0:
+                run_start = i - 1
+            run += 1
+            if run > best:
+                best, start = run, run_start
+        else:
+            run = 0
+    return best, start
+
+
+def screen_channels(test: CrashTest, end_s: float) -> list[BrokenTest]:
+    """The channel faults of one test between first contact and ``end_s``."""
+    i0, i1 = test.index_of(0.0), test.index_of(end_s) + 1
+    ms = 1000.0 / test.fs_hz
+    pulse = test.pulse_g[i0:i1] - test.pulse_bias_g()
+    channels = {"pulse": test.pulse_g[i0:i1], "brs": test.brs[i0:i1],
+                **({"cr": test.cr_g[i0:i1]} if test.cr_g is not None else {}),
+                **({"cd": test.cd_mm[i0:i1]} if test.cd_mm is not None else {})}
+    out: list[BrokenTest] = []
+    for ch, x in channels.items():
+        bad = ~np.isfinite(x)
+        if bad.any():
+            first = (i0 + int(np.argmax(bad))) / test.fs_hz + test.t0_s
+            out.append(BrokenTest(test.name, ch, f"{int(bad.sum())} samples missing (from "
+                                  f"t = {1000 * first:.1f} ms)"))
+            continue
+        if ch in FROZEN_MS and np.ptp(pulse) > 0:
+            crash = np.abs(pulse) > 0.2 * np.max(np.abs(pulse))
+            run, at = _longest_run(x, crash)
+            if run * ms > FROZEN_MS[ch]:
+                out.append(BrokenTest(test.name, ch, f"frozen for {run * ms:.1f} ms during the "
+                                      f"crash (from t = {(at + i0) * ms + 1000 * test.t0_s:.1f}"
+                                      f" ms) at {x[at]:g}"))
+                continue
+        if ch == "brs" and np.all(np.isfinite(pulse)):
+            moves = np.nonzero(np.diff(x))[0]
+            last = int(moves[-1]) + 1 if len(moves) else 0
+            dv = np.abs(np.cumsum(pulse))
+            left = 1.0 - dv[last] / dv[-1] if dv[-1] > 0 else 0.0
+            if left > BRS_DV_LEFT:
+                out.append(BrokenTest(test.name, ch, f"stops for good at t = "
+                                      f"{(last + i0) * ms + 1000 * test.t0_s:.1f} ms with "
+                                      f"{100 * left:.0f} % of the crash's velocity change to "
+                                      f"come (frozen: a cable or sensor fault)"))
+                continue
+        if ch != "brs":
+            peak = np.max(np.abs(x))
+            at_peak = int(np.sum(np.abs(x) == peak))
+            if peak > 0 and at_peak * ms >= SATURATED_MS:
+                out.append(BrokenTest(test.name, ch, f"saturated: {at_peak * ms:.1f} ms at "
+                                      f"its extreme {peak:g}"))
+                continue
+        dx = np.diff(x)
+        scale = 1.4826 * float(np.median(np.abs(dx - np.median(dx))))
+        if len(x) > 4 and scale > 0:
+            med = np.median(np.lib.stride_tricks.sliding_window_view(x, 5), axis=1)
+            off = np.abs(x[2:-2] - med)
+            spikes = off > max(SPIKE_SCALES * scale, 0.1 * float(np.ptp(x)))
+            if spikes.any():
+                at_ms = (int(np.argmax(spikes)) + 2 + i0) * ms + 1000 * test.t0_s
+                out.append(BrokenTest(test.name, ch, f"{int(spikes.sum())} spike(s) (first at "
+                                      f"t = {at_ms:.1f} ms)"))
+    return out
+
+
+def residual_outliers(fit_total: dict[str, float]) -> list[BrokenTest]:
+    """Tests whose fit_TOT [%] lies far below the others' (see the module's docstring)."""
+    out = []
+    for name, f in fit_total.items():
+        rest = np.array([v for n, v in fit_total.items() if n != name])
+        if len(rest) < 3:
+            return []
+        med = float(np.median(rest))
+        mad = 1.4826 * float(np.median(np.abs(rest - med)))
+        if med - f > OUTLIER_POINTS and med - f > OUTLIER_DEVIATIONS * max(mad, 1e-9):
+            out.append(BrokenTest(name, "residual", f"fit_TOT {f:.1f} % against the others' "
+                                  f"median {med:.1f} % (robust scatter {mad:.1f})"))
+    return out

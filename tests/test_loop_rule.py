@@ -1,0 +1,124 @@
+"""The loop's rule for naming an effect, its screening for broken tests, its diagnosis of what
+is left, and where its refits run (observer_node.loop.evidence, screening, diagnosis, cluster)."""
+
+from __future__ import annotations
+
+import dataclasses
+import subprocess
+import sys
+
+import numpy as np
+import pytest
+
+from observer_node.ident.dataset import make_dataset
+from observer_node.loop.diagnosis import shape_gains, unexplained
+from observer_node.loop.evidence import judge
+from observer_node.loop.screening import residual_outliers, screen_channels
+
+SETUPS = {f"T{i}": s for i, s in enumerate(["A", "A", "B", "B", "C", "C"])}
+
+
+def _cv(gains: list[float], base: float = 90.0) -> tuple[dict, dict]:
+    before = {n: base for n in SETUPS}
+    return before, {n: base + g for n, g in zip(SETUPS, gains, strict=True)}
+
+
+def test_a_consistent_gain_is_accepted_with_its_confidence():
+    ev = judge(*_cv([1.4, 1.2, 1.6, 1.1, 1.5, 1.3]), SETUPS, None, 1.0)
+    assert ev.accepted, ev.reason
+    assert ev.ci95_points[0] > 0 and ev.tests_improved == 6
+    assert "6/6 tests improved" in ev.confidence
+
+
+def test_a_gain_carried_by_one_test_is_only_possible():
+    # the mean clears the margin, but one test carries it: not above the scatter
+    ev = judge(*_cv([9.0, -0.5, 0.2, -0.3, 0.1, -0.2]), SETUPS, None, 1.0)
+    assert not ev.accepted and "scatter" in ev.reason
+    assert ev.gain_points > 1.0
+
+
+def test_a_gain_that_lowers_one_setup_is_refused():
+    ev = judge(*_cv([3.0, 3.2, 2.9, 3.1, -0.8, -0.6]), SETUPS, None, 1.0)
+    assert not ev.accepted and "setup C" in ev.reason
+
+
+def test_a_small_gain_is_refused():
+    ev = judge(*_cv([0.5, 0.6, 0.4, 0.5, 0.6, 0.5]), SETUPS, None, 1.0)
+    assert not ev.accepted and "< 1" in ev.reason
+
+
+def test_the_gain_where_a_scoped_effect_acts_is_reported(campaign):
+    ev = judge(*_cv([0.1, 0.0, 3.0, 3.2, 2.8, 3.1]), SETUPS, ["B", "C"], 1.0)
+    assert ev.gain_in_scope_points == pytest.approx(3.025)
+    assert ev.gain_points == pytest.approx(np.mean([0.1, 0.0, 3.0, 3.2, 2.8, 3.1]))
+
+
+def test_the_bundled_campaign_has_no_broken_test(campaign):
+    assert [b for t in campaign for b in screen_channels(t, 0.15)] == []
+
+
+def _broken(test, **arrays):
+    return dataclasses.replace(test, **arrays)
+
+
+@pytest.mark.parametrize("fault", ["frozen_brs", "nan_cd", "spike_cr", "saturated_cd",
+                                   "frozen_cd"])
+def test_a_broken_channel_is_named(campaign, fault):
+    t = next(x for x in campaign if x.name == "R16_003")
+    i = t.index_of(0.030)
+    if fault == "frozen_brs":  # the cable fails 30 ms into the crash
+        brs = t.brs.copy()
+        brs[i:] = brs[i]
+        b = _broken(t, brs=brs)
+        channel = "brs"
+    elif fault == "nan_cd":
+        cd = t.cd_mm.copy()
+        cd[i:i + 50] = np.nan
+        b, channel = _broken(t, cd_mm=cd), "cd"
+    elif fault == "spike_cr":
+        cr = t.cr_g.copy()
+        cr[i] += 80.0
+        b, channel = _broken(t, cr_g=cr), "cr"
+    elif fault == "saturated_cd":
+        cd = t.cd_mm.copy()
+        lim = 0.7 * np.max(cd)  # the amplifier's range ends below the peak compression
+        b, channel = _broken(t, cd_mm=np.minimum(cd, lim)), "cd"
+    else:
+        cd = t.cd_mm.copy()
+        cd[i:i + 40] = cd[i]
+        b, channel = _broken(t, cd_mm=cd), "cd"
+    found = screen_channels(b, 0.15)
+    assert [f.channel for f in found] == [channel], found
+    assert found[0].test == "R16_003" and found[0].reason
+
+
+def test_a_test_far_below_the_others_is_an_outlier():
+    fits = {"A": 91.0, "B": 88.5, "C": 93.0, "D": 90.2, "E": 52.0, "F": 89.0}
+    assert [b.test for b in residual_outliers(fits)] == ["E"]
+    assert residual_outliers({**fits, "E": 84.0}) == []
+
+
+def test_a_transducer_non_linearity_is_a_static_function_of_one_output(campaign):
+    """CD over-reading at large deflection (CR untouched) shows as a static function of CD,
+    and not of CR; the unmodified data show no such structure against themselves."""
+    data = make_dataset([t for t in campaign if t.name.startswith("R16")][:4], 1000.0)
+    y_hat = data.y.copy()  # a perfect model of the true chest...
+    bent = dataclasses.replace(data, y=data.y.copy())
+    cd = bent.y[..., 1]
+    bent.y[..., 1] = cd + 0.02 * cd ** 2  # ...and a transducer over-reading 40 % at 20 mm
+    gains = shape_gains(bent, y_hat)
+    assert np.mean(gains["cd"]["static"]) > 5.0
+    assert np.mean(gains["cr"]["static"]) < 0.5
+    u = unexplained(bent, y_hat)
+    assert [x["output"] for x in u] == ["cd"] and u[0]["shape"] == "static"
+    assert unexplained(data, y_hat) == []
+
+
+def test_an_unreachable_scheduler_is_one_line_and_exit_2(tmp_path):
+    p = subprocess.run([sys.executable, "-m", "observer_node", "loop", "--estimate",
+                        "campaign-a/R16_00[13]", "--validate", "campaign-a/R16_002", "--out",
+                        str(tmp_path), "--scheduler", "tcp://127.0.0.1:9", "--quiet"],
+                       capture_output=True, text=True, timeout=120)
+    assert p.returncode == 2, p.stderr
+    assert "Traceback" not in p.stderr and len(p.stderr.strip().splitlines()) == 1
+    assert "tcp://127.0.0.1:9" in p.stderr
