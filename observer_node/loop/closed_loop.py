@@ -255,7 +255,7 @@ def _run(est_tests: list[CrashTest], val_tests: list[CrashTest], out: Path, rate
         step["decision"] = f"accepted {best.kind} on {scope_label(best.setups)}"
         prog.update(f"accepted {best.kind} on {scope_label(best.setups)}: validation fit "
                     f"{val_fit['fit']['total']:.1f} %")
-        final_val = score(base, effects, val)
+    final_val = score(base, effects, val)
     judged = {label: scores(val, model(b, e, val).simulate(val.pulse_g, val.brs_rad), ratings)
               for label, b, e in (("baseline", gb.params, []), ("final", base, effects))}
     mf = _model_file(base, effects, est, rate_hz, gb, setups)
