@@ -1,0 +1,129 @@
+"""The lab: draws each test (dummy scatter, pulse, effects), runs the physics and records the
+channels as a lab would (noise, BRS counts, CFC filters, SAE J211 signs), as ISO-MME tests."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+
+from . import physics as ph
+from .cases import Case, test_names
+from .iso_mme import Channel, Test
+
+# Rig metadata per setup; worded unlike campaign-a's. The R16 rig says why no airbag is there.
+RIGS = {
+    "R16": {"Title": "R16 CERTIFICATION SLED - RIGID SEAT, NO INTERIOR, 3-PT BELT",
+            "Type of the test": "SLED TEST", "pulse": ("S0SLED000000ACXP", "Sled carriage X acc")},
+    "SLED": {"Title": "SLED WITH BODY-IN-WHITE INTERIOR AND DRIVER AIRBAG",
+             "Type of the test": "SLED TEST", "pulse": ("S0SLED000000ACXP", "Sled carriage X acc")},
+    "FULL": {"Title": "FULL WIDTH FRONTAL IMPACT INTO RIGID WALL",
+             "Type of the test": "FULL SCALE VEHICLE", "pulse": ("10TUNN000000ACXP",
+                                                                 "Tunnel X acc below seat")},
+}
+DUMMY = "HYBRID III 50%ILE MALE, DRIVER SEAT"
+DV_MS = {"R16": (13.6, 14.4), "SLED": (14.0, 15.6), "FULL": (14.3, 16.2)}
+NOISE = {"pulse_g": 0.6, "cr_g": 0.55, "cd_mm": 0.10}  # white, before the CFC filters
+
+
+@dataclass
+class Drawn:
+    """One test as drawn: where it goes, its setup, parameters and effect sizes."""
+
+    case: str
+    part: str  # "est" or "val"
+    name: str
+    setup: str
+    dv_ms: float
+    params: dict[str, float]
+    effects: dict[str, float]
+    brs_phase: float
+
+
+def draw(case: Case) -> tuple[list[Drawn], np.ndarray]:
+    """Every test of ``case`` and its crash pulses (deceleration, m/s^2, stage grid)."""
+    rng = np.random.default_rng(case.seed)
+    est, val = test_names(case)
+    m = (ph.N_SAMPLES - 1) * ph.GRID + 1
+    t = ph.T0_S + np.arange(m) / (ph.FS_HZ * ph.GRID)
+    out, pulses = [], []
+    for part, names, setups in (("est", est, case.est), ("val", val, case.val)):
+        for name, setup in zip(names, setups, strict=True):
+            params = {}
+            for k, v in ph.NOMINAL.items():
+                z = 0.0 if k in ph.NO_SCATTER else float(np.clip(rng.normal(), -2, 2))
+                params[k] = v * (1.0 + ph.SCATTER * z)
+            effects = dict.fromkeys(ph.EFFECTS, 0.0)
+            for e in case.effects:
+                if setup in e.setups and (not e.tests or name in e.tests):
+                    effects[e.key] = e.size * (1.0 + 0.04 * float(np.clip(rng.normal(), -2, 2)))
+            dv = float(rng.uniform(*DV_MS[setup]))
+            pulses.append(ph.pulse_shape(setup, rng, t, dv))
+            out.append(Drawn(case.name, part, name, setup, dv, params, effects,
+                             float(rng.uniform())))
+    return out, np.stack(pulses)
+
+
+def run(drawn: list[Drawn], pulses: np.ndarray) -> dict[str, np.ndarray]:
+    """The physics for all ``drawn`` tests at once (one column each)."""
+    n = len(drawn)
+    p = {k: np.array([[d.params[k]] for d in drawn]) for k in ph.NOMINAL}
+    eff = {k: np.array([[d.effects[k]] for d in drawn]) for k in ph.EFFECTS}
+    vv, xv = ph.kinematics(pulses, 1.0 / (ph.FS_HZ * ph.GRID))
+    out = ph.simulate(ph.Batch(p, eff, xv, vv))
+    out["pulse"] = pulses
+    assert out["cr"].shape == (n, ph.N_SAMPLES)
+    return out
+
+
+def record(d: Drawn, i: int, sim: dict[str, np.ndarray], counts_per_rev: int,
+           rng: np.random.Generator) -> tuple[Test, dict[str, Any]]:
+    """The channels of test ``i`` of ``sim`` as the lab writes them, and what is true."""
+    t = ph.T0_S + np.arange(ph.N_SAMPLES) / ph.FS_HZ
+    tg = ph.T0_S + np.arange(sim["pulse"].shape[1]) / (ph.FS_HZ * ph.GRID)
+    e = d.effects
+    # pulse: unfiltered accelerometer, maybe recorded late
+    pulse = np.interp(t - e["pulse_late"], tg, sim["pulse"][i]) / ph.G
+    pulse = pulse + NOISE["pulse_g"] * rng.standard_normal(t.size)
+    # BRS: the spindle's counts, maybe late, maybe frozen by a cable fault
+    th = np.interp(t - e["brs_late"], t, sim["th"][i])
+    counts = ph.quantise_brs(th[None, :], counts_per_rev, np.array([d.brs_phase]))[0]
+    if e["brs_freeze"] > 0:
+        k = int(np.searchsorted(t, e["brs_freeze"]))
+        counts[k:] = counts[k]
+    # CR (CFC 180), CD (CFC 600, maybe a non-linear pot, maybe zeroed off)
+    cr = ph.cfc(sim["cr"][i] / ph.G + NOISE["cr_g"] * rng.standard_normal(t.size), 180)
+    cd_true = sim["cd"][i] * 1e3
+    cd = cd_true * (1.0 + e["cd_pot_nonlinear"] * (np.maximum(cd_true, 0) / 25.0) ** 2)
+    cd = ph.cfc(cd + NOISE["cd_mm"] * rng.standard_normal(t.size), 600) + e["zero_offset"]
+    rig = RIGS[d.setup]
+    code, text = rig["pulse"]
+    n = counts_per_rev
+    chans = [
+        Channel(code, text, "g", "AC", "X", "NOVALUE", -pulse),
+        Channel("11RETR0000B1AN0P", f"Retractor spindle angle, + = pay-in ({n} counts/rev)",
+                "deg", "AN", "0", "NOVALUE", counts * 360.0 / n),
+        Channel("11CHST0000H3ACXC", "Thorax spine accel X", "g", "AC", "X", "180", -cr),
+        Channel("11CHST0000H3DSXB", "Sternum deflection X", "mm", "DS", "X", "600", -cd),
+    ]
+    mme = {
+        "Data format edition number": "1.6",
+        "Laboratory name": "INDEPENDENT HELD-OUT LAB",
+        "Laboratory test ref. number": d.name,
+        "Customer name": "NOVALUE",
+        "Title": rig["Title"],
+        "Type of the test": rig["Type of the test"],
+        "Date of the test": "2026-11-24",
+        "Number of test objects": "1",
+        "Name of test object 1": DUMMY,
+        "Velocity test object 1": f"{d.dv_ms:.2f}",
+        "Comments": f"Spindle encoder {n} counts/rev, both directions; pulse unfiltered",
+        "Instrumentation standard": "SAEJ211",
+    }
+    truth = {"name": d.name, "part": d.part, "setup": d.setup, "dv_ms": round(d.dv_ms, 4),
+             "params": {k: round(v, 6) for k, v in d.params.items()},
+             "effects": {k: v for k, v in d.effects.items() if v},
+             "peak_cd_mm": round(float(cd_true.max()), 2),
+             "peak_cr_g": round(float(sim["cr"][i].max() / ph.G), 2)}
+    return Test(d.name, mme, chans), truth

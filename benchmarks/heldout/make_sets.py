@@ -1,0 +1,84 @@
+"""Write the held-out crash sets: DIR/<case>/est/<TEST>/..., DIR/<case>/val/<TEST>/... and
+DIR/<case>/truth.json (the case, the expected verdict, the true parameters of every test).
+Deterministic from each case's seed.
+
+    python -m benchmarks.heldout.make_sets --out DIR [--case NAME ...]
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import sys
+import time
+from pathlib import Path
+
+import numpy as np
+
+from . import lab
+from . import physics as ph
+from .cases import BY_NAME, CASES, Case
+from .iso_mme import write_test
+
+
+def expected(case: Case) -> dict:
+    return {"effects": [{"effect": k, "setups": s} for k, s in case.expect],
+            "broken_tests": list(case.expect_broken), "note": case.expect_note}
+
+
+def make(cases: list[Case], out: Path, log: bool = True) -> None:
+    """Simulate every test of ``cases`` in one batch and write them under ``out``."""
+    t_start = time.perf_counter()
+    drawn, pulses = [], []
+    for c in cases:
+        d, p = lab.draw(c)
+        drawn += d
+        pulses.append(p)
+    if log:
+        print(f"simulating {len(drawn)} tests of {len(cases)} cases ...", flush=True)
+    sim = lab.run(drawn, np.concatenate(pulses))
+    i = 0
+    for c in cases:
+        rng = np.random.default_rng([c.seed, 1])  # the lab's noise, apart from the draw
+        truths = []
+        for d in drawn[i:i + 12]:
+            test, truth = lab.record(d, i, sim, c.counts_per_rev, rng)
+            write_test(test, out / c.name / d.part)
+            truths.append(truth)
+            i += 1
+        doc = {"case": c.as_dict(), "expected": expected(c),
+               "library_name": {k: v for k, v in ph.EFFECTS.items() if v},
+               "tests": truths}
+        (out / c.name / "truth.json").write_text(json.dumps(doc, indent=1) + "\n")
+        if log:
+            print(f"  {c.name}: 6 est + 6 val -> {out / c.name}", flush=True)
+    if log:
+        print(f"done in {time.perf_counter() - t_start:.1f} s")
+
+
+def main(argv: list[str] | None = None) -> int:
+    ap = argparse.ArgumentParser(prog="python -m benchmarks.heldout.make_sets",
+                                 description=__doc__.split("\n\n")[0])
+    ap.add_argument("--out", required=True, type=Path, help="folder to write the sets into")
+    ap.add_argument("--case", action="append", metavar="NAME",
+                    help="only this case (repeatable); default all: "
+                         + ", ".join(c.name for c in CASES))
+    try:
+        args = ap.parse_args(argv)
+    except SystemExit as e:
+        return int(e.code or 0)
+    bad = [n for n in args.case or [] if n not in BY_NAME]
+    if bad:
+        print(f"error: unknown case {bad[0]!r}; known: {', '.join(BY_NAME)}", file=sys.stderr)
+        return 2
+    cases = [BY_NAME[n] for n in args.case] if args.case else list(CASES)
+    try:
+        make(cases, args.out)
+    except OSError as e:
+        print(f"error: cannot write {e.filename}: {e.strerror}", file=sys.stderr)
+        return 2
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,272 @@
+"""A frontal-crash dummy thorax, its belt and retractor, written from the physics.
+
+Independent of the observer's own model and simulator: nothing here is imported from, or
+copied out of, ``observer_node``. Its purpose is data that can surprise the loop.
+
+Frame: one axis, positive rearward, in the frame that keeps the vehicle's speed before impact
+(an unrestrained occupant stays at 0; the decelerating vehicle moves +). SI units inside.
+
+Bodies (per test, all tests of a batch integrated at once, one column each):
+
+- thoracic spine ``x`` (the CR accelerometer), mass ``m_sp``;
+- sternum on two masses, upper ``sa`` (the diagonal belt crosses it) and lower ``sb``, each
+  tied to the spine by its ribs (spring + damper) and to each other by the sternum plate;
+  the chest pot reads mid-sternum: CD = (sa + sb)/2 - x, compression positive;
+- the belt at the chest ``u``: a small lumped mass (webbing, flesh) between a chest-side
+  segment (``k_b``, ``c_b``) and the webbing up to the retractor (``k_up``), with Coulomb-like
+  friction at the D-ring proportional to the tension (hysteresis between loading and
+  unloading);
+- the retractor spool ``th`` (what the BRS counts), inertia ``J``: a pyrotechnic pretensioner
+  torque pulse, a ratchet lock after ``t_lock``, and a torsion bar (load limiter): elastic up
+  to its yield torque, then it flows (viscoplastic), moving the lock reference ``L``;
+- optional bodies and forces for the switchable effects (see ``EFFECTS``).
+
+Fixed step RK4 at 20 kHz; outputs every second step (10 kHz).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+from scipy import signal
+
+G = 9.80665  # m/s^2 per g
+FS_HZ = 10_000.0  # recorded rate
+T0_S = -0.020  # time of the first recorded sample
+N_SAMPLES = 2200
+SUB = 2  # integration steps per recorded sample (20 kHz)
+GRID = 2 * SUB  # vehicle-kinematics points per recorded sample (stage midpoints)
+
+# Physics effect keys (what this simulator switches) -> the loop library's name for it.
+EFFECTS = {
+    "rib_bottoming": "chest_stiffening",  # ribs stiffen past an onset deflection (power 2.5)
+    "rib_fluid": "chest_rate_damping",  # orifice-like rib damping, |rate|^1.6
+    "webbing_slack": "belt_unloading",  # webbing carries no compression (both segments)
+    "webbing_toe": "belt_stiffening",  # exponential stiffening of the chest-side webbing
+    "airbag": "airbag_contact",  # vented gas bag beyond a gap, loads spine and sternum
+    "lumbar_path": "pelvis_coupling",  # pelvis mass, lap belt/seat to the car, lumbar spine
+    "pulse_late": "input_delay",  # the pulse channel recorded late (s)
+    "brs_late": "input_delay",  # the BRS channel recorded late (s)
+    "spool_buildup": "input_gain",  # spool radius grows with wound webbing (m per wrap)
+    "zero_offset": "sensor_offset",  # CD channel zeroed wrong (mm, visible at rest)
+    "brs_freeze": "",  # broken test: BRS cable fault, the count freezes (time, s)
+    "cd_pot_nonlinear": "",  # transducer: CD over-reads at large deflection (CR untouched)
+}
+
+# Nominal Hybrid-III-like thorax, belt and retractor (SI), before per-test scatter.
+NOMINAL = {
+    "m_sp": 22.0, "m_a": 0.45, "m_b": 0.45,
+    "k_ra": 120e3, "k_rb": 110e3, "c_ra": 550.0, "c_rb": 500.0,
+    "k_ab": 60e3, "c_ab": 80.0, "beta": 0.62,
+    "m_u": 0.12, "k_b": 160e3, "c_b": 2600.0, "k_up": 260e3, "c_up": 1800.0,
+    "mu_d": 0.10, "v_slip": 0.05,
+    "J": 3.0e-4, "r0": 0.020, "c_spool": 0.01,
+    "k_tb": 350.0, "tau_y": 82.0, "eta_tb": 0.3,
+    "tau_pt": 110.0, "t_pt": 0.007, "d_pt": 0.006, "t_lock": 0.003,
+    # pelvis path (used by lumbar_path only)
+    "m_p": 14.0, "k_l": 60e3, "c_l": 900.0, "k_lap": 90e3, "c_lap": 1500.0,
+    # airbag (used by airbag only)
+    "t_bag": 0.018, "gap_bag": 0.13, "V_bag": 0.060, "A_bag": 0.08, "Amax_bag": 0.06,
+    "dA_bag": 0.03, "p_fill": 1.25, "k_vent": 9.0, "f_st_bag": 0.45,
+}
+SCATTER = 0.05  # relative 1-sigma scatter of the dummy, belt and retractor, clipped at 2 sigma
+NO_SCATTER = {"t_lock", "v_slip", "beta", "f_st_bag"}
+P_ATM = 101_325.0
+
+
+def _stage_time(j: np.ndarray | int) -> np.ndarray | float:
+    return T0_S + np.asarray(j) * (1.0 / FS_HZ / GRID)
+
+
+@dataclass
+class Batch:
+    """Parameters (name -> column (n, 1)) and vehicle kinematics on the stage grid (n, m)."""
+
+    p: dict[str, np.ndarray]
+    eff: dict[str, np.ndarray]  # effect key -> size per test (n, 1), 0 = off
+    xv: np.ndarray  # vehicle displacement, m
+    vv: np.ndarray  # vehicle velocity change, m/s
+
+
+N_STATE = 14  # x vx sa va sb vb u vu th om L p vp q
+
+
+def _deriv(b: Batch, j: np.ndarray | int, y: np.ndarray) -> np.ndarray:
+    p, e = b.p, b.eff
+    t = _stage_time(j)
+    x, vx, sa, va, sb, vb, u, vu, th, om, lk, pp, vp, q = y
+    if np.ndim(j) == 0:
+        xv, vv = b.xv[:, [int(j)]], b.vv[:, [int(j)]]  # (n, 1)
+    else:
+        xv, vv = b.xv[:, j], b.vv[:, j]
+
+    # ribs: spine <-> each sternum mass
+    da, db = sa - x, sb - x
+    dva, dvb = va - vx, vb - vx
+    fa = p["k_ra"] * da + p["c_ra"] * dva
+    fb = p["k_rb"] * db + p["c_rb"] * dvb
+    kb = e["rib_bottoming"]  # N/m^2.5 beyond the onset
+    if np.any(kb):
+        on = 0.012
+        fa = fa + kb * np.sign(da) * np.maximum(np.abs(da) - on, 0.0) ** 2.5
+        fb = fb + kb * np.sign(db) * np.maximum(np.abs(db) - on, 0.0) ** 2.5
+    cf = e["rib_fluid"]  # N/(m/s)^1.6
+    if np.any(cf):
+        fa = fa + cf * np.sign(dva) * np.abs(dva) ** 1.6
+        fb = fb + cf * np.sign(dvb) * np.abs(dvb) ** 1.6
+    fab = p["k_ab"] * (sa - sb) + p["c_ab"] * (va - vb)
+
+    # belt, chest side: pushes the contact point of the sternum rearward
+    sc = p["beta"] * sa + (1 - p["beta"]) * sb
+    vc = p["beta"] * va + (1 - p["beta"]) * vb
+    ext = u - sc
+    el = p["k_b"] * ext
+    toe = e["webbing_toe"]  # dimensionless amount of exponential toe
+    if np.any(toe):
+        e0 = 0.010
+        z = np.clip(np.maximum(ext, 0.0) / e0, 0.0, 6.0)
+        el = el + toe * p["k_b"] * e0 * (np.expm1(z) - z)
+    fc = el + p["c_b"] * (vu - vc)
+
+    # webbing to the retractor: retracted length grows with the spool radius
+    tw = e["spool_buildup"]  # m of radius per wrap
+    r = p["r0"] + tw * th / (2 * np.pi)
+    length = p["r0"] * th + tw * th * th / (4 * np.pi)
+    tr = p["k_up"] * (xv + length - u) + p["c_up"] * (vv + r * om - vu)
+    slack = e["webbing_slack"] > 0
+    if np.any(slack):
+        fc = np.where(slack, np.maximum(fc, 0.0), fc)
+        tr = np.where(slack, np.maximum(tr, 0.0), tr)
+    # D-ring friction opposes the webbing sliding relative to the car, grows with tension
+    fr = p["mu_d"] * np.abs(tr) * np.tanh((vu - vv) / p["v_slip"])
+
+    # retractor: pretensioner pulse, ratchet + torsion bar once locked
+    tpt = (t - p["t_pt"]) / p["d_pt"]
+    tau_pt = np.where((tpt > 0) & (tpt < 1), p["tau_pt"] * np.sin(np.pi * np.clip(tpt, 0, 1)), 0.0)
+    locked = t >= p["t_lock"]
+    tau_tb = np.where(locked, p["k_tb"] * np.maximum(lk - th, 0.0), 0.0)
+    dlk = np.where(locked, -np.maximum(tau_tb - p["tau_y"], 0.0) / p["eta_tb"], om)
+
+    # optional: pelvis, lumbar spine, lap belt and seat to the car
+    fl = np.zeros_like(x)
+    dvp = np.zeros_like(x)
+    lum = e["lumbar_path"]  # scale of the lumbar and lap stiffness
+    if np.any(lum):
+        fl = lum * (p["k_l"] * (pp - x) + p["c_l"] * (vp - vx))
+        lap = lum * (p["k_lap"] * (xv - pp) + p["c_lap"] * (vv - vp))
+        dvp = (lap - fl) / p["m_p"]
+
+    # optional: airbag (vented gas bag), contact once deployed and the torso closes the gap
+    fbag = np.zeros_like(x)
+    dq = np.zeros_like(x)
+    bag = e["airbag"]  # scale of the bag's fill pressure above the nominal
+    if np.any(bag):
+        pen = np.maximum((xv - x) - p["gap_bag"], 0.0)
+        deployed = (t > p["t_bag"] + 0.025) & (bag > 0)
+        vol = np.maximum(p["V_bag"] - p["A_bag"] * pen, 0.3 * p["V_bag"])
+        p_abs = P_ATM * p["p_fill"] * np.maximum(q, 0.0) * (p["V_bag"] / vol) ** 1.3
+        p_g = np.maximum(p_abs - P_ATM, 0.0) * bag
+        area = p["Amax_bag"] * np.minimum(pen / p["dA_bag"], 1.0)
+        fbag = np.where(deployed, area * p_g, 0.0)
+        dq = np.where(deployed, -p["k_vent"] * q * np.sqrt(p_g / P_ATM) * 0.1, 0.0)
+
+    f_st = p["f_st_bag"]
+    dvx = (fa + fb + fl + (1 - f_st) * fbag) / p["m_sp"]
+    dva = (-fa - fab + p["beta"] * fc + 0.5 * f_st * fbag) / p["m_a"]
+    dvb = (-fb + fab + (1 - p["beta"]) * fc + 0.5 * f_st * fbag) / p["m_b"]
+    dvu = (tr - fc - fr) / p["m_u"]
+    dom = (tau_pt - r * np.maximum(tr, 0.0) + tau_tb - p["c_spool"] * om) / p["J"]
+    return np.stack([vx, dvx, va, dva, vb, dvb, vu, dvu, om, dom, dlk, vp, dvp, dq])
+
+
+def simulate(b: Batch) -> dict[str, np.ndarray]:
+    """Integrate from rest at the first recorded sample; return true signals at 10 kHz:
+    ``cr`` (spine retardation, m/s^2), ``cd`` (compression, m), ``th`` (spool, rad),
+    ``belt`` (chest-side belt force, N), all (n, N_SAMPLES)."""
+    n = b.xv.shape[0]
+    y = np.zeros((N_STATE, n, 1))
+    y[13] = 1.0  # bag gas, relative to full
+    h = 1.0 / FS_HZ / SUB
+    keep = np.zeros((N_STATE, n, N_SAMPLES))
+    keep[:, :, 0] = y[:, :, 0]
+    for i in range(1, N_SAMPLES):
+        for s in range(SUB):
+            j = (i - 1) * GRID + 2 * s
+            k1 = _deriv(b, j, y)
+            k2 = _deriv(b, j + 1, y + 0.5 * h * k1)
+            k3 = _deriv(b, j + 1, y + 0.5 * h * k2)
+            k4 = _deriv(b, j + 2, y + h * k3)
+            y = y + (h / 6.0) * (k1 + 2 * k2 + 2 * k3 + k4)
+            locked = _stage_time(j + 2) >= b.p["t_lock"]
+            y[10] = np.where(locked, np.maximum(y[10], y[8]), y[8])  # ratchet follows pay-in
+        keep[:, :, i] = y[:, :, 0]
+    jj = np.arange(N_SAMPLES) * GRID
+    d = _deriv(b, jj, keep)
+    sc = 0.5 * (keep[2] + keep[4])
+    return {"cr": d[1], "cd": sc - keep[0], "th": keep[8], "x": keep[0]}
+
+
+# ------------------------------------------------------------------------------ crash pulses
+
+def pulse_shape(kind: str, rng: np.random.Generator, t: np.ndarray, dv_ms: float
+                ) -> np.ndarray:
+    """Vehicle (or sled) deceleration in m/s^2 at times ``t`` (s), zero before first contact,
+    with ``dv_ms`` change of speed. ``kind``: R16 (sled, trapezoid with brake ripple), SLED
+    (sled reproducing a car pulse, skewed bump) or FULL (barrier crush: crash-box spike,
+    structure, engine block, ringing of the body, rebound)."""
+    tp = np.maximum(t, 0.0)
+    onset = 1.0 - np.exp(-tp / 0.0008)
+    if kind == "R16":
+        tr, tf = rng.uniform(0.010, 0.015), rng.uniform(0.009, 0.013)
+        lvl = rng.uniform(24.0, 28.5) * G
+        lp = max(dv_ms / lvl - 0.5 * (tr + tf), 0.01)
+        rise = 0.5 - 0.5 * np.cos(np.pi * np.clip(tp / tr, 0, 1))
+        fall = 0.5 + 0.5 * np.cos(np.pi * np.clip((tp - tr - lp) / tf, 0, 1))
+        base = rise * fall
+        ripple = 1.0 + 0.06 * np.sin(2 * np.pi * rng.uniform(45, 70) * tp + rng.uniform(0, 6))
+        a = base * ripple
+    elif kind == "SLED":
+        k, tpk = rng.uniform(5.0, 7.0), rng.uniform(0.038, 0.048)
+        a = (tp / tpk) ** k * np.exp(k * (1 - tp / tpk))
+        a = a * (1.0 + 0.05 * np.sin(2 * np.pi * rng.uniform(70, 95) * tp))
+        a = a + 0.25 * np.exp(-(((tp - 0.012) / 0.004) ** 2))  # interior rig engaging
+    elif kind == "FULL":
+        box = rng.uniform(0.5, 0.8) * np.exp(-(((tp - rng.uniform(0.007, 0.010)) / 0.003) ** 2))
+        k, tpk = rng.uniform(6.0, 9.0), rng.uniform(0.040, 0.050)
+        body = (tp / tpk) ** k * np.exp(k * (1 - tp / tpk))
+        eng = rng.uniform(0.2, 0.4) * np.exp(-(((tp - rng.uniform(0.024, 0.030)) / 0.005) ** 2))
+        ring = (rng.uniform(0.12, 0.22) * np.exp(-tp / 0.035)
+                * np.sin(2 * np.pi * rng.uniform(110, 170) * tp))
+        a = box + body + eng + ring * (box + body + 0.3)
+    else:
+        raise ValueError(f"unknown pulse kind {kind!r}")
+    a = a * onset * (t >= 0)
+    dt = t[1] - t[0]
+    return a * dv_ms / (np.sum(a) * dt)
+
+
+def kinematics(a: np.ndarray, dt_s: float) -> tuple[np.ndarray, np.ndarray]:
+    """Velocity change and displacement (trapezoid) of deceleration ``a`` (last axis)."""
+    v = np.concatenate([np.zeros((*a.shape[:-1], 1)),
+                        np.cumsum(0.5 * (a[..., 1:] + a[..., :-1]) * dt_s, axis=-1)], axis=-1)
+    x = np.concatenate([np.zeros((*a.shape[:-1], 1)),
+                        np.cumsum(0.5 * (v[..., 1:] + v[..., :-1]) * dt_s, axis=-1)], axis=-1)
+    return v, x
+
+
+# --------------------------------------------------------------------------------- the lab
+
+def cfc(x: np.ndarray, cfc_class: int, fs_hz: float = FS_HZ) -> np.ndarray:
+    """SAE J211 channel frequency class filter: 2-pole Butterworth at 2.0775 x CFC, run
+    forward and backward (phaseless, 4 poles)."""
+    bb, aa = signal.butter(2, 2.0775 * cfc_class, fs=fs_hz)
+    return signal.filtfilt(bb, aa, x, axis=-1)
+
+
+def quantise_brs(th_rad: np.ndarray, counts_per_rev: int, phase: np.ndarray) -> np.ndarray:
+    """Encoder counts of a spindle with ``counts_per_rev`` magnets: a count at every magnet
+    passed, magnets at ``phase`` (fraction of a step) from the rest position."""
+    step = 2 * np.pi / counts_per_rev
+    ph = phase[:, None] * step
+    return np.floor((th_rad + ph) / step) - np.floor(ph / step)
