@@ -122,3 +122,16 @@ def test_an_unreachable_scheduler_is_one_line_and_exit_2(tmp_path):
     assert p.returncode == 2, p.stderr
     assert "Traceback" not in p.stderr and len(p.stderr.strip().splitlines()) == 1
     assert "tcp://127.0.0.1:9" in p.stderr
+
+
+def test_gains_of_varying_size_on_every_test_are_accepted():
+    """A belt that unloads far more in two crashes than in the other two: the t-interval
+    reaches below zero, but four of four tests improve (sign test p = 0.0625)."""
+    setups = {f"T{i}": "A" for i in range(4)}
+    before = dict.fromkeys(setups, 70.0)
+    after = {n: 70.0 + g for n, g in zip(setups, [31.4, 28.7, 4.5, 2.4], strict=True)}
+    ev = judge(before, after, setups, None, 1.0)
+    assert ev.ci95_points[0] < 0 and ev.tests_improved == 4
+    assert ev.accepted, ev.reason
+    after["T3"] = 69.0  # three of four: chance
+    assert not judge(before, after, setups, None, 1.0).accepted

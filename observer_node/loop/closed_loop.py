@@ -57,7 +57,7 @@ from .analysis import (
 )
 from .cluster import Runner, cluster
 from .diagnosis import sensor_fold_scores, unexplained
-from .evidence import POSSIBLE_MIN, SETUP_TOLERANCE, Evidence, judge
+from .evidence import POSSIBLE_MIN, SETUP_TOLERANCE, SIGN_P, Evidence, judge
 from .refit import fold_scores, folds, model, refit, score
 from .screening import BrokenTest, residual_outliers, screen_channels
 
@@ -205,7 +205,7 @@ def _run(est_tests: list[CrashTest], val_tests: list[CrashTest], out: Path, rate
             break
         if not passing:
             step["decision"] = ("no candidate passes the rule (mean paired gain >= "
-                                f"{margin:g} points, 95 % interval above zero, no setup "
+                                f"{margin:g} points, above the scatter, no setup "
                                 "lowered): " + "; ".join(f"{c.kind} on {scope_label(c.setups)}: "
                                                           f"{ev.reason}"
                                                           for _, c, ev in tried[:4]))
@@ -287,9 +287,10 @@ def _run(est_tests: list[CrashTest], val_tests: list[CrashTest], out: Path, rate
                      "allow_anywhere": anywhere, "workers": runner.workers,
                      "cross_validation": "two-fold inside estimation tests, each setup's "
                      "tests alternating between the folds; per-test gains paired",
-                     "rule": f"mean paired gain >= {margin:g} points on the tests the effect "
-                     "acts on, its 95 % t-interval above zero, no setup's cross-validated fit "
-                     f"lowered by more than {SETUP_TOLERANCE:g} points"},
+                     "rule": f"mean paired gain >= {margin:g} points over the estimation tests, "
+                     "its 95 % t-interval above zero or a one-sided sign test p <= "
+                     f"{SIGN_P:g}, no setup's cross-validated fit lowered by more than "
+                     f"{SETUP_TOLERANCE:g} points"},
         "validation_tests": {"baseline": baseline_val["tests"], "final": final_val["tests"]},
         "criteria": {k: v["criteria"] for k, v in judged.items()},
         **({"iso18571": {k: v["iso18571"] for k, v in judged.items()}}
