@@ -223,7 +223,9 @@ def _run(est_tests: list[CrashTest], val_tests: list[CrashTest], out: Path, rate
         # The input cross-correlation is reported, not decisive: on simulator data it rose
         # for true effects too (what remains is discretisation error correlated with the pulse).
         # Less correlated than before, or no longer worth mentioning (< 2 % of the residual).
-        if share_after >= share_before and share_after >= 0.02:
+        # Not for a parameter-free switch (the one-sided belt): its signature, linearised along
+        # a trajectory that never switches, says little (why it is always tried).
+        if best.parameters and share_after >= share_before and share_after >= 0.02:
             step["decision"] = (f"{best.kind}: the refitted residual is not less "
                                 "correlated with its signature "
                                 f"({share_before:.3f} -> {share_after:.3f}): not accepted")
