@@ -6,15 +6,21 @@ from __future__ import annotations
 
 import json
 import math
+import os
+import signal
+import subprocess
+import sys
 import time
 from pathlib import Path
 
 import jsonschema
+import pytest
 
 from observer_node.recording import read_recording
 
 from .daemon_feed import CODEC, Harness
 
+ROOT = Path(__file__).resolve().parents[1]
 ACC, BRS = CODEC["TunnelAccel"], CODEC["BeltSpindle"]
 
 
@@ -67,3 +73,37 @@ def test_every_message_is_strict_json_valid_against_its_schema(model, tmp_path):
     assert rec.ticks["tick"].tolist() == list(range(h.node.counters.ticks))
     assert h.node.counters.ticks > 250
     assert all(math.isfinite(v) for v in rec.ticks["accel_x_g"])
+
+
+@pytest.mark.parametrize("sig", [signal.SIGINT, signal.SIGTERM])
+def test_a_signal_to_the_process_group_finishes_the_recording(model_path, tmp_path, sig):
+    """Ctrl-C in a terminal and systemd's stop signal the whole process group, the recorder
+    process too: it ignores them and finishes the file on the daemon's stop, so the file
+    has its footer (read by the mcap library's seeking reader) and the exit code is 0."""
+    from mcap.reader import make_reader
+
+    path = tmp_path / "run.mcap"
+    p = subprocess.Popen([sys.executable, "-m", "observer_node", "run", "--interface",
+                          "virtual", "--channel", "pgroup", "--model", str(model_path),
+                          "--record", str(path), "--cpu-latency-us", "-1"],
+                         cwd=ROOT, stderr=subprocess.PIPE, text=True, start_new_session=True)
+    try:
+        line = p.stderr.readline()  # the start-up line: the recorder has written the header
+        assert "listening on virtual:pgroup" in line, line
+        time.sleep(0.5)  # status frames: a few chunks
+        os.killpg(p.pid, sig)
+        _, err = p.communicate(timeout=60)
+    finally:
+        if p.poll() is None:
+            os.killpg(p.pid, signal.SIGKILL)
+    assert p.returncode == 0, err
+    with path.open("rb") as f:
+        reader = make_reader(f)
+        summary = reader.get_summary()
+        assert summary is not None and summary.statistics is not None
+        assert summary.statistics.message_count > 0
+        names = [m.name for m in reader.iter_metadata()]
+    assert "chest-observer-recorder" in names  # the writer's own end record
+    with path.open("rb") as f:  # and the file ends as an MCAP file does: footer, magic
+        f.seek(-8, os.SEEK_END)
+        assert f.read() == b"\x89MCAP0\r\n"

@@ -15,6 +15,9 @@ What the recorder promises (README, "Faults"):
   kill, even on a loaded machine, and reads with a non-seeking reader
   (:mod:`observer_node.recording`). If only the daemon dies, the writer notices, drains the
   rings and finishes the file.
+- **Ctrl-C and SIGTERM are the daemon's.** A terminal and systemd signal the whole process
+  group; the writer ignores SIGINT and SIGTERM (blocked from its start, ignored from its
+  first line) and finishes the file when the daemon stops it, or when the daemon is gone.
 - **Nothing leaks.** The rings are one anonymous ``memfd`` handed to the writer as a file
   descriptor: no named segment in ``/dev/shm`` survives any kill.
 - **Writer trouble reaches the daemon.** The writer publishes what it has flushed and, when
@@ -35,6 +38,7 @@ import json
 import mmap
 import multiprocessing as mp
 import os
+import signal
 import struct
 import sys
 import time
@@ -162,6 +166,7 @@ class Rings:
             os.close(self.fd)
 
 
+_GROUP_SIGNALS = {signal.SIGINT, signal.SIGTERM}  # what a terminal or systemd sends a group
 _BATCH = 250  # rows per drain step: a writer that is behind still flushes every ~flush_s
 
 
@@ -171,6 +176,11 @@ def writer_main(rings_fd: _Fd, capacity: int, file_fd: _Fd, path: str, clock: tu
                 live: str = "", live_every: int = 1) -> None:
     """The recorder process: drain the rings into the open file ``file_fd`` until told to
     stop. Any failure is written to the rings' error slot before the process ends."""
+    # The daemon stops us (STOP, or its death): a signal to the process group must not cut
+    # the file short. Blocked since the spawn (Recorder._spawn), ignored from here on.
+    signal.signal(signal.SIGINT, signal.SIG_IGN)
+    signal.signal(signal.SIGTERM, signal.SIG_IGN)
+    signal.pthread_sigmask(signal.SIG_UNBLOCK, _GROUP_SIGNALS)
     rings = Rings(capacity, rings_fd.fd)
     f = None
     try:
@@ -397,9 +407,13 @@ class Recorder:
             target=writer_main, name="chest-observer-recorder", daemon=False,
             args=(_Fd(self.rings.fd), capacity, _Fd(fd), str(path), self.clock, metadata,
                   attachments, dbc_path, FLUSH_S, os.getpid(), *self._live))
+        # The child inherits this thread's signal mask: a Ctrl-C during its start-up (before
+        # writer_main ignores it) stays pending instead of killing it.
+        old_mask = signal.pthread_sigmask(signal.SIG_BLOCK, _GROUP_SIGNALS)
         try:
             self.proc.start()
         finally:
+            signal.pthread_sigmask(signal.SIG_SETMASK, old_mask)
             os.close(fd)  # the child has its own copy
         self._started = time.monotonic()
         self._idle = False
@@ -507,7 +521,7 @@ class Recorder:
         self.rings.ctrl[STOP] = 1
         self.proc.join(timeout_s)
         if self.proc.is_alive():
-            self.proc.terminate()
+            self.proc.kill()  # it ignores SIGTERM
             self.proc.join(5)
 
     def close(self, timeout_s: float = 30.0, discard: bool = False) -> str | None:
