@@ -10,6 +10,7 @@ import os
 import signal
 import subprocess
 import sys
+import threading
 import time
 from pathlib import Path
 
@@ -107,3 +108,94 @@ def test_a_signal_to_the_process_group_finishes_the_recording(model_path, tmp_pa
     with path.open("rb") as f:  # and the file ends as an MCAP file does: footer, magic
         f.seek(-8, os.SEEK_END)
         assert f.read() == b"\x89MCAP0\r\n"
+
+
+def _part_ticks(path: Path) -> list[int]:
+    """Tick indices of every estimate message in one part, repeats included (a part cut
+    before its first chunk holds none)."""
+    from observer_node.recording.reader import Scan
+
+    return [m["tick"] for topic, _, data in Scan(path) if topic == "/observer/estimate"
+            for m in (json.loads(data),) if m["tick"] >= 0]
+
+
+def test_every_tick_in_exactly_one_part_across_writer_kills(model, tmp_path, monkeypatch):
+    """Writer killed, then its successor killed after it has written chunks of its own
+    between two published flushes (the second writer flushes every 10 s here: whatever its
+    file holds, the mcap library wrote on its own). The third goes on from what is durably
+    in the files: no tick in two parts, none missing."""
+    from observer_node.recording import writer
+
+    h = Harness(model, "parts", record=tmp_path / "run.mcap")
+    # the harness's thread ends after 0.3 s without input: longer here, for the pauses
+    h.thread = threading.Thread(target=h.node.run, kwargs={"idle_exit_s": 5.0})
+    with h:
+        rec = h.node.recorder
+        rec.restart_after_s = 0.0
+        _feed(h, range(300))
+        time.sleep(0.1)
+        monkeypatch.setattr(writer, "FLUSH_S", 10.0)  # the next writer: no flush of its own
+        os.kill(rec.proc.pid, signal.SIGKILL)
+        deadline = time.monotonic() + 30
+        k = 300  # one alive counter after another: a repeated one would be a fault
+        while (len(rec.parts) < 2 or not rec.rings.ctrl[writer.READY]) and \
+                time.monotonic() < deadline:
+            _feed(h, range(k, k + 5))
+            k += 5
+        assert len(rec.parts) == 2
+        _feed(h, range(k, k + 1500))  # ~1 MB of messages: the old writer wrote 64 KiB chunks
+        k += 1500
+        time.sleep(0.2)
+        monkeypatch.setattr(writer, "FLUSH_S", 0.03)
+        assert rec.proc.is_alive(), rec.errors
+        os.kill(rec.proc.pid, signal.SIGKILL)
+        _feed(h, range(k, k + 600))
+        k += 600
+        time.sleep(0.3)
+    assert len(rec.parts) == 3 and not h.node.recorder.lost_ticks
+    per_part = [_part_ticks(p) for p in rec.parts]
+    everything = sorted(t for ticks in per_part for t in ticks)
+    assert h.node.counters.ticks == k and h.node.counters.lost == 0
+    assert everything == list(range(k)), [
+        (len(t), min(t, default=None), max(t, default=None)) for t in per_part]
+
+
+@pytest.mark.parametrize("cut", ["none", "in_chunk", "after_chunk"])
+def test_a_kill_between_a_chunk_and_its_publication_neither_repeats_nor_drops(tmp_path, cut):
+    """The writer announces a flush (rows, offset), writes the chunk, then publishes it. Killed
+    after the chunk reached the file but before it was published, its successor must start
+    after the chunk's rows; killed inside the chunk, from the last published rows."""
+    from mcap.writer import Writer
+
+    from observer_node.recording import writer as wr
+    from observer_node.recording.reader import Scan
+
+    rings = wr.Rings(capacity=64)
+    ctrl = rings.ctrl
+    path = tmp_path / "part.mcap"
+    with path.open("wb") as f:
+        w = Writer(f, chunk_size=wr._NO_CHUNK)
+        w.start(profile="", library="test")
+        w.add_metadata("chest-observer", {})
+        cid = w.register_channel("/observer/estimate", "json",
+                                 w.register_schema("s", "jsonschema", b"{}"))
+        w.flush()
+        ctrl[wr.FRAMES_FLUSHED], ctrl[wr.TICKS_FLUSHED] = 5, 7  # the last publication
+        for k in range(7, 17):
+            w.add_message(cid, k, json.dumps({"tick": k}).encode(), k)
+        # the announcement, the chunk written, then killed before the publication
+        ctrl[wr.PENDING_AT] = at = f.tell()
+        ctrl[wr.FRAMES_PENDING], ctrl[wr.TICKS_PENDING] = 5, 17
+        w.flush()
+        end_of_chunk = at + 9 + int.from_bytes(path.read_bytes()[at + 1:at + 9], "little")
+    if cut == "in_chunk":
+        os.truncate(path, end_of_chunk - 1)
+    elif cut == "after_chunk":  # the chunk whole, its message indexes cut
+        os.truncate(path, end_of_chunk + 3)
+    wr.durable_tails(ctrl, path)
+    in_file = [json.loads(d)["tick"] for t, _, d in Scan(path) if t == "/observer/estimate"]
+    # the successor starts at the published tick row: right after the last one in the file
+    assert int(ctrl[wr.TICKS_FLUSHED]) == 7 + len(in_file)
+    assert int(ctrl[wr.FRAMES_FLUSHED]) == 5
+    assert len(in_file) == (0 if cut == "in_chunk" else 10)
+    rings.close()

@@ -26,6 +26,12 @@ What the recorder promises (README, "Faults"):
   last flushed row, so the rings' seconds of buffer bridge the restart; after
   ``max_parts`` or when no part can be created the recording has FAILED. Rows the rings no
   longer hold are counted as lost.
+- **Every row in exactly one part.** Chunks end only where the writer flushes (the mcap
+  writer never ends one on its own), and each flush is announced before it is written
+  (its rows and file offset, ``*_PENDING``) and published after (``*_FLUSHED``). A
+  successor starts from the announced rows if that chunk is complete in the dead writer's
+  file (:func:`durable_tails`), else from the published ones: a kill between the two
+  neither repeats nor drops a row.
 
 Topics, fields and schemas are those of :mod:`.format`.
 """
@@ -54,9 +60,11 @@ from .format import TICK_COLS, TickRow
 
 FRAME_COLS = ("t", "id", "flags", "dlc")  # a frame's row in the rings, its data beside
 _CTRL = ("frames_head", "ticks_head", "stop", "done", "frames_lost", "ticks_lost", "ready",
-         "frames_flushed", "ticks_flushed", "errno")
+         "frames_flushed", "ticks_flushed", "errno", "frames_pending", "ticks_pending",
+         "pending_at")
 FRAMES_HEAD, TICKS_HEAD, STOP, DONE, FRAMES_LOST, TICKS_LOST, READY, FRAMES_FLUSHED, \
-    TICKS_FLUSHED, ERRNO = range(len(_CTRL))
+    TICKS_FLUSHED, ERRNO, FRAMES_PENDING, TICKS_PENDING, PENDING_AT = range(len(_CTRL))
+_NO_CHUNK = 1 << 62  # the mcap writer's chunk size: it never ends a chunk on its own
 _MSG_BYTES = 512  # the writer's last error, UTF-8
 _FRAME_ROW = struct.Struct(f"={len(FRAME_COLS)}d")
 _TICK_ROW = struct.Struct(f"={len(TICK_COLS)}d")
@@ -213,7 +221,9 @@ def _write(rings: Rings, capacity: int, f: Any, clock: tuple[int, float],
     status = {codec[name].frame_id: (codec[name], topic)
               for name, topic in fmt.STATUS_TOPICS.items()}
     wall0_ns, perf0 = clock
-    w = Writer(f, chunk_size=64 * 1024, compression=CompressionType.ZSTD)
+    # Chunks end only at flush(): a chunk the library ended on its own between two flushes
+    # was in the file before its rows were published, and a successor wrote them again.
+    w = Writer(f, chunk_size=_NO_CHUNK, compression=CompressionType.ZSTD)
     w.start(profile="", library="chest-observer")
     fields = {fmt.FRAMES: fmt.FRAME_FIELDS, **fmt.TOPIC_FIELDS}
     for fc, topic in status.values():
@@ -238,8 +248,16 @@ def _write(rings: Rings, capacity: int, f: Any, clock: tuple[int, float],
                       seq[topic])
         seq[topic] += 1
 
-    # A restarted writer goes on from what the last one flushed.
+    # A restarted writer goes on from what the last one flushed (durable_tails).
     tail_f, tail_t = int(ctrl[FRAMES_FLUSHED]), int(ctrl[TICKS_FLUSHED])
+
+    def flush() -> None:
+        """One chunk with every row drained so far: announced, written, published."""
+        ctrl[PENDING_AT] = f.tell()  # everything before is in the file already
+        ctrl[FRAMES_PENDING], ctrl[TICKS_PENDING] = tail_f, tail_t
+        w.flush()  # the chunk, its message indexes, then the file object's flush
+        ctrl[FRAMES_FLUSHED], ctrl[TICKS_FLUSHED] = tail_f, tail_t
+
     last_flush = time.monotonic()
     while True:
         stop = bool(ctrl[STOP])
@@ -276,8 +294,7 @@ def _write(rings: Rings, capacity: int, f: Any, clock: tuple[int, float],
         tail_t = head_t
         now = time.monotonic()
         if wrote and now - last_flush >= flush_s:
-            w.flush()
-            ctrl[FRAMES_FLUSHED], ctrl[TICKS_FLUSHED] = tail_f, tail_t
+            flush()
             last_flush = now
         orphaned = ppid is not None and os.getppid() != ppid
         if (stop or orphaned) and tail_f == int(ctrl[FRAMES_HEAD]) and \
@@ -285,13 +302,36 @@ def _write(rings: Rings, capacity: int, f: Any, clock: tuple[int, float],
             break
         if not wrote:
             time.sleep(0.005)
+    flush()  # the last rows in a chunk of their own, published before the end record
     w.add_metadata(fmt.META_END, {
         "frames_lost": str(int(ctrl[FRAMES_LOST])),
         "ticks_lost": str(int(ctrl[TICKS_LOST])),
         "frames": str(seq[fmt.FRAMES]), "ticks": str(seq[fmt.ESTIMATE])})
     w.finish()
     f.flush()
-    ctrl[FRAMES_FLUSHED], ctrl[TICKS_FLUSHED] = tail_f, tail_t
+
+
+def durable_tails(ctrl: np.ndarray, path: Path) -> None:
+    """After a writer of ``path`` ended: make ``*_FLUSHED`` the rows that are in its file.
+    The chunk it announced (``*_PENDING`` at ``PENDING_AT``) is there if the file holds the
+    whole record (opcode, 8-byte length, content); its message indexes may be cut, the
+    rows read all the same. Called with no writer running."""
+    pending = int(ctrl[FRAMES_PENDING]), int(ctrl[TICKS_PENDING])
+    at = int(ctrl[PENDING_AT])
+    if at < 0 or pending == (int(ctrl[FRAMES_FLUSHED]), int(ctrl[TICKS_FLUSHED])):
+        return
+    from mcap.opcode import Opcode
+
+    try:
+        with path.open("rb") as f:
+            f.seek(at)
+            head = f.read(9)
+            size = os.fstat(f.fileno()).st_size
+    except OSError:
+        return  # unreadable: the published rows are the safe side (written again)
+    if len(head) == 9 and head[0] == Opcode.CHUNK and \
+            size >= at + 9 + int.from_bytes(head[1:], "little"):
+        ctrl[FRAMES_FLUSHED], ctrl[TICKS_FLUSHED] = pending
 
 
 def _start_live(addr: str, fields: dict[str, dict[str, str]]) -> dict[str, Any] | None:
@@ -401,7 +441,11 @@ class Recorder:
 
     def _spawn(self, fd: int, path: Path) -> None:
         capacity, metadata, attachments, dbc_path = self._args
-        self.rings.ctrl[READY] = self.rings.ctrl[DONE] = self.rings.ctrl[ERRNO] = 0
+        ctrl = self.rings.ctrl
+        ctrl[READY] = ctrl[DONE] = ctrl[ERRNO] = 0
+        # nothing announced yet in this part (durable_tails)
+        ctrl[FRAMES_PENDING], ctrl[TICKS_PENDING] = ctrl[FRAMES_FLUSHED], ctrl[TICKS_FLUSHED]
+        ctrl[PENDING_AT] = -1
         ctx = mp.get_context("spawn")
         self.proc = ctx.Process(
             target=writer_main, name="chest-observer-recorder", daemon=False,
@@ -506,6 +550,7 @@ class Recorder:
         except RecorderError as e:
             return self._fail(why, str(e))
         self.proc.join()
+        durable_tails(ctrl, self.parts[-1])  # the successor starts after what is in it
         self.parts.append(part)
         self.state = RESTARTED
         ctrl[STOP] = 0
@@ -536,6 +581,8 @@ class Recorder:
                 with contextlib.suppress(OSError):
                     p.unlink()
         said = None
+        if self.proc.exitcode != 0:
+            durable_tails(self.rings.ctrl, self.parts[-1])
         if self.proc.exitcode != 0 and self.state != FAILED:
             why = self.rings.error() or f"{self.parts[-1]}: the recorder process ended " \
                 f"(exit code {self.proc.exitcode})"
