@@ -7,6 +7,7 @@ from __future__ import annotations
 import math
 import threading
 import time
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -107,3 +108,87 @@ def test_a_step_that_raises_is_counted_flagged_invalid_and_survived(model, tmp_p
     # flagged (the only out-of-range cause in this run: the inputs are all in range)
     assert status and status[-1]["Fault_OutOfRange"] == 1
     assert sum("ZeroDivisionError" in line and "step_errors" in line for line in logs) == 1
+
+
+def _chunk_ends(data: bytes) -> list[int]:
+    """Where each chunk record of an MCAP file ends (opcode, 8-byte length, body)."""
+    ends, at = [], 8  # after the magic
+    while at + 9 <= len(data):
+        end = at + 9 + int.from_bytes(data[at + 1:at + 9], "little")
+        if data[at] == 0x06:
+            ends.append(end)
+        at = end
+    return ends
+
+
+def _one_chunk_per_tick(src: Path, dst: Path) -> None:
+    """``src`` rewritten by the mcap library with a chunk ending after every estimate: a
+    file that can be cut after any tick, as a kill cuts it (after a complete chunk)."""
+    from mcap.reader import make_reader
+    from mcap.writer import Writer
+
+    with src.open("rb") as f, dst.open("wb") as g:
+        reader = make_reader(f)
+        w = Writer(g, chunk_size=1 << 62)
+        w.start(profile="", library="test")
+        for m in reader.iter_metadata():
+            w.add_metadata(m.name, m.metadata)
+        for a in reader.iter_attachments():
+            w.add_attachment(a.create_time, a.log_time, a.name, a.media_type, a.data)
+        channels: dict[int, int] = {}
+        for schema, channel, msg in reader.iter_messages(log_time_order=False):
+            if channel.id not in channels:
+                sid = w.register_schema(schema.name, schema.encoding, schema.data)
+                channels[channel.id] = w.register_channel(channel.topic,
+                                                          channel.message_encoding, sid)
+            w.add_message(channels[channel.id], msg.log_time, msg.data, msg.publish_time,
+                          msg.sequence)
+            if channel.topic == "/observer/estimate":
+                w.flush()
+        w.finish()
+
+
+def test_analyze_reads_a_recording_cut_after_any_tick(model, tmp_path):
+    """A crash recorded, then cut after every tick of its start, as a kill cuts a file
+    (after its last complete chunk): some cuts end the event 5-9 ticks after its trigger,
+    the lengths the CFC filter refused. ``analyze`` reports every cut (criteria numbers or
+    NaN), never a traceback."""
+    from observer_node.recording import Recording, RecordingError
+
+    path = tmp_path / "run.mcap"
+    h = Harness(model, "cutanalyze", record=path)
+    h.thread = threading.Thread(target=h.node.run, kwargs={"idle_exit_s": 5.0})
+    with h:
+        k = _feed(h, 0, [0.0] * 300)
+        k = _feed(h, k, [-20.0] * 40)
+        k = _feed(h, k, [0.0] * 20)
+        time.sleep(0.2)
+    rechunked = tmp_path / "rechunked.mcap"
+    _one_chunk_per_tick(path, rechunked)
+    data = rechunked.read_bytes()
+    cut = tmp_path / "cut.mcap"
+
+    def cut_at(end: int) -> Recording | None:
+        cut.write_bytes(data[:end])
+        try:
+            return read_recording(cut)
+        except RecordingError:  # cut before the first tick: one line, no traceback
+            return None
+
+    def running(rec: Recording | None) -> int:
+        return 0 if rec is None else int((rec.ticks["running"] > 0).sum())
+
+    ends = _chunk_ends(data)
+    lo, hi = 0, len(ends) - 1  # the first cut that holds a running tick
+    while lo < hi:
+        mid = (lo + hi) // 2
+        lo, hi = (mid + 1, hi) if running(cut_at(ends[mid])) == 0 else (lo, mid)
+    seen: set[int] = set()
+    for end in ends[lo:lo + 40]:
+        rec = cut_at(end)
+        assert rec is not None and running(rec) > 0
+        seen.add(running(rec))
+        (event,) = analyze(rec, ratings=False)["events"]
+        for v in event["criteria"]["estimate"].values():
+            assert math.isnan(v) or math.isfinite(v)
+    assert set(range(5, 10)) <= seen  # the lengths the CFC filter refused
