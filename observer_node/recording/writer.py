@@ -26,8 +26,9 @@ What the recorder promises (README, "Faults"):
   last flushed row, so the rings' seconds of buffer bridge the restart; after
   ``max_parts`` or when no part can be created the recording has FAILED. Rows the rings no
   longer hold are counted as lost.
-- **Every row in exactly one part.** Chunks end only where the writer flushes (the mcap
-  writer never ends one on its own), and each flush is announced before it is written
+- **Every row in exactly one part.** Chunks end only where the writer flushes, after a
+  whole row (every ``FLUSH_S``, or at ``CHUNK_BYTES``: the mcap writer never ends one on
+  its own, between rows), and each flush is announced before it is written
   (its rows and file offset, ``*_PENDING``) and published after (``*_FLUSHED``). A
   successor starts from the announced rows if that chunk is complete in the dead writer's
   file (:func:`durable_tails`), else from the published ones: a kill between the two
@@ -241,12 +242,14 @@ def _write(rings: Rings, capacity: int, f: Any, clock: tuple[int, float],
     ctrl = rings.ctrl
     ctrl[READY] = 1  # from here the daemon sets this process's priority (Recorder.keep_up)
     seq = dict.fromkeys(chan, 0)
+    in_chunk = [0]  # message bytes since the last flush
 
     def emit(topic: str, t: float, msg: dict) -> None:
         ns = wall0_ns + int((t - perf0) * 1e9)
-        w.add_message(chan[topic], ns, json.dumps(msg, separators=(",", ":")).encode(), ns,
-                      seq[topic])
+        raw = json.dumps(msg, separators=(",", ":")).encode()
+        w.add_message(chan[topic], ns, raw, ns, seq[topic])
         seq[topic] += 1
+        in_chunk[0] += len(raw)
 
     # A restarted writer goes on from what the last one flushed (durable_tails).
     tail_f, tail_t = int(ctrl[FRAMES_FLUSHED]), int(ctrl[TICKS_FLUSHED])
@@ -257,6 +260,7 @@ def _write(rings: Rings, capacity: int, f: Any, clock: tuple[int, float],
         ctrl[FRAMES_PENDING], ctrl[TICKS_PENDING] = tail_f, tail_t
         w.flush()  # the chunk, its message indexes, then the file object's flush
         ctrl[FRAMES_FLUSHED], ctrl[TICKS_FLUSHED] = tail_f, tail_t
+        in_chunk[0] = 0
 
     last_flush = time.monotonic()
     while True:
@@ -284,6 +288,9 @@ def _write(rings: Rings, capacity: int, f: Any, clock: tuple[int, float],
                 emit(st[1], t, msg)
                 if live is not None:
                     live[st[1]].log(msg, log_time=wall0_ns + int((t - perf0) * 1e9))
+            if in_chunk[0] >= CHUNK_BYTES:  # a writer behind: chunks of bounded size
+                tail_f = k + 1
+                flush()
         tail_f = head_f
         for k in range(tail_t, head_t):
             row = TickRow(*rings.ticks[k % capacity].tolist())
@@ -291,6 +298,9 @@ def _write(rings: Rings, capacity: int, f: Any, clock: tuple[int, float],
                 emit(topic, row.t, msg)
                 if live is not None and int(row.tick) % live_every == 0:
                     live[topic].log(msg, log_time=wall0_ns + int((row.t - perf0) * 1e9))
+            if in_chunk[0] >= CHUNK_BYTES:
+                tail_t = k + 1
+                flush()
         tail_t = head_t
         now = time.monotonic()
         if wrote and now - last_flush >= flush_s:
@@ -364,6 +374,7 @@ def _start_live(addr: str, fields: dict[str, dict[str, str]]) -> dict[str, Any] 
 
 
 FLUSH_S = 0.03  # the writer flushes a chunk this often
+CHUNK_BYTES = 64 * 1024  # and when a chunk holds this many message bytes (a writer behind)
 LIVE_HZ = 100.0  # per-tick topics reach the live view at about this rate
 BOOST_LAG_S = 0.05  # flushed rows this far behind: normal priority
 CALM_LAG_S = 0.01  # caught up: idle priority again
