@@ -570,6 +570,7 @@ class Recorder:
 
     def _fail(self, why: str, detail: str) -> str:
         self.proc.join()
+        durable_tails(self.rings.ctrl, self.parts[-1])  # what is lost starts after the file
         self.state = FAILED
         return f"recorder: {why}; recording stopped ({detail}), estimates go on unrecorded"
 
