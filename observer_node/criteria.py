@@ -82,6 +82,11 @@ class ChestCriteria:
     cr_3ms_g: float
     vc_max_m_s: float
 
+    @property
+    def complete(self) -> bool:
+        """All three are defined (NaN: a window too short for one, e.g. under 5 samples)."""
+        return all(math.isfinite(v) for v in (self.cd_max_mm, self.cr_3ms_g, self.vc_max_m_s))
+
     def as_dict(self) -> dict[str, float]:
         return {k: round(v, 4) for k, v in asdict(self).items()}
 

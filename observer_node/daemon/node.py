@@ -73,6 +73,8 @@ class ObserverNode:
         self.cpu_latency = ""  # what hold_cpu_latency said
         self._old_sched: tuple[int, int] | None = None
         self.scheduling = ""  # what set_rt_priority said
+        self.step_errors = 0  # loop passes that raised: counted, flagged invalid, survived
+        self._step_error_seen: set[str] = set()  # each kind of failure is logged once
 
     # ------------------------------------------------------------------ lifecycle
     def metadata(self) -> dict[str, str]:
@@ -242,6 +244,24 @@ class ObserverNode:
             except PortError:
                 core.fault(BUS_ERROR)
                 self._reconnect()
+            except Exception as e:  # nothing raises out of the tick loop (README, Faults)
+                self._step_failed(e)
+
+    def _step_failed(self, e: Exception) -> None:
+        """A loop pass raised (a bug, a criterion on data it cannot handle): counted, the
+        estimate flagged invalid (OutOfRange: no value can be trusted) and the first of
+        each kind logged with where it happened; the loop goes on with the next frame."""
+        self.step_errors += 1
+        self.core.fault(OUT_OF_RANGE)
+        tb = e.__traceback__
+        while tb is not None and tb.tb_next is not None:
+            tb = tb.tb_next
+        where = f"{tb.tb_frame.f_code.co_filename}:{tb.tb_lineno}" if tb else "?"
+        key = f"{type(e).__name__} at {where}"
+        if key not in self._step_error_seen:
+            self._step_error_seen.add(key)
+            self.log(f"error in the tick loop, survived and counted (step_errors): "
+                     f"{key}: {e}")
 
     def _reconnect(self) -> None:
         """Reopen the port. A socket bound to a downed interface opens fine and fails on
@@ -310,7 +330,7 @@ class ObserverNode:
         assert core.finished is not None
         event = core.finished[0]
         cr, cd = core.finished_estimates()
-        core.finished = None
+        core.finished = None  # first: a failure below must not repeat every pass
         frame_id, data = self.outputs.criteria_frame(event, chest_criteria(cr, cd, core.fs_hz))
         if self.port.send(frame_id, data):  # type: ignore[union-attr]
             if self.recorder is not None:
@@ -351,8 +371,8 @@ def run_daemon(cfg: NodeConfig, quiet: bool = False) -> int:
         print(f"observer-node: error: {e.strerror or e}", file=sys.stderr)
         return 2
     if not quiet:
-        print("observer-node: stopped; " + ", ".join(f"{k} {v}" for k, v in asdict(cnt).items()),
-              file=sys.stderr)
+        print("observer-node: stopped; " + ", ".join(f"{k} {v}" for k, v in asdict(cnt).items())
+              + f", step_errors {node.step_errors}", file=sys.stderr)
     rec = node.recorder
     if rec is not None and rec.degraded:
         print(f"observer-node: error: the recording is not the whole run: parts "

@@ -18,4 +18,8 @@ def cfc_filter(x: np.ndarray, fs_hz: float, cfc: float) -> np.ndarray:
     # J211 writes y[n] = a0 x[n] + a1 x[n-1] + a2 x[n-2] + b1 y[n-1] + b2 y[n-2];
     # scipy's denominator is [1, -b1, -b2].
     a = [1.0, 2 * (wa**2 - 1) / den, (1 - np.sqrt(2) * wa + wa**2) / den]
-    return signal.filtfilt(b, a, x, padtype="constant" if len(x) < 10 else "odd")
+    # filtfilt pads each end with 3 * 3 samples by default and refuses anything not longer:
+    # a short record (an event cut after a few ticks) is padded with what it has.
+    n = len(x)
+    return signal.filtfilt(b, a, x, padtype="constant" if n < 10 else "odd",
+                           padlen=min(9, max(n - 1, 0)))

@@ -16,6 +16,9 @@ Foxglove offers it):
 ``/observer/counters``   likewise ObserverCounters, ``/observer/health`` ObserverHealth
 ``/observer/criteria``   the ChestCriteria frame of each finished event, decoded
 
+A number without a value (a watchdog publish's accelerometer sample) is left out of its
+message, never written as NaN (not JSON); the schemas require every other field.
+
 Metadata records: ``chest-observer`` (software, model, DBC hash, configuration, start time)
 at the start, ``chest-observer-recorder`` (what was written and lost) at a clean end; a file
 without the latter was cut short. Attachments: ``model.json`` and ``chest_observer.dbc``.
@@ -105,19 +108,30 @@ def status_fields(signal_names: list[str], integer: set[str]) -> dict[str, str]:
 
 
 def json_schema(topic: str, fields: dict[str, str]) -> bytes:
-    """The JSON schema of a topic's messages: every field declared, all required."""
+    """The JSON schema of a topic's messages: every field declared; all required but the
+    numbers after ``t``, which are left out when they have no value (NaN is not JSON:
+    JSON.parse, and so Foxglove, refuses it)."""
     return json.dumps({"title": TITLES[topic], "type": "object",
                        "properties": {k: {"type": v} for k, v in fields.items()},
-                       "required": list(fields)}).encode()
+                       "required": [k for k, v in fields.items()
+                                    if v != "number" or k == "t"]}).encode()
 
 
 def tick_messages(row: TickRow, t0: float) -> list[tuple[str, dict]]:
-    """The messages of one tick: inputs, estimate, and the reference when there is one."""
+    """The messages of one tick: inputs, estimate, and the reference when there is one. A
+    number without a value (NaN or infinite: a watchdog publish has no accelerometer
+    sample) is left out of its message."""
     out = []
     for topic, fields in TICK_TOPICS.items():
         if topic == REFERENCE and row.ref_cr_g != row.ref_cr_g:  # NaN: none yet
             continue
-        msg = {k: _CAST[kind](getattr(row, col)) for k, (kind, col) in fields.items()}
+        msg = {}
+        for k, (kind, col) in fields.items():
+            v = getattr(row, col)
+            if kind != "number":
+                msg[k] = _CAST[kind](v)
+            elif v - v == 0:  # finite (NaN - NaN and inf - inf are NaN)
+                msg[k] = v
         msg["t"] = row.t - t0
         out.append((topic, msg))
     return out

@@ -127,7 +127,7 @@ def read_recording(path: str | Path, frames: bool = True) -> Recording:
                 inputs[m["tick"]] = m
             elif topic == fmt.REFERENCE:
                 m = json.loads(data)
-                ref[m["tick"]] = (m["cr_g"], m["cd_mm"])
+                ref[m["tick"]] = (m.get("cr_g", np.nan), m.get("cd_mm", np.nan))
             elif topic == fmt.FRAMES and frames:
                 raw.append(json.loads(data))
     except (ValueError, KeyError) as e:  # a message that is not what the format says
@@ -144,8 +144,9 @@ def read_recording(path: str | Path, frames: bool = True) -> Recording:
         salvaged, note = True, f"recording has no end record; read {sum(topics.values())} messages"
     ticks_idx = np.array(sorted(set(est) & set(inputs)), dtype=np.int64)
     ticks: dict[str, np.ndarray] = {"tick": ticks_idx}
+    # a number left out of a message had no value (see format): NaN here
     for k in _EST_KEYS:
-        ticks[k] = np.array([est[i][k] for i in ticks_idx], dtype=float)
+        ticks[k] = np.array([est[i].get(k, np.nan) for i in ticks_idx], dtype=float)
     for k in _INPUT_KEYS:
-        ticks[k] = np.array([inputs[i][k] for i in ticks_idx], dtype=float)
+        ticks[k] = np.array([inputs[i].get(k, np.nan) for i in ticks_idx], dtype=float)
     return Recording(path, metadata, model, ticks, raw, ref, salvaged, note, topics)

@@ -15,6 +15,9 @@ What the recorder promises (README, "Faults"):
   kill, even on a loaded machine, and reads with a non-seeking reader
   (:mod:`observer_node.recording`). If only the daemon dies, the writer notices, drains the
   rings and finishes the file.
+- **Ctrl-C and SIGTERM are the daemon's.** A terminal and systemd signal the whole process
+  group; the writer ignores SIGINT and SIGTERM (blocked from its start, ignored from its
+  first line) and finishes the file when the daemon stops it, or when the daemon is gone.
 - **Nothing leaks.** The rings are one anonymous ``memfd`` handed to the writer as a file
   descriptor: no named segment in ``/dev/shm`` survives any kill.
 - **Writer trouble reaches the daemon.** The writer publishes what it has flushed and, when
@@ -23,6 +26,13 @@ What the recorder promises (README, "Faults"):
   last flushed row, so the rings' seconds of buffer bridge the restart; after
   ``max_parts`` or when no part can be created the recording has FAILED. Rows the rings no
   longer hold are counted as lost.
+- **Every row in exactly one part.** Chunks end only where the writer flushes, after a
+  whole row (every ``FLUSH_S``, or at ``CHUNK_BYTES``: the mcap writer never ends one on
+  its own, between rows), and each flush is announced before it is written
+  (its rows and file offset, ``*_PENDING``) and published after (``*_FLUSHED``). A
+  successor starts from the announced rows if that chunk is complete in the dead writer's
+  file (:func:`durable_tails`), else from the published ones: a kill between the two
+  neither repeats nor drops a row.
 
 Topics, fields and schemas are those of :mod:`.format`.
 """
@@ -35,6 +45,7 @@ import json
 import mmap
 import multiprocessing as mp
 import os
+import signal
 import struct
 import sys
 import time
@@ -50,9 +61,11 @@ from .format import TICK_COLS, TickRow
 
 FRAME_COLS = ("t", "id", "flags", "dlc")  # a frame's row in the rings, its data beside
 _CTRL = ("frames_head", "ticks_head", "stop", "done", "frames_lost", "ticks_lost", "ready",
-         "frames_flushed", "ticks_flushed", "errno")
+         "frames_flushed", "ticks_flushed", "errno", "frames_pending", "ticks_pending",
+         "pending_at")
 FRAMES_HEAD, TICKS_HEAD, STOP, DONE, FRAMES_LOST, TICKS_LOST, READY, FRAMES_FLUSHED, \
-    TICKS_FLUSHED, ERRNO = range(len(_CTRL))
+    TICKS_FLUSHED, ERRNO, FRAMES_PENDING, TICKS_PENDING, PENDING_AT = range(len(_CTRL))
+_NO_CHUNK = 1 << 62  # the mcap writer's chunk size: it never ends a chunk on its own
 _MSG_BYTES = 512  # the writer's last error, UTF-8
 _FRAME_ROW = struct.Struct(f"={len(FRAME_COLS)}d")
 _TICK_ROW = struct.Struct(f"={len(TICK_COLS)}d")
@@ -162,6 +175,7 @@ class Rings:
             os.close(self.fd)
 
 
+_GROUP_SIGNALS = {signal.SIGINT, signal.SIGTERM}  # what a terminal or systemd sends a group
 _BATCH = 250  # rows per drain step: a writer that is behind still flushes every ~flush_s
 
 
@@ -171,6 +185,11 @@ def writer_main(rings_fd: _Fd, capacity: int, file_fd: _Fd, path: str, clock: tu
                 live: str = "", live_every: int = 1) -> None:
     """The recorder process: drain the rings into the open file ``file_fd`` until told to
     stop. Any failure is written to the rings' error slot before the process ends."""
+    # The daemon stops us (STOP, or its death): a signal to the process group must not cut
+    # the file short. Blocked since the spawn (Recorder._spawn), ignored from here on.
+    signal.signal(signal.SIGINT, signal.SIG_IGN)
+    signal.signal(signal.SIGTERM, signal.SIG_IGN)
+    signal.pthread_sigmask(signal.SIG_UNBLOCK, _GROUP_SIGNALS)
     rings = Rings(capacity, rings_fd.fd)
     f = None
     try:
@@ -203,7 +222,9 @@ def _write(rings: Rings, capacity: int, f: Any, clock: tuple[int, float],
     status = {codec[name].frame_id: (codec[name], topic)
               for name, topic in fmt.STATUS_TOPICS.items()}
     wall0_ns, perf0 = clock
-    w = Writer(f, chunk_size=64 * 1024, compression=CompressionType.ZSTD)
+    # Chunks end only at flush(): a chunk the library ended on its own between two flushes
+    # was in the file before its rows were published, and a successor wrote them again.
+    w = Writer(f, chunk_size=_NO_CHUNK, compression=CompressionType.ZSTD)
     w.start(profile="", library="chest-observer")
     fields = {fmt.FRAMES: fmt.FRAME_FIELDS, **fmt.TOPIC_FIELDS}
     for fc, topic in status.values():
@@ -221,15 +242,26 @@ def _write(rings: Rings, capacity: int, f: Any, clock: tuple[int, float],
     ctrl = rings.ctrl
     ctrl[READY] = 1  # from here the daemon sets this process's priority (Recorder.keep_up)
     seq = dict.fromkeys(chan, 0)
+    in_chunk = [0]  # message bytes since the last flush
 
     def emit(topic: str, t: float, msg: dict) -> None:
         ns = wall0_ns + int((t - perf0) * 1e9)
-        w.add_message(chan[topic], ns, json.dumps(msg, separators=(",", ":")).encode(), ns,
-                      seq[topic])
+        raw = json.dumps(msg, separators=(",", ":")).encode()
+        w.add_message(chan[topic], ns, raw, ns, seq[topic])
         seq[topic] += 1
+        in_chunk[0] += len(raw)
 
-    # A restarted writer goes on from what the last one flushed.
+    # A restarted writer goes on from what the last one flushed (durable_tails).
     tail_f, tail_t = int(ctrl[FRAMES_FLUSHED]), int(ctrl[TICKS_FLUSHED])
+
+    def flush() -> None:
+        """One chunk with every row drained so far: announced, written, published."""
+        ctrl[PENDING_AT] = f.tell()  # everything before is in the file already
+        ctrl[FRAMES_PENDING], ctrl[TICKS_PENDING] = tail_f, tail_t
+        w.flush()  # the chunk, its message indexes, then the file object's flush
+        ctrl[FRAMES_FLUSHED], ctrl[TICKS_FLUSHED] = tail_f, tail_t
+        in_chunk[0] = 0
+
     last_flush = time.monotonic()
     while True:
         stop = bool(ctrl[STOP])
@@ -256,6 +288,9 @@ def _write(rings: Rings, capacity: int, f: Any, clock: tuple[int, float],
                 emit(st[1], t, msg)
                 if live is not None:
                     live[st[1]].log(msg, log_time=wall0_ns + int((t - perf0) * 1e9))
+            if in_chunk[0] >= CHUNK_BYTES:  # a writer behind: chunks of bounded size
+                tail_f = k + 1
+                flush()
         tail_f = head_f
         for k in range(tail_t, head_t):
             row = TickRow(*rings.ticks[k % capacity].tolist())
@@ -263,11 +298,13 @@ def _write(rings: Rings, capacity: int, f: Any, clock: tuple[int, float],
                 emit(topic, row.t, msg)
                 if live is not None and int(row.tick) % live_every == 0:
                     live[topic].log(msg, log_time=wall0_ns + int((row.t - perf0) * 1e9))
+            if in_chunk[0] >= CHUNK_BYTES:
+                tail_t = k + 1
+                flush()
         tail_t = head_t
         now = time.monotonic()
         if wrote and now - last_flush >= flush_s:
-            w.flush()
-            ctrl[FRAMES_FLUSHED], ctrl[TICKS_FLUSHED] = tail_f, tail_t
+            flush()
             last_flush = now
         orphaned = ppid is not None and os.getppid() != ppid
         if (stop or orphaned) and tail_f == int(ctrl[FRAMES_HEAD]) and \
@@ -275,13 +312,36 @@ def _write(rings: Rings, capacity: int, f: Any, clock: tuple[int, float],
             break
         if not wrote:
             time.sleep(0.005)
+    flush()  # the last rows in a chunk of their own, published before the end record
     w.add_metadata(fmt.META_END, {
         "frames_lost": str(int(ctrl[FRAMES_LOST])),
         "ticks_lost": str(int(ctrl[TICKS_LOST])),
         "frames": str(seq[fmt.FRAMES]), "ticks": str(seq[fmt.ESTIMATE])})
     w.finish()
     f.flush()
-    ctrl[FRAMES_FLUSHED], ctrl[TICKS_FLUSHED] = tail_f, tail_t
+
+
+def durable_tails(ctrl: np.ndarray, path: Path) -> None:
+    """After a writer of ``path`` ended: make ``*_FLUSHED`` the rows that are in its file.
+    The chunk it announced (``*_PENDING`` at ``PENDING_AT``) is there if the file holds the
+    whole record (opcode, 8-byte length, content); its message indexes may be cut, the
+    rows read all the same. Called with no writer running."""
+    pending = int(ctrl[FRAMES_PENDING]), int(ctrl[TICKS_PENDING])
+    at = int(ctrl[PENDING_AT])
+    if at < 0 or pending == (int(ctrl[FRAMES_FLUSHED]), int(ctrl[TICKS_FLUSHED])):
+        return
+    from mcap.opcode import Opcode
+
+    try:
+        with path.open("rb") as f:
+            f.seek(at)
+            head = f.read(9)
+            size = os.fstat(f.fileno()).st_size
+    except OSError:
+        return  # unreadable: the published rows are the safe side (written again)
+    if len(head) == 9 and head[0] == Opcode.CHUNK and \
+            size >= at + 9 + int.from_bytes(head[1:], "little"):
+        ctrl[FRAMES_FLUSHED], ctrl[TICKS_FLUSHED] = pending
 
 
 def _start_live(addr: str, fields: dict[str, dict[str, str]]) -> dict[str, Any] | None:
@@ -314,6 +374,7 @@ def _start_live(addr: str, fields: dict[str, dict[str, str]]) -> dict[str, Any] 
 
 
 FLUSH_S = 0.03  # the writer flushes a chunk this often
+CHUNK_BYTES = 64 * 1024  # and when a chunk holds this many message bytes (a writer behind)
 LIVE_HZ = 100.0  # per-tick topics reach the live view at about this rate
 BOOST_LAG_S = 0.05  # flushed rows this far behind: normal priority
 CALM_LAG_S = 0.01  # caught up: idle priority again
@@ -391,15 +452,23 @@ class Recorder:
 
     def _spawn(self, fd: int, path: Path) -> None:
         capacity, metadata, attachments, dbc_path = self._args
-        self.rings.ctrl[READY] = self.rings.ctrl[DONE] = self.rings.ctrl[ERRNO] = 0
+        ctrl = self.rings.ctrl
+        ctrl[READY] = ctrl[DONE] = ctrl[ERRNO] = 0
+        # nothing announced yet in this part (durable_tails)
+        ctrl[FRAMES_PENDING], ctrl[TICKS_PENDING] = ctrl[FRAMES_FLUSHED], ctrl[TICKS_FLUSHED]
+        ctrl[PENDING_AT] = -1
         ctx = mp.get_context("spawn")
         self.proc = ctx.Process(
             target=writer_main, name="chest-observer-recorder", daemon=False,
             args=(_Fd(self.rings.fd), capacity, _Fd(fd), str(path), self.clock, metadata,
                   attachments, dbc_path, FLUSH_S, os.getpid(), *self._live))
+        # The child inherits this thread's signal mask: a Ctrl-C during its start-up (before
+        # writer_main ignores it) stays pending instead of killing it.
+        old_mask = signal.pthread_sigmask(signal.SIG_BLOCK, _GROUP_SIGNALS)
         try:
             self.proc.start()
         finally:
+            signal.pthread_sigmask(signal.SIG_SETMASK, old_mask)
             os.close(fd)  # the child has its own copy
         self._started = time.monotonic()
         self._idle = False
@@ -492,6 +561,7 @@ class Recorder:
         except RecorderError as e:
             return self._fail(why, str(e))
         self.proc.join()
+        durable_tails(ctrl, self.parts[-1])  # the successor starts after what is in it
         self.parts.append(part)
         self.state = RESTARTED
         ctrl[STOP] = 0
@@ -500,6 +570,7 @@ class Recorder:
 
     def _fail(self, why: str, detail: str) -> str:
         self.proc.join()
+        durable_tails(self.rings.ctrl, self.parts[-1])  # what is lost starts after the file
         self.state = FAILED
         return f"recorder: {why}; recording stopped ({detail}), estimates go on unrecorded"
 
@@ -507,7 +578,7 @@ class Recorder:
         self.rings.ctrl[STOP] = 1
         self.proc.join(timeout_s)
         if self.proc.is_alive():
-            self.proc.terminate()
+            self.proc.kill()  # it ignores SIGTERM
             self.proc.join(5)
 
     def close(self, timeout_s: float = 30.0, discard: bool = False) -> str | None:
@@ -522,6 +593,8 @@ class Recorder:
                 with contextlib.suppress(OSError):
                     p.unlink()
         said = None
+        if self.proc.exitcode != 0:
+            durable_tails(self.rings.ctrl, self.parts[-1])
         if self.proc.exitcode != 0 and self.state != FAILED:
             why = self.rings.error() or f"{self.parts[-1]}: the recorder process ended " \
                 f"(exit code {self.proc.exitcode})"
