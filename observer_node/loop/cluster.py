@@ -56,7 +56,7 @@ def cluster(scheduler: str | None = None, workers: int | None = None) -> Iterato
         return
     n = workers or min(4, len(os.sched_getaffinity(0)))
     local = LocalCluster(n_workers=n, threads_per_worker=1, processes=True,
-                         dashboard_address=":0", silence_logs=logging.ERROR,
+                         dashboard_address=":0", silence_logs=logging.CRITICAL,
                          env=_WORKER_ENV)
     client = Client(local)
     try:
