@@ -252,17 +252,17 @@ def run_rate(model, codec: Codec, rate_hz: float, ticks: int, workdir: Path,
     live_got = int(client.communicate(timeout=30)[0].split()[-1]) if client else None
     # The estimates waited in this bus's queue, each stamped when the daemon sent it: the
     # latency is bus time to bus time, as a CAN logger on the wire would measure it.
+    # A frame's estimate is the first estimate on the bus after it was sent (its counter
+    # steps once per estimate frame, so it names no tick); one sent before the oldest
+    # unanswered frame was is a watchdog publish (the daemon heard nothing for two periods).
     lat = np.full(ticks, np.nan)
-    k, prev = -1, -1
-    modulus = codec["ChestEstimate"].counter_modulus  # the E2E profile's range (P01: 0..14)
+    due = iter(range(n_per - 1, ticks, n_per))  # each frame's last tick, oldest first
+    k = next(due, None)
     while (m := rx.recv(0.05)) is not None:  # 0 would stop at the first filtered-out frame
-        counter = m.data[1] & 0xF
-        if counter == prev:
-            continue  # a watchdog publish between ticks repeats the last tick's counter
-        k += (counter - prev) % modulus if k >= 0 else counter + 1  # skips inputs with none
-        prev = counter
-        if k < ticks:
-            lat[k] = (m.timestamp - sent_at[k]) * 1e6
+        if k is None or m.timestamp < sent_at[k]:
+            continue
+        lat[k] = (m.timestamp - sent_at[k]) * 1e6
+        k = next(due, None)
     tx.shutdown()
     c = node.counters
     proc = read_recording(path, frames=False).ticks["proc_us"] if record else np.full(1, np.nan)

@@ -22,6 +22,7 @@ import sys
 from collections import Counter
 
 from observer_node.dbc import Codec, fd_frame_time_s, frame_bits
+from observer_node.dbc.bus import BusOpenError, open_bus
 
 from .player import bus_sender, play
 from .schedule import Schedule, concat, restamp_counters
@@ -138,12 +139,10 @@ def main(argv: list[str] | None = None) -> int:
             print(f"  ... {len(sched) - 20} more")
         return 0
 
-    import can
-
     try:
-        bus = can.Bus(interface=a.interface, channel=a.channel, fd=a.fd)
-    except (can.CanError, OSError, ValueError) as e:
-        print(f"crash-replay: error: cannot open {a.interface}:{a.channel}: {e}", file=sys.stderr)
+        bus = open_bus(a.interface, a.channel, fd=a.fd)
+    except BusOpenError as e:
+        print(f"crash-replay: error: {e}", file=sys.stderr)
         return 2
     send = bus_sender(bus, sched, a.fd)
 

@@ -58,10 +58,15 @@ class NodeConfig:
         if extra:
             raise ConfigError(f"{p}: unknown table or key {extra[0]!r} (the daemon reads "
                               "[observer] and [observer.core])")
-        obs = dict(d.get("observer", {}))
+        obs = d.get("observer", {})
+        if not isinstance(obs, dict):  # `observer = 3`, `[[observer]]`: not one table
+            raise ConfigError(f"{p}: observer: must be a table [observer], not "
+                              f"{_toml_kind(obs)}")
+        obs = dict(obs)
         core = obs.pop("core", {})
         if not isinstance(core, dict):
-            raise ConfigError(f"{p}: [observer] core: must be a table [observer.core]")
+            raise ConfigError(f"{p}: [observer] core: must be a table [observer.core], not "
+                              f"{_toml_kind(core)}")
         check({**obs, "core": core}, str(p))
         return cls(**obs, core=CoreConfig(**core))
 
@@ -70,6 +75,16 @@ class NodeConfig:
         if self.live and not self.record:
             raise ConfigError(f"{where}: live {self.live!r} needs record: the live view is "
                               "served by the recorder process (give --record FILE)")
+
+
+def _toml_kind(v: object) -> str:
+    """What a TOML value is, in TOML's words (for an error message)."""
+    if isinstance(v, bool):
+        return "a boolean"
+    if isinstance(v, list):
+        return "an array of tables" if v and all(isinstance(x, dict) for x in v) \
+            else "an array"
+    return {int: "an integer", float: "a float", str: "a string"}.get(type(v), "a date/time")
 
 
 def _num(lo: float, hi: float, integer: bool = False) -> dict[str, Any]:

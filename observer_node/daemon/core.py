@@ -33,6 +33,12 @@ so the observer keeps time. An accelerometer silent for longer than ``event_s`` 
 event (:meth:`end_event`, called by the daemon's watchdog): that is what separates two tests
 replayed one after another (crash-replay's ``--gap``), and the next one re-arms on its own
 quiet lead-in.
+
+A finished event's criteria are valid (``finished_valid``) when every tick it stepped was
+made of input samples received as sent: no input fault active at any of its ticks (from the
+onset) other than a frame rejected by the E2E check (a bad CRC, repeated or stale counter
+loses no sample by itself; a sample lost with it shows as a lost frame). Faults after its
+last tick (the inputs falling silent at the end of a replayed test) do not count.
 """
 
 from __future__ import annotations
@@ -51,6 +57,8 @@ ARMED, RUNNING, HOLD = 1, 2, 3
 # (daemon/outputs.py names them). NOT_ARMED is a state, never latched.
 ACCEL_TIMEOUT, BRS_TIMEOUT, BAD_E2E, LOST_FRAME, OUT_OF_RANGE, BUS_ERROR, SENSOR_FAULT, \
     NOT_ARMED = (1 << i for i in range(8))
+# Causes that mean an event's estimates were not made of every sample as sent
+DEGRADING = ~(BAD_E2E | NOT_ARMED)
 
 
 @dataclass
@@ -100,6 +108,8 @@ class ObserverCore:
         self._done = np.zeros((2, n_ev))
         self._ev_n = 0
         self.finished: tuple[int, int] | None = None  # (event, ticks) not yet reported
+        self.finished_valid = True  # the last finished event's criteria can be used
+        self._ev_cause = 0  # input-fault causes since the running event started
         self.rad_per_count = 2 * math.pi / self.cfg.counts_per_rev
         self.hold_timeouts = 0
         self.bias_faults = 0
@@ -187,6 +197,8 @@ class ObserverCore:
         """One sample of deceleration (model convention, bias not removed). Updates
         ``cr_g``, ``cd_mm``, ``state``."""
         self.tick_index += 1
+        if self.state == RUNNING:  # the faults since the last tick stand for this one
+            self._ev_cause |= self.cause
         if not bridged:
             self._last_pulse = decel_g
             if self.tick_index >= self.invalid_until:
@@ -214,6 +226,7 @@ class ObserverCore:
         """From RUNNING: the event is over; its estimates wait in ``finished_estimates``."""
         self._ev, self._done = self._done, self._ev
         self.finished = (self.event, self._ev_n)
+        self.finished_valid = not self._ev_cause & DEGRADING
         self.state = HOLD
         self._hold = 0
         self.event = -1
@@ -330,6 +343,8 @@ class ObserverCore:
         self.brs_ref = self._pre_brs[start]
         self.obs.reset()
         self._ev_n = 0
+        # faults still active stand for the buffered ticks stepped from the onset
+        self._ev_cause = self.cause if self.tick_index < self.invalid_until else 0
         self.state = RUNNING
         self.event = self.events
         self.events += 1

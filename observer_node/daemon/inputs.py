@@ -6,6 +6,18 @@ signal name, at start-up: the DBC is the only place that knows where a bit is, a
 frame work is an unpack, a few shifts and masks and the E2E check. Each received frame is
 counted once in :class:`Counters`: accepted, rejected (length, remote frame, bad reference),
 bad_e2e, unknown_id or error_frames.
+
+The alive counter is checked as AUTOSAR's E2E receiver does (the PRS's check status, per
+input frame ID; the CRC by the autosar-e2e library): the first frame is INITIAL; a step of
+one is OK; a step of 2..``max_delta`` is OK_SOME_LOST (the frames between are lost, and the
+accelerometer's are bridged so the observer keeps time); no step is REPEATED and more than
+``max_delta`` is WRONG_SEQUENCE: both are rejected and counted and leave the last valid
+counter where it was, so a stale or reordered frame is not read as frames lost (it used to
+be: 14 "lost" frames bridged by phantom ticks). ``max_delta`` is half the counter's range
+(P01 7, P05 128): a counter is read the shorter way round, ahead as frames lost, behind as
+a stale frame. When the sender's sequence really moves on (a restart, an outage longer than
+that), the second frame in sequence with a rejected one is followed (a resync: counted,
+flagged as a loss, not bridged, since how many were lost is not known).
 """
 
 from __future__ import annotations
@@ -16,13 +28,15 @@ from dataclasses import dataclass
 
 from observer_node.dbc import Codec, FrameCodec
 
-from .core import BAD_E2E, OUT_OF_RANGE, SENSOR_FAULT, ObserverCore
+from .core import BAD_E2E, LOST_FRAME, OUT_OF_RANGE, SENSOR_FAULT, ObserverCore
 
 
 @dataclass
 class Counters:
     """Every received frame is counted once as accepted, rejected, bad_e2e, unknown_id or
-    error_frames (rx is their sum); the others count events."""
+    error_frames (rx is their sum); the others count events (``repeated`` and
+    ``wrong_sequence`` the frames of bad_e2e that were so, ``resyncs`` the E2E receiver
+    following a sender's new sequence)."""
 
     rx: int = 0
     accepted: int = 0
@@ -30,6 +44,9 @@ class Counters:
     lost: int = 0
     rejected: int = 0
     bad_e2e: int = 0
+    repeated: int = 0
+    wrong_sequence: int = 0
+    resyncs: int = 0
     unknown_id: int = 0
     error_frames: int = 0
     overruns: int = 0
@@ -48,8 +65,10 @@ class _Layout:
         self.e2e_check = fc.e2e_checker()  # the DBC's profile, by the E2E library
         self.cnt_slot, self.cnt_shift, self.cnt_mask = fc.locate(f"{prefix}_Counter")
         self.cnt_modulus = fc.counter_modulus  # P01: 0..14, P05: 0..255
+        self.max_delta = self.cnt_modulus // 2  # further ahead reads as behind: stale
         self.faults = tuple(fc.locate(f"{prefix}_{name}")[:2] for name in faults)
-        self.last = -1  # the last accepted alive counter, -1: none yet
+        self.last = -1  # the last valid alive counter, -1: none yet (wait for first data)
+        self.rejected = -1  # the last WRONG_SEQUENCE counter: a new sequence may start there
 
 
 # Publish one tick: (receive time, accelerometer g, send the estimate frame?, ticks in frame)
@@ -91,28 +110,48 @@ class Inputs:
 
     def reset(self) -> None:
         """No alive counter seen yet (a new run, or the bus came back)."""
-        self.acc.last = self.brs.last = self.burst.last = -1
+        for lay in (self.acc, self.brs, self.burst):
+            lay.last = lay.rejected = -1
         self.ref_cr = self.ref_cd = math.nan
 
     # ------------------------------------------------------------------ per frame
     def _admit(self, lay: _Layout, data: bytes) -> tuple[tuple, int]:
-        """Unpack and E2E-check an input frame of the right length: its values and how many
-        frames were lost before it (alive-counter gap, counted), or -1 for a bad CRC or a
-        repeated counter (counted, flagged). An accepted frame's counter becomes the last."""
+        """Unpack and E2E-check an input frame of the right length (the receiver's check,
+        see the module's docstring): its values and how many frames were lost before it
+        (counted), or -1 for a frame rejected (bad CRC, REPEATED, WRONG_SEQUENCE: counted,
+        flagged). An accepted frame's counter becomes the last valid one."""
         v = lay.struct.unpack_from(data)
-        counter = v[lay.cnt_slot] >> lay.cnt_shift & lay.cnt_mask
-        last = lay.last
-        if counter == last or not lay.e2e_check(data):
-            self.counters.bad_e2e += 1
+        cnt = self.counters
+        if not lay.e2e_check(data):
+            cnt.bad_e2e += 1
             self.core.fault(BAD_E2E)
             return v, -1
-        self.counters.accepted += 1
-        lay.last = counter
-        if last < 0:
-            return v, 0
-        gap = (counter - last - 1) % lay.cnt_modulus
-        self.counters.lost += gap
+        counter = v[lay.cnt_slot] >> lay.cnt_shift & lay.cnt_mask
+        last, gap = lay.last, 0
+        if last >= 0:  # else INITIAL
+            delta = (counter - last) % lay.cnt_modulus
+            if delta == 0:
+                cnt.repeated += 1
+                return self._reject(v)
+            if delta > lay.max_delta:
+                if lay.rejected < 0 or (counter - lay.rejected) % lay.cnt_modulus != 1:
+                    lay.rejected = counter
+                    cnt.wrong_sequence += 1
+                    return self._reject(v)
+                cnt.resyncs += 1  # in sequence with the frame rejected before: follow it
+                cnt.lost += (lay.rejected - last - 1) % lay.cnt_modulus
+                self.core.fault(LOST_FRAME)
+            else:
+                gap = delta - 1  # OK, or OK_SOME_LOST
+                cnt.lost += gap
+        cnt.accepted += 1
+        lay.last, lay.rejected = counter, -1
         return v, gap
+
+    def _reject(self, v: tuple) -> tuple[tuple, int]:
+        self.counters.bad_e2e += 1
+        self.core.fault(BAD_E2E)
+        return v, -1
 
     def _flags(self, lay: _Layout, v: tuple) -> None:
         """The sensors' own fault flags."""
@@ -177,6 +216,8 @@ class Inputs:
         v, gap = self._admit(lay, data)
         if gap < 0:
             return None
+        if gap:
+            self.core.fault(LOST_FRAME)  # the count held meanwhile may have been stale
         self._flags(lay, v)
         self.core.set_brs(float(v[self.brs_count]), v[self.brs_per_rev] or self.default_per_rev)
         return None

@@ -297,7 +297,7 @@ class ObserverNode:
             core.fault(OUT_OF_RANGE)
             cr = cd = 0.0
             valid = False
-        data = self.outputs.estimate(core, cr, cd, valid, running)
+        data = self.outputs.estimate(core, cr, cd, valid, running) if send else b""
         rec = self.recorder
         bus_gone = None
         if send:
@@ -331,7 +331,8 @@ class ObserverNode:
         event = core.finished[0]
         cr, cd = core.finished_estimates()
         core.finished = None  # first: a failure below must not repeat every pass
-        frame_id, data = self.outputs.criteria_frame(event, chest_criteria(cr, cd, core.fs_hz))
+        frame_id, data = self.outputs.criteria_frame(event, chest_criteria(cr, cd, core.fs_hz),
+                                                     core.finished_valid)
         if self.port.send(frame_id, data):  # type: ignore[union-attr]
             if self.recorder is not None:
                 self.recorder.put_frame(time.perf_counter(), frame_id, data, FLAG_TX)

@@ -58,6 +58,7 @@ class Outputs:
         self.est_lo, self.est_hi = est.raw_range("ChestAccelCR")
         self.est_protect = est.e2e_protect
         self.est_modulus = est.counter_modulus
+        self._est_counter = -1  # one step per frame built, and a frame is built to be sent
         self._slots = [0] * est.slots
         self._buf = bytearray(est.length)
         self.status, self.counters, self.health = (codec["ObserverStatus"],
@@ -68,17 +69,25 @@ class Outputs:
         self.model_id = model_id
         self.criteria = codec["ChestCriteria"]
         self._criteria_counter = 0
+        self._criteria_events = self.criteria.raw_range("CriteriaEvent")[1] + 1
 
     def estimate(self, core: ObserverCore, cr: float, cd: float, valid: bool,
                  running: bool) -> bytes:
-        """The ChestEstimate frame of this tick (CR and CD saturated to the signal)."""
+        """The ChestEstimate frame to send now (CR and CD saturated to the signal). Its
+        alive counter steps once per call: build a frame only to send it (a burst's earlier
+        ticks and the watchdog's publishes are not ticks of a frame of their own), so that
+        an E2E receiver rates every frame OK, none repeated or out of sequence."""
         lo, hi = self.est_lo, self.est_hi
         s = self._slots
         cs, csh, _ = self.est_cnt
         vs, vsh = self.est_valid
         rs, rsh = self.est_running
         s[cs] = s[vs] = s[rs] = s[self.est_crc] = 0
-        s[cs] |= (core.tick_index % self.est_modulus) << csh
+        n = self._est_counter + 1
+        if n == self.est_modulus:
+            n = 0
+        self._est_counter = n
+        s[cs] |= n << csh
         s[vs] |= valid << vsh
         s[rs] |= running << rsh
         s[self.est_cr] = min(max(round(cr / self.est_scale_cr), lo), hi)
@@ -111,15 +120,21 @@ class Outputs:
         return [(fc.frame_id, fc.encode(values, counter)) for fc, values in
                 ((self.status, status), (self.counters, counters), (self.health, health))]
 
-    def criteria_frame(self, event: int, crit: ChestCriteria) -> tuple[int, bytes]:
+    def criteria_frame(self, event: int, crit: ChestCriteria,
+                       valid: bool = True) -> tuple[int, bytes]:
         """ChestCriteria of a finished event (E2E-protected, values saturated to the
-        signals' ranges)."""
+        signals' ranges). ``ChestCriteria_Valid`` is 0 when the event's estimates were
+        degraded (``valid`` false: see ObserverCore.finished_valid) or a criterion is not a
+        finite number (sent as 0)."""
         fc = self.criteria
-        values = {"CriteriaEvent": event % 16, "ChestDeflMax": crit.cd_max_mm,
-                  "ChestAccel3ms": crit.cr_3ms_g, "ViscousCritMax": crit.vc_max_m_s}
+        values = {"ChestDeflMax": crit.cd_max_mm, "ChestAccel3ms": crit.cr_3ms_g,
+                  "ViscousCritMax": crit.vc_max_m_s}
         for name, v in values.items():
             lo, hi = (r * fc.scale(name) for r in fc.raw_range(name))
+            valid = valid and math.isfinite(v)
             values[name] = min(max(v, lo), hi) if math.isfinite(v) else 0.0
+        values["CriteriaEvent"] = event % self._criteria_events
+        values["ChestCriteria_Valid"] = int(valid)
         self._criteria_counter += 1
         return fc.frame_id, fc.encode(values, self._criteria_counter)
 

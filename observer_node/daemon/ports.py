@@ -24,6 +24,8 @@ import struct
 import time
 from typing import TYPE_CHECKING, Any, Protocol
 
+from observer_node.dbc.bus import BusOpenError, open_bus
+
 if TYPE_CHECKING:  # python-can is imported when a port opens: the daemon starts faster
     import can
     from can.typechecking import CanFilter
@@ -158,10 +160,10 @@ class PythonCanPort:
         filters: list[CanFilter] = [{"can_id": i, "can_mask": 0x7FF, "extended": False}
                                     for i in ids]
         try:
-            self.bus = bus or can.Bus(interface=interface, channel=channel,
-                                      can_filters=filters, fd=fd, **kwargs)
-        except (can.CanError, OSError) as e:
-            raise PortError(errno.ENODEV, f"{interface}:{channel}: {e}") from None
+            self.bus = bus or open_bus(interface, channel, can_filters=filters, fd=fd,
+                                       **kwargs)
+        except BusOpenError as e:
+            raise PortError(errno.ENODEV, str(e)) from None
         if bus is not None:
             bus.set_filters(filters)
 
