@@ -33,8 +33,8 @@ import time
 from pathlib import Path
 
 import numpy as np
-from benchmarks.heldout.cases import BY_NAME, CASES, Case
 
+from benchmarks.heldout.cases import BY_NAME, CASES, Case
 from observer_node.data import load_tests
 from observer_node.ident.dataset import make_dataset
 from observer_node.loop.closed_loop import run_loop
