@@ -14,14 +14,11 @@ from __future__ import annotations
 import argparse
 import shutil
 import subprocess
-import sys
 import tempfile
 import time
 from pathlib import Path
 
 import numpy as np
-
-sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 
 from observer_node.data import bundled_campaign, read_isomme
 from observer_node.evaluation import dataset_for, identify

@@ -1,8 +1,8 @@
 """Fuzz benchmark: a million fuzzed frames into a recording daemon on python-can's virtual bus
 (random IDs, DLCs and payloads, valid-CRC frames with wild values, bad alive counters, error
-and remote frames; see tests/fuzz.py), then R16_002 replayed. Prints the counters, whether
-every frame was counted once, the process's memory along the way, and whether the crash
-afterwards was detected and stepped as the offline simulation steps it.
+and remote frames; see observer_node/daemon/fuzz.py), then R16_002 replayed. Prints the
+counters, whether every frame was counted once, the process's memory along the way, and
+whether the crash afterwards was detected and stepped as the offline simulation steps it.
 
     python benchmarks/fuzz.py [--frames 1000000] [--seed 1]
 """
@@ -10,7 +10,6 @@ afterwards was detected and stepped as the offline simulation steps it.
 from __future__ import annotations
 
 import argparse
-import sys
 import tempfile
 import time
 from dataclasses import asdict, replace
@@ -18,15 +17,12 @@ from pathlib import Path
 
 import numpy as np
 
-sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
-
+from observer_node.daemon.fuzz import rss_mb, run_fuzz
+from observer_node.daemon.harness import Harness, r16_schedule
 from observer_node.data import bundled_campaign, load_tests
 from observer_node.evaluation import identify
 from observer_node.ident.dataset import make_dataset
 from observer_node.recording import offline_estimates, read_recording
-from tests.daemon_feed import Harness, r16_schedule
-from tests.fuzz import run_fuzz
-from tests.test_fuzz import rss_mb
 
 
 def main() -> None:

@@ -2,11 +2,11 @@
 (daemon and MCAP writer) is killed with SIGKILL at a random moment.
 
 Each run starts a recording daemon on python-can's virtual bus fed with R16_002 over and over
-at 1 kHz (``python -m tests.daemon_feed``, its own session), kills the group 0.05-2 s after
-the daemon is ready, then reads the cut recording. The loss is the kill's wall time minus the
-last recorded tick's (an upper bound: it includes any lag of the daemon itself). It also
-checks that no shared-memory segment is left in /dev/shm. ``--load N`` keeps N busy-looping
-processes running meanwhile (a loaded bench PC: the writer must not starve).
+at 1 kHz (``python -m observer_node.daemon.harness``, its own session), kills the group
+0.05-2 s after the daemon is ready, then reads the cut recording. The loss is the kill's wall
+time minus the last recorded tick's (an upper bound: it includes any lag of the daemon
+itself). It also checks that no shared-memory segment is left in /dev/shm. ``--load N`` keeps
+N busy-looping processes running meanwhile (a loaded bench PC: the writer must not starve).
 
     python benchmarks/kill_loss.py [--runs 20] [--seed 1] [--load 2]
 """
@@ -25,8 +25,6 @@ from pathlib import Path
 
 import numpy as np
 
-ROOT = Path(__file__).resolve().parents[1]
-
 
 def last_log_time_ns(path: Path) -> int:
     """The newest message time in a (possibly cut) MCAP file, read without seeking."""
@@ -36,8 +34,8 @@ def last_log_time_ns(path: Path) -> int:
 
 
 def one_run(model: Path, record: Path, delay_s: float) -> float:
-    p = subprocess.Popen([sys.executable, "-m", "tests.daemon_feed", str(model), str(record),
-                          "60"], cwd=ROOT, stdout=subprocess.PIPE, text=True,
+    p = subprocess.Popen([sys.executable, "-m", "observer_node.daemon.harness", str(model),
+                          str(record), "60"], stdout=subprocess.PIPE, text=True,
                          start_new_session=True)
     assert p.stdout is not None
     if p.stdout.readline().strip() != "started":

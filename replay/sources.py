@@ -2,7 +2,7 @@
 source is an error naming the file and the place, never a half-played run.
 
 - an ISO-MME test (folder, ``.mme`` or ``.zip``) or a CSV crash test: resampled to the bus
-  rate and encoded with the DBC (:mod:`replay.schedule`);
+  rate and encoded with the DBC (:mod:`observer_node.replay.schedule`);
 - an MCAP recording of ``observer-node run``: its raw frames (``/can/frames``) with their
   recorded timing; by default the frames the daemon received, so a run replays exactly; one
   made with another DBC (before the AUTOSAR E2E profiles, say) is translated into this one's;

@@ -14,14 +14,13 @@ from pathlib import Path
 import numpy as np
 
 from observer_node.daemon.core import ACCEL_TIMEOUT
+from observer_node.daemon.harness import CODEC, Harness, r16_schedule
 from observer_node.daemon.ports import PortError, PythonCanPort
 from observer_node.data import bundled_campaign, read_isomme
 from observer_node.ident import greybox
 from observer_node.ident.dataset import make_dataset
 from observer_node.recording import analyze, read_recording
 from observer_node.replay.schedule import crash_test_schedule
-
-from .daemon_feed import CODEC, Harness, r16_schedule
 
 ROOT = Path(__file__).resolve().parents[1]
 
@@ -182,9 +181,9 @@ def test_bus_gone_while_sending_reconnects_and_keeps_the_tick(model, tmp_path):
 
 
 def _spawn_feeder(model_path: Path, record: Path, seconds: float) -> subprocess.Popen:
-    return subprocess.Popen([sys.executable, "-m", "tests.daemon_feed", str(model_path),
-                             str(record), str(seconds)], cwd=ROOT, stdout=subprocess.PIPE,
-                            text=True, start_new_session=True)
+    return subprocess.Popen([sys.executable, "-m", "observer_node.daemon.harness",
+                             str(model_path), str(record), str(seconds)], cwd=ROOT,
+                            stdout=subprocess.PIPE, text=True, start_new_session=True)
 
 
 def test_sigterm_finishes_the_recording(model_path, tmp_path):

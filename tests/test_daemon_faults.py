@@ -12,11 +12,10 @@ from pathlib import Path
 
 import pytest
 
+from observer_node.daemon.harness import CODEC, Harness
 from observer_node.daemon.outputs import wrap16
 from observer_node.recording import read_recording
 from observer_node.recording.writer import FAILED, RESTARTED, RecorderError, create_exclusive
-
-from .daemon_feed import CODEC, Harness
 
 ROOT = Path(__file__).resolve().parents[1]
 ACC, BRS = CODEC["TunnelAccel"], CODEC["BeltSpindle"]

@@ -9,10 +9,9 @@ import numpy as np
 import pytest
 
 from observer_node.cli import main
+from observer_node.daemon.harness import CODEC, Harness, r16_schedule
 from observer_node.recording import read_recording
 from observer_node.replay.sources import load_source
-
-from .daemon_feed import CODEC, Harness, r16_schedule
 
 
 @pytest.fixture(scope="module")

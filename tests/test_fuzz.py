@@ -8,17 +8,9 @@ import time
 
 import numpy as np
 
+from observer_node.daemon.fuzz import rss_mb, run_fuzz
+from observer_node.daemon.harness import Harness, r16_schedule
 from observer_node.recording import offline_estimates, read_recording
-
-from .daemon_feed import Harness, r16_schedule
-from .fuzz import run_fuzz
-
-
-def rss_mb() -> float:
-    with open("/proc/self/statm") as f:
-        import os
-
-        return int(f.read().split()[1]) * os.sysconf("SC_PAGE_SIZE") / 2**20
 
 
 def test_fuzzed_frames_are_counted_and_a_later_crash_is_detected(model, tmp_path):

@@ -13,10 +13,9 @@ from pathlib import Path
 
 import pytest
 
+from observer_node.daemon.harness import Harness, r16_schedule
 from observer_node.recording import format as fmt
 from observer_node.recording import read_recording
-
-from .daemon_feed import Harness, r16_schedule
 
 pytest.importorskip("foxglove")
 ws_client = pytest.importorskip("websockets.sync.client")

@@ -155,9 +155,8 @@ def test_a_recording_from_before_the_autosar_profiles_still_replays(model, tmp_p
     the daemon accepts every one and steps the crash as the old daemon did."""
     import time as _time
 
+    from observer_node.daemon.harness import Harness
     from observer_node.recording import read_recording
-
-    from .daemon_feed import Harness
 
     old = DATA / "recorded-before-autosar-e2e.mcap"
     (sched,) = load_source(old, CODEC)

@@ -16,13 +16,12 @@ from pathlib import Path
 import can
 import pytest
 
+from observer_node.daemon.harness import CODEC, r16_schedule
 from observer_node.daemon.ports import SocketCanPort
 from observer_node.evaluation import identify
 from observer_node.ident.dataset import make_dataset
 from observer_node.recording import analyze, read_recording
 from observer_node.replay.player import bus_sender, play
-
-from .daemon_feed import CODEC, r16_schedule
 
 CHANNEL = os.environ.get("VCAN_CHANNEL", "vcan0")
 pytestmark = [

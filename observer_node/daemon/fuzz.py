@@ -1,15 +1,17 @@
 """Fuzzed CAN traffic for the daemon: random IDs, DLCs and payloads, valid-CRC frames with wild
-values, bad alive counters, error and remote frames. Used by the bounded fuzz test and by
-``benchmarks/fuzz.py`` (a million frames)."""
+values, bad alive counters, error and remote frames. Used by the bounded fuzz test
+(tests/test_fuzz.py) and by ``benchmarks/fuzz.py`` (a million frames)."""
 
 from __future__ import annotations
 
+import os
 import time
+from collections.abc import Callable
 
 import can
 import numpy as np
 
-from .daemon_feed import CODEC, Harness
+from .harness import CODEC, Harness
 
 INPUTS = ("TunnelAccel", "BeltSpindle", "ReferenceChest", "InputBurst")
 
@@ -48,7 +50,8 @@ def fuzz_frame(rng: np.random.Generator, counters: dict[int, int]) -> can.Messag
                        is_fd=fc.length > 8)
 
 
-def run_fuzz(h: Harness, n: int, seed: int, batch: int = 200, on_batch=None) -> int:
+def run_fuzz(h: Harness, n: int, seed: int, batch: int = 200,
+             on_batch: Callable[[int], object] | None = None) -> int:
     """Send ``n`` fuzzed frames into the harness's daemon, ``batch`` at a time, each batch
     only once the daemon has received what passes its port's filter (its input IDs), so
     nothing piles up in the virtual bus's queues; drain the listener as it goes. Returns
@@ -74,3 +77,9 @@ def run_fuzz(h: Harness, n: int, seed: int, batch: int = 200, on_batch=None) -> 
         if on_batch is not None:
             on_batch(sent)
     return passed
+
+
+def rss_mb() -> float:
+    """This process's resident memory in MB (Linux)."""
+    with open("/proc/self/statm") as f:
+        return int(f.read().split()[1]) * os.sysconf("SC_PAGE_SIZE") / 2**20

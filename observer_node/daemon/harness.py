@@ -1,7 +1,10 @@
-"""Test helper: run the daemon on python-can's virtual bus and feed it a crash test.
+"""The daemon in a thread of this process on python-can's virtual bus, with a sender and a
+listener on its channel: what the tests and the benchmarks drive (``observer-node bench`` does
+the same without this module's test hooks).
 
-In-process (``run_with_feed``) for unit tests, or as a script for tests that need a separate
-process to signal or kill:  python -m tests.daemon_feed MODEL RECORD SECONDS
+In-process (``Harness``), or as a script for tests and benchmarks that signal or kill a
+daemon's process, fed R16_002 over and over:
+    python -m observer_node.daemon.harness MODEL RECORD SECONDS
 """
 
 from __future__ import annotations
@@ -10,22 +13,24 @@ import sys
 import threading
 import time
 from pathlib import Path
+from typing import Any
 
 import can
 
-from observer_node.daemon.config import NodeConfig
-from observer_node.daemon.node import ObserverNode
-from observer_node.daemon.ports import PythonCanPort
-from observer_node.data import bundled_campaign, read_isomme
-from observer_node.dbc import Codec
-from observer_node.model import ModelFile
-from observer_node.replay.player import bus_sender, play
-from observer_node.replay.schedule import Schedule, crash_test_schedule
+from ..data import bundled_campaign, read_isomme
+from ..dbc import Codec
+from ..model import ModelFile
+from ..replay.player import TimingReport, bus_sender, play
+from ..replay.schedule import Schedule, crash_test_schedule
+from .config import NodeConfig
+from .node import ObserverNode
+from .ports import PythonCanPort
 
 CODEC = Codec()
 
 
 def r16_schedule(name: str = "R16_002", reference: bool = True, pre_s: float = 0.2) -> Schedule:
+    """A bundled crash test's frames at 1000 Hz, ``pre_s`` s of quiet bus before it."""
     test = read_isomme(bundled_campaign() / f"{name}.zip")
     return crash_test_schedule(test, CODEC, 1000.0, reference=reference, pre_s=pre_s)
 
@@ -35,7 +40,8 @@ class Harness:
 
     def __init__(self, model: ModelFile, channel: str, record: Path | None = None,
                  port_class: type[PythonCanPort] = PythonCanPort, codec: Codec = CODEC,
-                 **cfg):
+                 **cfg: Any) -> None:
+        """``cfg``: further NodeConfig fields (timeouts, ``live``, ...)."""
         self.cfg = NodeConfig(interface="virtual", channel=channel, record=str(record or ""),
                               **cfg)
         self.node = ObserverNode(self.cfg, model, codec, port_factory=lambda ids: port_class(
@@ -55,10 +61,11 @@ class Harness:
         self.tx.send(can.Message(arbitration_id=can_id, data=data, is_extended_id=False))
         return True
 
-    def play(self, schedule: Schedule, rate: float = 1.0):
+    def play(self, schedule: Schedule, rate: float = 1.0) -> TimingReport:
         return play(schedule, bus_sender(self.tx, schedule), rate=rate)
 
     def estimates(self) -> list[tuple[float, dict]]:
+        """The ChestEstimate frames received since the last call: (receive time in s, signals)."""
         out = []
         est = CODEC["ChestEstimate"]
         while (m := self.rx.recv(0)) is not None:
@@ -66,7 +73,7 @@ class Harness:
                 out.append((m.timestamp, est.decode(m.data)))
         return out
 
-    def __exit__(self, *exc) -> None:
+    def __exit__(self, *exc: object) -> None:
         self.node.stop_event.set()
         self.thread.join(60)
         self.tx.shutdown()
