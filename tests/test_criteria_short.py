@@ -13,10 +13,9 @@ import numpy as np
 import pytest
 
 from observer_node.criteria import chest_criteria
+from observer_node.daemon.harness import CODEC, Harness
 from observer_node.data.filters import cfc_filter
 from observer_node.recording import analyze, read_recording
-
-from .daemon_feed import CODEC, Harness
 
 ACC, BRS, CRIT = CODEC["TunnelAccel"], CODEC["BeltSpindle"], CODEC["ChestCriteria"]
 

@@ -23,6 +23,7 @@ import numpy as np
 import pytest
 
 from observer_node.daemon.core import LOST_FRAME, CoreConfig, ObserverCore
+from observer_node.daemon.harness import CODEC, Harness, r16_schedule
 from observer_node.daemon.inputs import Counters, Inputs
 from observer_node.data import bundled_campaign, read_isomme
 from observer_node.dbc import FrameCodec
@@ -30,8 +31,6 @@ from observer_node.ident import greybox
 from observer_node.ident.dataset import make_dataset
 from observer_node.recording import analyze, read_recording
 from observer_node.replay.schedule import Schedule, concat, crash_test_schedule, restamp_counters
-
-from .daemon_feed import CODEC, Harness, r16_schedule
 
 OK, INITIAL, REPEATED, OK_SOME_LOST, WRONG_SEQUENCE, WRONG_CRC = (
     "OK", "INITIAL", "REPEATED", "OK_SOME_LOST", "WRONG_SEQUENCE", "WRONG_CRC")

@@ -17,9 +17,8 @@ from pathlib import Path
 import jsonschema
 import pytest
 
+from observer_node.daemon.harness import CODEC, Harness
 from observer_node.recording import read_recording
-
-from .daemon_feed import CODEC, Harness
 
 ROOT = Path(__file__).resolve().parents[1]
 ACC, BRS = CODEC["TunnelAccel"], CODEC["BeltSpindle"]
