@@ -24,6 +24,7 @@ RIGS = {
 }
 DUMMY = "HYBRID III 50%ILE MALE, DRIVER SEAT"
 DV_MS = {"R16": (13.6, 14.4), "SLED": (14.0, 15.6), "FULL": (14.3, 16.2)}
+EXACT = {"pulse_late", "brs_late", "brs_freeze"}  # stated exactly: no per-test scatter
 NOISE = {"pulse_g": 0.6, "cr_g": 0.55, "cd_mm": 0.10}  # white, before the CFC filters
 
 
@@ -41,8 +42,10 @@ class Drawn:
     brs_phase: float
 
 
-def draw(case: Case) -> tuple[list[Drawn], np.ndarray]:
-    """Every test of ``case`` and its crash pulses (deceleration, m/s^2, stage grid)."""
+def draw(case: Case, effects_on: bool = True) -> tuple[list[Drawn], np.ndarray]:
+    """Every test of ``case`` and its crash pulses (deceleration, m/s^2, stage grid).
+    ``effects_on=False``: the same tests (same dummies, pulses, noise) with every effect off,
+    the twin that tells what the effects cost."""
     rng = np.random.default_rng(case.seed)
     est, val = test_names(case)
     m = (ph.N_SAMPLES - 1) * ph.GRID + 1
@@ -56,8 +59,9 @@ def draw(case: Case) -> tuple[list[Drawn], np.ndarray]:
                 params[k] = v * (1.0 + ph.SCATTER * z)
             effects = dict.fromkeys(ph.EFFECTS, 0.0)
             for e in case.effects:
-                if setup in e.setups and (not e.tests or name in e.tests):
-                    effects[e.key] = e.size * (1.0 + 0.04 * float(np.clip(rng.normal(), -2, 2)))
+                z = float(np.clip(rng.normal(), -2, 2))  # drawn always: the twin keeps its dummy
+                if effects_on and setup in e.setups and (not e.tests or name in e.tests):
+                    effects[e.key] = e.size * (1.0 + (0.0 if e.key in EXACT else 0.04 * z))
             dv = float(rng.uniform(*DV_MS[setup]))
             pulses.append(ph.pulse_shape(setup, rng, t, dv))
             out.append(Drawn(case.name, part, name, setup, dv, params, effects,

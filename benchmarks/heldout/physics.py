@@ -62,13 +62,13 @@ NOMINAL = {
     "m_u": 0.12, "k_b": 160e3, "c_b": 2600.0, "k_up": 260e3, "c_up": 1800.0,
     "mu_d": 0.10, "v_slip": 0.05,
     "J": 3.0e-4, "r0": 0.020, "c_spool": 0.01,
-    "k_tb": 350.0, "tau_y": 82.0, "eta_tb": 0.3,
+    "k_tb": 350.0, "tau_y": 70.0, "eta_tb": 0.3,
     "tau_pt": 110.0, "t_pt": 0.007, "d_pt": 0.006, "t_lock": 0.003,
     # pelvis path (used by lumbar_path only)
     "m_p": 14.0, "k_l": 60e3, "c_l": 900.0, "k_lap": 90e3, "c_lap": 1500.0,
     # airbag (used by airbag only)
-    "t_bag": 0.018, "gap_bag": 0.13, "V_bag": 0.060, "A_bag": 0.08, "Amax_bag": 0.06,
-    "dA_bag": 0.03, "p_fill": 1.25, "k_vent": 9.0, "f_st_bag": 0.45,
+    "t_bag": 0.018, "gap_bag": 0.085, "V_bag": 0.060, "A_bag": 0.08, "Amax_bag": 0.06,
+    "dA_bag": 0.03, "p_fill": 1.35, "k_vent": 9.0, "f_st_bag": 0.45,
 }
 SCATTER = 0.05  # relative 1-sigma scatter of the dummy, belt and retractor, clipped at 2 sigma
 NO_SCATTER = {"t_lock", "v_slip", "beta", "f_st_bag"}
