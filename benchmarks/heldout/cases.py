@@ -108,7 +108,8 @@ BY_NAME = {c.name: c for c in CASES}
 def test_names(case: Case) -> tuple[list[str], list[str]]:
     """Names of the estimation and validation tests: odd numbers estimate, even validate,
     numbered per setup (R16_001, R16_003 estimate; R16_002 validates)."""
-    est, val = [], []
+    est: list[str] = []
+    val: list[str] = []
     for setups, out, first in ((case.est, est, 1), (case.val, val, 2)):
         count: dict[str, int] = {}
         for s in setups:

@@ -13,15 +13,17 @@ from .cases import Case, test_names
 from .iso_mme import Channel, Test
 
 # Rig metadata per setup; worded unlike campaign-a's. The R16 rig says why no airbag is there.
-RIGS = {
+RIGS: dict[str, dict[str, str]] = {
     "R16": {"Title": "R16 CERTIFICATION SLED - RIGID SEAT, NO INTERIOR, 3-PT BELT",
-            "Type of the test": "SLED TEST", "pulse": ("S0SLED000000ACXP", "Sled carriage X acc")},
+            "Type of the test": "SLED TEST"},
     "SLED": {"Title": "SLED WITH BODY-IN-WHITE INTERIOR AND DRIVER AIRBAG",
-             "Type of the test": "SLED TEST", "pulse": ("S0SLED000000ACXP", "Sled carriage X acc")},
+             "Type of the test": "SLED TEST"},
     "FULL": {"Title": "FULL WIDTH FRONTAL IMPACT INTO RIGID WALL",
-             "Type of the test": "FULL SCALE VEHICLE", "pulse": ("10TUNN000000ACXP",
-                                                                 "Tunnel X acc below seat")},
+             "Type of the test": "FULL SCALE VEHICLE"},
 }
+PULSE_CHANNEL = {"R16": ("S0SLED000000ACXP", "Sled carriage X acc"),
+                 "SLED": ("S0SLED000000ACXP", "Sled carriage X acc"),
+                 "FULL": ("10TUNN000000ACXP", "Tunnel X acc below seat")}
 DUMMY = "HYBRID III 50%ILE MALE, DRIVER SEAT"
 DV_MS = {"R16": (13.6, 14.4), "SLED": (14.0, 15.6), "FULL": (14.3, 16.2)}
 EXACT = {"pulse_late", "brs_late", "brs_freeze"}  # stated exactly: no per-test scatter
@@ -102,7 +104,7 @@ def record(d: Drawn, i: int, sim: dict[str, np.ndarray], counts_per_rev: int,
     cd = cd_true * (1.0 + e["cd_pot_nonlinear"] * (np.maximum(cd_true, 0) / 25.0) ** 2)
     cd = ph.cfc(cd + NOISE["cd_mm"] * rng.standard_normal(t.size), 600) + e["zero_offset"]
     rig = RIGS[d.setup]
-    code, text = rig["pulse"]
+    code, text = PULSE_CHANNEL[d.setup]
     n = counts_per_rev
     chans = [
         Channel(code, text, "g", "AC", "X", "NOVALUE", -pulse),

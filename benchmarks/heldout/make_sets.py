@@ -29,10 +29,11 @@ def expected(case: Case) -> dict:
 def make(cases: list[Case], out: Path, log: bool = True, effects_on: bool = True) -> None:
     """Simulate every test of ``cases`` in one batch and write them under ``out``."""
     t_start = time.perf_counter()
-    drawn, pulses = [], []
+    drawn: list[lab.Drawn] = []
+    pulses = []
     for c in cases:
-        d, p = lab.draw(c, effects_on)
-        drawn += d
+        tests, p = lab.draw(c, effects_on)
+        drawn += tests
         pulses.append(p)
     if log:
         print(f"simulating {len(drawn)} tests of {len(cases)} cases ...", flush=True)
