@@ -67,9 +67,12 @@ CASES: list[Case] = [
     Case("h_lumbar", 7829, MIX_B, MIX_D, 96,
          (Effect("lumbar_path", 1.0),), (("pelvis_coupling", "all"),),
          notes="pelvis mass on lap belt and seat, lumbar spine to the thoracic spine"),
-    Case("h_spool_buildup", 7933, MIX_A, MIX_A, 96,
-         (Effect("spool_buildup", 0.0030),), (("input_gain", "all"),),
-         notes="spool radius grows 3 mm per wrap of webbing (BRS gain varies with angle)"),
+    Case("h_brs_eccentric", 7933, MIX_A, MIX_A, 96,
+         (Effect("brs_eccentric", 0.2),), (("input_gain", "all"),),
+         notes="BRS encoder ring 20 % off-centre: the angle is read as th + 0.2 sin(th + phase), "
+               "a BRS gain 1 + 0.2 cos(th + phase) varying with the angle. (A spool radius "
+               "growing 4 mm per wrap, the other cause, cost the grey-box < 0.5 points here: "
+               "not visible, so not a case)"),
     Case("h_cd_zero_offset", 8039, MIX_D, MIX_B, 96,
          (Effect("zero_offset", 1.8),), (("sensor_offset", "all"),),
          notes="CD channel zeroed 1.8 mm off (compression), visible before t = 0"),

@@ -94,6 +94,7 @@ def record(d: Drawn, i: int, sim: dict[str, np.ndarray], counts_per_rev: int,
     pulse = pulse + NOISE["pulse_g"] * rng.standard_normal(t.size)
     # BRS: the spindle's counts, maybe late, maybe frozen by a cable fault
     th = np.interp(t - e["brs_late"], t, sim["th"][i])
+    th = th + e["brs_eccentric"] * np.sin(th + 2 * np.pi * d.brs_phase)
     counts = ph.quantise_brs(th[None, :], counts_per_rev, np.array([d.brs_phase]))[0]
     if e["brs_freeze"] > 0:
         k = int(np.searchsorted(t, e["brs_freeze"]))

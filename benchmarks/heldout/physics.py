@@ -49,6 +49,7 @@ EFFECTS = {
     "pulse_late": "input_delay",  # the pulse channel recorded late (s)
     "brs_late": "input_delay",  # the BRS channel recorded late (s)
     "spool_buildup": "input_gain",  # spool radius grows with wound webbing (m per wrap)
+    "brs_eccentric": "input_gain",  # encoder ring off-centre: angle read with error e sin(th)
     "zero_offset": "sensor_offset",  # CD channel zeroed wrong (mm, visible at rest)
     "brs_freeze": "",  # broken test: BRS cable fault, the count freezes (time, s)
     "cd_pot_nonlinear": "",  # transducer: CD over-reads at large deflection (CR untouched)
@@ -61,9 +62,9 @@ NOMINAL = {
     "k_ab": 60e3, "c_ab": 80.0, "beta": 0.62,
     "m_u": 0.12, "k_b": 160e3, "c_b": 2600.0, "k_up": 260e3, "c_up": 1800.0,
     "mu_d": 0.10, "v_slip": 0.05,
-    "J": 3.0e-4, "r0": 0.020, "c_spool": 0.01,
-    "k_tb": 350.0, "tau_y": 70.0, "eta_tb": 0.3,
-    "tau_pt": 110.0, "t_pt": 0.007, "d_pt": 0.006, "t_lock": 0.003,
+    "J": 3.0e-4, "r0": 0.017, "c_spool": 0.01,
+    "k_tb": 300.0, "tau_y": 62.0, "eta_tb": 0.3,
+    "tau_pt": 40.0, "t_pt": 0.007, "d_pt": 0.006, "t_lock": 0.003,
     # pelvis path (used by lumbar_path only)
     "m_p": 14.0, "k_l": 60e3, "c_l": 900.0, "k_lap": 90e3, "c_lap": 1500.0,
     # airbag (used by airbag only)
