@@ -41,9 +41,9 @@ GRID = 2 * SUB  # vehicle-kinematics points per recorded sample (stage midpoints
 # Physics effect keys (what this simulator switches) -> the loop library's name for it.
 EFFECTS = {
     "rib_bottoming": "chest_stiffening",  # ribs stiffen past an onset deflection (power 2.5)
-    "rib_fluid": "chest_rate_damping",  # orifice-like rib damping, |rate|^1.6
+    "rib_fluid": "chest_rate_damping",  # rate-stiffening rib damping material, |rate|^2.2
     "webbing_slack": "belt_unloading",  # webbing carries no compression (both segments)
-    "webbing_toe": "belt_stiffening",  # exponential stiffening of the chest-side webbing
+    "webbing_toe": "belt_stiffening",  # exponential stiffening of the webbing (both segments)
     "airbag": "airbag_contact",  # vented gas bag beyond a gap, loads spine and sternum
     "lumbar_path": "pelvis_coupling",  # pelvis mass, lap belt/seat to the car, lumbar spine
     "pulse_late": "input_delay",  # the pulse channel recorded late (s)
@@ -112,10 +112,10 @@ def _deriv(b: Batch, j: np.ndarray | int, y: np.ndarray) -> np.ndarray:
         on = 0.012
         fa = fa + kb * np.sign(da) * np.maximum(np.abs(da) - on, 0.0) ** 2.5
         fb = fb + kb * np.sign(db) * np.maximum(np.abs(db) - on, 0.0) ** 2.5
-    cf = e["rib_fluid"]  # N/(m/s)^1.6
+    cf = e["rib_fluid"]  # N/(m/s)^2.2
     if np.any(cf):
-        fa = fa + cf * np.sign(dva) * np.abs(dva) ** 1.6
-        fb = fb + cf * np.sign(dvb) * np.abs(dvb) ** 1.6
+        fa = fa + cf * np.sign(dva) * np.abs(dva) ** 2.2
+        fb = fb + cf * np.sign(dvb) * np.abs(dvb) ** 2.2
     fab = p["k_ab"] * (sa - sb) + p["c_ab"] * (va - vb)
 
     # belt, chest side: pushes the contact point of the sternum rearward
@@ -125,7 +125,7 @@ def _deriv(b: Batch, j: np.ndarray | int, y: np.ndarray) -> np.ndarray:
     el = p["k_b"] * ext
     toe = e["webbing_toe"]  # dimensionless amount of exponential toe
     if np.any(toe):
-        e0 = 0.010
+        e0 = 0.006
         z = np.clip(np.maximum(ext, 0.0) / e0, 0.0, 6.0)
         el = el + toe * p["k_b"] * e0 * (np.expm1(z) - z)
     fc = el + p["c_b"] * (vu - vc)
@@ -134,7 +134,12 @@ def _deriv(b: Batch, j: np.ndarray | int, y: np.ndarray) -> np.ndarray:
     tw = e["spool_buildup"]  # m of radius per wrap
     r = p["r0"] + tw * th / (2 * np.pi)
     length = p["r0"] * th + tw * th * th / (4 * np.pi)
-    tr = p["k_up"] * (xv + length - u) + p["c_up"] * (vv + r * om - vu)
+    stretch = xv + length - u
+    tr = p["k_up"] * stretch + p["c_up"] * (vv + r * om - vu)
+    if np.any(toe):  # the same webbing up to the retractor: its toe scales with its length
+        e1 = 0.010
+        z1 = np.clip(np.maximum(stretch, 0.0) / e1, 0.0, 6.0)
+        tr = tr + toe * p["k_up"] * e1 * (np.expm1(z1) - z1)
     slack = e["webbing_slack"] > 0
     if np.any(slack):
         fc = np.where(slack, np.maximum(fc, 0.0), fc)
