@@ -75,8 +75,8 @@ CASES: list[Case] = [
                "growing 4 mm per wrap, the other cause, cost the grey-box < 0.5 points here: "
                "not visible, so not a case)"),
     Case("h_cd_zero_offset", 8039, MIX_D, MIX_B, 96,
-         (Effect("zero_offset", 1.8),), (("sensor_offset", "all"),),
-         notes="CD channel zeroed 1.8 mm off (compression), visible before t = 0"),
+         (Effect("zero_offset", 2.2),), (("sensor_offset", "all"),),
+         notes="CD channel zeroed 2.2 mm off (compression), visible before t = 0"),
     Case("h_two_effects", 8147, MIX_A, MIX_A, 96,
          (Effect("rib_fluid", 8000.0, ("R16",)), Effect("airbag", 1.0, ("SLED", "FULL"))),
          (("chest_rate_damping", "R16"), ("airbag_contact", "SLED+FULL")),
