@@ -69,16 +69,16 @@ CASES: list[Case] = [
          (Effect("lumbar_path", 1.0),), (("pelvis_coupling", "all"),),
          notes="pelvis mass on lap belt and seat, lumbar spine to the thoracic spine"),
     Case("h_brs_eccentric", 7933, MIX_A, MIX_A, 96,
-         (Effect("brs_eccentric", 0.2),), (("input_gain", "all"),),
-         notes="BRS encoder ring 20 % off-centre: the angle is read as th + 0.2 sin(th + phase), "
-               "a BRS gain 1 + 0.2 cos(th + phase) varying with the angle. (A spool radius "
+         (Effect("brs_eccentric", 0.3),), (("input_gain", "all"),),
+         notes="BRS encoder ring 30 % off-centre: the angle is read as th + 0.3 sin(th + phase), "
+               "a BRS gain 1 + 0.3 cos(th + phase) varying with the angle. (A spool radius "
                "growing 4 mm per wrap, the other cause, cost the grey-box < 0.5 points here: "
                "not visible, so not a case)"),
     Case("h_cd_zero_offset", 8039, MIX_D, MIX_B, 96,
          (Effect("zero_offset", 2.2),), (("sensor_offset", "all"),),
          notes="CD channel zeroed 2.2 mm off (compression), visible before t = 0"),
     Case("h_two_effects", 8147, MIX_A, MIX_A, 96,
-         (Effect("rib_fluid", 8000.0, ("R16",)), Effect("airbag", 1.0, ("SLED", "FULL"))),
+         (Effect("rib_fluid", 5000.0, ("R16",)), Effect("airbag", 1.0, ("SLED", "FULL"))),
          (("chest_rate_damping", "R16"), ("airbag_contact", "SLED+FULL")),
          notes="rate damping on the R16 dummy only, airbag on the interior rigs"),
     Case("h_broken_brs", 8233, MIX_A, MIX_A, 96,
