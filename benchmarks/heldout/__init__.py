@@ -8,7 +8,7 @@
   counts (48 or 96 per rev), CFC 180 / 600 filters, SAE J211 signs, rig metadata.
 - ``iso_mme.py``: the ISO-MME writer.  ``cases.py``: the held-out cases and their expected
   verdicts.  ``make_sets.py``: writes them (``--no-effects``: the same tests with every
-  effect off, to measure what an effect costs the thesis grey-box).
+  effect off).  ``costs.py``: what each case costs the thesis grey-box (project CLI).
 
     python -m benchmarks.heldout.make_sets --out /tmp/heldout [--case NAME ...]
 
