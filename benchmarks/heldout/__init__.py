@@ -1,2 +1,16 @@
-"""Independent held-out crash tests: a thorax/belt/retractor simulator written from the physics
-(not from the observer's effect library), an ISO-MME writer and the held-out cases."""
+"""Independent held-out crash tests for the loop: data that can surprise it.
+
+- ``physics.py``: a thorax (spine, sternum on two masses), belt (chest-side webbing, webbing
+  to the retractor, D-ring friction) and retractor (pretensioner, ratchet, torsion-bar load
+  limiter) integrated by RK4 at 20 kHz, and crash pulses (R16 sled, sled with interior,
+  barrier crush). Written from the physics; nothing from ``observer_node`` is imported.
+- ``lab.py``: per-test scatter of the dummy (5 % 1-sigma, clipped at 10 %), lab noise, BRS
+  counts (48 or 96 per rev), CFC 180 / 600 filters, SAE J211 signs, rig metadata.
+- ``iso_mme.py``: the ISO-MME writer.  ``cases.py``: the held-out cases and their expected
+  verdicts.  ``make_sets.py``: writes them (``--no-effects``: the same tests with every
+  effect off).  ``costs.py``: what each case costs the thesis grey-box (project CLI).
+
+    python -m benchmarks.heldout.make_sets --out /tmp/heldout [--case NAME ...]
+
+Never tune the loop on these cases; report them apart from the tuned ones.
+"""

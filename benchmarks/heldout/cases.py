@@ -53,28 +53,32 @@ CASES: list[Case] = [
          (Effect("rib_bottoming", 9.0e7),), (("chest_stiffening", "all"),),
          notes="ribs stiffen beyond 12 mm deflection, F += k (|d| - 12 mm)^2.5"),
     Case("h_rib_fluid", 7411, MIX_D, MIX_A, 96,
-         (Effect("rib_fluid", 1600.0),), (("chest_rate_damping", "all"),),
-         notes="orifice-like rib damping, F += c |d'|^1.6"),
+         (Effect("rib_fluid", 8000.0),), (("chest_rate_damping", "all"),),
+         notes="rate-stiffening rib damping material, F += c |d'|^2.2 sign(d')"),
     Case("h_slack_webbing", 7523, MIX_B, MIX_B, 96,
          (Effect("webbing_slack", 1.0),), (("belt_unloading", "all"),),
          notes="webbing cannot push, chest side and retractor side"),
     Case("h_webbing_toe", 7621, MIX_C, MIX_A, 48,
-         (Effect("webbing_toe", 0.35),), (("belt_stiffening", "all"),),
-         notes="chest-side webbing stiffens exponentially beyond its toe (10 mm)"),
+         (Effect("webbing_toe", 2.5),), (("belt_stiffening", "all"),),
+         notes="webbing stiffens exponentially with stretch (toe 6 mm chest side, 10 mm "
+               "up to the retractor)"),
     Case("h_airbag", 7717, MIX_A, MIX_C, 96,
          (Effect("airbag", 1.0, ("SLED", "FULL")),), (("airbag_contact", "SLED+FULL"),),
-         notes="vented gas bag beyond a 130 mm gap on the rigs with an interior"),
+         notes="vented gas bag beyond an 85 mm gap on the rigs with an interior"),
     Case("h_lumbar", 7829, MIX_B, MIX_D, 96,
          (Effect("lumbar_path", 1.0),), (("pelvis_coupling", "all"),),
          notes="pelvis mass on lap belt and seat, lumbar spine to the thoracic spine"),
-    Case("h_spool_buildup", 7933, MIX_A, MIX_A, 96,
-         (Effect("spool_buildup", 0.0022),), (("input_gain", "all"),),
-         notes="spool radius grows 2.2 mm per wrap of webbing (BRS gain varies with angle)"),
+    Case("h_brs_eccentric", 7933, MIX_A, MIX_A, 96,
+         (Effect("brs_eccentric", 0.3),), (("input_gain", "all"),),
+         notes="BRS encoder ring 30 % off-centre: the angle is read as th + 0.3 sin(th + phase), "
+               "a BRS gain 1 + 0.3 cos(th + phase) varying with the angle. (A spool radius "
+               "growing 4 mm per wrap, the other cause, cost the grey-box < 0.5 points here: "
+               "not visible, so not a case)"),
     Case("h_cd_zero_offset", 8039, MIX_D, MIX_B, 96,
-         (Effect("zero_offset", 1.8),), (("sensor_offset", "all"),),
-         notes="CD channel zeroed 1.8 mm off (compression), visible before t = 0"),
+         (Effect("zero_offset", 2.2),), (("sensor_offset", "all"),),
+         notes="CD channel zeroed 2.2 mm off (compression), visible before t = 0"),
     Case("h_two_effects", 8147, MIX_A, MIX_A, 96,
-         (Effect("rib_fluid", 1500.0, ("R16",)), Effect("airbag", 1.0, ("SLED", "FULL"))),
+         (Effect("rib_fluid", 5000.0, ("R16",)), Effect("airbag", 1.0, ("SLED", "FULL"))),
          (("chest_rate_damping", "R16"), ("airbag_contact", "SLED+FULL")),
          notes="rate damping on the R16 dummy only, airbag on the interior rigs"),
     Case("h_broken_brs", 8233, MIX_A, MIX_A, 96,
@@ -108,7 +112,8 @@ BY_NAME = {c.name: c for c in CASES}
 def test_names(case: Case) -> tuple[list[str], list[str]]:
     """Names of the estimation and validation tests: odd numbers estimate, even validate,
     numbered per setup (R16_001, R16_003 estimate; R16_002 validates)."""
-    est, val = [], []
+    est: list[str] = []
+    val: list[str] = []
     for setups, out, first in ((case.est, est, 1), (case.val, val, 2)):
         count: dict[str, int] = {}
         for s in setups:

@@ -13,17 +13,20 @@ from .cases import Case, test_names
 from .iso_mme import Channel, Test
 
 # Rig metadata per setup; worded unlike campaign-a's. The R16 rig says why no airbag is there.
-RIGS = {
+RIGS: dict[str, dict[str, str]] = {
     "R16": {"Title": "R16 CERTIFICATION SLED - RIGID SEAT, NO INTERIOR, 3-PT BELT",
-            "Type of the test": "SLED TEST", "pulse": ("S0SLED000000ACXP", "Sled carriage X acc")},
+            "Type of the test": "SLED TEST"},
     "SLED": {"Title": "SLED WITH BODY-IN-WHITE INTERIOR AND DRIVER AIRBAG",
-             "Type of the test": "SLED TEST", "pulse": ("S0SLED000000ACXP", "Sled carriage X acc")},
+             "Type of the test": "SLED TEST"},
     "FULL": {"Title": "FULL WIDTH FRONTAL IMPACT INTO RIGID WALL",
-             "Type of the test": "FULL SCALE VEHICLE", "pulse": ("10TUNN000000ACXP",
-                                                                 "Tunnel X acc below seat")},
+             "Type of the test": "FULL SCALE VEHICLE"},
 }
+PULSE_CHANNEL = {"R16": ("S0SLED000000ACXP", "Sled carriage X acc"),
+                 "SLED": ("S0SLED000000ACXP", "Sled carriage X acc"),
+                 "FULL": ("10TUNN000000ACXP", "Tunnel X acc below seat")}
 DUMMY = "HYBRID III 50%ILE MALE, DRIVER SEAT"
 DV_MS = {"R16": (13.6, 14.4), "SLED": (14.0, 15.6), "FULL": (14.3, 16.2)}
+EXACT = {"pulse_late", "brs_late", "brs_freeze"}  # stated exactly: no per-test scatter
 NOISE = {"pulse_g": 0.6, "cr_g": 0.55, "cd_mm": 0.10}  # white, before the CFC filters
 
 
@@ -41,8 +44,10 @@ class Drawn:
     brs_phase: float
 
 
-def draw(case: Case) -> tuple[list[Drawn], np.ndarray]:
-    """Every test of ``case`` and its crash pulses (deceleration, m/s^2, stage grid)."""
+def draw(case: Case, effects_on: bool = True) -> tuple[list[Drawn], np.ndarray]:
+    """Every test of ``case`` and its crash pulses (deceleration, m/s^2, stage grid).
+    ``effects_on=False``: the same tests (same dummies, pulses, noise) with every effect off,
+    the twin that tells what the effects cost."""
     rng = np.random.default_rng(case.seed)
     est, val = test_names(case)
     m = (ph.N_SAMPLES - 1) * ph.GRID + 1
@@ -56,8 +61,9 @@ def draw(case: Case) -> tuple[list[Drawn], np.ndarray]:
                 params[k] = v * (1.0 + ph.SCATTER * z)
             effects = dict.fromkeys(ph.EFFECTS, 0.0)
             for e in case.effects:
-                if setup in e.setups and (not e.tests or name in e.tests):
-                    effects[e.key] = e.size * (1.0 + 0.04 * float(np.clip(rng.normal(), -2, 2)))
+                z = float(np.clip(rng.normal(), -2, 2))  # drawn always: the twin keeps its dummy
+                if effects_on and setup in e.setups and (not e.tests or name in e.tests):
+                    effects[e.key] = e.size * (1.0 + (0.0 if e.key in EXACT else 0.04 * z))
             dv = float(rng.uniform(*DV_MS[setup]))
             pulses.append(ph.pulse_shape(setup, rng, t, dv))
             out.append(Drawn(case.name, part, name, setup, dv, params, effects,
@@ -88,6 +94,7 @@ def record(d: Drawn, i: int, sim: dict[str, np.ndarray], counts_per_rev: int,
     pulse = pulse + NOISE["pulse_g"] * rng.standard_normal(t.size)
     # BRS: the spindle's counts, maybe late, maybe frozen by a cable fault
     th = np.interp(t - e["brs_late"], t, sim["th"][i])
+    th = th + e["brs_eccentric"] * np.sin(th + 2 * np.pi * d.brs_phase)
     counts = ph.quantise_brs(th[None, :], counts_per_rev, np.array([d.brs_phase]))[0]
     if e["brs_freeze"] > 0:
         k = int(np.searchsorted(t, e["brs_freeze"]))
@@ -98,7 +105,7 @@ def record(d: Drawn, i: int, sim: dict[str, np.ndarray], counts_per_rev: int,
     cd = cd_true * (1.0 + e["cd_pot_nonlinear"] * (np.maximum(cd_true, 0) / 25.0) ** 2)
     cd = ph.cfc(cd + NOISE["cd_mm"] * rng.standard_normal(t.size), 600) + e["zero_offset"]
     rig = RIGS[d.setup]
-    code, text = rig["pulse"]
+    code, text = PULSE_CHANNEL[d.setup]
     n = counts_per_rev
     chans = [
         Channel(code, text, "g", "AC", "X", "NOVALUE", -pulse),

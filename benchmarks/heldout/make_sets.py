@@ -2,7 +2,7 @@
 DIR/<case>/truth.json (the case, the expected verdict, the true parameters of every test).
 Deterministic from each case's seed.
 
-    python -m benchmarks.heldout.make_sets --out DIR [--case NAME ...]
+    python -m benchmarks.heldout.make_sets --out DIR [--case NAME ...] [--no-effects]
 """
 
 from __future__ import annotations
@@ -26,13 +26,14 @@ def expected(case: Case) -> dict:
             "broken_tests": list(case.expect_broken), "note": case.expect_note}
 
 
-def make(cases: list[Case], out: Path, log: bool = True) -> None:
+def make(cases: list[Case], out: Path, log: bool = True, effects_on: bool = True) -> None:
     """Simulate every test of ``cases`` in one batch and write them under ``out``."""
     t_start = time.perf_counter()
-    drawn, pulses = [], []
+    drawn: list[lab.Drawn] = []
+    pulses = []
     for c in cases:
-        d, p = lab.draw(c)
-        drawn += d
+        tests, p = lab.draw(c, effects_on)
+        drawn += tests
         pulses.append(p)
     if log:
         print(f"simulating {len(drawn)} tests of {len(cases)} cases ...", flush=True)
@@ -46,7 +47,7 @@ def make(cases: list[Case], out: Path, log: bool = True) -> None:
             write_test(test, out / c.name / d.part)
             truths.append(truth)
             i += 1
-        doc = {"case": c.as_dict(), "expected": expected(c),
+        doc = {"case": c.as_dict(), "effects_on": effects_on, "expected": expected(c),
                "library_name": {k: v for k, v in ph.EFFECTS.items() if v},
                "tests": truths}
         (out / c.name / "truth.json").write_text(json.dumps(doc, indent=1) + "\n")
@@ -63,6 +64,8 @@ def main(argv: list[str] | None = None) -> int:
     ap.add_argument("--case", action="append", metavar="NAME",
                     help="only this case (repeatable); default all: "
                          + ", ".join(c.name for c in CASES))
+    ap.add_argument("--no-effects", action="store_true",
+                    help="the same tests with every effect off (what the effects cost)")
     try:
         args = ap.parse_args(argv)
     except SystemExit as e:
@@ -73,7 +76,7 @@ def main(argv: list[str] | None = None) -> int:
         return 2
     cases = [BY_NAME[n] for n in args.case] if args.case else list(CASES)
     try:
-        make(cases, args.out)
+        make(cases, args.out, effects_on=not args.no_effects)
     except OSError as e:
         print(f"error: cannot write {e.filename}: {e.strerror}", file=sys.stderr)
         return 2

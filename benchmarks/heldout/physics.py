@@ -41,14 +41,15 @@ GRID = 2 * SUB  # vehicle-kinematics points per recorded sample (stage midpoints
 # Physics effect keys (what this simulator switches) -> the loop library's name for it.
 EFFECTS = {
     "rib_bottoming": "chest_stiffening",  # ribs stiffen past an onset deflection (power 2.5)
-    "rib_fluid": "chest_rate_damping",  # orifice-like rib damping, |rate|^1.6
+    "rib_fluid": "chest_rate_damping",  # rate-stiffening rib damping material, |rate|^2.2
     "webbing_slack": "belt_unloading",  # webbing carries no compression (both segments)
-    "webbing_toe": "belt_stiffening",  # exponential stiffening of the chest-side webbing
+    "webbing_toe": "belt_stiffening",  # exponential stiffening of the webbing (both segments)
     "airbag": "airbag_contact",  # vented gas bag beyond a gap, loads spine and sternum
     "lumbar_path": "pelvis_coupling",  # pelvis mass, lap belt/seat to the car, lumbar spine
     "pulse_late": "input_delay",  # the pulse channel recorded late (s)
     "brs_late": "input_delay",  # the BRS channel recorded late (s)
     "spool_buildup": "input_gain",  # spool radius grows with wound webbing (m per wrap)
+    "brs_eccentric": "input_gain",  # encoder ring off-centre: angle read with error e sin(th)
     "zero_offset": "sensor_offset",  # CD channel zeroed wrong (mm, visible at rest)
     "brs_freeze": "",  # broken test: BRS cable fault, the count freezes (time, s)
     "cd_pot_nonlinear": "",  # transducer: CD over-reads at large deflection (CR untouched)
@@ -61,14 +62,14 @@ NOMINAL = {
     "k_ab": 60e3, "c_ab": 80.0, "beta": 0.62,
     "m_u": 0.12, "k_b": 160e3, "c_b": 2600.0, "k_up": 260e3, "c_up": 1800.0,
     "mu_d": 0.10, "v_slip": 0.05,
-    "J": 3.0e-4, "r0": 0.020, "c_spool": 0.01,
-    "k_tb": 350.0, "tau_y": 82.0, "eta_tb": 0.3,
-    "tau_pt": 110.0, "t_pt": 0.007, "d_pt": 0.006, "t_lock": 0.003,
+    "J": 3.0e-4, "r0": 0.017, "c_spool": 0.01,
+    "k_tb": 300.0, "tau_y": 62.0, "eta_tb": 0.3,
+    "tau_pt": 40.0, "t_pt": 0.007, "d_pt": 0.006, "t_lock": 0.003,
     # pelvis path (used by lumbar_path only)
     "m_p": 14.0, "k_l": 60e3, "c_l": 900.0, "k_lap": 90e3, "c_lap": 1500.0,
     # airbag (used by airbag only)
-    "t_bag": 0.018, "gap_bag": 0.13, "V_bag": 0.060, "A_bag": 0.08, "Amax_bag": 0.06,
-    "dA_bag": 0.03, "p_fill": 1.25, "k_vent": 9.0, "f_st_bag": 0.45,
+    "t_bag": 0.018, "gap_bag": 0.085, "V_bag": 0.060, "A_bag": 0.08, "Amax_bag": 0.06,
+    "dA_bag": 0.03, "p_fill": 1.35, "k_vent": 9.0, "f_st_bag": 0.45,
 }
 SCATTER = 0.05  # relative 1-sigma scatter of the dummy, belt and retractor, clipped at 2 sigma
 NO_SCATTER = {"t_lock", "v_slip", "beta", "f_st_bag"}
@@ -111,10 +112,10 @@ def _deriv(b: Batch, j: np.ndarray | int, y: np.ndarray) -> np.ndarray:
         on = 0.012
         fa = fa + kb * np.sign(da) * np.maximum(np.abs(da) - on, 0.0) ** 2.5
         fb = fb + kb * np.sign(db) * np.maximum(np.abs(db) - on, 0.0) ** 2.5
-    cf = e["rib_fluid"]  # N/(m/s)^1.6
+    cf = e["rib_fluid"]  # N/(m/s)^2.2
     if np.any(cf):
-        fa = fa + cf * np.sign(dva) * np.abs(dva) ** 1.6
-        fb = fb + cf * np.sign(dvb) * np.abs(dvb) ** 1.6
+        fa = fa + cf * np.sign(dva) * np.abs(dva) ** 2.2
+        fb = fb + cf * np.sign(dvb) * np.abs(dvb) ** 2.2
     fab = p["k_ab"] * (sa - sb) + p["c_ab"] * (va - vb)
 
     # belt, chest side: pushes the contact point of the sternum rearward
@@ -124,7 +125,7 @@ def _deriv(b: Batch, j: np.ndarray | int, y: np.ndarray) -> np.ndarray:
     el = p["k_b"] * ext
     toe = e["webbing_toe"]  # dimensionless amount of exponential toe
     if np.any(toe):
-        e0 = 0.010
+        e0 = 0.006
         z = np.clip(np.maximum(ext, 0.0) / e0, 0.0, 6.0)
         el = el + toe * p["k_b"] * e0 * (np.expm1(z) - z)
     fc = el + p["c_b"] * (vu - vc)
@@ -133,7 +134,12 @@ def _deriv(b: Batch, j: np.ndarray | int, y: np.ndarray) -> np.ndarray:
     tw = e["spool_buildup"]  # m of radius per wrap
     r = p["r0"] + tw * th / (2 * np.pi)
     length = p["r0"] * th + tw * th * th / (4 * np.pi)
-    tr = p["k_up"] * (xv + length - u) + p["c_up"] * (vv + r * om - vu)
+    stretch = xv + length - u
+    tr = p["k_up"] * stretch + p["c_up"] * (vv + r * om - vu)
+    if np.any(toe):  # the same webbing up to the retractor: its toe scales with its length
+        e1 = 0.010
+        z1 = np.clip(np.maximum(stretch, 0.0) / e1, 0.0, 6.0)
+        tr = tr + toe * p["k_up"] * e1 * (np.expm1(z1) - z1)
     slack = e["webbing_slack"] > 0
     if np.any(slack):
         fc = np.where(slack, np.maximum(fc, 0.0), fc)
