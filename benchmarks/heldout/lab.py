@@ -89,11 +89,15 @@ def record(d: Drawn, i: int, sim: dict[str, np.ndarray], counts_per_rev: int,
     t = ph.T0_S + np.arange(ph.N_SAMPLES) / ph.FS_HZ
     tg = ph.T0_S + np.arange(sim["pulse"].shape[1]) / (ph.FS_HZ * ph.GRID)
     e = d.effects
-    # pulse: unfiltered accelerometer, maybe recorded late
-    pulse = np.interp(t - e["pulse_late"], tg, sim["pulse"][i]) / ph.G
+    # pulse: unfiltered accelerometer; with pulse_late the chest feels it that long after the
+    # channel records it (a transport delay, as the loop's input_delay means): the recorded
+    # channel leads the pulse the physics ran on. The other way round (a channel recorded
+    # after the chest moved) no causal observer can model.
+    pulse = np.interp(t + e["pulse_late"], tg, sim["pulse"][i]) / ph.G
     pulse = pulse + NOISE["pulse_g"] * rng.standard_normal(t.size)
-    # BRS: the spindle's counts, maybe late, maybe frozen by a cable fault
-    th = np.interp(t - e["brs_late"], t, sim["th"][i])
+    # BRS: the spindle's counts, leading the belt the chest feels by brs_late (as the pulse),
+    # maybe frozen by a cable fault
+    th = np.interp(t + e["brs_late"], t, sim["th"][i])
     th = th + e["brs_eccentric"] * np.sin(th + 2 * np.pi * d.brs_phase)
     counts = ph.quantise_brs(th[None, :], counts_per_rev, np.array([d.brs_phase]))[0]
     if e["brs_freeze"] > 0:

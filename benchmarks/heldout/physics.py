@@ -46,8 +46,8 @@ EFFECTS = {
     "webbing_toe": "belt_stiffening",  # exponential stiffening of the webbing (both segments)
     "airbag": "airbag_contact",  # vented gas bag beyond a gap, loads spine and sternum
     "lumbar_path": "pelvis_coupling",  # pelvis mass, lap belt/seat to the car, lumbar spine
-    "pulse_late": "input_delay",  # the pulse channel recorded late (s)
-    "brs_late": "input_delay",  # the BRS channel recorded late (s)
+    "pulse_late": "input_delay",  # the chest feels the pulse this late after its record (s)
+    "brs_late": "input_delay",  # the chest feels the belt this late after the BRS record (s)
     "spool_buildup": "input_gain",  # spool radius grows with wound webbing (m per wrap)
     "brs_eccentric": "input_gain",  # encoder ring off-centre: angle read with error e sin(th)
     "zero_offset": "sensor_offset",  # CD channel zeroed wrong (mm, visible at rest)
