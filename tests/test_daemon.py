@@ -3,7 +3,6 @@ in test_vcan.py)."""
 
 from __future__ import annotations
 
-import itertools
 import os
 import signal
 import subprocess
@@ -62,20 +61,39 @@ def test_every_frame_handled_and_estimates_equal_offline(model, tmp_path):
 
 def test_input_bursts_carry_10_khz_ticks(campaign, tmp_path):
     """CAN FD InputBurst frames (eight samples each, with their BRS counts): every sample is
-    a tick, the estimates equal the offline simulation at 10 kHz, one estimate per frame."""
+    a tick, recorded once, the estimates equal the offline simulation at 10 kHz, one
+    estimate frame per burst. On a loaded machine the daemon falls behind and overruns
+    (counted), never loses a sample: it is stopped only once it has read every frame (a
+    generous bound). How many keep up on time: benchmarks/daemon.py --burst-rates 10000."""
+    import threading
+
+    from observer_node.recording import format as fmt
+
     est = [t for t in campaign if t.name in ("R16_001", "R16_003", "R16_005")]
     data = make_dataset(est, 1000.0)
     model = greybox.to_model_file(greybox.fit_greybox(data), data, tick_rate_hz=10_000.0)
     test = read_isomme(bundled_campaign() / "R16_002.zip")
     sched = crash_test_schedule(test, CODEC, 10_000.0, reference=True, pre_s=0.2, burst=True)
     n_frames = int((sched.ids == CODEC["InputBurst"].frame_id).sum())
-    c, est_frames, rec = _play_recorded(model, "burst", sched, tmp_path / "run.mcap")
+    record = tmp_path / "run.mcap"
+    h = Harness(model, "burst", record)
+    h.thread = threading.Thread(target=h.node.run)  # no idle exit: starved is not idle
+    with h:
+        h.play(sched)
+        deadline = time.monotonic() + 120
+        while h.node.counters.rx < len(sched) and time.monotonic() < deadline:
+            time.sleep(0.05)
+    c = h.node.counters
+    assert c.rx == len(sched), "frames left unread"
     assert c.ticks == 8 * n_frames and c.lost == c.rejected == c.bad_e2e == 0
-    # One estimate frame per burst; the watchdog's publishes between frames repeat the
-    # last tick's counter (bursts alternate counters 7, 15), so count the runs.
-    counters = [e["ChestEstimate_Counter"] for _, e in est_frames]
-    assert 1 + sum(a != b for a, b in itertools.pairwise(counters)) == n_frames
+    assert c.tx_dropped == 0 and 0 <= c.overruns <= n_frames  # late frames: counted
+    rec = read_recording(record)
     assert int((rec.ticks["tick"] >= 0).sum()) == 8 * n_frames  # every sample recorded
+    # One estimate frame per burst; the others sent are the watchdog's, recorded with
+    # tick -1 (every estimate message that is not one of the 8 * n_frames ticks).
+    est_id = CODEC["ChestEstimate"].frame_id
+    sent = sum(1 for f in rec.frames if f["dir"] == "tx" and f["id"] == est_id)
+    assert sent == n_frames + rec.topics[fmt.ESTIMATE] - 8 * n_frames
     _assert_matches_offline(rec)
 
 
