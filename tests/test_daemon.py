@@ -64,7 +64,7 @@ def test_input_bursts_carry_10_khz_ticks(campaign, tmp_path):
     a tick, recorded once, the estimates equal the offline simulation at 10 kHz, one
     estimate frame per burst. On a loaded machine the daemon falls behind and overruns
     (counted), never loses a sample: it is stopped only once it has read every frame (a
-    generous bound). How many keep up on time: benchmarks/daemon.py --burst-rates 10000."""
+    generous bound). How many are processed on time: benchmarks/on_time.py."""
     import threading
 
     from observer_node.recording import format as fmt

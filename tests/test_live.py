@@ -49,7 +49,7 @@ def test_a_live_client_receives_the_recorded_estimates(model, tmp_path):
     """Every tenth tick's estimate reaches a subscribed client, each once and as the MCAP
     holds it. The server runs at idle priority, so on a busy machine it may deliver late:
     the run is held open until the client has them all (a generous bound), never cut at a
-    fixed time. (How many arrive within a fixed time: benchmarks/live_counts.py.)"""
+    fixed time. (How many arrive within a fixed time: benchmarks/on_time.py.)"""
     port = _free_port()
     record = tmp_path / "run.mcap"
     status_topic = fmt.STATUS_TOPICS["ObserverStatus"]
