@@ -53,6 +53,14 @@ def test_export_refuses_an_unknown_format_in_one_line(recorded, tmp_path, capsys
     assert err.count("\n") == 0 and "unknown log format '.xyz'" in err
 
 
+@pytest.mark.parametrize("suffix", [".mf4", ".blf", ".asc"])
+def test_export_to_an_unwritable_path_says_so_in_one_line(recorded, tmp_path, suffix, capsys):
+    out = tmp_path / "missing" / f"run{suffix}"
+    assert main(["export", str(recorded), "--to", str(out)]) == 2
+    err = capsys.readouterr().err.strip()
+    assert err.count("\n") == 0 and f"error: {out}: cannot write" in err, err
+
+
 def _wall_clock(recording: Path) -> tuple[float, float, float]:
     """The recording's wall-clock start and its first and last frame's wall-clock times, in
     s since the epoch, read with the ``mcap`` library: a frame's MCAP log time is wall-clock

@@ -80,6 +80,8 @@ def export_frames(recording: str | Path, out: str | Path,
                 writer.on_message_received(heapq.heappop(heap)[2])
         while heap:
             writer.on_message_received(heapq.heappop(heap)[2])
+    except ExportError:
+        raise
     except (ValueError, KeyError) as e:
         raise RecordingError(f"{recording}: a {fmt.FRAMES} message that is not a frame "
                              f"({type(e).__name__}: {e})") from None
