@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import json
+import threading
 import time
 from pathlib import Path
 
@@ -16,12 +17,27 @@ from observer_node.replay.sources import load_source
 from .daemon_feed import CODEC, Harness, r16_schedule
 
 
+def _play_all(h: Harness, sched) -> None:
+    """Play ``sched`` and stop the daemon only once it has read every frame (a generous
+    bound): on a busy machine it falls behind, and a fixed wait would cut the run."""
+    h.play(sched)
+    deadline = time.monotonic() + 120
+    while h.node.counters.rx < len(sched) and time.monotonic() < deadline:
+        time.sleep(0.02)
+    assert h.node.counters.rx == len(sched), "frames left unread"
+
+
+def _harness(*args, **kwargs) -> Harness:
+    h = Harness(*args, **kwargs)
+    h.thread = threading.Thread(target=h.node.run)  # no idle exit: starved is not idle
+    return h
+
+
 @pytest.fixture(scope="module")
 def recorded(model, tmp_path_factory) -> Path:
     record = tmp_path_factory.mktemp("export") / "run.mcap"
-    with Harness(model, "export-src", record) as h:
-        h.play(r16_schedule())
-        time.sleep(0.1)
+    with _harness(model, "export-src", record) as h:
+        _play_all(h, r16_schedule())
     return record
 
 
@@ -39,9 +55,8 @@ def test_export_then_replay_gives_the_same_estimates(model, recorded, suffix, tm
                             sched.source)
     first = read_recording(recorded)
     again = tmp_path / "again.mcap"
-    with Harness(model, f"export-{suffix[1:]}", again) as h:
-        h.play(sched)
-        time.sleep(0.1)
+    with _harness(model, f"export-{suffix[1:]}", again) as h:
+        _play_all(h, sched)
     second = read_recording(again)
     for key in ("cr_g", "cd_mm", "running"):
         np.testing.assert_array_equal(second.ticks[key], first.ticks[key], err_msg=key)
