@@ -76,7 +76,9 @@ def test_input_bursts_carry_10_khz_ticks(campaign, tmp_path):
     sched = crash_test_schedule(test, CODEC, 10_000.0, reference=True, pre_s=0.2, burst=True)
     n_frames = int((sched.ids == CODEC["InputBurst"].frame_id).sum())
     record = tmp_path / "run.mcap"
-    h = Harness(model, "burst", record)
+    # The watchdog times frames by their receipt: a stall of the machine looks like a silent
+    # sensor (and ends the event); out of play here, its own tests cover it.
+    h = Harness(model, "burst", record, accel_timeout_s=60.0, brs_timeout_s=60.0)
     h.thread = threading.Thread(target=h.node.run)  # no idle exit: starved is not idle
     with h:
         h.play(sched)
