@@ -33,6 +33,13 @@ def _int(s: str) -> int:
     return int(s, 0)
 
 
+def _priority(s: str) -> int:
+    n = int(s) if s.strip().isdigit() else -1
+    if not 0 <= n <= 99:
+        raise argparse.ArgumentTypeError(f"wants 0..99 (SCHED_FIFO priority), got {s!r}")
+    return n
+
+
 def _remap(s: str) -> tuple[int, int]:
     a, _, b = s.partition("=")
     if not b:
@@ -66,6 +73,10 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--spin-us", type=float, default=300.0,
                    help="busy-wait this long before each due time for accuracy (300); use 0 "
                    "in an emulated VM, where spinning steals the emulator's own CPU")
+    p.add_argument("--rt-priority", type=_priority, default=0, metavar="N",
+                   help="play under SCHED_FIFO at priority N (1-99; needs root, CAP_SYS_NICE "
+                   "or RLIMIT_RTPRIO, else one line says so): due frames preempt every "
+                   "normal process, as the daemon's run --rt-priority; 0 (default): normal")
     p.add_argument("--gap", type=float, default=0.5, help="pause between sources, s (0.5)")
     p.add_argument("--only", type=_int, action="append", metavar="ID",
                    help="send only these CAN IDs (repeatable; 0x100 or 256)")
@@ -156,7 +167,8 @@ def main(argv: list[str] | None = None) -> int:
             sys.stderr.flush()
 
     try:
-        report = play(sched, send, rate=a.rate, spin_s=a.spin_us * 1e-6, progress=progress)
+        report = play(sched, send, rate=a.rate, spin_s=a.spin_us * 1e-6, progress=progress,
+                      rt_priority=a.rt_priority)
     except KeyboardInterrupt:
         print("\ncrash-replay: interrupted", file=sys.stderr)
         return 130

@@ -61,21 +61,48 @@ def test_every_frame_handled_and_estimates_equal_offline(model, tmp_path):
 
 def test_input_bursts_carry_10_khz_ticks(campaign, tmp_path):
     """CAN FD InputBurst frames (eight samples each, with their BRS counts): every sample is
-    a tick, the estimates equal the offline simulation at 10 kHz, one estimate per frame."""
+    a tick, recorded once, the estimates equal the offline simulation at 10 kHz, one
+    estimate frame per burst. On a loaded machine the daemon falls behind and overruns
+    (counted), never loses a sample: it is stopped only once it has read every frame (a
+    generous bound). How many are processed on time: benchmarks/on_time.py."""
+    import threading
+
+    from observer_node.recording import format as fmt
+
     est = [t for t in campaign if t.name in ("R16_001", "R16_003", "R16_005")]
     data = make_dataset(est, 1000.0)
     model = greybox.to_model_file(greybox.fit_greybox(data), data, tick_rate_hz=10_000.0)
     test = read_isomme(bundled_campaign() / "R16_002.zip")
     sched = crash_test_schedule(test, CODEC, 10_000.0, reference=True, pre_s=0.2, burst=True)
     n_frames = int((sched.ids == CODEC["InputBurst"].frame_id).sum())
-    c, est_frames, rec = _play_recorded(model, "burst", sched, tmp_path / "run.mcap")
+    record = tmp_path / "run.mcap"
+    # The watchdog times frames by their receipt: a stall of the machine looks like a silent
+    # sensor (and ends the event); out of play here, its own tests cover it.
+    h = Harness(model, "burst", record, accel_timeout_s=60.0, brs_timeout_s=60.0)
+    h.thread = threading.Thread(target=h.node.run)  # no idle exit: starved is not idle
+    with h:
+        h.play(sched)
+        deadline = time.monotonic() + 120
+        while h.node.counters.rx < len(sched) and time.monotonic() < deadline:
+            time.sleep(0.05)
+    c = h.node.counters
+    assert c.rx == len(sched), "frames left unread"
     assert c.ticks == 8 * n_frames and c.lost == c.rejected == c.bad_e2e == 0
+    assert c.tx_dropped == 0 and 0 <= c.overruns <= n_frames  # late frames: counted
+    rec = read_recording(record)
     # One estimate frame per burst (and per watchdog publish), each one counter step on
     # (tests/test_e2e_receiver.py rates them with an E2E receiver).
-    counters = [e["ChestEstimate_Counter"] for _, e in est_frames]
+    est_codec = CODEC["ChestEstimate"]
+    counters = [est_codec.decode(bytes.fromhex(f["data"]))["ChestEstimate_Counter"]
+                for f in rec.frames if f["dir"] == "tx" and f["id"] == est_codec.frame_id]
     assert len(counters) >= n_frames
     assert all((b - a) % 15 == 1 for a, b in itertools.pairwise(counters))
     assert int((rec.ticks["tick"] >= 0).sum()) == 8 * n_frames  # every sample recorded
+    # One estimate frame per burst; the others sent are the watchdog's, recorded with
+    # tick -1 (every estimate message that is not one of the 8 * n_frames ticks).
+    est_id = CODEC["ChestEstimate"].frame_id
+    sent = sum(1 for f in rec.frames if f["dir"] == "tx" and f["id"] == est_id)
+    assert sent == n_frames + rec.topics[fmt.ESTIMATE] - 8 * n_frames
     _assert_matches_offline(rec)
 
 

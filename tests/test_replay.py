@@ -170,3 +170,52 @@ def test_a_recording_from_before_the_autosar_profiles_still_replays(model, tmp_p
     # the same inputs reached the observer (its model differs: compare what it was given)
     for key in ("accel_x_g", "brs_count"):
         np.testing.assert_array_equal(again.ticks[key], before.ticks[key], err_msg=key)
+
+
+def test_player_sleeps_to_absolute_deadlines():
+    """A deadline is absolute (clock_nanosleep TIMER_ABSTIME on perf_counter's clock): time
+    lost before the sleep starts (a preemption, here 30 ms of other work) is not slept
+    again, and a deadline already past returns at once."""
+    from observer_node.replay.player import sleep_until
+
+    t0 = time.perf_counter()
+    time.sleep(0.03)  # the thread is held up after reading the clock
+    sleep_until(t0 + 0.05)
+    woke = time.perf_counter() - t0
+    assert 0.05 <= woke < 0.07, woke  # a relative 50 ms sleep would end at >= 80 ms
+    t1 = time.perf_counter()
+    sleep_until(t1 - 1.0)
+    assert time.perf_counter() - t1 < 0.01
+
+
+def test_player_runs_at_the_real_time_priority_asked_for_and_fails_soft():
+    """--rt-priority N: the sending thread runs SCHED_FIFO N while it plays (where allowed:
+    root, CAP_SYS_NICE or RLIMIT_RTPRIO; else one line says why not), normal afterwards."""
+    import os
+    import resource
+
+    may = os.geteuid() == 0 or resource.getrlimit(resource.RLIMIT_RTPRIO)[0] >= 10
+    s = crash_test_schedule(read_isomme(DATA / "R16_002"), CODEC, 1000.0)
+    policies: set[int] = set()
+    rep = play(s, lambda k: policies.add(os.sched_getscheduler(0) & ~os.SCHED_RESET_ON_FORK)
+               or True, rate=8.0, rt_priority=10)
+    assert rep.sent == len(s) and os.sched_getscheduler(0) == os.SCHED_OTHER
+    if may:
+        assert policies == {os.SCHED_FIFO} and rep.scheduling == "SCHED_FIFO priority 10"
+    else:
+        assert policies == {os.SCHED_OTHER} and "not set" in rep.scheduling
+    assert play(s, lambda k: True, rate=8.0).scheduling == "normal scheduling"
+
+
+def test_replay_cli_rt_priority(capsys):
+    rx = can.Bus(interface="virtual", channel="replayrt")
+    assert main([str(DATA / "R16_002"), "--interface", "virtual", "--channel", "replayrt",
+                 "--rate", "8", "--quiet", "--pre", "0", "--rt-priority", "10"]) == 0
+    rx.shutdown()
+    out = capsys.readouterr().out
+    assert "lateness p50" in out and ("SCHED_FIFO priority 10" in out or "not set" in out)
+    with pytest.raises(SystemExit) as e:
+        main([str(DATA / "R16_002"), "--rt-priority", "100"])
+    assert e.value.code == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert "--rt-priority" in err[-1] and "Traceback" not in "".join(err)
