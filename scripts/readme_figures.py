@@ -71,12 +71,13 @@ def loop_table(tmp: Path) -> str:
     r = json.loads((out / "report.json").read_text())
     PICTURES.append((out / "fit_after_cd.png", ROOT / "docs" / "loop-campaign-a-cd.png"))
     rows = ["| model | acts on | fit CR | fit CD | fit TOT | cross-validated fit_TOT "
-            "(estimation tests) | runner-up (its cross-validated fit_TOT) |",
-            "|---|---|---|---|---|---|---|"]
+            "(estimation tests) | paired gain (95 % CI), tests improved | runner-up (its "
+            "cross-validated fit_TOT) |",
+            "|---|---|---|---|---|---|---|---|"]
     b = r["baseline"]["fit"]
     cv0 = r["effects"][0]["evidence"]["cv_fit_before"] if r["effects"] else None
     rows.append(f"| thesis grey-box | all | {_num(b['cr'])} | {_num(b['cd'])} | "
-                f"{_num(b['total'])} | {'' if cv0 is None else _num(cv0)} | |")
+                f"{_num(b['total'])} | {'' if cv0 is None else _num(cv0)} | | |")
     for e in r["effects"]:
         units = EFFECTS[e["kind"]][1] if e["kind"] in EFFECTS else {}
         se = e.get("std_err", {})
@@ -88,8 +89,15 @@ def loop_table(tmp: Path) -> str:
         rows.append(f"| + {e['kind']}{f' ({params})' if params else ''} | "
                     f"{', '.join(e.get('setups', ['all']))} | {_num(f['cr'])} | "
                     f"{_num(f['cd'])} | {_num(f['total'])} | {_num(ev['cv_fit_after'])} | "
+                    f"{_gain(ev['rule'])} | "
                     + (f"{ru['kind']} on {ru['scope']} ({_num(ru['cv_fit'])}) |" if ru else "|"))
     return "\n".join(rows)
+
+
+def _gain(rule: dict) -> str:
+    lo, hi = rule["ci95_points"]
+    return (f"{_num(rule['gain_points'])} ({_num(lo)}..{_num(hi)}), "
+            f"{rule['tests_improved']}/{rule['tests']}")
 
 
 def bench_table(tmp: Path) -> str:
