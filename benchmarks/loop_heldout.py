@@ -85,7 +85,7 @@ def run_case(case: Case, sets: Path, work: Path, workers: int | None) -> dict:
                  workers=workers)
     seconds = time.monotonic() - t0
     found = sorted(f"{e['kind']}@{_sim_scope(e.get('setups', []), r)}" for e in r["effects"])
-    expected = sorted(f"{k}@{s}" for k, s in case.expect)
+    expected = sorted(f"{k}@{'+'.join(sorted(s.split('+')))}" for k, s in case.expect)
     flagged = sorted({w["test"] for w in r["warnings"]})
     sensor = [s["output"] for s in r["sensor_effects"]]
     unexpl = [u["output"] for u in r["unexplained"]]
