@@ -348,8 +348,13 @@ def build_parser() -> argparse.ArgumentParser:
         "loop", help="find what the grey-box model lacks, add it, refit, report",
         description="Identify the thesis grey-box model on the estimation tests, analyse its "
         "residual, trace it to a physical effect of the library (or a sparse formula), add it, "
-        "refit, accept it only if cross-validation inside the estimation tests improves, "
-        "repeat; report fits before and after on the validation tests. Tests are grouped in "
+        "refit, and name it only if it beats test-to-test scatter: each estimation test's "
+        "cross-validated fit with and without it, paired, must gain --margin points on average "
+        "with a 95 % interval above zero (or a sign test, p <= 0.0625), and no setup may lose; "
+        "repeat; report fits before and after on the validation tests. Tests that look broken "
+        "(missing, frozen, saturated or spiking channels, a fit far below the others') are "
+        "named and left out; a one-output static error is reported as a sensor effect; what "
+        "nothing explains is reported as unexplained. Tests are grouped in "
         "setups by their .mme metadata (or --group); each effect is tried on every test and on "
         "the setups that could have it (never an airbag on a hard-seat rig), and "
         "cross-validation chooses. The report gives each effect's scope, the runner-up and its "
@@ -360,7 +365,8 @@ def build_parser() -> argparse.ArgumentParser:
                    help="held-out tests the report scores before and after (never fitted on)")
     s.add_argument("--out", required=True, help="output folder")
     s.add_argument("--margin", type=float, default=1.0,
-                   help="fit_TOT points an effect must add in cross-validation (default 1)")
+                   help="mean paired fit_TOT points an effect must add in cross-validation "
+                   "(default 1)")
     s.add_argument("--group", action="append", metavar="NAME=PATTERN",
                    help="put tests whose name matches PATTERN in setup NAME (repeatable; "
                    "default: tests whose .mme has the same type of test, title and test object "
