@@ -34,7 +34,7 @@ from pathlib import Path
 
 import numpy as np
 
-from benchmarks.heldout.cases import BY_NAME, CASES, Case
+from benchmarks.heldout.cases import Case, select
 from observer_node.data import load_tests
 from observer_node.ident.dataset import make_dataset
 from observer_node.loop.closed_loop import run_loop
@@ -128,11 +128,10 @@ def main() -> None:
     ap.add_argument("--workers", type=int, help="Dask workers per loop (default: one per core)")
     ap.add_argument("--json", type=Path, help="also write the rows as JSON")
     a = ap.parse_args()
-    unknown = [n for n in a.cases or [] if n not in BY_NAME]
-    if unknown:
-        sys.exit(f"loop_heldout: unknown case(s) {', '.join(unknown)}; known: "
-                 + ", ".join(BY_NAME))
-    cases = [BY_NAME[n] for n in a.cases] if a.cases else CASES
+    try:
+        cases = select(a.cases)
+    except ValueError as e:
+        sys.exit(f"loop_heldout: {e}")
     sets = a.sets
     if sets is None:
         sets = Path(tempfile.mkdtemp()) / "sets"

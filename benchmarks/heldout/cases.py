@@ -109,6 +109,14 @@ CASES: list[Case] = [
 BY_NAME = {c.name: c for c in CASES}
 
 
+def select(names: list[str] | None) -> list[Case]:
+    """The cases named (all of them for None); ValueError naming the first unknown one."""
+    bad = [n for n in names or [] if n not in BY_NAME]
+    if bad:
+        raise ValueError(f"unknown case {bad[0]!r}; known: {', '.join(BY_NAME)}")
+    return [BY_NAME[n] for n in names] if names else list(CASES)
+
+
 def test_names(case: Case) -> tuple[list[str], list[str]]:
     """Names of the estimation and validation tests: odd numbers estimate, even validate,
     numbered per setup (R16_001, R16_003 estimate; R16_002 validates)."""

@@ -16,7 +16,7 @@ import sys
 import tempfile
 from pathlib import Path
 
-from .cases import BY_NAME, CASES
+from .cases import select
 from .make_sets import make
 
 
@@ -42,11 +42,11 @@ def main(argv: list[str] | None = None) -> int:
         args = ap.parse_args(argv)
     except SystemExit as e:
         return int(e.code or 0)
-    bad = [n for n in args.case or [] if n not in BY_NAME]
-    if bad:
-        print(f"error: unknown case {bad[0]!r}; known: {', '.join(BY_NAME)}", file=sys.stderr)
+    try:
+        cases = select(args.case)
+    except ValueError as e:
+        print(f"error: {e}", file=sys.stderr)
         return 2
-    cases = [BY_NAME[n] for n in args.case] if args.case else list(CASES)
     with tempfile.TemporaryDirectory() as tmp:
         work = args.work or Path(tmp)
         make(cases, work / "on", log=False)

@@ -17,7 +17,7 @@ import numpy as np
 
 from . import lab
 from . import physics as ph
-from .cases import BY_NAME, CASES, Case
+from .cases import CASES, Case, select
 from .iso_mme import write_test
 
 
@@ -70,11 +70,11 @@ def main(argv: list[str] | None = None) -> int:
         args = ap.parse_args(argv)
     except SystemExit as e:
         return int(e.code or 0)
-    bad = [n for n in args.case or [] if n not in BY_NAME]
-    if bad:
-        print(f"error: unknown case {bad[0]!r}; known: {', '.join(BY_NAME)}", file=sys.stderr)
+    try:
+        cases = select(args.case)
+    except ValueError as e:
+        print(f"error: {e}", file=sys.stderr)
         return 2
-    cases = [BY_NAME[n] for n in args.case] if args.case else list(CASES)
     try:
         make(cases, args.out, effects_on=not args.no_effects)
     except OSError as e:
