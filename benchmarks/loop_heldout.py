@@ -131,7 +131,8 @@ def main() -> None:
     try:
         cases = select(a.cases)
     except ValueError as e:
-        sys.exit(f"loop_heldout: {e}")
+        print(f"loop_heldout: {e}", file=sys.stderr)
+        sys.exit(2)
     sets = a.sets
     if sets is None:
         sets = Path(tempfile.mkdtemp()) / "sets"
