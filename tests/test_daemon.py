@@ -8,6 +8,7 @@ import os
 import signal
 import subprocess
 import sys
+import threading
 import time
 from pathlib import Path
 
@@ -30,8 +31,15 @@ ROOT = Path(__file__).resolve().parents[1]
 def _play_recorded(model, channel: str, sched, record: Path, settle_s: float = 0.1):
     """Play ``sched`` into a recording daemon: its counters, the estimate frames heard on
     the bus, and the recording read back (``settle_s`` after the last frame)."""
-    with Harness(model, channel, record) as h:
+    h = Harness(model, channel, record)
+    # No idle exit: on a busy machine a starved daemon looks idle, and would stop between two
+    # tests; it runs until every frame played has been read (or two minutes pass).
+    h.thread = threading.Thread(target=h.node.run)
+    with h:
         h.play(sched)
+        deadline = time.monotonic() + 120
+        while h.node.counters.rx < len(sched) and time.monotonic() < deadline:
+            time.sleep(0.05)
         time.sleep(settle_s)
         est = h.estimates()
     return h.node.counters, est, read_recording(record)
@@ -65,7 +73,6 @@ def test_input_bursts_carry_10_khz_ticks(campaign, tmp_path):
     estimate frame per burst. On a loaded machine the daemon falls behind and overruns
     (counted), never loses a sample: it is stopped only once it has read every frame (a
     generous bound). How many are processed on time: benchmarks/on_time.py."""
-    import threading
 
     from observer_node.recording import format as fmt
 
