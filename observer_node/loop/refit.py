@@ -177,17 +177,3 @@ def fold_scores(base: dict, effects: list[dict], data: Dataset, train: list[int]
 
 def _finite(v: float) -> float:
     return float(v) if np.isfinite(v) else -1e3
-
-
-def cross_validate_tests(base: dict, effects: list[dict], data: Dataset,
-                         max_nfev: int = 60) -> dict[str, float]:
-    """Two-fold cross-validation inside the estimation tests (:func:`folds`): each test's
-    fit_TOT [%] by the model fitted on the other half; the paired unit of the loop's rule."""
-    one, two = folds(data)
-    return {**fold_scores(base, effects, data, one, two, max_nfev),
-            **fold_scores(base, effects, data, two, one, max_nfev)}
-
-
-def cross_validate(base: dict, effects: list[dict], data: Dataset, max_nfev: int = 60) -> float:
-    """The mean over tests of :func:`cross_validate_tests` (fit_TOT, %)."""
-    return float(np.mean(list(cross_validate_tests(base, effects, data, max_nfev).values())))
