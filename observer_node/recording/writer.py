@@ -576,6 +576,12 @@ class Recorder:
 
     def _stop_writer(self, timeout_s: float = 30.0) -> None:
         self.rings.ctrl[STOP] = 1
+        if self._idle and self.proc.pid:
+            # Left at SCHED_IDLE, a writer on a busy machine gets next to no CPU and missed
+            # the timeout: killed, its file without a footer. Nobody waits on ticks now.
+            with contextlib.suppress(OSError):
+                os.sched_setscheduler(self.proc.pid, os.SCHED_OTHER, os.sched_param(0))
+            self._idle = False
         self.proc.join(timeout_s)
         if self.proc.is_alive():
             self.proc.kill()  # it ignores SIGTERM
