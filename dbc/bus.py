@@ -18,11 +18,13 @@ import logging
 import warnings
 from typing import TYPE_CHECKING, Any
 
+from observer_node.errors import ObserverError
+
 if TYPE_CHECKING:  # python-can is imported when a bus opens: commands start faster
     import can
 
 
-class BusOpenError(Exception):
+class BusOpenError(ObserverError):
     """A bus that does not open; the message is one line naming interface and channel."""
 
 

@@ -31,19 +31,14 @@ import time
 from pathlib import Path
 
 from . import __version__
-from .data import ChannelCodes, CrashDataError, CrashTest, bundled_campaign, load_tests
+from .data import ChannelCodes, CrashTest, bundled_campaign, load_tests
 from .data.crashtest import THESIS_WINDOW_S
 from .data.setups import parse_groups
-from .loop.cluster import ClusterError
+from .errors import ObserverError, UsageError
 from .model.effects import EFFECTS as MODEL_EFFECTS
-from .model.modelfile import ModelFileError
 
 # The simulator can switch on every effect the model library knows, bar the fitted formula.
 SIM_EFFECTS = tuple(k for k in MODEL_EFFECTS if k != "other")
-
-
-class UsageError(ValueError):
-    """A command-line value that cannot be used; the message names the option."""
 
 
 _TESTS_HELP = "an ISO-MME test folder, .zip or .csv, a folder of them, or campaign-a[/PATTERN]"
@@ -174,18 +169,14 @@ def cmd_simulate(a: argparse.Namespace) -> int:
 def cmd_run(a: argparse.Namespace) -> int:
     from dataclasses import fields
 
-    from .daemon.config import ConfigError, NodeConfig, example_toml
+    from .daemon.config import NodeConfig, example_toml
     from .daemon.node import run_daemon
 
     if a.print_config:
         print(example_toml())
         return 0
 
-    try:
-        cfg = NodeConfig.from_toml(a.config) if a.config else NodeConfig()
-    except ConfigError as e:
-        print(f"observer-node: error: {e}", file=sys.stderr)
-        return 2
+    cfg = NodeConfig.from_toml(a.config) if a.config else NodeConfig()
     for f in fields(NodeConfig):
         v = getattr(a, f.name, None)
         if v is not None and f.name != "core":
@@ -197,27 +188,17 @@ def cmd_run(a: argparse.Namespace) -> int:
         if v is not None:
             setattr(cfg.core, name, v)
     if not cfg.model:
-        print("observer-node: error: run needs --model (or model in the config file)",
-              file=sys.stderr)
-        return 2
-    try:
-        cfg.check("command line" if not a.config else f"{a.config} with the command line")
-    except ConfigError as e:
-        print(f"observer-node: error: {e}", file=sys.stderr)
-        return 2
+        raise UsageError("run needs --model (or model in the config file)")
+    cfg.check("command line" if not a.config else f"{a.config} with the command line")
     return run_daemon(cfg, quiet=a.quiet)
 
 
 def cmd_analyze(a: argparse.Namespace) -> int:
-    from .recording import RecordingError, analyze, read_recording
+    from .recording import analyze, read_recording
 
-    try:
-        rec = read_recording(a.recording)
-        out = Path(a.out) if a.out else Path(a.recording).with_suffix("")
-        result = analyze(rec, out_dir=out)
-    except RecordingError as e:
-        print(f"observer-node: error: {e}", file=sys.stderr)
-        return 2
+    rec = read_recording(a.recording)
+    out = Path(a.out) if a.out else Path(a.recording).with_suffix("")
+    result = analyze(rec, out_dir=out)
     meta = rec.metadata.get("chest-observer", {})
     print(f"{rec.path}: {result['ticks']} ticks, model {meta.get('model_kind', '?')} "
           f"{meta.get('model_name', '?')!r} at {meta.get('tick_rate_hz', '?')} Hz; "
@@ -261,14 +242,9 @@ def cmd_analyze(a: argparse.Namespace) -> int:
 
 
 def cmd_export(a: argparse.Namespace) -> int:
-    from .recording import RecordingError
-    from .recording.export import ExportError, export_frames
+    from .recording.export import export_frames
 
-    try:
-        n, salvaged = export_frames(a.recording, a.to, a.channel)
-    except (RecordingError, ExportError) as e:
-        print(f"observer-node: error: {e}", file=sys.stderr)
-        return 2
+    n, salvaged = export_frames(a.recording, a.to, a.channel)
     if salvaged:
         print(f"observer-node: warning: {a.recording} was cut short ({salvaged}); every frame "
               "before the cut was exported", file=sys.stderr)
@@ -284,9 +260,8 @@ def cmd_export_c(a: argparse.Namespace) -> int:
     try:
         mf = mf.for_setup(a.setup or "", a.model)
         paths = export_c(mf, Path(a.out), a.name) + export_codec(Path(a.out))
-    except ExportError as e:
-        print(f"observer-node: error: {a.model}: {e}", file=sys.stderr)
-        return 2
+    except ExportError as e:  # it names the part of the model, not the file
+        raise ExportError(f"{a.model}: {e}") from None
     print(f"wrote {', '.join(str(p) for p in paths)} ({mf.kind} {mf.name!r}, "
           f"{mf.tick_rate_hz:g} Hz); compile with any C99 compiler, -DCO_REAL=float for float")
     return 0
@@ -518,9 +493,9 @@ def main(argv: list[str] | None = None) -> int:
     args = build_parser().parse_args(argv)
     try:
         return int(args.func(args) or 0)
-    except (CrashDataError, ModelFileError, UsageError, ClusterError) as e:
+    except ObserverError as e:  # bad input and the like: one line, never a traceback
         print(f"observer-node: error: {e}", file=sys.stderr)
-        return 2
+        return e.exit_code
     except KeyboardInterrupt:
         return 130
     except BrokenPipeError:

@@ -22,11 +22,12 @@ import sys
 from collections import Counter
 
 from observer_node.dbc import Codec, fd_frame_time_s, frame_bits
-from observer_node.dbc.bus import BusOpenError, open_bus
+from observer_node.dbc.bus import open_bus
+from observer_node.errors import ObserverError, UsageError
 
 from .player import bus_sender, play
 from .schedule import Schedule, concat, restamp_counters
-from .sources import SourceError, filter_remap, load_source
+from .sources import filter_remap, load_source
 
 
 def _int(s: str) -> int:
@@ -119,20 +120,22 @@ def describe(s: Schedule, bitrate: float, data_bitrate: float | None = None) -> 
 
 def main(argv: list[str] | None = None) -> int:
     a = build_parser().parse_args(argv)
-    codec = Codec()
     try:
-        parts: list[Schedule] = []
-        for src in a.sources:
-            parts += load_source(src, codec, a.tick_rate, a.reference, a.start, a.end, a.pre,
-                                 counts_per_rev=a.counts_per_rev, all_frames=a.all_frames,
-                                 burst=a.burst)
-    except SourceError as e:
+        return _play(a)
+    except ObserverError as e:  # a source or bus that cannot be used: one line, no traceback
         print(f"crash-replay: error: {e}", file=sys.stderr)
-        return 2
+        return e.exit_code
+
+
+def _play(a: argparse.Namespace) -> int:
+    codec = Codec()
+    parts: list[Schedule] = []
+    for src in a.sources:
+        parts += load_source(src, codec, a.tick_rate, a.reference, a.start, a.end, a.pre,
+                             counts_per_rev=a.counts_per_rev, all_frames=a.all_frames,
+                             burst=a.burst)
     if a.burst and not a.fd:
-        print("crash-replay: error: --burst sends 48-byte InputBurst frames: it needs --fd",
-              file=sys.stderr)
-        return 2
+        raise UsageError("--burst sends 48-byte InputBurst frames: it needs --fd")
     only = set(a.only) if a.only else None
     remap = dict(a.remap or [])
     sched = concat(parts * a.loop, a.gap)
@@ -150,11 +153,7 @@ def main(argv: list[str] | None = None) -> int:
             print(f"  ... {len(sched) - 20} more")
         return 0
 
-    try:
-        bus = open_bus(a.interface, a.channel, fd=a.fd)
-    except BusOpenError as e:
-        print(f"crash-replay: error: {e}", file=sys.stderr)
-        return 2
+    bus = open_bus(a.interface, a.channel, fd=a.fd)
     send = bus_sender(bus, sched, a.fd)
 
     tty = sys.stderr.isatty() and not a.quiet

@@ -13,10 +13,11 @@ from dataclasses import asdict, dataclass, field, fields
 from pathlib import Path
 from typing import Any
 
+from ..errors import ObserverError
 from .core import CoreConfig
 
 
-class ConfigError(ValueError):
+class ConfigError(ObserverError, ValueError):
     """A configuration the daemon must not run with; the message names where and the key."""
 
 

@@ -14,11 +14,13 @@ from collections.abc import Callable, Iterator
 from contextlib import contextmanager
 from typing import Any
 
+from ..errors import ObserverError
+
 # one BLAS thread per worker process, set before the workers import numpy
 _WORKER_ENV = {"OPENBLAS_NUM_THREADS": "1", "OMP_NUM_THREADS": "1", "MKL_NUM_THREADS": "1"}
 
 
-class ClusterError(RuntimeError):
+class ClusterError(ObserverError, RuntimeError):
     """The scheduler cannot be reached or the cluster cannot start."""
 
 

@@ -1,0 +1,99 @@
+"""The command lines as a whole: one error base with its exit codes, reported in one line."""
+
+from __future__ import annotations
+
+import os
+import signal
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+import pytest
+
+from observer_node import cli
+from observer_node.daemon.config import ConfigError
+from observer_node.data import CrashDataError
+from observer_node.dbc.bus import BusOpenError
+from observer_node.dbc.codec import LayoutError
+from observer_node.errors import ObserverError, RecordingLostError, UsageError
+from observer_node.export_c import ExportError as CExportError
+from observer_node.loop.cluster import ClusterError
+from observer_node.model.modelfile import ModelFileError
+from observer_node.recording.export import ExportError
+from observer_node.recording.reader import RecordingError
+from observer_node.replay import cli as replay_cli
+from observer_node.replay.sources import SourceError
+
+ROOT = Path(__file__).resolve().parents[1]
+USER_ERRORS = (CrashDataError, ModelFileError, ConfigError, RecordingError, ExportError,
+               CExportError, ClusterError, UsageError, LayoutError, BusOpenError, SourceError)
+
+
+@pytest.mark.parametrize("error", USER_ERRORS, ids=lambda e: e.__name__)
+def test_every_user_error_derives_from_the_one_base_with_exit_code_2(error):
+    assert issubclass(error, ObserverError) and error.exit_code == 2
+
+
+def test_a_run_that_lost_recording_exits_3():
+    assert issubclass(RecordingLostError, ObserverError) and RecordingLostError.exit_code == 3
+
+
+@pytest.mark.parametrize("code", [2, 3, 7])
+def test_main_ends_any_observer_error_with_one_line_and_its_exit_code(code, monkeypatch,
+                                                                      capsys):
+    class Failed(ObserverError):
+        exit_code = code
+
+    def fail(path: str) -> None:
+        raise Failed(f"{path}: what is wrong")
+
+    import observer_node.recording
+
+    monkeypatch.setattr(observer_node.recording, "read_recording", fail)
+    assert cli.main(["analyze", "run.mcap"]) == code
+    assert capsys.readouterr().err == "observer-node: error: run.mcap: what is wrong\n"
+
+
+def test_crash_replay_ends_any_observer_error_with_one_line(monkeypatch, capsys):
+    def fail(*args: object, **kwargs: object) -> None:
+        raise CrashDataError("t.mme: line 3: what is wrong")
+
+    monkeypatch.setattr(replay_cli, "load_source", fail)
+    assert replay_cli.main(["t.mme", "--dry-run"]) == 2
+    assert capsys.readouterr().err == "crash-replay: error: t.mme: line 3: what is wrong\n"
+
+
+def _recorder_pid(daemon_pid: int) -> int:
+    """The daemon's recorder process (a spawned multiprocessing child, not its tracker)."""
+    for pid in Path(f"/proc/{daemon_pid}/task/{daemon_pid}/children").read_text().split():
+        if "resource_tracker" not in Path(f"/proc/{pid}/cmdline").read_text():
+            return int(pid)
+    raise AssertionError("the daemon has no recorder process")
+
+
+def test_run_whose_recording_is_not_the_whole_run_exits_3_in_one_line(model_path, tmp_path):
+    """The daemon runs on when its writer dies; at the stop, run ends with exit code 3 and
+    one error line that says so, after its counters."""
+    p = subprocess.Popen([sys.executable, "-m", "observer_node", "run", "--interface",
+                          "virtual", "--channel", "lost3", "--model", str(model_path),
+                          "--record", str(tmp_path / "run.mcap"), "--cpu-latency-us", "-1"],
+                         cwd=ROOT, stderr=subprocess.PIPE, text=True, start_new_session=True)
+    try:
+        first = p.stderr.readline()
+        assert "listening on" in first, first
+        os.kill(_recorder_pid(p.pid), signal.SIGKILL)
+        time.sleep(1.0)  # the daemon sees its writer gone
+        p.send_signal(signal.SIGINT)
+        _, rest = p.communicate(timeout=60)
+    finally:
+        if p.poll() is None:
+            os.killpg(p.pid, signal.SIGKILL)
+            p.wait()
+    assert "Traceback" not in rest, rest
+    assert p.returncode == RecordingLostError.exit_code == 3, rest
+    lines = rest.strip().splitlines()
+    assert lines[-2].startswith("observer-node: stopped; ")
+    assert [x for x in lines if "error:" in x] == lines[-1:]
+    assert lines[-1].startswith("observer-node: error: the recording is not the whole run: "
+                                "parts "), rest
