@@ -30,6 +30,7 @@ from typing import Any
 from .data import bundled_campaign, read_isomme
 from .data.setups import assign_setups
 from .dbc import Codec
+from .dbc.bus import DEFAULT_CHANNEL
 from .evaluation import evaluate_model
 from .model.modelfile import ModelFile
 from .recording import analyze, read_recording
@@ -97,7 +98,7 @@ def loop_models(loop_dir: Path, est_names: tuple[str, ...], val_names: tuple[str
 
 
 def run_bench(out: Path, model_path: str | None = None, interface: str = "auto",
-              channel: str = "vcan0", tests: tuple[str, ...] = DEFAULT_TESTS,
+              channel: str = DEFAULT_CHANNEL, tests: tuple[str, ...] = DEFAULT_TESTS,
               rate: float = 1.0, loop_tests: tuple[str, ...] = LOOP_TESTS,
               loop_dir: Path | None = None, rerun_loop: bool = False) -> dict:
     out.mkdir(parents=True, exist_ok=True)

@@ -30,6 +30,8 @@ import sys
 import time
 from pathlib import Path
 
+from observer_node.dbc.bus import add_bus_arguments
+
 from . import __version__
 from .data import ChannelCodes, CrashTest, bundled_campaign, load_tests
 from .data.crashtest import THESIS_WINDOW_S
@@ -310,9 +312,9 @@ def build_parser() -> argparse.ArgumentParser:
     s.add_argument("--rerun-loop", action="store_true",
                    help="run observer-node loop here (about 2 min) instead of reusing its "
                    "result from an earlier bench or the one shipped with this version")
-    s.add_argument("--interface", default="auto",
-                   help="auto (socketcan if the channel exists, else virtual), socketcan, ...")
-    s.add_argument("--channel", default="vcan0")
+    add_bus_arguments(s, interface="auto", fd=False,
+                      interface_note=", or auto: socketcan if the channel exists, else "
+                      "virtual")
     s.add_argument("--test", action="append", metavar="NAME",
                    help="bundled test to replay (repeatable; default R16_002 SLED_002 FULL_002)")
     s.add_argument("--rate", type=float, default=1.0, help="replay time scale (default 1)")
@@ -418,8 +420,7 @@ def build_parser() -> argparse.ArgumentParser:
         "file or config, a port or record path that cannot be opened); 3 it ran, but the "
         "recording is not the whole run. --print-config prints every config key with its "
         "default and range.")
-    s.add_argument("--interface", help="python-can interface (default socketcan)")
-    s.add_argument("--channel", help="bus channel (default vcan0)")
+    add_bus_arguments(s, unset=True)  # a config file may set them
     s.add_argument("--model", help="model file (JSON) from identify, evaluate or loop")
     s.add_argument("--setup", metavar="NAME",
                    help="this bench's setup (R16, SLED, ...): needed for a model whose effects "
@@ -434,7 +435,6 @@ def build_parser() -> argparse.ArgumentParser:
     s.add_argument("--config", help="TOML file with an [observer] table of these options")
     s.add_argument("--print-config", action="store_true",
                    help="print every config key with its default and range, and exit")
-    s.add_argument("--fd", action="store_true", default=None, help="CAN FD bus")
     s.add_argument("--python-can-socketcan", action="store_true",
                    help="use python-can's socketcan backend instead of the raw socket port")
     s.add_argument("--cpu-latency-us", type=int, metavar="US",

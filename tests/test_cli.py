@@ -1,7 +1,9 @@
-"""The command lines as a whole: one error base with its exit codes, reported in one line."""
+"""The command lines as a whole: one error base with its exit codes, reported in one line;
+the bus options declared once for every command that opens a bus."""
 
 from __future__ import annotations
 
+import argparse
 import os
 import signal
 import subprocess
@@ -12,7 +14,7 @@ from pathlib import Path
 import pytest
 
 from observer_node import cli
-from observer_node.daemon.config import ConfigError
+from observer_node.daemon.config import ConfigError, NodeConfig
 from observer_node.data import CrashDataError
 from observer_node.dbc.bus import BusOpenError
 from observer_node.dbc.codec import LayoutError
@@ -62,6 +64,29 @@ def test_crash_replay_ends_any_observer_error_with_one_line(monkeypatch, capsys)
     monkeypatch.setattr(replay_cli, "load_source", fail)
     assert replay_cli.main(["t.mme", "--dry-run"]) == 2
     assert capsys.readouterr().err == "crash-replay: error: t.mme: line 3: what is wrong\n"
+
+
+def _bus_actions(parser: argparse.ArgumentParser) -> dict[str, argparse.Action]:
+    return {a.dest: a for a in parser._actions if a.dest in ("interface", "channel", "fd")}
+
+
+def _subparser(name: str) -> argparse.ArgumentParser:
+    return cli.build_parser()._subparsers._group_actions[0].choices[name]
+
+
+def test_every_command_that_opens_a_bus_has_the_same_bus_options():
+    run, bench, replay = _subparser("run"), _subparser("bench"), replay_cli.build_parser()
+    helps = {}
+    for parser in (run, bench, replay):
+        for dest, action in _bus_actions(parser).items():
+            # one declaration: the same wording, the default aside
+            helps.setdefault(dest, set()).add(action.help.split(" (default")[0])
+    assert set(helps) == {"interface", "channel", "fd"}
+    assert helps["channel"] == {"bus channel"} and len(helps["fd"]) == 1
+    assert {h.split(",")[0] for h in helps["interface"]} == {"python-can interface"}
+    # the daemon's and crash-replay's defaults are one
+    assert replay.get_default("channel") == NodeConfig().channel
+    assert replay.get_default("interface") == NodeConfig().interface
 
 
 def _recorder_pid(daemon_pid: int) -> int:

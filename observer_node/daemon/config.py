@@ -13,6 +13,8 @@ from dataclasses import asdict, dataclass, field, fields
 from pathlib import Path
 from typing import Any
 
+from observer_node.dbc.bus import DEFAULT_CHANNEL, DEFAULT_INTERFACE
+
 from ..errors import ObserverError
 from .core import CoreConfig
 
@@ -23,8 +25,8 @@ class ConfigError(ObserverError, ValueError):
 
 @dataclass
 class NodeConfig:
-    interface: str = "socketcan"
-    channel: str = "vcan0"
+    interface: str = DEFAULT_INTERFACE
+    channel: str = DEFAULT_CHANNEL
     fd: bool = False
     raw_socketcan: bool = True
     model: str = ""
