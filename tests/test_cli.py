@@ -1,9 +1,11 @@
 """The command lines as a whole: one error base with its exit codes, reported in one line;
-the bus options declared once for every command that opens a bus."""
+the bus options declared once for every command that opens a bus; defaults shown in --help
+are the ones the code uses; run's options map onto config keys by an explicit table."""
 
 from __future__ import annotations
 
 import argparse
+import dataclasses
 import os
 import signal
 import subprocess
@@ -14,7 +16,9 @@ from pathlib import Path
 import pytest
 
 from observer_node import cli
+from observer_node.cli import run as run_cmd
 from observer_node.daemon.config import ConfigError, NodeConfig
+from observer_node.daemon.core import CoreConfig
 from observer_node.data import CrashDataError
 from observer_node.dbc.bus import BusOpenError
 from observer_node.dbc.codec import LayoutError
@@ -39,6 +43,10 @@ def test_every_user_error_derives_from_the_one_base_with_exit_code_2(error):
 
 def test_a_run_that_lost_recording_exits_3():
     assert issubclass(RecordingLostError, ObserverError) and RecordingLostError.exit_code == 3
+
+
+def _parsed(argv: list[str]) -> argparse.Namespace:
+    return cli.build_parser().parse_args(argv)
 
 
 @pytest.mark.parametrize("code", [2, 3, 7])
@@ -87,6 +95,72 @@ def test_every_command_that_opens_a_bus_has_the_same_bus_options():
     # the daemon's and crash-replay's defaults are one
     assert replay.get_default("channel") == NodeConfig().channel
     assert replay.get_default("interface") == NodeConfig().interface
+
+
+def _all_parsers() -> list[argparse.ArgumentParser]:
+    top = cli.build_parser()
+    return [top, *top._subparsers._group_actions[0].choices.values(),
+            replay_cli.build_parser()]
+
+
+def test_help_takes_every_default_from_argparse():
+    """An option with a default shows it with %(default)s: never restated by hand."""
+    stated = []
+    for parser in _all_parsers():
+        for a in parser._actions:
+            if a.default not in (None, False, argparse.SUPPRESS) and a.help and \
+                    a.help != argparse.SUPPRESS and "%(default" not in a.help:
+                stated.append(f"{parser.prog} {a.option_strings}: {a.help}")
+    assert stated == []
+
+
+def test_run_help_shows_the_config_defaults():
+    node, core = NodeConfig(), CoreConfig()
+    helps = {a.dest: a.help % vars(a) for a in _subparser("run")._actions if a.help}
+    for dest, key in run_cmd.CONFIG_KEYS.items():
+        table, _, name = key.rpartition(".")
+        value = getattr(core if table == "core" else node, name)
+        if isinstance(value, bool) or value == "":
+            continue  # a flag, or a key that is empty unless given
+        shown = f"{value:g}" if isinstance(value, float) else str(value)
+        assert f"default {shown}" in helps[dest], (dest, helps[dest])
+
+
+def test_every_run_option_is_a_config_key_or_the_commands_own():
+    own = {"help", "config", "print_config", "quiet"}
+    dests = {a.dest for a in _subparser("run")._actions}
+    assert dests - own == set(run_cmd.CONFIG_KEYS)
+    node = {f.name for f in dataclasses.fields(NodeConfig)}
+    core = {f.name for f in dataclasses.fields(CoreConfig)}
+    for key in run_cmd.CONFIG_KEYS.values():
+        table, _, name = key.rpartition(".")
+        assert name in (core if table == "core" else node), key
+
+
+def test_run_command_line_overrides_the_config_file_key_by_key(tmp_path):
+    toml = tmp_path / "c.toml"
+    toml.write_text('[observer]\ninterface = "virtual"\nchannel = "from-file"\n'
+                    'model = "file.json"\nrt_priority = 5\n'
+                    "[observer.core]\ntrigger_g = 4.0\nevent_s = 0.3\n")
+    cfg = run_cmd.config_from_args(_parsed(["run", "--config", str(toml), "--channel", "cli",
+                                            "--trigger-g", "5", "--python-can-socketcan"]))
+    assert (cfg.interface, cfg.channel, cfg.model, cfg.rt_priority) == \
+        ("virtual", "cli", "file.json", 5)
+    assert (cfg.core.trigger_g, cfg.core.event_s) == (5.0, 0.3)
+    assert cfg.raw_socketcan is False and cfg.fd is False
+
+    argv = ["run", "--interface", "i", "--channel", "c", "--fd", "--model", "m.json",
+            "--setup", "SLED", "--record", "r.mcap", "--live", "--cpu-latency-us", "-1",
+            "--rt-priority", "3", "--trigger-g", "6", "--event-s", "0.25",
+            "--counts-per-rev", "48"]
+    cfg = run_cmd.config_from_args(_parsed(argv))
+    want = NodeConfig(interface="i", channel="c", fd=True, model="m.json", setup="SLED",
+                      record="r.mcap", live="127.0.0.1:8765", cpu_latency_us=-1,
+                      rt_priority=3, core=CoreConfig(trigger_g=6.0, event_s=0.25,
+                                                     counts_per_rev=48))
+    assert cfg == want
+    assert run_cmd.config_from_args(_parsed(["run", "--model", "m.json"])) == \
+        NodeConfig(model="m.json")
 
 
 def _recorder_pid(daemon_pid: int) -> int:
