@@ -9,20 +9,50 @@ warning of their own when imported, and a bus that failed half-way logs again wh
 collected. Whatever an interface's constructor raises means "this bus cannot be opened
 here": it becomes a :class:`BusOpenError` whose message is one line, with what python-can
 logged meanwhile folded in, so a command can end with that line and exit code 2.
+
+The options that name a bus (``--interface``, ``--channel``, ``--fd``) are declared here once,
+for every command that opens one (``observer-node run`` and ``bench``, ``crash-replay``).
 """
 
 from __future__ import annotations
 
+import argparse
 import gc
 import logging
 import warnings
 from typing import TYPE_CHECKING, Any
 
+from observer_node.errors import ObserverError
+
 if TYPE_CHECKING:  # python-can is imported when a bus opens: commands start faster
     import can
 
 
-class BusOpenError(Exception):
+DEFAULT_INTERFACE = "socketcan"
+DEFAULT_CHANNEL = "vcan0"
+
+
+def add_bus_arguments(parser: argparse.ArgumentParser, *, interface: str = DEFAULT_INTERFACE,
+                      channel: str = DEFAULT_CHANNEL, fd: bool = True, unset: bool = False,
+                      interface_note: str = "") -> None:
+    """``--interface`` and ``--channel`` (and ``--fd`` if ``fd``) in the group "CAN bus".
+
+    ``interface``, ``channel``: the defaults. ``unset``: an option not given parses as None
+    (a config file may set it; the caller applies the default), its help still shows the
+    default. ``interface_note``: what else the command takes for an interface (", or ...")."""
+    g = parser.add_argument_group("CAN bus")
+    shown = {"interface": interface, "channel": channel} if unset else \
+        {"interface": "%(default)s", "channel": "%(default)s"}
+    g.add_argument("--interface", default=None if unset else interface,
+                   help=f"python-can interface{interface_note} (default {shown['interface']})")
+    g.add_argument("--channel", default=None if unset else channel,
+                   help=f"bus channel (default {shown['channel']})")
+    if fd:
+        g.add_argument("--fd", action="store_true", default=None if unset else False,
+                       help="a CAN FD bus (frames of up to 64 bytes)")
+
+
+class BusOpenError(ObserverError):
     """A bus that does not open; the message is one line naming interface and channel."""
 
 

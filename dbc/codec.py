@@ -23,6 +23,8 @@ from pathlib import Path
 import cantools
 from e2e import p01, p05
 
+from observer_node.errors import ObserverError
+
 DBC_PATH = Path(__file__).with_name("chest_observer.dbc")
 
 
@@ -48,7 +50,7 @@ def crc8_j1850(data: bytes | bytearray | memoryview, crc: int = 0xFF) -> int:
     return crc
 
 
-class LayoutError(ValueError):
+class LayoutError(ObserverError, ValueError):
     """The DBC uses a layout this codec does not compile."""
 
 

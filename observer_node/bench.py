@@ -27,14 +27,14 @@ import time
 from pathlib import Path
 from typing import Any
 
-from .data import bundled_campaign, read_isomme
+from .data import BENCH_TESTS, bundled_campaign, read_isomme
 from .data.setups import assign_setups
 from .dbc import Codec
+from .dbc.bus import DEFAULT_CHANNEL
 from .evaluation import evaluate_model
 from .model.modelfile import ModelFile
 from .recording import analyze, read_recording
 
-DEFAULT_TESTS = ("R16_002", "SLED_002", "FULL_002")
 LOOP_TESTS = tuple(f"{s}_{i:03d}" for s, n in (("R16", 12), ("SLED", 6), ("FULL", 6))
                    for i in range(1, n + 1, 2))
 
@@ -97,7 +97,7 @@ def loop_models(loop_dir: Path, est_names: tuple[str, ...], val_names: tuple[str
 
 
 def run_bench(out: Path, model_path: str | None = None, interface: str = "auto",
-              channel: str = "vcan0", tests: tuple[str, ...] = DEFAULT_TESTS,
+              channel: str = DEFAULT_CHANNEL, tests: tuple[str, ...] = BENCH_TESTS,
               rate: float = 1.0, loop_tests: tuple[str, ...] = LOOP_TESTS,
               loop_dir: Path | None = None, rerun_loop: bool = False) -> dict:
     out.mkdir(parents=True, exist_ok=True)

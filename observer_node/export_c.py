@@ -25,6 +25,7 @@ from pathlib import Path
 import numpy as np
 
 from .daemon.core import CoreConfig
+from .errors import ObserverError
 from .model.chest import discrete
 from .model.effects import EFFECTS
 from .model.modelfile import ModelFile
@@ -39,7 +40,7 @@ OTHER_TERMS_C = {"d^2": "d * d", "d^3": "d * d * d", "d'|d'|": "dd * fabs(dd)", 
                  "e^3": "e * e * e", "e'|e'|": "ed * fabs(ed)", "d e": "d * e", "d d'": "d * dd"}
 
 
-class ExportError(ValueError):
+class ExportError(ObserverError, ValueError):
     """A model file this generator cannot turn into C; the message says which part."""
 
 

@@ -22,11 +22,12 @@ import sys
 from collections import Counter
 
 from observer_node.dbc import Codec, fd_frame_time_s, frame_bits
-from observer_node.dbc.bus import BusOpenError, open_bus
+from observer_node.dbc.bus import add_bus_arguments, open_bus
+from observer_node.errors import ObserverError, UsageError
 
 from .player import bus_sender, play
 from .schedule import Schedule, concat, restamp_counters
-from .sources import SourceError, filter_remap, load_source
+from .sources import filter_remap, load_source
 
 
 def _int(s: str) -> int:
@@ -53,31 +54,36 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("sources", nargs="+", metavar="SOURCE",
                    help="crash test (ISO-MME folder, .zip, .mme, .csv), folder of tests, "
                    "campaign-a[/PATTERN], .mcap recording, or .log/.asc/.blf/.trc/.mf4 bus log")
-    p.add_argument("--interface", default="socketcan", help="python-can interface (socketcan)")
-    p.add_argument("--channel", default="vcan0", help="bus channel (vcan0)")
-    p.add_argument("--fd", action="store_true", help="send as CAN FD frames")
+    add_bus_arguments(p)
     p.add_argument("--burst", action="store_true",
                    help="lab data as InputBurst frames, eight samples each (CAN FD; for tick "
                    "rates a frame per sample cannot carry, e.g. --tick-rate 10000)")
     p.add_argument("--rate", type=float, default=1.0,
-                   help="time scale: 2 plays twice as fast, 0.1 ten times slower (1)")
+                   help="time scale: 2 plays twice as fast, 0.1 ten times slower "
+                   "(default %(default)g)")
     p.add_argument("--tick-rate", type=float, default=1000.0,
-                   help="accelerometer frames per second for lab data (DBC default 1000 Hz)")
+                   help="accelerometer frames per second for lab data (default %(default)g, the "
+                   "DBC's)")
     p.add_argument("--reference", action="store_true",
                    help="also send ReferenceChest frames with the measured CR and CD")
     p.add_argument("--start", type=float, help="start of the window to play, s (test time)")
     p.add_argument("--end", type=float, help="end of the window to play, s (test time)")
     p.add_argument("--pre", type=float, default=0.2,
-                   help="quiet signal before a lab test, s, for the daemon's bias (0.2)")
-    p.add_argument("--loop", type=int, default=1, metavar="N", help="play everything N times")
+                   help="quiet signal before a lab test, s, for the daemon's bias "
+                   "(default %(default)g)")
+    p.add_argument("--loop", type=int, default=1, metavar="N",
+                   help="play everything N times (default %(default)s)")
     p.add_argument("--spin-us", type=float, default=300.0,
-                   help="busy-wait this long before each due time for accuracy (300); use 0 "
-                   "in an emulated VM, where spinning steals the emulator's own CPU")
+                   help="busy-wait this long before each due time for accuracy (default "
+                   "%(default)g); use 0 in an emulated VM, where spinning steals the "
+                   "emulator's own CPU")
     p.add_argument("--rt-priority", type=_priority, default=0, metavar="N",
                    help="play under SCHED_FIFO at priority N (1-99; needs root, CAP_SYS_NICE "
                    "or RLIMIT_RTPRIO, else one line says so): due frames preempt every "
-                   "normal process, as the daemon's run --rt-priority; 0 (default): normal")
-    p.add_argument("--gap", type=float, default=0.5, help="pause between sources, s (0.5)")
+                   "normal process, as the daemon's run --rt-priority; default %(default)s: "
+                   "normal")
+    p.add_argument("--gap", type=float, default=0.5,
+                   help="pause between sources, s (default %(default)g)")
     p.add_argument("--only", type=_int, action="append", metavar="ID",
                    help="send only these CAN IDs (repeatable; 0x100 or 256)")
     p.add_argument("--remap", type=_remap, action="append", metavar="FROM=TO",
@@ -86,9 +92,11 @@ def build_parser() -> argparse.ArgumentParser:
                    help="MCAP, and logs that keep the direction (ASC, BLF, TRC, MF4): also the "
                    "frames the recording node sent, not only those it received")
     p.add_argument("--counts-per-rev", type=int, help="BRS counts/rev if a test does not say")
-    p.add_argument("--bitrate", type=float, default=500_000, help="for --dry-run's bus load")
+    p.add_argument("--bitrate", type=float, default=500_000,
+                   help="for --dry-run's bus load (default %(default).0f)")
     p.add_argument("--data-bitrate", type=float, default=2_000_000,
-                   help="CAN FD data phase, for --dry-run's bus load with --fd (2000000)")
+                   help="CAN FD data phase, for --dry-run's bus load with --fd "
+                   "(default %(default).0f)")
     p.add_argument("--dry-run", action="store_true",
                    help="print what would be sent and the bus load, send nothing")
     p.add_argument("--quiet", action="store_true", help="no progress bar")
@@ -119,20 +127,22 @@ def describe(s: Schedule, bitrate: float, data_bitrate: float | None = None) -> 
 
 def main(argv: list[str] | None = None) -> int:
     a = build_parser().parse_args(argv)
-    codec = Codec()
     try:
-        parts: list[Schedule] = []
-        for src in a.sources:
-            parts += load_source(src, codec, a.tick_rate, a.reference, a.start, a.end, a.pre,
-                                 counts_per_rev=a.counts_per_rev, all_frames=a.all_frames,
-                                 burst=a.burst)
-    except SourceError as e:
+        return _play(a)
+    except ObserverError as e:  # a source or bus that cannot be used: one line, no traceback
         print(f"crash-replay: error: {e}", file=sys.stderr)
-        return 2
+        return e.exit_code
+
+
+def _play(a: argparse.Namespace) -> int:
+    codec = Codec()
+    parts: list[Schedule] = []
+    for src in a.sources:
+        parts += load_source(src, codec, a.tick_rate, a.reference, a.start, a.end, a.pre,
+                             counts_per_rev=a.counts_per_rev, all_frames=a.all_frames,
+                             burst=a.burst)
     if a.burst and not a.fd:
-        print("crash-replay: error: --burst sends 48-byte InputBurst frames: it needs --fd",
-              file=sys.stderr)
-        return 2
+        raise UsageError("--burst sends 48-byte InputBurst frames: it needs --fd")
     only = set(a.only) if a.only else None
     remap = dict(a.remap or [])
     sched = concat(parts * a.loop, a.gap)
@@ -150,11 +160,7 @@ def main(argv: list[str] | None = None) -> int:
             print(f"  ... {len(sched) - 20} more")
         return 0
 
-    try:
-        bus = open_bus(a.interface, a.channel, fd=a.fd)
-    except BusOpenError as e:
-        print(f"crash-replay: error: {e}", file=sys.stderr)
-        return 2
+    bus = open_bus(a.interface, a.channel, fd=a.fd)
     send = bus_sender(bus, sched, a.fd)
 
     tty = sys.stderr.isatty() and not a.quiet

@@ -21,11 +21,12 @@ import numpy as np
 
 from observer_node.data import ChannelCodes, CrashDataError, find_tests, load_test
 from observer_node.dbc import Codec
+from observer_node.errors import ObserverError
 
 from .schedule import Schedule, crash_test_schedule, restamp_counters
 
 
-class SourceError(ValueError):
+class SourceError(ObserverError, ValueError):
     """A replay source that cannot be played; the message names the file and place."""
 
 

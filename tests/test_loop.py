@@ -117,19 +117,19 @@ def test_first_bench_uses_the_loop_result_shipped_with_this_version(tmp_path, ca
     test files by this version ships with the package (scripts/readme_figures.py --check runs
     the loop again in CI and fails when it drifts)."""
     from observer_node.bench import (
-        DEFAULT_TESTS,
         LOOP_TESTS,
         SHIPPED_LOOP,
         STAMP,
         loop_models,
         loop_stamp,
     )
+    from observer_node.data import BENCH_TESTS
 
     assert json.loads((SHIPPED_LOOP / STAMP).read_text()) == loop_stamp(LOOP_TESTS)
-    plain, model = loop_models(tmp_path / "loop", LOOP_TESTS, DEFAULT_TESTS)
+    plain, model = loop_models(tmp_path / "loop", LOOP_TESTS, BENCH_TESTS)
     assert "shipped with this version" in capsys.readouterr().out
     assert model.effects and not plain.effects
-    loop_models(tmp_path / "loop", LOOP_TESTS, DEFAULT_TESTS)  # now from the copy
+    loop_models(tmp_path / "loop", LOOP_TESTS, BENCH_TESTS)  # now from the copy
     assert "reusing the loop's result" in capsys.readouterr().out
 
 

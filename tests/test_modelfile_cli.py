@@ -116,7 +116,7 @@ def test_cli_simulate_writes_readable_tests(tmp_path: Path):
 
 
 def test_simulate_help_names_every_effect_the_simulator_has(capsys):
-    from observer_node.cli import SIM_EFFECTS
+    from observer_node.cli.simulate import SIM_EFFECTS
     from observer_node.simulator import EFFECTS
 
     assert set(SIM_EFFECTS) == set(EFFECTS)

@@ -13,17 +13,20 @@ from dataclasses import asdict, dataclass, field, fields
 from pathlib import Path
 from typing import Any
 
+from observer_node.dbc.bus import DEFAULT_CHANNEL, DEFAULT_INTERFACE
+
+from ..errors import ObserverError
 from .core import CoreConfig
 
 
-class ConfigError(ValueError):
+class ConfigError(ObserverError, ValueError):
     """A configuration the daemon must not run with; the message names where and the key."""
 
 
 @dataclass
 class NodeConfig:
-    interface: str = "socketcan"
-    channel: str = "vcan0"
+    interface: str = DEFAULT_INTERFACE
+    channel: str = DEFAULT_CHANNEL
     fd: bool = False
     raw_socketcan: bool = True
     model: str = ""

@@ -45,11 +45,13 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
 import numpy as np
 
-from ..model.nonlinear import NonlinearGreyBox
-from ..model.observer import LinearObserver
+if TYPE_CHECKING:  # the config is read before a model is: `observer-node` starts faster
+    from ..model.nonlinear import NonlinearGreyBox
+    from ..model.observer import LinearObserver
 
 ARMED, RUNNING, HOLD = 1, 2, 3
 

@@ -32,6 +32,7 @@ from observer_node.dbc import DBC_PATH, Codec
 
 from .. import __version__
 from ..criteria import chest_criteria
+from ..errors import ObserverError, RecordingLostError
 from ..model.modelfile import ModelFile
 from ..recording.format import FLAG_TX, TickRow
 from ..recording.writer import Recorder, RecorderError
@@ -41,8 +42,6 @@ from .inputs import Counters, Inputs
 from .outputs import Outputs
 from .ports import FLAG_ERROR, FLAG_REMOTE, Port, PortError, open_port
 from .realtime import hold_cpu_latency, restore_scheduling, set_rt_priority
-
-EXIT_RECORDING_LOST = 3  # run's exit code when the recording is not the whole run
 
 
 class ObserverNode:
@@ -354,7 +353,8 @@ class ObserverNode:
 
 
 def run_daemon(cfg: NodeConfig, quiet: bool = False) -> int:
-    """The ``observer-node run`` command."""
+    """The ``observer-node run`` command: 0 after a clean stop; an :class:`ObserverError` when
+    it cannot start, a :class:`RecordingLostError` when the recording is not the whole run."""
     # a model scoped to setups runs the effects of this bench's setup only
     model = ModelFile.load(cfg.model).for_setup(cfg.setup, cfg.model)
     node = ObserverNode(cfg, model)
@@ -369,15 +369,13 @@ def run_daemon(cfg: NodeConfig, quiet: bool = False) -> int:
     try:
         cnt = node.run(on_ready=ready)
     except (PortError, RecorderError) as e:
-        print(f"observer-node: error: {e.strerror or e}", file=sys.stderr)
-        return 2
+        raise ObserverError(e.strerror or str(e)) from None
     if not quiet:
         print("observer-node: stopped; " + ", ".join(f"{k} {v}" for k, v in asdict(cnt).items())
               + f", step_errors {node.step_errors}", file=sys.stderr)
     rec = node.recorder
     if rec is not None and rec.degraded:
-        print(f"observer-node: error: the recording is not the whole run: parts "
-              f"{', '.join(map(str, rec.parts))}; {rec.lost_ticks} ticks and {rec.lost_frames} "
-              f"frames lost; " + "; ".join(rec.errors), file=sys.stderr)
-        return EXIT_RECORDING_LOST
+        raise RecordingLostError(
+            f"the recording is not the whole run: parts {', '.join(map(str, rec.parts))}; "
+            f"{rec.lost_ticks} ticks and {rec.lost_frames} frames lost; " + "; ".join(rec.errors))
     return 0

@@ -16,6 +16,8 @@ from .csvio import read_csv, write_csv
 from .isomme import ChannelCodes, read_isomme, write_isomme
 
 __all__ = [
+    "BENCH_TESTS",
+    "BUNDLED_NAME",
     "STANDARD_GRAVITY",
     "THESIS_WINDOW_S",
     "ChannelCodes",
@@ -34,6 +36,8 @@ __all__ = [
 
 
 BUNDLED_NAME = "campaign-a"
+# The bundled tests `observer-node bench` replays by default: one of each setup.
+BENCH_TESTS = ("R16_002", "SLED_002", "FULL_002")
 
 
 def bundled_campaign() -> Path:

@@ -22,12 +22,14 @@ from dataclasses import dataclass, field, replace
 import numpy as np
 from scipy import signal
 
+from ..errors import ObserverError
+
 # The thesis window (section 2.2): before 10 ms the pretensioner still takes slack, after
 # 150 ms the crash is over.
 THESIS_WINDOW_S = (0.01, 0.15)
 
 
-class CrashDataError(ValueError):
+class CrashDataError(ObserverError, ValueError):
     """A crash test that cannot be used; the message names the file, line and key at fault."""
 
 

@@ -14,11 +14,14 @@ from collections.abc import Callable, Iterator
 from contextlib import contextmanager
 from typing import Any
 
+from ..errors import ObserverError
+
+MAX_LOCAL_WORKERS = 4  # the local cluster's default: one worker per core, at most this many
 # one BLAS thread per worker process, set before the workers import numpy
 _WORKER_ENV = {"OPENBLAS_NUM_THREADS": "1", "OMP_NUM_THREADS": "1", "MKL_NUM_THREADS": "1"}
 
 
-class ClusterError(RuntimeError):
+class ClusterError(ObserverError, RuntimeError):
     """The scheduler cannot be reached or the cluster cannot start."""
 
 
@@ -54,7 +57,7 @@ def cluster(scheduler: str | None = None, workers: int | None = None) -> Iterato
         finally:
             client.close()
         return
-    n = workers or min(4, len(os.sched_getaffinity(0)))
+    n = workers or min(MAX_LOCAL_WORKERS, len(os.sched_getaffinity(0)))
     local = LocalCluster(n_workers=n, threads_per_worker=1, processes=True,
                          dashboard_address=":0", silence_logs=logging.CRITICAL,
                          env=_WORKER_ENV)

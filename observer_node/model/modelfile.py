@@ -31,6 +31,7 @@ from typing import Any
 import numpy as np
 
 from .. import __version__
+from ..errors import ObserverError
 from . import chest
 from .effects import EFFECTS
 from .nonlinear import NonlinearGreyBox, applies
@@ -53,7 +54,7 @@ OUTPUTS = [
 ]
 
 
-class ModelFileError(ValueError):
+class ModelFileError(ObserverError, ValueError):
     """A model file that cannot be used; the message names the file and key."""
 
 

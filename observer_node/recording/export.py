@@ -25,6 +25,7 @@ import can
 from can.io.asc import ASCWriter
 from can.io.mf4 import MF4Writer
 
+from ..errors import ObserverError
 from . import format as fmt
 from .reader import RecordingError, Scan
 
@@ -35,7 +36,7 @@ FORMATS = {".mf4": "ASAM MDF4", ".blf": "Vector BLF", ".asc": "Vector ASC",
 REORDER = 4096  # frames held back to put the log in time order
 
 
-class ExportError(ValueError):
+class ExportError(ObserverError, ValueError):
     """An export that cannot be made; the message names the file."""
 
 

@@ -16,11 +16,12 @@ from typing import Any
 
 import numpy as np
 
+from ..errors import ObserverError
 from ..model.modelfile import ModelFile
 from . import format as fmt
 
 
-class RecordingError(ValueError):
+class RecordingError(ObserverError, ValueError):
     """A file that is not a readable recording; the message names it and why."""
 
 

@@ -1,0 +1,62 @@
+"""The options every command that reads crash tests shares: which tests, their channel codes,
+the BRS resolution, the scoring window and the tick rate; the defaults are the data
+module's."""
+
+from __future__ import annotations
+
+import argparse
+
+from ..data import BUNDLED_NAME, ChannelCodes, CrashTest, bundled_campaign, load_tests
+from ..data.crashtest import THESIS_WINDOW_S
+
+TESTS_HELP = (f"an ISO-MME test folder, .zip or .csv, a folder of them, or "
+              f"{BUNDLED_NAME}[/PATTERN]")
+RATE_HZ = 1000.0  # the DBC's sensor rate: one TunnelAccel frame, one tick per ms
+
+
+def add_data_arguments(p: argparse.ArgumentParser, data: str | None) -> None:
+    """Options that say how to read crash tests; ``data``: "required", "optional" (default the
+    bundled campaign) or None (the command names its tests in other options)."""
+    codes = ChannelCodes()
+    g = p.add_argument_group("crash-test data")
+    if data is not None:
+        g.add_argument("--data", nargs="+", required=data == "required", metavar="TEST",
+                       help="crash tests: " + TESTS_HELP
+                       + ("" if data == "required" else f" (default: {BUNDLED_NAME})"))
+    g.add_argument("--pulse-code", action="append", metavar="CODE",
+                   help="channel code of the crash pulse ('?' matches any character; "
+                   f"repeatable; default {', '.join(codes.pulse)})")
+    g.add_argument("--brs-code", action="append", metavar="CODE",
+                   help=f"BRS channel code (default {', '.join(codes.brs)})")
+    g.add_argument("--cr-code", action="append", metavar="CODE",
+                   help=f"chest acceleration channel code (default {', '.join(codes.cr)})")
+    g.add_argument("--cd-code", action="append", metavar="CODE",
+                   help=f"chest deflection channel code (default {', '.join(codes.cd)})")
+    g.add_argument("--counts-per-rev", type=int, metavar="N",
+                   help="BRS counts per spindle revolution (default: from the test's comments)")
+    start, end = THESIS_WINDOW_S
+    g.add_argument("--window", nargs=2, type=float, metavar=("START", "END"),
+                   help=f"scoring window in s (default {start:g} {end:g}, the thesis's)")
+
+
+def add_rate_argument(p: argparse.ArgumentParser, what: str = "") -> None:
+    p.add_argument("--rate", type=float, default=RATE_HZ,
+                   help=f"tick rate in Hz{what} (default %(default)g, the bus rate)")
+
+
+def channel_codes(a: argparse.Namespace) -> ChannelCodes:
+    d = ChannelCodes()
+    return ChannelCodes(
+        pulse=tuple(a.pulse_code or d.pulse), brs=tuple(a.brs_code or d.brs),
+        cr=tuple(a.cr_code or d.cr), cd=tuple(a.cd_code or d.cd),
+    )
+
+
+def window(a: argparse.Namespace) -> tuple[float, float]:
+    """The scoring window in s: --window, else the thesis's."""
+    return (a.window[0], a.window[1]) if a.window else THESIS_WINDOW_S
+
+
+def load(a: argparse.Namespace) -> list[CrashTest]:
+    """The tests --data names, else the bundled campaign."""
+    return load_tests(a.data or [bundled_campaign()], channel_codes(a), a.counts_per_rev)

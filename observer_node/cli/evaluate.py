@@ -1,0 +1,60 @@
+"""``observer-node evaluate``: the thesis's chapter 4, or one model file scored on tests."""
+
+from __future__ import annotations
+
+import argparse
+from pathlib import Path
+
+from . import _data
+
+
+def add_subparser(subparsers: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
+    s = subparsers.add_parser(
+        "evaluate", help="score models with the thesis's fit (tables, plots, JSON)",
+        description="Without --model: the thesis's chapter 4 on the data (default: bundled "
+        "campaign): per setup, estimate ARX Nmax 10 and 6, N4SID 16 and 7 and the grey-box on "
+        "the odd-numbered tests, score them on the even-numbered ones, print Tables 4.1-4.3 "
+        "with the thesis's numbers beside them, and write plots and evaluation.json. "
+        "With --model: score that model on the data and write OUT/fits.json and plots.")
+    s.add_argument("--model", help="model file to score (default: identify and compare all)")
+    _data.add_data_arguments(s, data="optional")
+    s.add_argument("--out", default="out/evaluate", help="output folder (default %(default)s)")
+    _data.add_rate_argument(s)
+    s.add_argument("--quiet", action="store_true", help="no progress display")
+    s.set_defaults(func=_do_evaluate)
+
+
+def _do_evaluate(a: argparse.Namespace) -> int:
+    from ..criteria import format_criteria
+    from ..evaluation import evaluate_model, format_tables, thesis_comparison
+    from ..iso18571 import grade
+    from ..model.modelfile import ModelFile
+
+    tests = _data.load(a)
+    out = Path(a.out)
+    if a.model:
+        mf = ModelFile.load(a.model)
+        # without --window, the model's own window
+        fits = evaluate_model(mf, tests, out, _data.window(a) if a.window else None)
+        f = fits["fit"]
+        print(f"{mf.kind} model {mf.name!r} on {len(tests)} tests:")
+        for name, v in fits["tests"].items():
+            print(f"  {name:<12} CR {v['cr']:6.1f} %  CD {v['cd']:6.1f} %")
+        print(f"  {'total':<12} CR {f['cr']:6.1f} %  CD {f['cd']:6.1f} %  TOT {f['total']:.1f} %")
+        print("\nchest injury criteria, estimate vs measured (from t = 0):")
+        print(format_criteria(fits["criteria"]))
+        iso = fits.get("iso18571")
+        if iso:
+            print("\nISO/TS 18571 overall rating (0..1) on the fit window:")
+            for name, r in iso["tests"].items():
+                print(f"  {name:<12} CR {r['cr']['overall']:.3f} ({grade(r['cr']['overall'])})"
+                      f"  CD {r['cd']['overall']:.3f} ({grade(r['cd']['overall'])})")
+        else:
+            print("\n(ISO/TS 18571 ratings: pip install 'chest-observer[iso18571]')")
+        print(f"wrote {out / 'fits.json'} and plots in {out}")
+        return 0
+    result = thesis_comparison(tests, out, a.rate, _data.window(a), verbose=not a.quiet)
+    print(format_tables(result))
+    print(f"\nwrote {out / 'evaluation.json'}, models in {out / 'models'}, "
+          f"plots in {out / 'plots'}")
+    return 0

@@ -1,0 +1,53 @@
+"""``observer-node identify``: fit one model to crash tests, write its model file."""
+
+from __future__ import annotations
+
+import argparse
+import time
+
+from . import _data
+
+
+def add_subparser(subparsers: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
+    s = subparsers.add_parser(
+        "identify", help="fit a grey-box, ARX or N4SID model to crash tests",
+        description="Fit one model to crash tests and write its JSON model file.")
+    s.add_argument("--model", choices=("greybox", "arx", "n4sid"), required=True)
+    _data.add_data_arguments(s, data="required")
+    s.add_argument("--out", required=True, help="model file to write (JSON)")
+    _data.add_rate_argument(s, " the model runs at")
+    s.add_argument("--nmax", type=int, default=6,
+                   help="ARX: largest order searched (default %(default)s)")
+    s.add_argument("--order", type=int, default=7, help="N4SID: model order (default %(default)s)")
+    s.add_argument("--m1", type=float, default=20.0,
+                   help="grey-box: fixed spine mass in kg that sets the mass scale "
+                   "(default %(default)g)")
+    s.add_argument("--name", help="model name stored in the file")
+    s.add_argument("--quiet", action="store_true", help="no progress display")
+    s.set_defaults(func=_do_identify)
+
+
+def _do_identify(a: argparse.Namespace) -> int:
+    from ..evaluation import identify
+    from ..ident.dataset import make_dataset
+    from ..ident.progress import Progress
+
+    tests = _data.load(a)
+    data = make_dataset(tests, a.rate, _data.window(a))
+    t0 = time.monotonic()
+    mf = identify(a.model, data, nmax=a.nmax, order=a.order, m1_kg=a.m1,
+                  progress=Progress(f"identify {a.model}", enabled=not a.quiet), name=a.name)
+    mf.save(a.out)
+    f = mf.fits["fit"]
+    print(f"{a.model} model on {len(tests)} tests at {a.rate:g} Hz "
+          f"({time.monotonic() - t0:.1f} s) -> {a.out}")
+    print(f"fit on its estimation tests: CR {f['cr']:.1f} %  CD {f['cd']:.1f} %  "
+          f"TOT {f['total']:.1f} %  (not a validation fit)")
+    if a.model == "greybox":
+        print("parameters (value ± standard error):")
+        for n, p in mf.parameters.items():
+            fixed = "  (fixed: mass scale)" if p["fixed"] else ""
+            print(f"  {n:<3} {p['value']:12.5g} ± {p['std_err']:<10.2g} {p['unit']}{fixed}")
+    elif a.model == "arx":
+        print(f"orders: NA={mf.structure['NA']} NB={mf.structure['NB']} NK={mf.structure['NK']}")
+    return 0

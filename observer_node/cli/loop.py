@@ -1,0 +1,72 @@
+"""``observer-node loop``: find what the grey-box model lacks, add it, refit, report."""
+
+from __future__ import annotations
+
+import argparse
+from pathlib import Path
+
+from ..errors import UsageError
+from ..loop.cluster import MAX_LOCAL_WORKERS
+from . import _data
+
+
+def add_subparser(subparsers: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
+    s = subparsers.add_parser(
+        "loop", help="find what the grey-box model lacks, add it, refit, report",
+        description="Identify the thesis grey-box model on the estimation tests, analyse its "
+        "residual, trace it to a physical effect of the library (or a sparse formula), add it, "
+        "refit, and name it only if it beats test-to-test scatter: each estimation test's "
+        "cross-validated fit with and without it, paired, must gain --margin points on average "
+        "with a 95 % interval above zero (or a sign test, p <= 0.0625), and no setup may lose; "
+        "repeat; report fits before and after on the validation tests. Tests that look broken "
+        "(missing, frozen, saturated or spiking channels, a fit far below the others') are "
+        "named and left out; a one-output static error is reported as a sensor effect; what "
+        "nothing explains is reported as unexplained. Tests are grouped in "
+        "setups by their .mme metadata (or --group); each effect is tried on every test and on "
+        "the setups that could have it (never an airbag on a hard-seat rig), and "
+        "cross-validation chooses. The report gives each effect's scope, the runner-up and its "
+        "margin, standard errors and warnings; model.json carries the scope (run --setup).")
+    s.add_argument("--estimate", nargs="+", required=True, metavar="TEST",
+                   help="tests to identify and cross-validate effects on: " + _data.TESTS_HELP)
+    s.add_argument("--validate", nargs="+", required=True, metavar="TEST",
+                   help="held-out tests the report scores before and after (never fitted on)")
+    s.add_argument("--out", required=True, help="output folder")
+    s.add_argument("--margin", type=float, default=1.0,
+                   help="mean paired fit_TOT points an effect must add in cross-validation "
+                   "(default %(default)g)")
+    s.add_argument("--group", action="append", metavar="NAME=PATTERN",
+                   help="put tests whose name matches PATTERN in setup NAME (repeatable; "
+                   "default: tests whose .mme has the same type of test, title and test object "
+                   "share a setup)")
+    s.add_argument("--allow-anywhere", action="store_true",
+                   help="try effects on setups whose metadata rules them out too (an airbag "
+                   "on a rig that says hard seat or no interior)")
+    _data.add_data_arguments(s, data=None)
+    _data.add_rate_argument(s)
+    s.add_argument("--scheduler", metavar="ADDRESS",
+                   help="run the refits on the Dask cluster at ADDRESS (tcp://HOST:8786); "
+                   "default: a local cluster in this process, one worker per core")
+    s.add_argument("--workers", type=int, metavar="N",
+                   help="workers of the local cluster (default: one per core, at most "
+                   f"{MAX_LOCAL_WORKERS})")
+    s.add_argument("--quiet", action="store_true", help="no progress display")
+    s.set_defaults(func=_do_loop)
+
+
+def _do_loop(a: argparse.Namespace) -> int:
+    from ..data import load_tests
+    from ..data.setups import parse_groups
+    from ..loop.closed_loop import run_loop
+
+    if a.workers is not None and a.workers < 1:
+        raise UsageError(f"--workers {a.workers}: needs at least one worker")
+    codes, cpr = _data.channel_codes(a), a.counts_per_rev
+    est = load_tests(a.estimate, codes, cpr)
+    val = load_tests(a.validate, codes, cpr)
+    r = run_loop(est, val, Path(a.out), a.rate, _data.window(a), a.margin,
+                 verbose=not a.quiet, groups=parse_groups(a.group),
+                 anywhere=a.allow_anywhere, scheduler=a.scheduler, workers=a.workers)
+    print((Path(a.out) / "report.md").read_text())
+    print(f"wrote {a.out}/report.json, report.md, model.json and plots "
+          f"({r['seconds']} s)")
+    return 0
