@@ -36,19 +36,12 @@ import numpy as np
 
 from .data.crashtest import CrashTest
 from .data.filters import cfc_filter
+from .model.effects import EFFECTS as MODEL_EFFECTS
 from .units import STANDARD_GRAVITY
 
-EFFECTS = {
-    "chest_stiffening": "cubic hardening of the rib cage stiffness k1",
-    "chest_rate_damping": "rib cage damping growing with compression rate",
-    "belt_unloading": "one-sided belt contact: the belt pulls, never pushes",
-    "belt_stiffening": "belt/flesh stiffness k2 hardening with penetration",
-    "airbag_contact": "airbag force on the sternum beyond a forward-excursion gap",
-    "pelvis_coupling": "extra load path between the spine and the vehicle",
-    "input_delay": "the chest responds to the inputs later than they are recorded",
-    "input_gain": "BRS gain (m of belt per rad) changes with the webbing wound",
-    "sensor_offset": "constant offsets on the CR and CD channels",
-}
+# The effects the plant simulates, with their truth form at scale 1 (their ``plant`` in the
+# registry; the forms themselves are this module's, written apart from the model's formulas).
+EFFECTS = {k: e.plant for k, e in MODEL_EFFECTS.items() if e.plant is not None}
 
 FS_HZ = 10_000.0
 T0_S = -0.02
