@@ -36,6 +36,7 @@ from .data.crashtest import THESIS_WINDOW_S
 from .data.setups import parse_groups
 from .loop.cluster import ClusterError
 from .model.effects import EFFECTS as MODEL_EFFECTS
+from .model.kinds import MODEL_KINDS
 from .model.modelfile import ModelFileError
 
 # The effects the simulator can switch on: those with a truth form in the registry.
@@ -101,13 +102,8 @@ def cmd_identify(a: argparse.Namespace) -> int:
           f"({time.monotonic() - t0:.1f} s) -> {a.out}")
     print(f"fit on its estimation tests: CR {f['cr']:.1f} %  CD {f['cd']:.1f} %  "
           f"TOT {f['total']:.1f} %  (not a validation fit)")
-    if a.model == "greybox":
-        print("parameters (value ± standard error):")
-        for n, p in mf.parameters.items():
-            fixed = "  (fixed: mass scale)" if p["fixed"] else ""
-            print(f"  {n:<3} {p['value']:12.5g} ± {p['std_err']:<10.2g} {p['unit']}{fixed}")
-    elif a.model == "arx":
-        print(f"orders: NA={mf.structure['NA']} NB={mf.structure['NB']} NK={mf.structure['NK']}")
+    for line in MODEL_KINDS[mf.kind].describe(mf):
+        print(line)
     return 0
 
 
@@ -386,7 +382,8 @@ def build_parser() -> argparse.ArgumentParser:
 
     s = sub.add_parser("identify", help="fit a grey-box, ARX or N4SID model to crash tests",
                        description="Fit one model to crash tests and write its JSON model file.")
-    s.add_argument("--model", choices=("greybox", "arx", "n4sid"), required=True)
+    s.add_argument("--model", choices=tuple(MODEL_KINDS), required=True,
+                   help="; ".join(f"{k}: {m.description}" for k, m in MODEL_KINDS.items()))
     _data_options(s, data="required")
     s.add_argument("--out", required=True, help="model file to write (JSON)")
     s.add_argument("--rate", type=float, default=1000.0,

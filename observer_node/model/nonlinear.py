@@ -107,6 +107,11 @@ class NonlinearGreyBox:
         self._brs_ring = np.zeros(self._ib + 2)
         self.reset()
 
+    @property
+    def A(self) -> np.ndarray:
+        """The discrete state matrix (as a linear observer's ``A``)."""
+        return self.Ad
+
     def _params_of(self, acts: str) -> tuple[dict[str, float], np.ndarray | None]:
         """Parameters and mask of the effect that acts as ``acts`` (one at most)."""
         for e, m in zip(self.effects, self.masks, strict=True):

@@ -1,17 +1,18 @@
 """The model file's JSON schema, checked with ``jsonschema`` before anything is built from it.
 
-The schema bounds what a daemon may be handed: the kinds; the tick rate (finite, and one the
-DBC provides for: 100 Hz to 10 kHz, the top rates as InputBurst frames); matrix shapes (at
-most ``MAX_STATES`` states, two inputs, two outputs); every effect with the parameters its
-formula needs; finite numbers only (NaN and Infinity are refused by the reader before the
-schema sees them). Stability is checked after, on the matrices themselves
-(:meth:`observer_node.model.modelfile.ModelFile.from_dict`)."""
+The schema bounds what a daemon may be handed: the model kinds (:mod:`.kinds`); the tick rate
+(finite, and one the DBC provides for: 100 Hz to 10 kHz, the top rates as InputBurst frames);
+matrix shapes (at most ``MAX_STATES`` states, two inputs, two outputs); every effect with the
+parameters its definition (:mod:`.effects`) requires; finite numbers only (NaN and Infinity
+are refused by the reader before the schema sees them). Stability is checked after, on the
+matrices themselves (:meth:`observer_node.model.modelfile.ModelFile.from_dict`)."""
 
 from __future__ import annotations
 
 from typing import Any
 
 from .effects import EFFECTS, Effect, registry_version
+from .kinds import MODEL_KINDS
 
 MAX_STATES = 64
 MAX_BYTES = 4 << 20  # a model file is kilobytes; more is not a model
@@ -51,16 +52,23 @@ _PARAMETER = {"type": "object", "required": ["value"],
 
 
 def schema() -> dict[str, Any]:
-    """The schema of the effects registered now (built again when the registry changes)."""
-    if _cache[0] != registry_version():
-        _cache[:] = [registry_version(), _schema()]
+    """The schema of the effects and model kinds registered now (built again when they
+    change)."""
+    version = (registry_version(), tuple(MODEL_KINDS))
+    if _cache[0] != version:
+        _cache[:] = [version, _schema()]
     return _cache[1]
 
 
 _cache: list[Any] = [None, None]
 
 
+def _one_of(values: list[str]) -> dict[str, Any]:
+    return {"const": values[0]} if len(values) == 1 else {"enum": values}
+
+
 def _schema() -> dict[str, Any]:
+    physical = [k for k, m in MODEL_KINDS.items() if m.physical]
     return {
         "$schema": "https://json-schema.org/draft/2020-12/schema",
         "title": "chest-observer model file",
@@ -70,7 +78,7 @@ def _schema() -> dict[str, Any]:
         "properties": {
             "format": {"const": "chest-observer-model"},
             "format_version": {"const": 1},
-            "kind": {"enum": ["greybox", "arx", "n4sid"]},
+            "kind": {"enum": list(MODEL_KINDS)},
             "name": {"type": "string", "maxLength": 200},
             "tick_rate_hz": {"type": "number", "minimum": 100, "maximum": 10_000},
             "input_transform": {"enum": ["velocity_brs_rate", "raw"]},
@@ -92,7 +100,7 @@ def _schema() -> dict[str, Any]:
         },
         # A grey-box with effects is stepped from its physical parameters, not its matrices.
         "if": {"required": ["effects"], "properties": {"effects": {"minItems": 1}}},
-        "then": {"properties": {"kind": {"const": "greybox"},
+        "then": {"properties": {"kind": _one_of(physical),
                                 "parameters": {
                                     "required": list(_GREYBOX),
                                     "properties": dict.fromkeys(_GREYBOX, _PARAMETER)}},
