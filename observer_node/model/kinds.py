@@ -13,7 +13,8 @@ What a model runs as does not depend on its kind: every model file becomes a lin
 
 from __future__ import annotations
 
-from collections.abc import Callable, Mapping
+from collections.abc import Callable, Iterator, Mapping
+from contextlib import contextmanager
 from dataclasses import dataclass
 from types import MappingProxyType
 from typing import TYPE_CHECKING, Any
@@ -65,6 +66,16 @@ def register_kind(kind: ModelKind) -> ModelKind:
         raise ValueError(f"model kind {kind.name!r} is registered already")
     _REGISTRY[kind.name] = kind
     return kind
+
+
+@contextmanager
+def registered_kind(kind: ModelKind) -> Iterator[ModelKind]:
+    """``kind`` registered for the duration of the block (tests, experiments)."""
+    register_kind(kind)
+    try:
+        yield kind
+    finally:
+        del _REGISTRY[kind.name]
 
 
 # ---------------------------------------------------------------------------- grey-box
