@@ -233,15 +233,6 @@ register(Effect(
     plant="belt/flesh stiffness k2 (1 + (e/20 mm)^2)"))
 
 
-register(Effect(
-    "belt_rate_damping", "physical",
-    "rate-dependent belt/flesh damping: F = cb3 e' |e'| on the sternum (e' = belt penetration "
-    "rate)",
-    (Param("cb3", "N s^2/m^2", 1e3, positive=True),),
-    force=lambda p, k, b: (k.zero, p["cb3"] * k.ed * abs(k.ed)),
-    c_code=lambda p, num, b: f"    fn += {num(p['cb3'])} * ed * fabs(ed);\n"))
-
-
 def _airbag(p: Mapping[str, Any], k: Kinematics, b: Mapping[str, float]) -> tuple[Num, Num]:
     ex = k.pos - k.x - p["gap"]
     f = np.maximum(p["kab"] * ex + p.get("cab", 0.0) * (k.u1 - k.xd), 0.0)
