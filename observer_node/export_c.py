@@ -3,11 +3,11 @@
 The generated ``chest_observer.c`` and ``chest_observer.h`` step exactly what the daemon's
 Python observer steps (:mod:`observer_node.model.observer`, :mod:`observer_node.model.nonlinear`):
 the input transform (integrated pulse and BRS rate, or raw inputs), the discrete state space,
-and for a grey-box with effects, every effect's force held over the tick (the fitted formula
-too), the slack-belt switch to the belt-free matrices, input delays and sensor offsets; and
-the daemon's core around it (:mod:`observer_node.daemon.core`: arming, bias, trigger,
-validity). Numbers are written with 17
-significant digits, so the C model is the model file's.
+and for a grey-box with effects, every effect's force held over the tick (its C code is in its
+definition, :mod:`observer_node.model.effects`; the fitted formula's too), the slack-belt
+switch to the belt-free matrices, input delays and sensor offsets; and the daemon's core around
+it (:mod:`observer_node.daemon.core`: arming, bias, trigger, validity). Numbers are written
+with 17 significant digits, so the C model is the model file's.
 
 The arithmetic type is ``co_real``: ``double`` unless compiled with ``-DCO_REAL=float``. No
 heap, no libm beyond ``fabs``, no state outside the caller's ``co_observer``.
