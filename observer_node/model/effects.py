@@ -146,7 +146,8 @@ def register(effect: Effect) -> Effect:
         raise ValueError(f"effect {effect.kind!r} acts as a force but has no formula")
     if effect.search.method in ("scale", "grid") and not effect.params:
         raise ValueError(f"effect {effect.kind!r}: nothing to search (no parameters)")
-    if effect.search.method in ("delay", "offset") and len(effect.params) != 2:
+    if (effect.acts in ("input_delay", "output_offset")
+            or effect.search.method in ("delay", "offset")) and len(effect.params) != 2:
         raise ValueError(f"effect {effect.kind!r}: a delay or offset has one parameter per "
                          "input or output (two)")
     if effect.search.method == "grid" and effect.param(effect.search.over) is None:

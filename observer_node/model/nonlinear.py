@@ -85,16 +85,12 @@ class NonlinearGreyBox:
         self._k2, self._c2, self._R = self.base["k2"], self.base["c2"], self.base["R"]
         slack = discrete({**self.base, "k2": 0.0, "c2": 0.0}, fs_hz)
         self.Ad_slack, self.Bd_slack, self.Gd_slack = slack[:3]
-        delay, self.delay_mask = self._params_of("input_delay")
-        # delays in ticks, possibly fractional: whole ticks i and the fraction f; the
-        # effect's parameters in the order pulse, BRS
-        n_pulse, n_brs = _param_names("input_delay", 2)
-        self.n_pulse = float(delay.get(n_pulse, 0.0))
-        self.n_brs = float(delay.get(n_brs, 0.0))
+        # delays in ticks, possibly fractional: whole ticks i and the fraction f
+        (self.n_pulse, self.n_brs), self.delay_mask = self._params_of("input_delay")
         self._ip, self._fp = _whole(self.n_pulse), self.n_pulse - _whole(self.n_pulse)
         self._ib, self._fb = _whole(self.n_brs), self.n_brs - _whole(self.n_brs)
         off, self.offset_mask = self._params_of("output_offset")
-        self.offset = np.array([off.get(n, 0.0) for n in _param_names("output_offset", 2)])
+        self.offset = np.array(off)
         self._dt_g = G0 / fs_hz
         self.x = np.zeros(6)
         self._xn = np.zeros(6)
@@ -112,12 +108,14 @@ class NonlinearGreyBox:
         """The discrete state matrix (as a linear observer's ``A``)."""
         return self.Ad
 
-    def _params_of(self, acts: str) -> tuple[dict[str, float], np.ndarray | None]:
-        """Parameters and mask of the effect that acts as ``acts`` (one at most)."""
+    def _params_of(self, acts: str) -> tuple[list[float], np.ndarray | None]:
+        """Parameter values (in their definition's order: pulse and BRS for a delay, CR and
+        CD for an offset; absent ones 0) and mask of the effect that acts as ``acts``."""
         for e, m in zip(self.effects, self.masks, strict=True):
-            if EFFECTS[e["kind"]].acts == acts:
-                return e["parameters"], m
-        return {}, None
+            spec = EFFECTS[e["kind"]]
+            if spec.acts == acts:
+                return [float(e["parameters"].get(p.name, 0.0)) for p in spec.params], m
+        return [0.0, 0.0], None
 
     # ------------------------------------------------------------------ per tick
     def reset(self) -> None:
@@ -270,14 +268,6 @@ def _force_of(kind: str) -> Force:
     force = EFFECTS[kind].force
     assert force is not None  # register() refuses a force without its formula
     return force
-
-
-def _param_names(acts: str, n: int) -> list[str]:
-    """The parameter names of the registered effect that acts as ``acts`` (in order), or
-    placeholders when none does (its parameters then default to 0)."""
-    e = next((e for e in EFFECTS.values() if e.acts == acts), None)
-    names = [p.name for p in e.params] if e is not None else []
-    return (names + [f"-{i}" for i in range(n)])[:n]
 
 
 def _whole(n_ticks: float) -> int:
