@@ -56,7 +56,7 @@ def _expected_structure(case: Case, report: dict, delays_ticks: dict[str, float]
                                                                for t in s["tests"]}}
     out = []
     for kind, scope in case.expect:
-        params = {n: typical for n, (_, typical) in EFFECTS[kind][1].items()}
+        params = dict(EFFECTS[kind].typical)
         if kind == "input_delay":
             params = {"n_pulse": delays_ticks.get("pulse", 0.0),
                       "n_brs": delays_ticks.get("brs", 0.0)}

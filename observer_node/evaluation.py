@@ -18,6 +18,7 @@ from .ident import arx, greybox, n4sid
 from .ident.dataset import Dataset, make_dataset
 from .ident.metrics import fit_table
 from .ident.progress import Progress
+from .model.kinds import MODEL_KINDS, N4SID_BLOCK_ROWS, IdentifyOptions
 from .model.modelfile import ModelFile
 from .scores import mean_abs_errors, scores
 
@@ -35,7 +36,6 @@ THESIS_TABLES = {
 }
 THESIS_TABLE_NO = {"R16": "4.1", "SLED": "4.2", "FULL": "4.3"}
 MODELS = ("ARX Nmax=10", "ARX Nmax=6", "SS N=16", "SS N=7", "Grey-Box")
-N4SID_BLOCK_ROWS = 24
 
 
 def split_halves(tests: list[CrashTest]) -> tuple[list[CrashTest], list[CrashTest]]:
@@ -53,21 +53,11 @@ def split_halves(tests: list[CrashTest]) -> tuple[list[CrashTest], list[CrashTes
 def identify(kind: str, data: Dataset, nmax: int = 6, order: int = 7,
              orders: arx.ArxOrders | None = None, m1_kg: float = greybox.DEFAULT_M1_KG,
              progress: Progress | None = None, name: str | None = None) -> ModelFile:
-    """Identify one model of ``kind`` (greybox, arx, n4sid) on ``data``."""
-    if kind == "greybox":
-        fit = greybox.fit_greybox(data, m1_kg=m1_kg, progress=progress)
-        return greybox.to_model_file(fit, data, name or "greybox")
-    if kind == "arx":
-        history: list[dict] = []
-        if orders is None:
-            orders, history = arx.search_orders(data, nmax, progress=progress)
-        m = arx.estimate_arx(data, orders)
-        m.fits = fit_table(data.names, data.y[:, data.win], m.simulate(data)[:, data.win])
-        return arx.to_model_file(m, data, name or f"arx-nmax{nmax}", nmax, history)
-    if kind == "n4sid":
-        ss = n4sid.n4sid(data, order, N4SID_BLOCK_ROWS)
-        return n4sid.to_model_file(ss, data, name or f"n4sid-{order}", N4SID_BLOCK_ROWS)
-    raise ValueError(f"unknown model kind {kind!r} (greybox, arx, n4sid)")
+    """Identify one model of ``kind`` (one of :data:`MODEL_KINDS`) on ``data``."""
+    if kind not in MODEL_KINDS:
+        raise ValueError(f"unknown model kind {kind!r} ({', '.join(MODEL_KINDS)})")
+    return MODEL_KINDS[kind].identify(data, IdentifyOptions(nmax, order, orders, m1_kg,
+                                                            progress, name))
 
 
 def simulate_model(mf: ModelFile, data: Dataset) -> np.ndarray:
@@ -161,9 +151,7 @@ def thesis_comparison(tests: list[CrashTest], out_dir: Path, rate_hz: float = 10
             entry["models"][label] = {
                 "validation": fits, "estimation_fit": mf.fits["fit"],
                 "model_file": f"models/{setup.lower()}-{slug}.json", "plots": pngs,
-                **({"parameters": mf.parameters} if spec["kind"] == "greybox" else {}),
-                **({"orders": {k: mf.structure[k] for k in ("NA", "NB", "NK")}}
-                   if spec["kind"] == "arx" else {}),
+                **MODEL_KINDS[mf.kind].summary(mf),
             }
         if setup in THESIS_TABLES:
             entry["thesis"] = {m: dict(zip(("cr", "cd", "total"), v, strict=False))

@@ -3,11 +3,11 @@
 The generated ``chest_observer.c`` and ``chest_observer.h`` step exactly what the daemon's
 Python observer steps (:mod:`observer_node.model.observer`, :mod:`observer_node.model.nonlinear`):
 the input transform (integrated pulse and BRS rate, or raw inputs), the discrete state space,
-and for a grey-box with effects, every effect's force held over the tick (the fitted formula
-too), the slack-belt switch to the belt-free matrices, input delays and sensor offsets; and
-the daemon's core around it (:mod:`observer_node.daemon.core`: arming, bias, trigger,
-validity). Numbers are written with 17
-significant digits, so the C model is the model file's.
+and for a grey-box with effects, every effect's force held over the tick (its C code is in its
+definition, :mod:`observer_node.model.effects`; the fitted formula's too), the slack-belt
+switch to the belt-free matrices, input delays and sensor offsets; and the daemon's core around
+it (:mod:`observer_node.daemon.core`: arming, bias, trigger, validity). Numbers are written
+with 17 significant digits, so the C model is the model file's.
 
 The arithmetic type is ``co_real``: ``double`` unless compiled with ``-DCO_REAL=float``. No
 heap, no libm beyond ``fabs``, no state outside the caller's ``co_observer``.
@@ -32,12 +32,11 @@ from .model.modelfile import ModelFile
 from .model.nonlinear import NonlinearGreyBox
 from .model.observer import LinearObserver
 
-SUPPORTED_EFFECTS = ("chest_stiffening", "chest_rate_damping", "belt_unloading",
-                     "belt_stiffening", "airbag_contact", "pelvis_coupling", "input_gain",
-                     "input_delay", "sensor_offset", "other")
-# The fitted formula's terms (observer_node.model.effects.other_term) in C
-OTHER_TERMS_C = {"d^2": "d * d", "d^3": "d * d * d", "d'|d'|": "dd * fabs(dd)", "e^2": "e * e",
-                 "e^3": "e * e * e", "e'|e'|": "ed * fabs(ed)", "d e": "d * e", "d d'": "d * dd"}
+
+def supported_effects() -> list[str]:
+    """The effects with a C form: every force with its C code, and the delays, offsets and
+    the belt switch, which the generator writes itself."""
+    return [k for k, e in EFFECTS.items() if e.acts != "force" or e.c_code is not None]
 
 
 class ExportError(ObserverError, ValueError):
@@ -434,41 +433,21 @@ def _linear(obs: LinearObserver) -> str:
 
 
 def _force(kind: str, p: dict, base: dict) -> str:
-    """C lines adding one effect's forces to fs (spine) and fn (sternum), as
-    :func:`observer_node.model.effects.effect_forces` computes them."""
-    k2, c2, R = (_num(base[n]) for n in ("k2", "c2", "R"))
-    if kind == "chest_stiffening":
-        return f"    {{ co_real f = {_num(p['k3'])} * d * d * d; fs += f; fn -= f; }}\n"
-    if kind == "chest_rate_damping":
-        return f"    {{ co_real f = {_num(p['c3'])} * dd * fabs(dd); fs += f; fn -= f; }}\n"
-    if kind == "belt_stiffening":
-        return f"    fn += {_num(p['kb3'])} * e * e * e;\n"
-    if kind == "airbag_contact":
-        return (f"    {{ co_real ex = pos - z[1] - {_num(p['gap'])};\n"
-                f"      co_real f = {_num(p['kab'])} * ex + {_num(p.get('cab', 0.0))} * "
-                "(u[0] - z[0]);\n"
-                "      if (f > 0 && ex > 0) fn += f; }\n")
-    if kind == "pelvis_coupling":
-        return f"    fs += {_num(p['kp'])} * (pos - z[1]) + {_num(p['cp'])} * (u[0] - z[0]);\n"
-    if kind == "input_gain":
-        return (f"    fn += {k2} * ({R} * {_num(p['g'])} * theta * theta / 2) + "
-                f"{c2} * ({R} * {_num(p['g'])} * theta * u[1]);\n")
-    if kind == "other":
-        def terms(where: str) -> str:
-            return " + ".join(f"{_num(c)} * ({OTHER_TERMS_C[n]})"
-                              for n, c in p.get(where, {}).items()) or "0"
-        return (f"    {{ co_real f_rib = {terms('rib')};\n"
-                f"      co_real f_belt = {terms('belt')};\n"
-                "      fs += f_rib; fn += -f_rib + f_belt; }\n")
-    raise ExportError(f"effect {kind!r} has no C form (supported: "
-                      f"{', '.join(SUPPORTED_EFFECTS)})")
+    """C lines adding one effect's forces to fs (spine) and fn (sternum), as its definition's
+    formula (:mod:`observer_node.model.effects`) computes them."""
+    code = EFFECTS[kind].c_code
+    if code is None:
+        raise ExportError(f"effect {kind!r} has no C form (supported: "
+                          f"{', '.join(supported_effects())})")
+    return code(p, _num, {n: _num(base[n]) for n in ("k2", "c2", "R")})
 
 
 def _nonlinear(obs: NonlinearGreyBox) -> tuple[str, int, int, int]:
+    supported = supported_effects()
     for e in obs.effects:
-        if e["kind"] not in SUPPORTED_EFFECTS:
+        if e["kind"] not in supported:
             raise ExportError(f"effect {e['kind']!r} has no C form (supported: "
-                              f"{', '.join(SUPPORTED_EFFECTS)}; in Python: "
+                              f"{', '.join(supported)}; in Python: "
                               f"{', '.join(EFFECTS)})")
     nx = obs.Ad.shape[0]
     slack = discrete({**obs.base, "k2": 0.0, "c2": 0.0}, obs.fs_hz) if obs.unloading else None

@@ -2,20 +2,10 @@
 
 A vehicle (or sled) pulse, a retractor with a pretensioner and a load limiter whose spindle
 angle the BRS counts, and the thesis's two-mass chest (eq. 3.1-3.8). Physical effects beyond
-the thesis model can be switched on, each with a scale (1.0 = the default magnitude below):
-
-=====================  ==================================================================
-``chest_stiffening``   rib stiffness k1 (1 + (d/20 mm)^2): cubic hardening of the chest
-``chest_rate_damping`` rib damping c1 (1 + |d'| / 1 m/s): rate-dependent viscera
-``belt_unloading``     the belt pulls, it never pushes (force clipped at zero)
-``belt_stiffening``    belt/flesh stiffness k2 (1 + (e/20 mm)^2)
-``airbag_contact``     50 kN/m, 600 N s/m on the sternum beyond 110 mm forward excursion
-``pelvis_coupling``    20 kN/m, 400 N s/m between the spine and the vehicle (lap belt, seat)
-``input_delay``        transport delay: the chest feels the pulse and belt 2 ms after the
-                       sensors record them
-``input_gain``         BRS gain grows 10 % per revolution paid out (webbing layers)
-``sensor_offset``      +1.5 mm on CD and +1 g on CR channels
-=====================  ==================================================================
+the thesis model can be switched on, each with a scale (1.0 = its default magnitude): those of
+the effect registry (:mod:`observer_node.model.effects`) that give a truth form (``plant``,
+listed in ``EFFECTS`` below). The forms themselves are written here, apart from the model's
+formulas, so that the loop is tested against a plant, not against itself.
 
 The simulation runs in two passes at 10 kHz with RK4: the first, closed loop, gives the
 spindle angle (pretensioner, then the load limiter paying out above its force); the second
@@ -36,19 +26,12 @@ import numpy as np
 
 from .data.crashtest import CrashTest
 from .data.filters import cfc_filter
+from .model.effects import EFFECTS as MODEL_EFFECTS
 from .units import STANDARD_GRAVITY
 
-EFFECTS = {
-    "chest_stiffening": "cubic hardening of the rib cage stiffness k1",
-    "chest_rate_damping": "rib cage damping growing with compression rate",
-    "belt_unloading": "one-sided belt contact: the belt pulls, never pushes",
-    "belt_stiffening": "belt/flesh stiffness k2 hardening with penetration",
-    "airbag_contact": "airbag force on the sternum beyond a forward-excursion gap",
-    "pelvis_coupling": "extra load path between the spine and the vehicle",
-    "input_delay": "the chest responds to the inputs later than they are recorded",
-    "input_gain": "BRS gain (m of belt per rad) changes with the webbing wound",
-    "sensor_offset": "constant offsets on the CR and CD channels",
-}
+# The effects the plant simulates, with their truth form at scale 1 (their ``plant`` in the
+# registry; the forms themselves are this module's, written apart from the model's formulas).
+EFFECTS = {k: e.plant for k, e in MODEL_EFFECTS.items() if e.plant is not None}
 
 FS_HZ = 10_000.0
 T0_S = -0.02

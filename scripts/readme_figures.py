@@ -79,10 +79,10 @@ def loop_table(tmp: Path) -> str:
     rows.append(f"| thesis grey-box | all | {_num(b['cr'])} | {_num(b['cd'])} | "
                 f"{_num(b['total'])} | {'' if cv0 is None else _num(cv0)} | | |")
     for e in r["effects"]:
-        units = EFFECTS[e["kind"]][1] if e["kind"] in EFFECTS else {}
+        units = EFFECTS[e["kind"]].units if e["kind"] in EFFECTS else {}
         se = e.get("std_err", {})
         params = ", ".join(f"{k} = {v:.3g}" + (f" ± {se[k]:.2g}" if k in se else "")
-                           + f" {units.get(k, ('',))[0]}".rstrip()
+                           + f" {units.get(k, '')}".rstrip()
                            for k, v in e["parameters"].items())
         f, ev = e["fit"], e["evidence"]
         ru = ev.get("runner_up")

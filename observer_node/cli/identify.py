@@ -12,7 +12,10 @@ def add_subparser(subparsers: argparse._SubParsersAction[argparse.ArgumentParser
     s = subparsers.add_parser(
         "identify", help="fit a grey-box, ARX or N4SID model to crash tests",
         description="Fit one model to crash tests and write its JSON model file.")
-    s.add_argument("--model", choices=("greybox", "arx", "n4sid"), required=True)
+    from ..model.kinds import MODEL_KINDS
+
+    s.add_argument("--model", choices=tuple(MODEL_KINDS), required=True,
+                   help="; ".join(f"{k}: {m.description}" for k, m in MODEL_KINDS.items()))
     _data.add_data_arguments(s, data="required")
     s.add_argument("--out", required=True, help="model file to write (JSON)")
     _data.add_rate_argument(s, " the model runs at")
@@ -43,11 +46,8 @@ def _do_identify(a: argparse.Namespace) -> int:
           f"({time.monotonic() - t0:.1f} s) -> {a.out}")
     print(f"fit on its estimation tests: CR {f['cr']:.1f} %  CD {f['cd']:.1f} %  "
           f"TOT {f['total']:.1f} %  (not a validation fit)")
-    if a.model == "greybox":
-        print("parameters (value ± standard error):")
-        for n, p in mf.parameters.items():
-            fixed = "  (fixed: mass scale)" if p["fixed"] else ""
-            print(f"  {n:<3} {p['value']:12.5g} ± {p['std_err']:<10.2g} {p['unit']}{fixed}")
-    elif a.model == "arx":
-        print(f"orders: NA={mf.structure['NA']} NB={mf.structure['NB']} NK={mf.structure['NK']}")
+    from ..model.kinds import MODEL_KINDS
+
+    for line in MODEL_KINDS[mf.kind].describe(mf):
+        print(line)
     return 0

@@ -9,8 +9,8 @@ from pathlib import Path
 from ..errors import UsageError
 from ..model.effects import EFFECTS as MODEL_EFFECTS
 
-# The simulator can switch on every effect the model library knows, bar the fitted formula.
-SIM_EFFECTS = tuple(k for k in MODEL_EFFECTS if k != "other")
+# The effects the simulator can switch on: those with a truth form in the registry.
+SIM_EFFECTS = tuple(k for k, e in MODEL_EFFECTS.items() if e.plant is not None)
 
 
 def add_subparser(subparsers: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:

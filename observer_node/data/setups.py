@@ -12,9 +12,10 @@ The rule, in order:
 3. A test with none of these keys (a CSV without a header) is grouped by its name prefix
    when the name has one, else it joins setup UNKNOWN.
 
-Placement: an effect that needs what a rig does not have is impossible there. Today that is the
-airbag, impossible where the metadata (title, type, comments) says hard seat, no interior or
-no airbag. ``loop --allow-anywhere`` lifts this.
+Placement: an effect that needs what a rig does not have is impossible there (its ``needs`` in
+:mod:`observer_node.model.effects`). Today that is the airbag, impossible where the metadata
+(title, type, comments) says hard seat, no interior or no airbag. ``loop --allow-anywhere``
+lifts this.
 """
 
 from __future__ import annotations
@@ -23,13 +24,10 @@ import fnmatch
 import re
 from dataclasses import dataclass, field
 
+from ..model.effects import EFFECTS
 from .crashtest import CrashDataError, CrashTest
 
 KEYS = ("Type of the test", "Title", "Name of test object 1")
-# Words in the metadata that rule an effect out, and why.
-NEEDS_INTERIOR = re.compile(r"HARD SEAT|RIGID SEAT|NO INTERIOR|WITHOUT INTERIOR|NO AIRBAG|"
-                            r"WITHOUT AIRBAG|AIRBAG DEACTIVATED", re.IGNORECASE)
-NEEDS = {"airbag_contact": (NEEDS_INTERIOR, "an airbag needs an interior with an airbag")}
 
 
 @dataclass
@@ -87,7 +85,9 @@ def assign_setups(tests: list[CrashTest], groups: list[tuple[str, str]] | None =
     for key, members in by_key.items():
         text = " ".join(" ".join(t.meta.get(k, "") for k in (*KEYS, "Comments"))
                         for t in members)
-        impossible = {kind: why for kind, (words, why) in NEEDS.items() if words.search(text)}
+        # words in the metadata that rule an effect out, and why (its definition's ``needs``)
+        impossible = {kind: e.needs[1] for kind, e in EFFECTS.items()
+                      if e.needs is not None and e.needs[0].search(text)}
         for t in members:
             t.setup = names[key]
         out.append(Setup(names[key], [t.name for t in members], how[key], text, impossible))

@@ -21,7 +21,7 @@ from scipy import optimize
 
 from ..ident.dataset import Dataset
 from ..ident.greybox import FREE
-from ..model.effects import EFFECTS, OTHER_TERMS, POSITIVE, effect_forces, other_term
+from ..model.effects import EFFECTS, OTHER_TERMS, effect_forces, other_term
 from ..model.nonlinear import NonlinearGreyBox
 from ..model.observer import transform_inputs
 
@@ -201,8 +201,8 @@ def candidates(model: NonlinearGreyBox, data: Dataset, present: set[str],
         return propagate(model, np.asarray(fs, float), np.asarray(fn, float))
 
     scorer = _Scorer(model, data, r, w, sens, y_hat)
-    for kind in EFFECTS:
-        if kind in present or kind == "other":
+    for kind, effect in EFFECTS.items():
+        if kind in present or effect.search.method == "sparse":
             continue
         tried: list[Candidate] = []
         for scope in (scopes or {}).get(kind, [None]):
@@ -222,18 +222,22 @@ def candidates(model: NonlinearGreyBox, data: Dataset, present: set[str],
                                       c.explained))
             best.scope_shares = {scope_label(c.setups): round(c.explained, 4) for c in tried}
             out.append(best)
-    if "other" not in present:
-        out.append(_sparse_other(model, data, r, w, tr))
+    out += [_sparse_other(kind, model, data, r, w, tr) for kind, e in EFFECTS.items()
+            if e.search.method == "sparse" and kind not in present]
     return sorted(out, key=lambda c: -c.explained)
 
 
 def _candidate(kind: str, scope: list[str] | None, mask: np.ndarray, scorer: _Scorer,
                data: Dataset, regress: Callable[[list[np.ndarray]], tuple[np.ndarray, float]],
                force_sig: Callable[[str, dict], np.ndarray]) -> Candidate | None:
-    """One effect on one scope: its initial parameters and the share it explains."""
-    unit = {n: mag for n, (_, mag) in EFFECTS[kind][1].items()}
+    """One effect on one scope: its initial parameters and the share it explains, searched
+    as its definition says (:class:`observer_node.model.effects.Search`)."""
+    effect = EFFECTS[kind]
+    unit = effect.typical
+    names = list(unit)
+    method = effect.search.method
     m3 = mask[:, None, None]
-    if kind == "sensor_offset":
+    if method == "offset":
         n = data.y.shape[1]
         s_cr = np.zeros((data.n_tests, n, 2))
         s_cr[:, :, 0] = 1.0
@@ -247,41 +251,46 @@ def _candidate(kind: str, scope: list[str] | None, mask: np.ndarray, scorer: _Sc
         span = np.ptp(data.y[mask][:, data.win], axis=1).mean(axis=0)
         if not np.any(np.abs(rest) > 0.01 * span):
             return None
-        return Candidate(kind, ex, {"cr_g": float(rest[0]), "cd_mm": float(rest[1])},
+        return Candidate(kind, ex, {names[0]: float(rest[0]), names[1]: float(rest[1])},
                          setups=scope)
-    if kind == "input_delay":
-        ex, p, sig = _search_delay(scorer, data.fs_hz, scope)
+    if method == "delay":
+        ex, p, sig = _search_delay(scorer, kind, data.fs_hz, scope)
         return Candidate(kind, ex, p, sig, setups=scope)
-    if kind == "belt_unloading":
+    if method == "switch":
         ex, sig = scorer.share(kind, {}, scope)
         return Candidate(kind, ex, {}, sig, setups=scope)
-    # Start from the linearised regression (its size, and for the airbag its gap), then let a
-    # short non-linear fit of the effect's own parameters finish.
-    if kind == "airbag_contact":
-        start, best_ex = {"kab": unit["kab"], "gap": 0.1}, -np.inf
-        for gap in (0.04, 0.07, 0.1, 0.13, 0.16, 0.2, 0.25):
-            coef, ex = regress([force_sig(kind, {**unit, "gap": gap}) * m3])
+    # Start from the linearised regression (its size, and on a grid the value of the
+    # parameter searched, an airbag's gap), then let a short non-linear fit of the effect's
+    # own parameters finish.
+    if method == "grid":
+        over = effect.search.over
+        start, best_ex = dict(unit), -np.inf
+        for v in effect.search.grid:
+            coef, ex = regress([force_sig(kind, {**unit, over: v}) * m3])
             if ex > best_ex:
-                best_ex, start = ex, {"kab": abs(coef[0]) * unit["kab"], "gap": gap,
-                                      "cab": abs(coef[0]) * unit["cab"]}
+                best_ex, start = ex, {n: v if n == over else abs(coef[0]) * mag
+                                      for n, mag in unit.items()}
     else:
         coef, _ = regress([force_sig(kind, unit) * m3])
-        c = coef[0] if kind == "input_gain" else max(abs(coef[0]), 0.1)
+        signed = not all(p.positive for p in effect.params)
+        c = coef[0] if signed else max(abs(coef[0]), 0.1)
         start = {n: float(c * mag) for n, mag in unit.items()}
     ex, p, sig = scorer.fit(kind, start, scope)
     return Candidate(kind, ex, p, sig, setups=scope)
 
 
-def _search_delay(scorer: _Scorer, fs_hz: float, scope: list[str] | None
+def _search_delay(scorer: _Scorer, kind: str, fs_hz: float, scope: list[str] | None
                   ) -> tuple[float, dict, np.ndarray]:
     """The input delays (fractional ticks) that explain most: each input alone on a grid
     over 0..10 ms, then the other input given the better one, each refined around its best
-    by golden-section search."""
+    by golden-section search. The effect's parameters are the delays of the pulse and the
+    BRS, in that order."""
+    n_pulse, n_brs = (p.name for p in EFFECTS[kind].params)
     grid = np.arange(0.0, DELAY_MAX_S + 1e-12, DELAY_STEP_S) * fs_hz
     h = DELAY_STEP_S * fs_hz
 
     def share(p: dict) -> float:
-        return scorer.share("input_delay", p, scope)[0]
+        return scorer.share(kind, p, scope)[0]
 
     def best_along(which: str, fixed: dict) -> tuple[float, dict]:
         vals = [share({**fixed, which: n}) for n in grid]
@@ -292,13 +301,13 @@ def _search_delay(scorer: _Scorer, fs_hz: float, scope: list[str] | None
         n = float(res.x) if -res.fun > max(vals) else n0
         return max(-float(res.fun), max(vals)), {**fixed, which: round(n, 3)}
 
-    zero = {"n_pulse": 0.0, "n_brs": 0.0}
-    ex_p, p_p = best_along("n_pulse", zero)
-    ex_b, p_b = best_along("n_brs", zero)
-    first, other, ex1 = (p_p, "n_brs", ex_p) if ex_p >= ex_b else (p_b, "n_pulse", ex_b)
+    zero = {n_pulse: 0.0, n_brs: 0.0}
+    ex_p, p_p = best_along(n_pulse, zero)
+    ex_b, p_b = best_along(n_brs, zero)
+    first, other, ex1 = (p_p, n_brs, ex_p) if ex_p >= ex_b else (p_b, n_pulse, ex_b)
     ex2, both = best_along(other, first)
     p = both if ex2 > ex1 + 0.002 else first
-    ex, sig = scorer.share("input_delay", p, scope)
+    ex, sig = scorer.share(kind, p, scope)
     return ex, p, sig
 
 
@@ -335,8 +344,9 @@ class _Scorer:
             max_nfev: int = 12) -> tuple[float, dict, np.ndarray]:
         """Least squares over the effect's parameters (positive ones as logarithms)."""
         names = list(start)
-        pos = [n in POSITIVE for n in names]
-        scale = [abs(start[n]) or EFFECTS[kind][1][n][1] for n in names]
+        effect = EFFECTS[kind]
+        pos = [effect.positive(n) for n in names]
+        scale = [abs(start[n]) or effect.typical[n] for n in names]
 
         def unpack(th: np.ndarray) -> dict[str, float]:
             return {n: float(sc * (np.exp(t) if ps else t))
@@ -351,8 +361,8 @@ class _Scorer:
         return ex, p, sig
 
 
-def _sparse_other(model: NonlinearGreyBox, data: Dataset, r: np.ndarray, w: np.ndarray,
-                  tr: Trajectory) -> Candidate:
+def _sparse_other(kind: str, model: NonlinearGreyBox, data: Dataset, r: np.ndarray,
+                  w: np.ndarray, tr: Trajectory) -> Candidate:
     """Sequentially thresholded least squares over polynomial force terms (SINDy-style)."""
     xd, x, sd, s, wst, _p = tr.z
     d, dd = s - x, sd - xd
@@ -382,4 +392,4 @@ def _sparse_other(model: NonlinearGreyBox, data: Dataset, r: np.ndarray, w: np.n
     for i, ci in zip(active, c, strict=True):
         where, term, scale = names[i]
         params[where][term] = float(ci * scale)
-    return Candidate("other", ex, params)
+    return Candidate(kind, ex, params)

@@ -43,7 +43,7 @@ from ..model.chest import (
     discrete,
     model_matrices,
 )
-from ..model.effects import EFFECTS, FORCE_KINDS, POSITIVE, describe
+from ..model.effects import EFFECTS, describe
 from ..model.modelfile import ModelFile
 from ..scores import mean_abs_errors, scores
 from .analysis import (
@@ -159,8 +159,8 @@ def _run(est_tests: list[CrashTest], val_tests: list[CrashTest], out: Path, rate
         named = [c for c in ranked if c.kind != "other" and c.explained > 0.01][:top_k]
         # A parameter-free switching force (the one-sided belt) is predicted badly by its
         # signature linearised around a trajectory that never switches: always try it.
-        named += [c for c in ranked if not c.parameters and c.kind in FORCE_KINDS
-                  and c.kind != "other" and c not in named]
+        named += [c for c in ranked if not c.parameters
+                  and EFFECTS[c.kind].search.method == "switch" and c not in named]
         other = [c for c in ranked if c.kind == "other" and c.explained > 0.01]
         tried: list[tuple[float, Candidate, Evidence]] = []
         per_test: dict[int, dict[str, float]] = {}
@@ -422,13 +422,14 @@ def parameter_warnings(kind: str, params: dict, std_err: dict[str, float],
     value at the edge of what was searched, a physically negligible or absurd size, or one the
     data do not determine (standard error above the value)."""
     out = []
-    spec = EFFECTS[kind][1]
+    spec = EFFECTS[kind]
     for name, v in params.items():
         if not isinstance(v, float | int):
             continue
-        unit, typical = spec.get(name, ("", 0.0))
+        p = spec.param(name)
+        unit, typical = (p.unit, p.typical) if p is not None else ("", 0.0)
         se = std_err.get(name)
-        if name in ("n_pulse", "n_brs"):
+        if spec.acts == "input_delay":
             ms = 1000.0 * v / rate_hz
             if ms >= 1000.0 * DELAY_MAX_S - 0.05:
                 out.append(f"{name} = {ms:.2f} ms is at the searched bound "
@@ -436,7 +437,7 @@ def parameter_warnings(kind: str, params: dict, std_err: dict[str, float],
             continue
         if name == "gap" and not 0.005 <= v <= 0.4:
             out.append(f"gap = {v:.3g} m is not a plausible airbag distance (5..400 mm)")
-        elif name in POSITIVE and typical and abs(v) < 1e-3 * typical:
+        elif spec.positive(name) and typical and abs(v) < 1e-3 * typical:
             out.append(f"{name} = {v:.3g} {unit} is physically nothing (typical {typical:g})")
         elif typical and abs(v) > 1e3 * typical:
             out.append(f"{name} = {v:.3g} {unit} is over 1000 times a typical {typical:g}")
@@ -460,10 +461,11 @@ def _signature_shares(c: Candidate, effects: list[dict], base: dict[str, float],
     """How much of the residual the candidate's signature explains before and after the
     refit, each along its own model's trajectory (would more of the effect still help?).
     Effects that are not forces (delay, offset) are judged by the input correlation alone."""
-    if c.kind not in FORCE_KINDS or c.kind == "other":
+    effect = EFFECTS[c.kind]
+    if effect.force is None or effect.search.method == "sparse":
         return 1.0, 0.0
     params = new_effects[-1]["parameters"]
-    if c.kind == "belt_unloading":
+    if effect.acts == "belt_slack":
         params = {}
     elif not any(params.values()):
         return 1.0, 0.0

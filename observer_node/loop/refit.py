@@ -14,7 +14,7 @@ from scipy import optimize
 from ..ident.dataset import Dataset
 from ..ident.greybox import FREE, STARTS
 from ..ident.metrics import fit_table
-from ..model.effects import EFFECTS, POSITIVE
+from ..model.effects import EFFECTS
 from ..model.nonlinear import NonlinearGreyBox
 from .analysis import weights
 
@@ -35,17 +35,18 @@ class Refit:
     effect_std_err: list[dict[str, float]]
 
 
-def _layout(effects: list[dict]) -> list[tuple[int, str, float]]:
-    """(effect index, parameter, scale) of every fitted effect parameter."""
+def _layout(effects: list[dict]) -> list[tuple[int, str, float, bool]]:
+    """(effect index, parameter, scale, positive) of every fitted effect parameter."""
     out = []
     for i, e in enumerate(effects):
-        if e["kind"] == "other":
+        effect = EFFECTS[e["kind"]]
+        if effect.search.method == "sparse":  # the formula: its terms' coefficients
             for where in ("rib", "belt"):
                 for term, v in e["parameters"].get(where, {}).items():
-                    out.append((i, f"{where}:{term}", max(abs(v), 1e-12)))
+                    out.append((i, f"{where}:{term}", max(abs(v), 1e-12), False))
             continue
         # every named parameter is fitted (delays too: fractional ticks)
-        out += [(i, name, mag) for name, (_, mag) in EFFECTS[e["kind"]][1].items()]
+        out += [(i, p.name, p.typical, p.positive) for p in effect.params]
     return out
 
 
@@ -96,8 +97,8 @@ def refit_from(base: dict, effects: list[dict], data: Dataset, max_nfev: int = 6
     def unpack(theta: np.ndarray) -> tuple[dict, list[dict]]:
         b = dict(zip(FREE, np.exp(theta[:len(FREE)]), strict=False))
         b["m1"] = m1
-        for (i, name, scale), v in zip(layout, theta[len(FREE):], strict=True):
-            _set(effects, i, name, abs(v * scale) if name in POSITIVE else v * scale)
+        for (i, name, scale, positive), v in zip(layout, theta[len(FREE):], strict=True):
+            _set(effects, i, name, abs(v * scale) if positive else v * scale)
         return b, effects
 
     def residual(theta: np.ndarray) -> np.ndarray:
@@ -109,13 +110,13 @@ def refit_from(base: dict, effects: list[dict], data: Dataset, max_nfev: int = 6
         return np.where(np.isfinite(r) & (np.abs(r) < 1e3), r, 1e3)
 
     theta0 = np.concatenate([np.log([base[n] for n in FREE]),
-                             [_get(effects, i, n) / s for i, n, s in layout]])
+                             [_get(effects, i, n) / s for i, n, s, _ in layout]])
     res = optimize.least_squares(residual, theta0, method="trf", max_nfev=max_nfev)
     b, eff = unpack(res.x)
     se = _std_errors(res.jac, res.fun)
     base_se = {n: float(b[n] * s) for n, s in zip(FREE, se[:len(FREE)], strict=True)}
     eff_se: list[dict[str, float]] = [{} for _ in eff]
-    for (i, name, scale), s in zip(layout, se[len(FREE):], strict=True):
+    for (i, name, scale, _), s in zip(layout, se[len(FREE):], strict=True):
         eff_se[i][name] = float(scale * s)
     return Refit(b, [_copy_effect(e) for e in eff], float(2 * res.cost), base_se, eff_se)
 

@@ -32,15 +32,15 @@ import numpy as np
 
 from .. import __version__
 from ..errors import ObserverError
-from . import chest
 from .effects import EFFECTS
+from .kinds import MODEL_KINDS
 from .nonlinear import NonlinearGreyBox, applies
 from .observer import LinearObserver
 from .schema import MAX_BYTES, validate
 
 FORMAT = "chest-observer-model"
 FORMAT_VERSION = 1
-KINDS = ("greybox", "arx", "n4sid")
+KINDS = tuple(MODEL_KINDS)  # the kinds registered in .kinds
 
 INPUTS = [
     {"name": "pulse", "unit": "g",
@@ -77,6 +77,11 @@ class ModelFile:
     # grey-box: "after_input" (the output of the state after the tick's inputs, this version)
     # or "state" (C x[k], files without the key); ARX and N4SID: their matrices say it all
     output_timing: str = "after_input"
+
+    def physical(self) -> bool:
+        """A physical grey-box (stepped from its parameters: may carry effects)."""
+        kind = MODEL_KINDS.get(self.kind)
+        return kind is not None and kind.physical
 
     def setups(self) -> list[str]:
         """The setups some effect is scoped to (empty: every effect acts on every setup)."""
@@ -124,7 +129,7 @@ class ModelFile:
             "parameters": self.parameters, "structure": self.structure,
             "fitted_on": self.fitted_on, "fits": self.fits,
             **({"effects": self.effects} if self.effects else {}),
-            **({"output_timing": self.output_timing} if self.kind == "greybox" else {}),
+            **({"output_timing": self.output_timing} if self.physical() else {}),
         }
 
     def dumps(self) -> str:
@@ -173,18 +178,20 @@ class ModelFile:
             raise ModelFileError(f"{where}: missing key {e.args[0]!r}") from None
         except (TypeError, ValueError) as e:
             raise ModelFileError(f"{where}: key 'state_space': {e}") from None
-        if mf.effects and mf.kind != "greybox":
+        if mf.effects and not mf.physical():
             raise ModelFileError(f"{where}: key 'effects' is only for grey-box models")
         for i, effect in enumerate(mf.effects):
             if effect.get("kind") not in EFFECTS:
                 raise ModelFileError(f"{where}: key 'effects[{i}].kind' {effect.get('kind')!r} "
                                      f"is not one of {sorted(EFFECTS)}")
-        if mf.kind not in KINDS:
-            raise ModelFileError(f"{where}: key 'kind' {mf.kind!r} not one of {KINDS}")
+        if mf.kind not in MODEL_KINDS:
+            raise ModelFileError(f"{where}: key 'kind' {mf.kind!r} not one of "
+                                 f"{tuple(MODEL_KINDS)}")
         for k, m in (("A", mf.A), ("B", mf.B), ("C", mf.C), ("D", mf.D)):
             if not np.all(np.isfinite(m)):
                 raise ModelFileError(f"{where}: key 'state_space.{k}' has non-finite values")
-        said = _greybox_disagrees(mf)
+        check = MODEL_KINDS[mf.kind].check
+        said = check(mf) if check is not None else None
         if said is not None:
             raise ModelFileError(f"{where}: {said}")
         try:  # (a scoped model's matrices are the same for every setup)
@@ -194,8 +201,7 @@ class ModelFile:
             raise ModelFileError(f"{where}: key '{key}': {e}") from None
         # Stable or marginally so (the grey-box's belt position integrates): a growing mode
         # would saturate the estimate within a crash.
-        A = obs.Ad if isinstance(obs, NonlinearGreyBox) else obs.A
-        radius = float(np.max(np.abs(np.linalg.eigvals(A))))
+        radius = float(np.max(np.abs(np.linalg.eigvals(obs.A))))
         if not radius <= 1.0 + 1e-9:
             key = "parameters" if mf.effects else "state_space.A"
             raise ModelFileError(f"{where}: key '{key}': the model is unstable (spectral radius "
@@ -230,29 +236,3 @@ class ModelFile:
         except RecursionError:
             raise ModelFileError(f"{path}: nested too deeply to be a model file") from None
         return cls.from_dict(d, str(path))
-
-
-def _greybox_disagrees(mf: ModelFile) -> str | None:
-    """None unless ``mf`` is a grey-box whose matrices are not its parameters' (rel. 1e-9)."""
-    if mf.kind != "greybox":
-        return None
-    try:
-        p = {n: float(mf.parameters[n]["value"]) for n in chest.PARAM_NAMES}
-    except (KeyError, TypeError, ValueError):
-        if mf.effects:
-            return "key 'parameters': a grey-box with effects needs k1 c1 k2 c2 m1 m2 R values"
-        return None  # a grey-box given by its matrices alone: they are the model
-    if not all(np.isfinite(v) and v >= 0.0 for v in p.values()) or p["m1"] <= 0 or p["m2"] <= 0:
-        return "key 'parameters': grey-box values must be finite, masses positive, others >= 0"
-    Ad, Bd, C, D = chest.model_matrices(p, mf.tick_rate_hz, bool(mf.effects),
-                                        mf.output_timing == "after_input")
-    for key, stored, expected in (("A", mf.A, Ad), ("B", mf.B, Bd), ("C", mf.C, C), ("D", mf.D, D)):
-        if stored.shape != expected.shape:
-            return (f"key 'state_space.{key}': shape {stored.shape} is not the grey-box's "
-                    f"{expected.shape}")
-        tol = 1e-9 * max(float(np.max(np.abs(expected))), 1.0)
-        worst = float(np.max(np.abs(stored - expected)))
-        if worst > tol:
-            return (f"key 'state_space.{key}' disagrees with 'parameters' discretised at "
-                    f"{mf.tick_rate_hz:g} Hz (largest difference {worst:.3g})")
-    return None

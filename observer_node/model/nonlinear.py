@@ -31,7 +31,7 @@ import numpy as np
 
 from ..units import STANDARD_GRAVITY
 from .chest import discrete
-from .effects import FORCE_KINDS, Num, effect_forces
+from .effects import EFFECTS, Force, Num, kinematics
 from .observer import transform_inputs
 
 G0 = STANDARD_GRAVITY
@@ -71,23 +71,26 @@ class NonlinearGreyBox:
         self.masks = [None if setups is None or "setups" not in e else
                       np.array([applies(e, s) for s in setups]) for e in self.effects]
         self.Ad, self.Bd, self.Gd, self.C, self.Df = discrete(self.base, fs_hz)
+        # how each effect acts is its definition's (model.effects): held forces, the belt
+        # switch, input delays, output offsets
+        acts = [EFFECTS[e["kind"]].acts for e in self.effects]
         self.force_effects = [(e["kind"], e.get("parameters", {}), m)
-                              for e, m in zip(self.effects, self.masks, strict=True)
-                              if e["kind"] in FORCE_KINDS and e["kind"] != "belt_unloading"]
-        self.unloading = any(e["kind"] == "belt_unloading" for e in self.effects)
-        self.unloading_mask = next((m for e, m in zip(self.effects, self.masks, strict=True)
-                                    if e["kind"] == "belt_unloading"), None)
+                              for e, m, a in zip(self.effects, self.masks, acts, strict=True)
+                              if a == "force"]
+        self._force_fns: list[tuple[Force, dict, np.ndarray | None]] = [
+            (_force_of(kind), p, m) for kind, p, m in self.force_effects]
+        self.unloading = "belt_slack" in acts
+        self.unloading_mask = next((m for m, a in zip(self.masks, acts, strict=True)
+                                    if a == "belt_slack"), None)
         self._k2, self._c2, self._R = self.base["k2"], self.base["c2"], self.base["R"]
         slack = discrete({**self.base, "k2": 0.0, "c2": 0.0}, fs_hz)
         self.Ad_slack, self.Bd_slack, self.Gd_slack = slack[:3]
-        delay, self.delay_mask = self._params_of("input_delay")
         # delays in ticks, possibly fractional: whole ticks i and the fraction f
-        self.n_pulse = float(delay.get("n_pulse", 0.0))
-        self.n_brs = float(delay.get("n_brs", 0.0))
+        (self.n_pulse, self.n_brs), self.delay_mask = self._params_of("input_delay")
         self._ip, self._fp = _whole(self.n_pulse), self.n_pulse - _whole(self.n_pulse)
         self._ib, self._fb = _whole(self.n_brs), self.n_brs - _whole(self.n_brs)
-        off, self.offset_mask = self._params_of("sensor_offset")
-        self.offset = np.array([off.get("cr_g", 0.0), off.get("cd_mm", 0.0)])
+        off, self.offset_mask = self._params_of("output_offset")
+        self.offset = np.array(off)
         self._dt_g = G0 / fs_hz
         self.x = np.zeros(6)
         self._xn = np.zeros(6)
@@ -100,11 +103,19 @@ class NonlinearGreyBox:
         self._brs_ring = np.zeros(self._ib + 2)
         self.reset()
 
-    def _params_of(self, kind: str) -> tuple[dict[str, float], np.ndarray | None]:
+    @property
+    def A(self) -> np.ndarray:
+        """The discrete state matrix (as a linear observer's ``A``)."""
+        return self.Ad
+
+    def _params_of(self, acts: str) -> tuple[list[float], np.ndarray | None]:
+        """Parameter values (in their definition's order: pulse and BRS for a delay, CR and
+        CD for an offset; absent ones 0) and mask of the effect that acts as ``acts``."""
         for e, m in zip(self.effects, self.masks, strict=True):
-            if e["kind"] == kind:
-                return e["parameters"], m
-        return {}, None
+            spec = EFFECTS[e["kind"]]
+            if spec.acts == acts:
+                return [float(e["parameters"].get(p.name, 0.0)) for p in spec.params], m
+        return [0.0, 0.0], None
 
     # ------------------------------------------------------------------ per tick
     def reset(self) -> None:
@@ -174,8 +185,11 @@ class NonlinearGreyBox:
 
     def _forces(self, z: np.ndarray, u1: float, u2: float, theta: float, f: np.ndarray) -> None:
         f[0] = f[1] = 0.0
-        for kind, p, _ in self.force_effects:
-            fs, fn = effect_forces(kind, p, z, u1, u2, theta, self.base)
+        if not self._force_fns:
+            return
+        k = kinematics(z, u1, u2, theta, self.base)
+        for force, p, _ in self._force_fns:
+            fs, fn = force(p, k, self.base)
             f[0] += fs
             f[1] += fn
 
@@ -233,8 +247,11 @@ class NonlinearGreyBox:
         """Forces (2, tests) of the effects at states z (6, tests), scoped by their masks."""
         fs = np.zeros(a.shape[0])
         fn = np.zeros(a.shape[0])
-        for kind, p, mask in self.force_effects:
-            s1, s2 = effect_forces(kind, p, z, a, b, th, self.base)
+        if not self._force_fns:
+            return np.vstack([fs, fn])
+        k = kinematics(z, a, b, th, self.base)
+        for force, p, mask in self._force_fns:
+            s1, s2 = force(p, k, self.base)
             if mask is not None:
                 s1, s2 = s1 * mask, s2 * mask
             fs = fs + s1
@@ -245,6 +262,12 @@ class NonlinearGreyBox:
         if self.test_setups is not None and len(self.test_setups) != ntest:
             raise ScopeError(f"{ntest} tests simulated, setups given for "
                              f"{len(self.test_setups)}")
+
+
+def _force_of(kind: str) -> Force:
+    force = EFFECTS[kind].force
+    assert force is not None  # register() refuses a force without its formula
+    return force
 
 
 def _whole(n_ticks: float) -> int:

@@ -1,17 +1,18 @@
 """The model file's JSON schema, checked with ``jsonschema`` before anything is built from it.
 
-The schema bounds what a daemon may be handed: the kinds; the tick rate (finite, and one the
-DBC provides for: 100 Hz to 10 kHz, the top rates as InputBurst frames); matrix shapes (at
-most ``MAX_STATES`` states, two inputs, two outputs); every effect with the parameters its
-formula needs; finite numbers only (NaN and Infinity are refused by the reader before the
-schema sees them). Stability is checked after, on the matrices themselves
-(:meth:`observer_node.model.modelfile.ModelFile.from_dict`)."""
+The schema bounds what a daemon may be handed: the model kinds (:mod:`.kinds`); the tick rate
+(finite, and one the DBC provides for: 100 Hz to 10 kHz, the top rates as InputBurst frames);
+matrix shapes (at most ``MAX_STATES`` states, two inputs, two outputs); every effect with the
+parameters its definition (:mod:`.effects`) requires; finite numbers only (NaN and Infinity
+are refused by the reader before the schema sees them). Stability is checked after, on the
+matrices themselves (:meth:`observer_node.model.modelfile.ModelFile.from_dict`)."""
 
 from __future__ import annotations
 
 from typing import Any
 
-from .effects import EFFECTS
+from .effects import EFFECTS, Effect, registry_version
+from .kinds import MODEL_KINDS
 
 MAX_STATES = 64
 MAX_BYTES = 4 << 20  # a model file is kilobytes; more is not a model
@@ -30,75 +31,88 @@ def _matrix(rows: int | None, cols: int | None) -> dict[str, Any]:
     return m
 
 
-# Parameters an effect's formula cannot do without (others default to 0).
-_REQUIRED = {"chest_stiffening": ["k3"], "chest_rate_damping": ["c3"],
-             "belt_stiffening": ["kb3"], "airbag_contact": ["kab", "gap"],
-             "pelvis_coupling": ["kp", "cp"], "input_gain": ["g"]}
-_DELAY_TICKS = {"type": "number", "minimum": 0, "maximum": 1000}
-
-
-def _effect(kind: str) -> dict[str, Any]:
-    params: dict[str, Any] = {"type": "object"}
-    if kind == "other":
-        terms = {"type": "object", "additionalProperties": _NUMBER}
-        params["properties"] = {"rib": terms, "belt": terms}
-    elif kind == "input_delay":
-        params["properties"] = {"n_pulse": _DELAY_TICKS, "n_brs": _DELAY_TICKS}
-    else:
-        params["properties"] = {p: _NUMBER for p in EFFECTS[kind][1]}
-        params["required"] = _REQUIRED.get(kind, [])
-    return {"if": {"properties": {"kind": {"const": kind}}},
+def _effect(e: Effect) -> dict[str, Any]:
+    """The ``if kind then parameters`` clause of one effect, from its definition."""
+    params: dict[str, Any] = dict(e.parameters_schema or {"type": "object"})
+    required = [p.name for p in e.params if p.required]
+    if e.parameters_schema is None:
+        params["properties"] = {
+            p.name: _NUMBER if p.bounds is None else
+            {"type": "number", "minimum": p.bounds[0], "maximum": p.bounds[1]}
+            for p in e.params}
+        params["required"] = required
+    return {"if": {"properties": {"kind": {"const": e.kind}}},
             "then": {"properties": {"parameters": params},
-                     **({"required": ["parameters"]} if _REQUIRED.get(kind) else {})}}
+                     **({"required": ["parameters"]} if required else {})}}
 
 
 _GREYBOX = ("k1", "c1", "k2", "c2", "m1", "m2", "R")
 _PARAMETER = {"type": "object", "required": ["value"],
               "properties": {"value": _NUMBER, "std_err": {"type": ["number", "null"]}}}
 
-SCHEMA: dict[str, Any] = {
-    "$schema": "https://json-schema.org/draft/2020-12/schema",
-    "title": "chest-observer model file",
-    "type": "object",
-    "required": ["format", "format_version", "kind", "tick_rate_hz", "input_transform",
-                 "state_space"],
-    "properties": {
-        "format": {"const": "chest-observer-model"},
-        "format_version": {"const": 1},
-        "kind": {"enum": ["greybox", "arx", "n4sid"]},
-        "name": {"type": "string", "maxLength": 200},
-        "tick_rate_hz": {"type": "number", "minimum": 100, "maximum": 10_000},
-        "input_transform": {"enum": ["velocity_brs_rate", "raw"]},
-        "output_timing": {"enum": ["after_input", "state"]},
-        "state_space": {
-            "type": "object", "required": ["A", "B", "C", "D"],
-            "properties": {"A": _matrix(None, None), "B": _matrix(None, 2),
-                           "C": _matrix(2, None), "D": _matrix(2, 2)}},
-        "parameters": {"type": "object"},  # kind-specific; the grey-box's checked below
-        "effects": {
-            "type": "array", "maxItems": 32,
-            "items": {"type": "object", "required": ["kind"],
-                      "properties": {
-                          "kind": {"enum": sorted(EFFECTS)},
-                          # scope: the setups the effect acts on (absent: all)
-                          "setups": {"type": "array", "minItems": 1, "uniqueItems": True,
-                                     "items": {"type": "string", "minLength": 1}}},
-                      "allOf": [_effect(k) for k in EFFECTS]}},
-    },
-    # A grey-box with effects is stepped from its physical parameters, not its matrices.
-    "if": {"required": ["effects"], "properties": {"effects": {"minItems": 1}}},
-    "then": {"properties": {"kind": {"const": "greybox"},
-                            "parameters": {"required": list(_GREYBOX),
-                                           "properties": dict.fromkeys(_GREYBOX, _PARAMETER)}},
-             "required": ["parameters"]},
-}
+
+def schema() -> dict[str, Any]:
+    """The schema of the effects and model kinds registered now (built again when they
+    change)."""
+    version = (registry_version(), tuple(MODEL_KINDS))
+    if _cache[0] != version:
+        _cache[:] = [version, _schema()]
+    return _cache[1]
+
+
+_cache: list[Any] = [None, None]
+
+
+def _one_of(values: list[str]) -> dict[str, Any]:
+    return {"const": values[0]} if len(values) == 1 else {"enum": values}
+
+
+def _schema() -> dict[str, Any]:
+    physical = [k for k, m in MODEL_KINDS.items() if m.physical]
+    return {
+        "$schema": "https://json-schema.org/draft/2020-12/schema",
+        "title": "chest-observer model file",
+        "type": "object",
+        "required": ["format", "format_version", "kind", "tick_rate_hz", "input_transform",
+                     "state_space"],
+        "properties": {
+            "format": {"const": "chest-observer-model"},
+            "format_version": {"const": 1},
+            "kind": {"enum": list(MODEL_KINDS)},
+            "name": {"type": "string", "maxLength": 200},
+            "tick_rate_hz": {"type": "number", "minimum": 100, "maximum": 10_000},
+            "input_transform": {"enum": ["velocity_brs_rate", "raw"]},
+            "output_timing": {"enum": ["after_input", "state"]},
+            "state_space": {
+                "type": "object", "required": ["A", "B", "C", "D"],
+                "properties": {"A": _matrix(None, None), "B": _matrix(None, 2),
+                               "C": _matrix(2, None), "D": _matrix(2, 2)}},
+            "parameters": {"type": "object"},  # kind-specific; the grey-box's checked below
+            "effects": {
+                "type": "array", "maxItems": 32,
+                "items": {"type": "object", "required": ["kind"],
+                          "properties": {
+                              "kind": {"enum": sorted(EFFECTS)},
+                              # scope: the setups the effect acts on (absent: all)
+                              "setups": {"type": "array", "minItems": 1, "uniqueItems": True,
+                                         "items": {"type": "string", "minLength": 1}}},
+                          "allOf": [_effect(e) for e in EFFECTS.values()]}},
+        },
+        # A grey-box with effects is stepped from its physical parameters, not its matrices.
+        "if": {"required": ["effects"], "properties": {"effects": {"minItems": 1}}},
+        "then": {"properties": {"kind": _one_of(physical),
+                                "parameters": {
+                                    "required": list(_GREYBOX),
+                                    "properties": dict.fromkeys(_GREYBOX, _PARAMETER)}},
+                 "required": ["parameters"]},
+    }
 
 
 def validate(d: Any, where: str) -> str | None:
     """None when ``d`` is a valid model file, else one line naming the key at fault."""
     import jsonschema
 
-    v = jsonschema.Draft202012Validator(SCHEMA)
+    v = jsonschema.Draft202012Validator(schema())
     err = jsonschema.exceptions.best_match(v.iter_errors(d))
     if err is None:
         return None
