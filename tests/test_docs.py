@@ -159,3 +159,15 @@ def test_the_checks_find_a_missing_folder_a_stale_row_and_a_broken_link(tmp_path
     assert link_problems(tmp_path) == [
         "README.md: (docs/gone.md) reaches no file",
         "README.md: (docs/layout.md#nowhere): layout.md has no heading #nowhere"]
+
+
+def test_the_readme_opens_with_the_two_commands_and_ci_runs_the_second():
+    """The README's first lines are the fresh-machine commands, and .ci/run runs its test
+    command as written there."""
+    lines = (ROOT / "README.md").read_text(encoding="utf-8").splitlines()
+    fence = lines.index("```sh")
+    commands = [ln.split("#")[0].strip() for ln in lines[fence + 1:lines.index("```", fence)]]
+    assert fence <= 2 and commands[0].startswith("scripts/bootstrap && ")
+    ci = [ln.strip() for ln in (ROOT / ".ci" / "run").read_text().splitlines()
+          if ln.strip() and not ln.startswith(("#", "set ", "cd "))]
+    assert ci == [commands[1]]
