@@ -1,13 +1,14 @@
-"""The README's result tables, from what the code prints today, so they cannot drift.
+"""The docs' result tables, from what the code prints today, so they cannot drift.
 
-Each table sits between ``<!-- figures:NAME -->`` and ``<!-- /figures:NAME -->`` in README.md
-and is made by running the product on the bundled campaign:
+Each table sits between ``<!-- figures:NAME -->`` and ``<!-- /figures:NAME -->`` in whichever
+markdown file holds it (README.md or one of docs/*.md; exactly one may) and is made by running
+the product on the bundled campaign:
 
-    evaluate         observer-node evaluate (the thesis's Tables 4.1-4.3)
+    evaluate         observer-node evaluate (the thesis's Tables 4.1-4.3), in docs/evaluation.md
     loop-campaign-a  observer-node loop, odd tests estimate, even tests validate (and the
-                     picture docs/loop-campaign-a-cd.png)
+                     picture docs/loop-campaign-a-cd.png), in docs/loop.md
     bench            observer-node bench on the in-process bus (daemon vs offline; the picture
-                     docs/bench-full-002-on-the-bus.png), with the
+                     docs/bench-full-002-on-the-bus.png), in README.md, with the
                      loop run here; its result is shipped in observer_node/examples/bench-loop
                      (--check: and must equal the shipped one, parameters within 2 %)
 
@@ -33,8 +34,9 @@ from pathlib import Path
 
 ROOT = Path(__file__).resolve().parent.parent
 README = ROOT / "README.md"
+DOCS = ROOT / "docs"
 TOLERANCE = 0.3
-PICTURES: list[tuple[Path, Path]] = []  # (made, where the README shows it)
+PICTURES: list[tuple[Path, Path]] = []  # (made, where the docs show it)
 SHIPPED: list[tuple[Path, Path]] = []  # (a loop's result made here, where the package ships it)
 PARAM_RTOL = 0.02  # shipped vs new loop parameters: the fits' 0.3 points, in parameter terms
 
@@ -191,27 +193,48 @@ def _same(old: str, new: str) -> bool:
     return True
 
 
+def _pages() -> list[Path]:
+    """The markdown files a table may sit in."""
+    return [README, *sorted(DOCS.glob("*.md"))]
+
+
+def _holder(name: str, texts: dict[Path, str]) -> Path | str:
+    """The one file holding the table NAME, or why there is none."""
+    found = [f for f, t in texts.items() if _block(name).search(t)]
+    if len(found) == 1:
+        return found[0]
+    where = ", ".join(str(f.relative_to(ROOT)) for f in found) or "no file"
+    return f"figures:{name} must be in exactly one of README.md and docs/*.md, not in {where}"
+
+
 def main(argv: list[str] | None = None) -> int:
     p = argparse.ArgumentParser(description=__doc__,
                                 formatter_class=argparse.RawDescriptionHelpFormatter)
     p.add_argument("--check", action="store_true", help="exit 1 if a table drifted")
     p.add_argument("--only", choices=sorted(TABLES), action="append", help="these tables")
     a = p.parse_args(argv)
-    text = README.read_text(encoding="utf-8")
+    texts = {f: f.read_text(encoding="utf-8") for f in _pages()}
+    holders: dict[str, Path] = {}
+    for name in a.only or TABLES:  # every block found before anything runs
+        holder = _holder(name, texts)
+        if isinstance(holder, str):
+            print(f"readme-figures: {holder}", file=sys.stderr)
+            return 2
+        holders[name] = holder
     drifted = []
     with tempfile.TemporaryDirectory() as tmp:
-        for name in a.only or TABLES:
+        for name, holder in holders.items():
+            text = texts[holder]
             m = _block(name).search(text)
-            if m is None:
-                print(f"readme-figures: README.md has no figures:{name} block", file=sys.stderr)
-                return 2
-            print(f"readme-figures: {name} ...", file=sys.stderr)
+            assert m is not None  # found above
+            where = holder.relative_to(ROOT)
+            print(f"readme-figures: {name} ({where}) ...", file=sys.stderr)
             new = TABLES[name](Path(tmp))
             if not _same(m.group(2), new):
                 drifted.append(name)
-                print(f"readme-figures: {name} differs:\n--- README\n{m.group(2)}\n--- now\n{new}",
-                      file=sys.stderr)
-            text = text[:m.start(2)] + new + text[m.end(2):]
+                print(f"readme-figures: {name} differs:\n--- {where}\n{m.group(2)}\n--- now\n"
+                      f"{new}", file=sys.stderr)
+            texts[holder] = text[:m.start(2)] + new + text[m.end(2):]
         for made, shipped in SHIPPED:  # the bench's loop result, shipped in the package
             drift = _loop_drift(made, shipped)
             if drift and a.check:
@@ -224,7 +247,7 @@ def main(argv: list[str] | None = None) -> int:
                 shipped.mkdir(parents=True, exist_ok=True)
                 for f in LOOP_FILES:
                     shutil.copyfile(made / f, shipped / f)
-        if not a.check:  # the pictures the README shows, from the same runs
+        if not a.check:  # the pictures the docs show, from the same runs
             for made, shown in PICTURES:
                 shown.parent.mkdir(exist_ok=True)
                 shutil.copyfile(made, shown)
@@ -235,8 +258,10 @@ def main(argv: list[str] | None = None) -> int:
             return 1
         print("readme-figures: every table is what the code prints", file=sys.stderr)
         return 0
-    README.write_text(text, encoding="utf-8")
-    print(f"readme-figures: wrote {len(a.only or TABLES)} table(s) into README.md",
+    for holder in sorted(set(holders.values())):
+        holder.write_text(texts[holder], encoding="utf-8")
+    print(f"readme-figures: wrote {len(holders)} table(s) into "
+          f"{', '.join(str(h.relative_to(ROOT)) for h in sorted(set(holders.values())))}",
           file=sys.stderr)
     return 0
 
