@@ -243,7 +243,7 @@ class ObserverNode:
             except PortError:
                 core.fault(BUS_ERROR)
                 self._reconnect()
-            except Exception as e:  # nothing raises out of the tick loop (README, Faults)
+            except Exception as e:  # nothing raises out of the tick loop (docs/daemon.md, Faults)
                 self._step_failed(e)
 
     def _step_failed(self, e: Exception) -> None:

@@ -4,7 +4,7 @@ The tick loop writes fixed-size rows into two rings in shared memory (raw CAN fr
 row per tick); a separate *process* drains them into an MCAP file. A process, not a thread:
 a Python thread encoding JSON would hold the GIL for milliseconds at a time and delay ticks.
 
-What the recorder promises (README, "Faults"):
+What the recorder promises (docs/daemon.md, "Faults"):
 
 - **Nothing is overwritten.** The daemon creates the file itself, exclusively; if the name
   is taken it writes ``NAME.1.mcap``, ``NAME.2.mcap``, ... Path errors (a parent that is a
