@@ -317,7 +317,7 @@ class ObserverNode:
             rec.put_tick(TickRow(t, -1 if watchdog else core.tick_index, accel_g, -accel_g,
                                  core.bias_g, core.brs_count, core.brs_ref,
                                  core.rad_per_count, cr, cd, valid, running,
-                                 self.outputs.state(core), core.invalid_cause, core.event,
+                                 core.state, core.invalid_cause, core.event,
                                  core.onset_tick, self.inputs.ref_cr, self.inputs.ref_cd,
                                  (done - t) * 1e6))
         if bus_gone is not None:
