@@ -33,7 +33,8 @@ from observer_node.dbc import DBC_PATH, Codec
 from .. import __version__
 from ..criteria import chest_criteria
 from ..model.modelfile import ModelFile
-from ..recording.format import FLAG_TX, TickRow
+from ..recording import format as fmt
+from ..recording.format import FrameFlag, RunMeta, TickRow
 from ..recording.writer import Recorder, RecorderError
 from .config import NodeConfig
 from .core import ACCEL_TIMEOUT, BRS_TIMEOUT, BUS_ERROR, OUT_OF_RANGE, RUNNING, ObserverCore
@@ -42,6 +43,7 @@ from .outputs import Outputs
 from .ports import FLAG_ERROR, FLAG_REMOTE, Port, PortError, open_port
 from .realtime import hold_cpu_latency, restore_scheduling, set_rt_priority
 
+FLAG_TX = FrameFlag.TX.value  # a plain int per frame
 EXIT_RECORDING_LOST = 3  # run's exit code when the recording is not the whole run
 
 
@@ -79,12 +81,13 @@ class ObserverNode:
     # ------------------------------------------------------------------ lifecycle
     def metadata(self) -> dict[str, str]:
         cfg = asdict(self.cfg)
-        return {"software_version": __version__, "model_name": self.model.name,
-                "model_kind": self.model.kind, "model_id": str(self.model_id),
-                "tick_rate_hz": str(self.model.tick_rate_hz), "dbc_sha256": self.codec.sha256(),
-                "config": json.dumps(cfg), "cpu_latency": self.cpu_latency,
-                "scheduling": self.scheduling,
-                "started_utc": time.strftime("%Y-%m-%dT%H:%M:%SZ", time.gmtime())}
+        meta = {RunMeta.SOFTWARE_VERSION: __version__, RunMeta.MODEL_NAME: self.model.name,
+                RunMeta.MODEL_KIND: self.model.kind, RunMeta.MODEL_ID: str(self.model_id),
+                RunMeta.TICK_RATE_HZ: str(self.model.tick_rate_hz),
+                RunMeta.DBC_SHA256: self.codec.sha256(), RunMeta.CONFIG: json.dumps(cfg),
+                RunMeta.CPU_LATENCY: self.cpu_latency, RunMeta.SCHEDULING: self.scheduling,
+                RunMeta.STARTED_UTC: time.strftime("%Y-%m-%dT%H:%M:%SZ", time.gmtime())}
+        return {k.value: v for k, v in meta.items()}
 
     def open(self) -> None:
         """PM QoS, the recorder (its file created, its header written) and the bus port. On
@@ -94,8 +97,8 @@ class ObserverNode:
             # this thread runs the ticks; the recorder started below runs at normal priority
             self._old_sched, self.scheduling = set_rt_priority(self.cfg.rt_priority)
             if self.cfg.record:
-                atts = [("model.json", "application/json", self.model.dumps().encode()),
-                        ("chest_observer.dbc", "text/plain", self.codec.path.read_bytes())]
+                atts = [(fmt.ATT_MODEL, fmt.MEDIA[fmt.ATT_MODEL], self.model.dumps().encode()),
+                        (fmt.ATT_DBC, fmt.MEDIA[fmt.ATT_DBC], self.codec.path.read_bytes())]
                 self.recorder = Recorder(self.cfg.record, self.metadata(), atts,
                                          self.codec.path, rows_per_s=self.model.tick_rate_hz,
                                          live=self.cfg.live)

@@ -38,7 +38,7 @@ class Recording:
 
     @property
     def tick_rate_hz(self) -> float:
-        return float(self.metadata.get(fmt.META_RUN, {}).get("tick_rate_hz", "nan"))
+        return float(self.metadata.get(fmt.META_RUN, {}).get(fmt.RunMeta.TICK_RATE_HZ, "nan"))
 
 
 _INPUT_KEYS = tuple(k for k in fmt.TOPIC_FIELDS[fmt.INPUTS] if k not in ("tick", "t"))

@@ -313,9 +313,10 @@ def _write(rings: Rings, capacity: int, f: Any, clock: tuple[int, float],
             time.sleep(0.005)
     flush()  # the last rows in a chunk of their own, published before the end record
     w.add_metadata(fmt.META_END, {
-        "frames_lost": str(int(ctrl[FRAMES_LOST])),
-        "ticks_lost": str(int(ctrl[TICKS_LOST])),
-        "frames": str(seq[fmt.FRAMES]), "ticks": str(seq[fmt.ESTIMATE])})
+        fmt.EndMeta.FRAMES_LOST.value: str(int(ctrl[FRAMES_LOST])),
+        fmt.EndMeta.TICKS_LOST.value: str(int(ctrl[TICKS_LOST])),
+        fmt.EndMeta.FRAMES.value: str(seq[fmt.FRAMES]),
+        fmt.EndMeta.TICKS.value: str(seq[fmt.ESTIMATE])})
     w.finish()
     f.flush()
 
