@@ -34,7 +34,7 @@ from .. import __version__
 from ..criteria import chest_criteria
 from ..model.modelfile import ModelFile
 from ..recording import format as fmt
-from ..recording.format import FrameFlag, RunMeta, TickRow
+from ..recording.format import FrameFlag, RunMeta, TickRow, tick_values
 from ..recording.writer import Recorder, RecorderError
 from .config import NodeConfig
 from .core import ACCEL_TIMEOUT, BRS_TIMEOUT, BUS_ERROR, OUT_OF_RANGE, RUNNING, ObserverCore
@@ -69,6 +69,7 @@ class ObserverNode:
         self.burst_timeout_s = cfg.accel_timeout_s or 2 * self.inputs.burst_n * self.period_s
         self.model_id = self.outputs.model_id
         self.recorder: Recorder | None = None
+        self._row = TickRow()  # the tick recorded, refilled each tick
         self.port: Port | None = None
         self._pm_qos: BinaryIO | None = None
         self._last_reconnect = -math.inf
@@ -317,12 +318,16 @@ class ObserverNode:
         if rec is not None:
             if send:
                 rec.put_frame(done, self.outputs.est_id, data, FLAG_TX)
-            rec.put_tick(TickRow(t, -1 if watchdog else core.tick_index, accel_g, -accel_g,
-                                 core.bias_g, core.brs_count, core.brs_ref,
-                                 core.rad_per_count, cr, cd, valid, running,
-                                 core.state, core.invalid_cause, core.event,
-                                 core.onset_tick, self.inputs.ref_cr, self.inputs.ref_cd,
-                                 (done - t) * 1e6))
+            row = self._row  # one row, its fields set by name: nothing built per tick
+            row.t, row.tick = t, -1 if watchdog else core.tick_index
+            row.accel_x_g, row.decel_g, row.bias_g = accel_g, -accel_g, core.bias_g
+            row.brs_count, row.brs_ref = core.brs_count, core.brs_ref
+            row.rad_per_count, row.cr_g, row.cd_mm = core.rad_per_count, cr, cd
+            row.valid, row.running, row.state = valid, running, core.state
+            row.cause, row.event, row.onset_tick = core.invalid_cause, core.event, core.onset_tick
+            row.ref_cr_g, row.ref_cd_mm = self.inputs.ref_cr, self.inputs.ref_cd
+            row.proc_us = (done - t) * 1e6
+            rec.put_tick(tick_values(row))
         if bus_gone is not None:
             raise bus_gone
 

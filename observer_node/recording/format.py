@@ -31,8 +31,12 @@ topics' fields by :data:`TICK_TOPICS` (each names its :class:`TickRow` column).
 
 from __future__ import annotations
 
+import dataclasses
 import enum
 import json
+import math
+import operator
+from collections.abc import Callable
 from typing import NamedTuple
 
 MCAP_MAGIC = b"\x89MCAP0\r\n"
@@ -88,31 +92,36 @@ class FrameFlag(enum.IntFlag):
 _ERROR, _FD, _TX = FrameFlag.ERROR.value, FrameFlag.FD.value, FrameFlag.TX.value
 
 
-class TickRow(NamedTuple):
-    """One tick as the daemon hands it to the writer (floats in shared memory)."""
+@dataclasses.dataclass(slots=True)
+class TickRow:
+    """One tick as the daemon hands it to the writer (floats in shared memory). The daemon
+    keeps one and sets its fields each tick (no row built per tick); :data:`tick_values`
+    gives them in column order for the rings."""
 
-    t: float
-    tick: float  # -1: a watchdog publish between ticks
-    accel_x_g: float
-    decel_g: float
-    bias_g: float
-    brs_count: float
-    brs_ref: float
-    rad_per_count: float
-    cr_g: float
-    cd_mm: float
-    valid: float
-    running: float
-    state: float
-    cause: float
-    event: float
-    onset_tick: float
-    ref_cr_g: float  # NaN: no reference frame yet
-    ref_cd_mm: float
-    proc_us: float
+    t: float = math.nan
+    tick: float = math.nan  # -1: a watchdog publish between ticks
+    accel_x_g: float = math.nan
+    decel_g: float = math.nan
+    bias_g: float = math.nan
+    brs_count: float = math.nan
+    brs_ref: float = math.nan
+    rad_per_count: float = math.nan
+    cr_g: float = math.nan
+    cd_mm: float = math.nan
+    valid: float = math.nan
+    running: float = math.nan
+    state: float = math.nan  # ObserverState
+    cause: float = math.nan  # InvalidCause bits
+    event: float = math.nan
+    onset_tick: float = math.nan
+    ref_cr_g: float = math.nan  # NaN: no reference frame yet
+    ref_cd_mm: float = math.nan
+    proc_us: float = math.nan
 
 
-TICK_COLS = TickRow._fields
+TICK_COLS = tuple(f.name for f in dataclasses.fields(TickRow))
+# A row's values in TICK_COLS order, one tuple (C: no Python code per tick)
+tick_values: Callable[[TickRow], tuple[float, ...]] = operator.attrgetter(*TICK_COLS)
 
 # Per-tick topics: field -> (JSON type, the TickRow column it comes from). ``t`` is made
 # relative to the recorder's start.

@@ -145,7 +145,8 @@ class Rings:
         self._frames_head = head + 1
         self._ctrl_words[FRAMES_HEAD] = head + 1
 
-    def put_tick(self, row: tuple) -> None:
+    def put_tick(self, row: tuple[float, ...]) -> None:
+        """``row``: a tick's values in TICK_COLS order (``format.tick_values``)."""
         head = self._ticks_head
         _TICK_ROW.pack_into(self.mm, self._ticks_off + (head % self.capacity) * _TICK_ROW.size,
                             *row)
