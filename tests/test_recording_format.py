@@ -92,7 +92,7 @@ def test_a_recording_written_before_reads_with_the_typed_reader(tmp_path):
         assert fmt.frame_message(fr.t, fr.can_id, fr.flags, fr.data) == m  # round trip
     assert any(fr.tx for fr in frames) and any(not fr.tx for fr in frames)
     rec = read_recording(BEFORE)
-    assert rec.tick_rate_hz == 1000.0
+    assert rec.frames == frames and rec.tick_rate_hz == 1000.0
     states = {ObserverState(int(s)) for s in rec.ticks["state"]}
     assert {ObserverState.ARMED, ObserverState.RUNNING} <= states
     word = int(np.bitwise_or.reduce(rec.ticks["cause"].astype(int)))

@@ -213,10 +213,10 @@ def test_10_khz_as_can_fd_input_bursts(campaign, tmp_path):
         _, err = p.communicate(timeout=120)
     assert p.returncode == 0, err
     rec = read_recording(record)
-    frames = sum(1 for f in rec.frames if f["id"] == CODEC["InputBurst"].frame_id)
+    frames = sum(1 for f in rec.frames if f.can_id == CODEC["InputBurst"].frame_id)
     assert frames > 400 and "lost 0" in err and "rejected 0" in err, err
     ticks = int((rec.ticks["tick"] >= 0).sum())
-    burst_t = {f["t"] for f in rec.frames if f["id"] == CODEC["InputBurst"].frame_id}
+    burst_t = {f.t for f in rec.frames if f.can_id == CODEC["InputBurst"].frame_id}
     assert ticks == 8 * frames, (f"{ticks} ticks for {frames} bursts ({len(burst_t)} distinct "
                                  f"times; files {sorted(p.name for p in tmp_path.iterdir())}); "
                                  f"replay: {r.stdout.strip()}; salvaged "

@@ -30,7 +30,7 @@ class Recording:
     metadata: dict[str, dict[str, str]]
     model: ModelFile | None
     ticks: dict[str, np.ndarray]  # per tick, sorted by tick index
-    frames: list[dict]  # /can/frames messages (raw, in order)
+    frames: list[fmt.Frame]  # /can/frames messages (raw, in order)
     reference: dict[int, tuple[float, float]]
     salvaged: bool = False
     salvage_note: str = ""
@@ -106,7 +106,7 @@ def read_recording(path: str | Path, frames: bool = True) -> Recording:
     inputs: dict[int, dict] = {}
     est: dict[int, dict] = {}
     ref: dict[int, tuple[float, float]] = {}
-    raw: list[dict] = []
+    raw: list[fmt.Frame] = []
     topics: dict[str, int] = {}
     try:
         for topic, _, data in scan:
@@ -129,8 +129,8 @@ def read_recording(path: str | Path, frames: bool = True) -> Recording:
                 m = json.loads(data)
                 ref[m["tick"]] = (m.get("cr_g", np.nan), m.get("cd_mm", np.nan))
             elif topic == fmt.FRAMES and frames:
-                raw.append(json.loads(data))
-    except (ValueError, KeyError) as e:  # a message that is not what the format says
+                raw.append(fmt.read_frame(data))
+    except (ValueError, KeyError, TypeError) as e:  # a message not what the format says
         raise RecordingError(f"{path}: message {scan.messages}: not a chest-observer "
                              f"message ({type(e).__name__}: {e})") from None
     salvaged, note = scan.salvaged, scan.note
