@@ -21,6 +21,7 @@ from observer_node.daemon.ports import SocketCanPort
 from observer_node.evaluation import identify
 from observer_node.ident.dataset import make_dataset
 from observer_node.recording import analyze, read_recording
+from observer_node.recording.format import FrameFlag
 from observer_node.replay.player import bus_sender, play
 
 CHANNEL = os.environ.get("VCAN_CHANNEL", "vcan0")
@@ -180,7 +181,7 @@ def test_can_fd_is_a_configuration():
         data = acc.encode({"TunnelAccelX": -12.5}, 3)
         assert tx.send(acc.frame_id, data)
         got = rx.recv(2.0)
-        assert got is not None and got[2] == data and got[3] & 2  # FLAG_FD
+        assert got is not None and got[2] == data and got[3] & FrameFlag.FD
         assert acc.decode(got[2])["TunnelAccelX"] == pytest.approx(-12.5)
     finally:
         rx.close()
