@@ -24,6 +24,8 @@ from pathlib import Path
 
 import numpy as np
 
+from observer_node.dbc.meanings import InvalidCause, ObserverState
+
 from .daemon.core import CoreConfig
 from .errors import ObserverError
 from .model.chest import discrete
@@ -68,9 +70,7 @@ CORE_H = """
  *     co_core_set_brs(&core, brs_count, counts_per_rev);   (when a BRS count arrives)
  *     co_core_tick(&core, decel_g);                         (deceleration positive, with bias)
  * then core.cr_g, core.cd_mm, core.state, co_core_valid(&core). Faults: co_core_fault. */
-enum {{ CO_ARMED = 1, CO_RUNNING = 2, CO_HOLD = 3 }};
-enum {{ CO_ACCEL_TIMEOUT = 1, CO_BRS_TIMEOUT = 2, CO_BAD_E2E = 4, CO_LOST_FRAME = 8,
-       CO_OUT_OF_RANGE = 16, CO_BUS_ERROR = 32, CO_SENSOR_FAULT = 64, CO_NOT_ARMED = 128 }};
+{enums}
 #define CO_N_BIAS {n_bias}
 #define CO_N_PRE {n_pre}
 
@@ -97,6 +97,16 @@ void co_core_end_event(co_core *c);
 int co_core_armed(const co_core *c);
 int co_core_valid(const co_core *c);
 """
+
+def _c_enums() -> str:
+    """The core's states and cause bits as C enums, valued as the DBC's (dbc/meanings.py);
+    INIT is the bus's only (the core starts ARMED)."""
+    states = ", ".join(f"CO_{s.name} = {s.value}" for s in ObserverState
+                       if s != ObserverState.INIT)
+    causes = [f"CO_{c.name} = {c.value}" for c in InvalidCause]
+    return (f"enum {{ {states} }};\n"
+            f"enum {{ {', '.join(causes[:4])},\n       {', '.join(causes[4:])} }};")
+
 
 CORE_C = """
 /* ---- the daemon's core: see chest_observer.h and observer_node/daemon/core.py ---- */
@@ -339,7 +349,7 @@ def export_c(mf: ModelFile, out_dir: str | Path, name: str = "chest_observer",
     fs = mf.tick_rate_hz
     n_bias = max(2, round(cfg.bias_window_s * fs))
     n_rearm = round(cfg.rearm_s * fs)
-    consts = {"n_bias": n_bias, "n_pre": max(2, round(cfg.pretrigger_s * fs)
+    consts = {"enums": _c_enums(), "n_bias": n_bias, "n_pre": max(2, round(cfg.pretrigger_s * fs)
                                              + cfg.trigger_ticks + 1),
               "trigger_g": _num(cfg.trigger_g), "trigger_ticks": cfg.trigger_ticks,
               "onset_g": _num(cfg.onset_g), "n_event": round(cfg.event_s * fs),

@@ -11,7 +11,6 @@ source is an error naming the file and the place, never a half-played run.
 
 from __future__ import annotations
 
-import json
 import re
 import tempfile
 from collections.abc import Callable
@@ -110,16 +109,15 @@ def read_mcap_frames(path: Path, all_frames: bool = False, codec: Codec | None =
                 continue
             if topic != fmt.FRAMES:
                 continue
-            m = json.loads(raw)
-            if m["error"] or (m["dir"] == "tx" and not all_frames):
+            fr = fmt.read_frame(raw)
+            if fr.error or (fr.tx and not all_frames):
                 continue
-            times.append(m["t"])
-            ids.append(m["id"])
-            d = bytes.fromhex(m["data"])
-            data.append(translate(m["id"], d) if translate else d)
+            times.append(fr.t)
+            ids.append(fr.can_id)
+            data.append(translate(fr.can_id, fr.data) if translate else fr.data)
     except RecordingError as e:
         raise SourceError(str(e)) from None
-    except (ValueError, KeyError) as e:
+    except (ValueError, KeyError, TypeError) as e:
         raise SourceError(f"{path}: a {fmt.FRAMES} message that is not a frame "
                           f"({type(e).__name__}: {e})") from None
     if scan.salvaged:

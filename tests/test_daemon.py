@@ -100,15 +100,15 @@ def test_input_bursts_carry_10_khz_ticks(campaign, tmp_path):
     # One estimate frame per burst (and per watchdog publish), each one counter step on
     # (tests/test_e2e_receiver.py rates them with an E2E receiver).
     est_codec = CODEC["ChestEstimate"]
-    counters = [est_codec.decode(bytes.fromhex(f["data"]))["ChestEstimate_Counter"]
-                for f in rec.frames if f["dir"] == "tx" and f["id"] == est_codec.frame_id]
+    counters = [est_codec.decode(f.data)["ChestEstimate_Counter"]
+                for f in rec.frames if f.tx and f.can_id == est_codec.frame_id]
     assert len(counters) >= n_frames
     assert all((b - a) % 15 == 1 for a, b in itertools.pairwise(counters))
     assert int((rec.ticks["tick"] >= 0).sum()) == 8 * n_frames  # every sample recorded
     # One estimate frame per burst; the others sent are the watchdog's, recorded with
     # tick -1 (every estimate message that is not one of the 8 * n_frames ticks).
     est_id = CODEC["ChestEstimate"].frame_id
-    sent = sum(1 for f in rec.frames if f["dir"] == "tx" and f["id"] == est_id)
+    sent = sum(1 for f in rec.frames if f.tx and f.can_id == est_id)
     assert sent == n_frames + rec.topics[fmt.ESTIMATE] - 8 * n_frames
     _assert_matches_offline(rec)
 

@@ -14,8 +14,9 @@ import pytest
 
 from observer_node.daemon.harness import CODEC, Harness
 from observer_node.daemon.outputs import wrap16
+from observer_node.dbc.meanings import RecorderState
 from observer_node.recording import read_recording
-from observer_node.recording.writer import FAILED, RESTARTED, RecorderError, create_exclusive
+from observer_node.recording.writer import RecorderError, create_exclusive
 
 ROOT = Path(__file__).resolve().parents[1]
 ACC, BRS = CODEC["TunnelAccel"], CODEC["BeltSpindle"]
@@ -58,11 +59,11 @@ def test_killed_writer_restarts_into_a_new_part_and_says_so(model, tmp_path):
         time.sleep(0.3)
         status, health = _status(h)
     assert h.node.counters.ticks == 600  # the estimate never stopped
-    assert rec.state == RESTARTED and len(rec.parts) == 2
+    assert rec.state == RecorderState.RESTARTED and len(rec.parts) == 2
     assert rec.parts[1].name == "run.part2.mcap"
     assert any("recording goes on in" in line and "run.part2.mcap" in line for line in logs)
     assert any(s["Fault_RecordingLost"] for s in status)
-    assert any(x["RecorderState"] == RESTARTED for x in health)
+    assert any(x["RecorderState"] == RecorderState.RESTARTED for x in health)
     assert h.node.recording_lost  # run_daemon's exit code is then non-zero
     ticks = set()
     for p in rec.parts:
@@ -96,17 +97,18 @@ def test_disk_full_fails_the_recording_loudly_and_estimates_go_on(model, tmp_pat
             fed = 800
             deadline = time.monotonic() + 10.0
             while time.monotonic() < deadline and not (
-                    health and health[-1]["RecorderState"] == FAILED):
+                    health and health[-1]["RecorderState"] == RecorderState.FAILED):
                 _feed(h, range(fed, fed + 20))
                 fed += 20
                 st, he = _status(h)
                 status += st
                 health += he
         assert h.node.counters.ticks == fed
-        assert rec.state == FAILED and rec.lost_ticks > 0
+        assert rec.state == RecorderState.FAILED and rec.lost_ticks > 0
         assert any("No space left on device" in line for line in logs)
         assert any("recording stopped" in line for line in logs), logs
-        assert health[-1]["RecorderState"] == FAILED and health[-1]["RecorderLostTicks"] > 0
+        assert health[-1]["RecorderState"] == RecorderState.FAILED and \
+            health[-1]["RecorderLostTicks"] > 0
         assert status[-1]["Fault_RecordingLost"]
     finally:
         subprocess.run(["umount", "-l", str(mnt)], check=False)

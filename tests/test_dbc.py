@@ -1,4 +1,5 @@
-"""The DBC and its precompiled codec against cantools, E2E and bus load."""
+"""The DBC and its precompiled codec against cantools, E2E and bus load; the states and
+causes read from it."""
 
 from __future__ import annotations
 
@@ -7,6 +8,14 @@ import random
 import pytest
 
 from observer_node.dbc import Codec, bus_load, crc8_j1850, frame_bits
+from observer_node.dbc.codec import LayoutError
+from observer_node.dbc.meanings import (
+    CAUSE_SIGNALS,
+    InvalidCause,
+    ObserverState,
+    RecorderState,
+    value_table,
+)
 
 CODEC = Codec()
 
@@ -129,3 +138,27 @@ def test_default_rate_fits_a_500k_bus_with_margin():
     worst = bus_load(CODEC, {"TunnelAccel": 1000, "ChestEstimate": 1000, "BeltSpindle": 1000,
                              "ObserverStatus": 10, "ObserverCounters": 10})
     assert worst["total"] < 0.7
+
+
+def test_states_and_causes_are_the_dbcs():
+    """Each enum has exactly the DBC's value table; each cause is the bit of its Invalid_
+    signal in ObserverStatus, so a status frame's Invalid_ bits are the recorded cause."""
+    assert {m.name: m.value for m in ObserverState} == \
+        value_table("ObserverStatus", "ObserverState")
+    assert {m.name: m.value for m in RecorderState} == \
+        value_table("ObserverHealth", "RecorderState")
+    status = CODEC["ObserverStatus"]
+    invalid = [n for n in status.signal_names if n.startswith("Invalid_")]
+    assert sorted(f"Invalid_{n}" for n in CAUSE_SIGNALS.values()) == sorted(invalid)
+    assert set(CAUSE_SIGNALS) == set(InvalidCause)
+    for cause, name in CAUSE_SIGNALS.items():
+        values = {n: 0 for n in status.signal_names}
+        values[f"Invalid_{name}"] = 1
+        word = status.struct.unpack_from(status.encode(values))
+        slot, shift, _ = status.locate(f"Invalid_{next(iter(CAUSE_SIGNALS.values()))}")
+        assert word[slot] >> shift == cause.value, name
+
+
+def test_a_signal_without_a_value_table_is_said_in_one_line():
+    with pytest.raises(LayoutError, match=r"ObserverStatus\.ModelId has no value table"):
+        value_table("ObserverStatus", "ModelId")

@@ -21,6 +21,7 @@ from observer_node.daemon.ports import SocketCanPort
 from observer_node.evaluation import identify
 from observer_node.ident.dataset import make_dataset
 from observer_node.recording import analyze, read_recording
+from observer_node.recording.format import FrameFlag
 from observer_node.replay.player import bus_sender, play
 
 CHANNEL = os.environ.get("VCAN_CHANNEL", "vcan0")
@@ -180,7 +181,7 @@ def test_can_fd_is_a_configuration():
         data = acc.encode({"TunnelAccelX": -12.5}, 3)
         assert tx.send(acc.frame_id, data)
         got = rx.recv(2.0)
-        assert got is not None and got[2] == data and got[3] & 2  # FLAG_FD
+        assert got is not None and got[2] == data and got[3] & FrameFlag.FD
         assert acc.decode(got[2])["TunnelAccelX"] == pytest.approx(-12.5)
     finally:
         rx.close()
@@ -213,10 +214,10 @@ def test_10_khz_as_can_fd_input_bursts(campaign, tmp_path):
         _, err = p.communicate(timeout=120)
     assert p.returncode == 0, err
     rec = read_recording(record)
-    frames = sum(1 for f in rec.frames if f["id"] == CODEC["InputBurst"].frame_id)
+    frames = sum(1 for f in rec.frames if f.can_id == CODEC["InputBurst"].frame_id)
     assert frames > 400 and "lost 0" in err and "rejected 0" in err, err
     ticks = int((rec.ticks["tick"] >= 0).sum())
-    burst_t = {f["t"] for f in rec.frames if f["id"] == CODEC["InputBurst"].frame_id}
+    burst_t = {f.t for f in rec.frames if f.can_id == CODEC["InputBurst"].frame_id}
     assert ticks == 8 * frames, (f"{ticks} ticks for {frames} bursts ({len(burst_t)} distinct "
                                  f"times; files {sorted(p.name for p in tmp_path.iterdir())}); "
                                  f"replay: {r.stdout.strip()}; salvaged "

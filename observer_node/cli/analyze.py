@@ -19,13 +19,15 @@ def add_subparser(subparsers: argparse._SubParsersAction[argparse.ArgumentParser
 
 def _do_analyze(a: argparse.Namespace) -> int:
     from ..recording import analyze, read_recording
+    from ..recording import format as fmt
 
     rec = read_recording(a.recording)
     out = Path(a.out) if a.out else Path(a.recording).with_suffix("")
     result = analyze(rec, out_dir=out)
-    meta = rec.metadata.get("chest-observer", {})
-    print(f"{rec.path}: {result['ticks']} ticks, model {meta.get('model_kind', '?')} "
-          f"{meta.get('model_name', '?')!r} at {meta.get('tick_rate_hz', '?')} Hz; "
+    meta = rec.metadata.get(fmt.META_RUN, {})
+    print(f"{rec.path}: {result['ticks']} ticks, model {meta.get(fmt.RunMeta.MODEL_KIND, '?')} "
+          f"{meta.get(fmt.RunMeta.MODEL_NAME, '?')!r} at "
+          f"{meta.get(fmt.RunMeta.TICK_RATE_HZ, '?')} Hz; "
           f"valid {100 * result['valid_share']:.1f} % of ticks; "
           f"max tick processing {result['max_proc_us']:.0f} us")
     if rec.salvaged:

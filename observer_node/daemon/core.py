@@ -49,16 +49,22 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
+from observer_node.dbc.meanings import InvalidCause, ObserverState
+
 if TYPE_CHECKING:  # the config is read before a model is: `observer-node` starts faster
     from ..model.nonlinear import NonlinearGreyBox
     from ..model.observer import LinearObserver
 
-ARMED, RUNNING, HOLD = 1, 2, 3
+# The states as the DBC numbers them (IntEnum: compared at C speed)
+ARMED, RUNNING, HOLD = ObserverState.ARMED, ObserverState.RUNNING, ObserverState.HOLD
 
-# Causes of an invalid estimate; on the bus each is a one-bit signal of ObserverStatus
-# (daemon/outputs.py names them). NOT_ARMED is a state, never latched.
+# Causes of an invalid estimate (the DBC's Invalid_<Name> bits: dbc/meanings.py), as plain
+# ints: the core ors them per tick, and an IntFlag's operators run Python code.
 ACCEL_TIMEOUT, BRS_TIMEOUT, BAD_E2E, LOST_FRAME, OUT_OF_RANGE, BUS_ERROR, SENSOR_FAULT, \
-    NOT_ARMED = (1 << i for i in range(8))
+    NOT_ARMED = (c.value for c in (
+        InvalidCause.ACCEL_TIMEOUT, InvalidCause.BRS_TIMEOUT, InvalidCause.BAD_E2E,
+        InvalidCause.LOST_FRAME, InvalidCause.OUT_OF_RANGE, InvalidCause.BUS_ERROR,
+        InvalidCause.SENSOR_FAULT, InvalidCause.NOT_ARMED))
 # Causes that mean an event's estimates were not made of every sample as sent
 DEGRADING = ~(BAD_E2E | NOT_ARMED)
 
@@ -120,7 +126,7 @@ class ObserverCore:
         self.reset()
 
     def reset(self) -> None:
-        self.state = ARMED
+        self.state: ObserverState = ARMED
         self.tick_index = -1
         self._clear_window()
         self.bias_g = 0.0

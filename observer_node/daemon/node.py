@@ -34,7 +34,8 @@ from .. import __version__
 from ..criteria import chest_criteria
 from ..errors import ObserverError, RecordingLostError
 from ..model.modelfile import ModelFile
-from ..recording.format import FLAG_TX, TickRow
+from ..recording import format as fmt
+from ..recording.format import FrameFlag, RunMeta, TickRow, tick_values
 from ..recording.writer import Recorder, RecorderError
 from .config import NodeConfig
 from .core import ACCEL_TIMEOUT, BRS_TIMEOUT, BUS_ERROR, OUT_OF_RANGE, RUNNING, ObserverCore
@@ -42,6 +43,8 @@ from .inputs import Counters, Inputs
 from .outputs import Outputs
 from .ports import FLAG_ERROR, FLAG_REMOTE, Port, PortError, open_port
 from .realtime import hold_cpu_latency, restore_scheduling, set_rt_priority
+
+FLAG_TX = FrameFlag.TX.value  # a plain int per frame
 
 
 class ObserverNode:
@@ -66,6 +69,7 @@ class ObserverNode:
         self.burst_timeout_s = cfg.accel_timeout_s or 2 * self.inputs.burst_n * self.period_s
         self.model_id = self.outputs.model_id
         self.recorder: Recorder | None = None
+        self._row = TickRow()  # the tick recorded, refilled each tick
         self.port: Port | None = None
         self._pm_qos: BinaryIO | None = None
         self._last_reconnect = -math.inf
@@ -78,12 +82,13 @@ class ObserverNode:
     # ------------------------------------------------------------------ lifecycle
     def metadata(self) -> dict[str, str]:
         cfg = asdict(self.cfg)
-        return {"software_version": __version__, "model_name": self.model.name,
-                "model_kind": self.model.kind, "model_id": str(self.model_id),
-                "tick_rate_hz": str(self.model.tick_rate_hz), "dbc_sha256": self.codec.sha256(),
-                "config": json.dumps(cfg), "cpu_latency": self.cpu_latency,
-                "scheduling": self.scheduling,
-                "started_utc": time.strftime("%Y-%m-%dT%H:%M:%SZ", time.gmtime())}
+        meta = {RunMeta.SOFTWARE_VERSION: __version__, RunMeta.MODEL_NAME: self.model.name,
+                RunMeta.MODEL_KIND: self.model.kind, RunMeta.MODEL_ID: str(self.model_id),
+                RunMeta.TICK_RATE_HZ: str(self.model.tick_rate_hz),
+                RunMeta.DBC_SHA256: self.codec.sha256(), RunMeta.CONFIG: json.dumps(cfg),
+                RunMeta.CPU_LATENCY: self.cpu_latency, RunMeta.SCHEDULING: self.scheduling,
+                RunMeta.STARTED_UTC: time.strftime("%Y-%m-%dT%H:%M:%SZ", time.gmtime())}
+        return {k.value: v for k, v in meta.items()}
 
     def open(self) -> None:
         """PM QoS, the recorder (its file created, its header written) and the bus port. On
@@ -93,8 +98,8 @@ class ObserverNode:
             # this thread runs the ticks; the recorder started below runs at normal priority
             self._old_sched, self.scheduling = set_rt_priority(self.cfg.rt_priority)
             if self.cfg.record:
-                atts = [("model.json", "application/json", self.model.dumps().encode()),
-                        ("chest_observer.dbc", "text/plain", self.codec.path.read_bytes())]
+                atts = [(fmt.ATT_MODEL, fmt.MEDIA[fmt.ATT_MODEL], self.model.dumps().encode()),
+                        (fmt.ATT_DBC, fmt.MEDIA[fmt.ATT_DBC], self.codec.path.read_bytes())]
                 self.recorder = Recorder(self.cfg.record, self.metadata(), atts,
                                          self.codec.path, rows_per_s=self.model.tick_rate_hz,
                                          live=self.cfg.live)
@@ -313,12 +318,16 @@ class ObserverNode:
         if rec is not None:
             if send:
                 rec.put_frame(done, self.outputs.est_id, data, FLAG_TX)
-            rec.put_tick(TickRow(t, -1 if watchdog else core.tick_index, accel_g, -accel_g,
-                                 core.bias_g, core.brs_count, core.brs_ref,
-                                 core.rad_per_count, cr, cd, valid, running,
-                                 self.outputs.state(core), core.invalid_cause, core.event,
-                                 core.onset_tick, self.inputs.ref_cr, self.inputs.ref_cd,
-                                 (done - t) * 1e6))
+            row = self._row  # one row, its fields set by name: nothing built per tick
+            row.t, row.tick = t, -1 if watchdog else core.tick_index
+            row.accel_x_g, row.decel_g, row.bias_g = accel_g, -accel_g, core.bias_g
+            row.brs_count, row.brs_ref = core.brs_count, core.brs_ref
+            row.rad_per_count, row.cr_g, row.cd_mm = core.rad_per_count, cr, cd
+            row.valid, row.running, row.state = valid, running, core.state
+            row.cause, row.event, row.onset_tick = core.invalid_cause, core.event, core.onset_tick
+            row.ref_cr_g, row.ref_cd_mm = self.inputs.ref_cr, self.inputs.ref_cd
+            row.proc_us = (done - t) * 1e6
+            rec.put_tick(tick_values(row))
         if bus_gone is not None:
             raise bus_gone
 

@@ -11,30 +11,16 @@ from __future__ import annotations
 import math
 
 from observer_node.dbc import Codec
+from observer_node.dbc.meanings import CAUSE_SIGNALS, InvalidCause, RecorderState
 
 from ..criteria import ChestCriteria
-from ..recording.writer import OFF, Recorder
-from .core import (
-    ACCEL_TIMEOUT,
-    ARMED,
-    BAD_E2E,
-    BRS_TIMEOUT,
-    BUS_ERROR,
-    HOLD,
-    LOST_FRAME,
-    NOT_ARMED,
-    OUT_OF_RANGE,
-    RUNNING,
-    SENSOR_FAULT,
-    ObserverCore,
-)
+from ..recording.writer import Recorder
+from .core import ObserverCore
 from .inputs import Counters
 
-# The core's cause bits and the names the DBC gives them (Invalid_<name>, Fault_<name>)
-CAUSES = {ACCEL_TIMEOUT: "AccelTimeout", BRS_TIMEOUT: "BrsTimeout", BAD_E2E: "BadE2E",
-          LOST_FRAME: "LostFrame", OUT_OF_RANGE: "OutOfRange", BUS_ERROR: "BusError",
-          SENSOR_FAULT: "SensorFault", NOT_ARMED: "NotArmed"}
-STATES = {ARMED: "ARMED", RUNNING: "RUNNING", HOLD: "HOLD"}
+# The core's cause bits (plain ints) and the names of their Invalid_/Fault_ signals
+CAUSES = {bit.value: name for bit, name in CAUSE_SIGNALS.items()}
+_NOT_ARMED = InvalidCause.NOT_ARMED.value
 
 
 def wrap16(v: int) -> int:
@@ -64,8 +50,6 @@ class Outputs:
         self.status, self.counters, self.health = (codec["ObserverStatus"],
                                                    codec["ObserverCounters"],
                                                    codec["ObserverHealth"])
-        table = self.status.choices("ObserverState")
-        self.state_value = {s: table[name] for s, name in STATES.items()}
         self.model_id = model_id
         self.criteria = codec["ChestCriteria"]
         self._criteria_counter = 0
@@ -103,16 +87,16 @@ class Outputs:
         status period, off the per-tick path)."""
         lost = rec is not None and rec.degraded
         cause, faults = core.invalid_cause, core.faults
-        status = {"ObserverState": self.state_value[core.state], "ModelId": self.model_id,
+        status = {"ObserverState": int(core.state), "ModelId": self.model_id,
                   "TickOverruns": wrap16(cnt.overruns), "Fault_RecordingLost": int(lost)}
         for bit, name in CAUSES.items():
             status[f"Invalid_{name}"] = int(bool(cause & bit))
-            if bit != NOT_ARMED:  # a state, not a fault: never latched
+            if bit != _NOT_ARMED:  # a state, not a fault: never latched
                 status[f"Fault_{name}"] = int(bool(faults & bit))
         counters = {"LostFrames": wrap16(cnt.lost + cnt.kernel_dropped),
                     "RejectedFrames": wrap16(cnt.rejected + cnt.unknown_id),
                     "BadE2EFrames": wrap16(cnt.bad_e2e)}
-        health = {"RecorderState": OFF if rec is None else rec.state,
+        health = {"RecorderState": int(RecorderState.OFF if rec is None else rec.state),
                   "ErrorFrames": wrap16(cnt.error_frames),
                   "RecorderLostTicks": wrap16(0 if rec is None else rec.lost_ticks),
                   "SensorFaults": wrap16(core.hold_timeouts + core.bias_faults
@@ -137,8 +121,3 @@ class Outputs:
         values["ChestCriteria_Valid"] = int(valid)
         self._criteria_counter += 1
         return fc.frame_id, fc.encode(values, self._criteria_counter)
-
-    def state(self, core: ObserverCore) -> int:
-        """The observer's state as the bus carries it."""
-        return self.state_value[core.state]
-

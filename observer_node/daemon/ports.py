@@ -2,8 +2,9 @@
 raw SocketCAN socket sits.
 
 ``recv(timeout_s)`` returns ``(t_s, can_id, data, flags)`` or ``None`` on timeout; ``t_s`` is
-``time.perf_counter()`` at receipt, ``flags`` has ``FLAG_ERROR`` for error frames,
-``FLAG_FD`` for CAN FD frames and ``FLAG_REMOTE`` for remote (RTR) frames.
+``time.perf_counter()`` at receipt, ``flags`` (:class:`~observer_node.recording.format.
+FrameFlag`) has ERROR for error frames, FD for CAN FD frames and REMOTE for remote (RTR)
+frames.
 ``send(can_id, data)`` transmits one frame. Errors of the bus itself (interface down, bus
 gone) raise :class:`PortError`; the daemon then reconnects.
 
@@ -26,13 +27,15 @@ from typing import TYPE_CHECKING, Any, Protocol
 
 from observer_node.dbc.bus import BusOpenError, open_bus
 
+from ..recording.format import FrameFlag
+
 if TYPE_CHECKING:  # python-can is imported when a port opens: the daemon starts faster
     import can
     from can.typechecking import CanFilter
 
-FLAG_ERROR = 1
-FLAG_FD = 2
-FLAG_REMOTE = 8  # a remote (RTR) frame: no data, never an input (4 is recorder.TX)
+# The flags of a received frame (recording.format.FrameFlag), as plain ints per frame
+FLAG_ERROR, FLAG_FD, FLAG_REMOTE = (FrameFlag.ERROR.value, FrameFlag.FD.value,
+                                    FrameFlag.REMOTE.value)
 
 SOL_CAN_RAW = 101
 CAN_RAW_FILTER = 1

@@ -11,6 +11,7 @@ import numpy as np
 from .. import iso18571
 from ..criteria import EURO_NCAP_CD_LIMITS_MM, chest_criteria, compare
 from ..ident.metrics import fit_percent
+from . import format as fmt
 from .reader import Recording, RecordingError
 
 
@@ -18,7 +19,7 @@ def offline_estimates(rec: Recording, event: int) -> tuple[np.ndarray, np.ndarra
     """Re-run the recorded model offline on the recorded inputs of one event, from the same
     onset, bias and BRS reference. Returns (ticks, y (n, 2)) for the ticks the daemon ran."""
     if rec.model is None:
-        raise RecordingError(f"{rec.path}: no model.json attachment")
+        raise RecordingError(f"{rec.path}: no {fmt.ATT_MODEL} attachment")
     T = rec.ticks
     run = (T["event"] == event) & (T["running"] > 0)
     if not run.any():

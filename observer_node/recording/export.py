@@ -16,7 +16,6 @@ such a file back, received frames only unless ``--all-frames``.
 from __future__ import annotations
 
 import heapq
-import json
 from datetime import datetime
 from pathlib import Path
 from typing import Any
@@ -66,15 +65,14 @@ def export_frames(recording: str | Path, out: str | Path,
         for topic, log_ns, raw in scan:
             if topic != fmt.FRAMES:
                 continue
-            m = json.loads(raw)
+            fr = fmt.read_frame(raw)
             if writer is None:  # the wall clock at the recorder's start, from the first frame
-                start_s = (log_ns - round(float(m["t"]) * 1e9)) / 1e9
+                start_s = (log_ns - round(fr.t * 1e9)) / 1e9
                 writer = _open_writer(out, start_s)
             msg = can.Message(
-                timestamp=start_s + float(m["t"]), arbitration_id=int(m["id"]),
-                is_extended_id=int(m["id"]) > 0x7FF, data=bytes.fromhex(m["data"]),
-                is_fd=bool(m["fd"]), bitrate_switch=bool(m["fd"]),
-                is_error_frame=bool(m["error"]), is_rx=m["dir"] == "rx", channel=channel)
+                timestamp=start_s + fr.t, arbitration_id=fr.can_id, is_extended_id=fr.extended,
+                data=fr.data, is_fd=fr.fd, bitrate_switch=fr.fd, is_error_frame=fr.error,
+                is_rx=not fr.tx, channel=channel)
             heapq.heappush(heap, (msg.timestamp, n, msg))
             n += 1
             if len(heap) > REORDER:
@@ -83,7 +81,7 @@ def export_frames(recording: str | Path, out: str | Path,
             writer.on_message_received(heapq.heappop(heap)[2])
     except ExportError:
         raise
-    except (ValueError, KeyError) as e:
+    except (ValueError, KeyError, TypeError) as e:
         raise RecordingError(f"{recording}: a {fmt.FRAMES} message that is not a frame "
                              f"({type(e).__name__}: {e})") from None
     finally:

@@ -19,15 +19,24 @@ Foxglove offers it):
 A number without a value (a watchdog publish's accelerometer sample) is left out of its
 message, never written as NaN (not JSON); the schemas require every other field.
 
-Metadata records: ``chest-observer`` (software, model, DBC hash, configuration, start time)
-at the start, ``chest-observer-recorder`` (what was written and lost) at a clean end; a file
-without the latter was cut short. Attachments: ``model.json`` and ``chest_observer.dbc``.
+Metadata records: ``chest-observer`` (software, model, DBC hash, configuration, start time:
+:class:`RunMeta`) at the start, ``chest-observer-recorder`` (what was written and lost:
+:class:`EndMeta`) at a clean end; a file without the latter was cut short. Attachments:
+``model.json`` and ``chest_observer.dbc``.
 Times: ``t`` is seconds since the recorder started; the MCAP log time is wall-clock ns.
+What ``state`` and ``cause`` mean is the DBC's (``observer_node.dbc.meanings``); a frame's
+flags are :class:`FrameFlag`. Read back: :func:`read_frame` (a :class:`Frame`), the tick
+topics' fields by :data:`TICK_TOPICS` (each names its :class:`TickRow` column).
 """
 
 from __future__ import annotations
 
+import dataclasses
+import enum
 import json
+import math
+import operator
+from collections.abc import Callable
 from typing import NamedTuple
 
 MCAP_MAGIC = b"\x89MCAP0\r\n"
@@ -35,6 +44,32 @@ META_RUN = "chest-observer"
 META_END = "chest-observer-recorder"
 ATT_MODEL = "model.json"
 ATT_DBC = "chest_observer.dbc"
+# Attachments' media types
+MEDIA = {ATT_MODEL: "application/json", ATT_DBC: "text/plain"}
+
+
+class RunMeta(enum.StrEnum):
+    """The keys of the ``chest-observer`` metadata record (every value a string)."""
+
+    SOFTWARE_VERSION = "software_version"
+    MODEL_NAME = "model_name"
+    MODEL_KIND = "model_kind"
+    MODEL_ID = "model_id"
+    TICK_RATE_HZ = "tick_rate_hz"
+    DBC_SHA256 = "dbc_sha256"
+    CONFIG = "config"  # the daemon's NodeConfig as JSON
+    CPU_LATENCY = "cpu_latency"
+    SCHEDULING = "scheduling"
+    STARTED_UTC = "started_utc"
+
+
+class EndMeta(enum.StrEnum):
+    """The keys of the ``chest-observer-recorder`` record written at a clean end."""
+
+    FRAMES_LOST = "frames_lost"
+    TICKS_LOST = "ticks_lost"
+    FRAMES = "frames"
+    TICKS = "ticks"
 
 FRAMES = "/can/frames"
 INPUTS = "/observer/inputs"
@@ -42,35 +77,51 @@ ESTIMATE = "/observer/estimate"
 REFERENCE = "/observer/reference"
 STATUS = "/observer/status"
 
-# Frame flags in the rings and in /can/frames (bits 1, 2 and 8 are the bus port's)
-FLAG_TX = 4
+
+class FrameFlag(enum.IntFlag):
+    """A frame's flags in the rings (the bus port sets ERROR, FD and REMOTE, the daemon TX
+    on what it sent); /can/frames keeps ERROR, FD and TX as ``error``, ``fd``, ``dir``."""
+
+    ERROR = 1
+    FD = 2
+    TX = 4
+    REMOTE = 8  # a remote (RTR) frame: no data, never an input
 
 
-class TickRow(NamedTuple):
-    """One tick as the daemon hands it to the writer (floats in shared memory)."""
-
-    t: float
-    tick: float  # -1: a watchdog publish between ticks
-    accel_x_g: float
-    decel_g: float
-    bias_g: float
-    brs_count: float
-    brs_ref: float
-    rad_per_count: float
-    cr_g: float
-    cd_mm: float
-    valid: float
-    running: float
-    state: float
-    cause: float
-    event: float
-    onset_tick: float
-    ref_cr_g: float  # NaN: no reference frame yet
-    ref_cd_mm: float
-    proc_us: float
+# Plain ints for per-frame code (an IntFlag's operators run Python code)
+_ERROR, _FD, _TX = FrameFlag.ERROR.value, FrameFlag.FD.value, FrameFlag.TX.value
 
 
-TICK_COLS = TickRow._fields
+@dataclasses.dataclass(slots=True)
+class TickRow:
+    """One tick as the daemon hands it to the writer (floats in shared memory). The daemon
+    keeps one and sets its fields each tick (no row built per tick); :data:`tick_values`
+    gives them in column order for the rings."""
+
+    t: float = math.nan
+    tick: float = math.nan  # -1: a watchdog publish between ticks
+    accel_x_g: float = math.nan
+    decel_g: float = math.nan
+    bias_g: float = math.nan
+    brs_count: float = math.nan
+    brs_ref: float = math.nan
+    rad_per_count: float = math.nan
+    cr_g: float = math.nan
+    cd_mm: float = math.nan
+    valid: float = math.nan
+    running: float = math.nan
+    state: float = math.nan  # ObserverState
+    cause: float = math.nan  # InvalidCause bits
+    event: float = math.nan
+    onset_tick: float = math.nan
+    ref_cr_g: float = math.nan  # NaN: no reference frame yet
+    ref_cd_mm: float = math.nan
+    proc_us: float = math.nan
+
+
+TICK_COLS = tuple(f.name for f in dataclasses.fields(TickRow))
+# A row's values in TICK_COLS order, one tuple (C: no Python code per tick)
+tick_values: Callable[[TickRow], tuple[float, ...]] = operator.attrgetter(*TICK_COLS)
 
 # Per-tick topics: field -> (JSON type, the TickRow column it comes from). ``t`` is made
 # relative to the recorder's start.
@@ -138,8 +189,47 @@ def tick_messages(row: TickRow, t0: float) -> list[tuple[str, dict]]:
 
 
 def frame_message(t_rel: float, can_id: int, flags: int, data: bytes) -> dict:
-    """A /can/frames message: a raw frame as received or sent (``flags``: the port's
-    FLAG_ERROR 1, FLAG_FD 2, and FLAG_TX)."""
-    return {"t": t_rel, "id": can_id, "dir": "tx" if flags & FLAG_TX else "rx",
-            "error": bool(flags & 1), "fd": bool(flags & 2), "dlc": len(data),
+    """A /can/frames message: a raw frame as received or sent (``flags``: FrameFlag)."""
+    return {"t": t_rel, "id": can_id, "dir": "tx" if flags & _TX else "rx",
+            "error": bool(flags & _ERROR), "fd": bool(flags & _FD), "dlc": len(data),
             "data": data.hex()}
+
+
+class Frame(NamedTuple):
+    """A /can/frames message read back."""
+
+    t: float  # s since the recorder started
+    can_id: int
+    flags: FrameFlag  # ERROR, FD, TX (REMOTE is not recorded)
+    data: bytes
+
+    @property
+    def tx(self) -> bool:
+        """Sent by the daemon (else received)."""
+        return bool(self.flags & _TX)
+
+    @property
+    def error(self) -> bool:
+        return bool(self.flags & _ERROR)
+
+    @property
+    def fd(self) -> bool:
+        return bool(self.flags & _FD)
+
+    @property
+    def extended(self) -> bool:
+        """A 29-bit identifier (the message keeps the number only)."""
+        return self.can_id > 0x7FF
+
+
+def read_frame(raw: bytes | str) -> Frame:
+    """A /can/frames message as a :class:`Frame`; ValueError, KeyError or TypeError when it
+    is not one."""
+    m = json.loads(raw)
+    if not isinstance(m, dict):
+        raise ValueError(f"not a JSON object: {str(m)[:40]}")
+    if m["dir"] not in ("rx", "tx"):
+        raise ValueError(f"dir {m['dir']!r} is neither rx nor tx")
+    flags = (_TX if m["dir"] == "tx" else 0) | (_ERROR if m["error"] else 0) | \
+        (_FD if m["fd"] else 0)
+    return Frame(float(m["t"]), int(m["id"]), FrameFlag(flags), bytes.fromhex(m["data"]))

@@ -30,8 +30,8 @@ class Recording:
     path: Path
     metadata: dict[str, dict[str, str]]
     model: ModelFile | None
-    ticks: dict[str, np.ndarray]  # per tick, sorted by tick index
-    frames: list[dict]  # /can/frames messages (raw, in order)
+    ticks: dict[str, np.ndarray]  # per tick, sorted by tick index: TickRow's columns
+    frames: list[fmt.Frame]  # /can/frames messages (raw, in order)
     reference: dict[int, tuple[float, float]]
     salvaged: bool = False
     salvage_note: str = ""
@@ -39,11 +39,16 @@ class Recording:
 
     @property
     def tick_rate_hz(self) -> float:
-        return float(self.metadata.get(fmt.META_RUN, {}).get("tick_rate_hz", "nan"))
+        return float(self.metadata.get(fmt.META_RUN, {}).get(fmt.RunMeta.TICK_RATE_HZ, "nan"))
 
 
-_INPUT_KEYS = tuple(k for k in fmt.TOPIC_FIELDS[fmt.INPUTS] if k not in ("tick", "t"))
-_EST_KEYS = tuple(k for k in fmt.TOPIC_FIELDS[fmt.ESTIMATE] if k != "tick")
+# The writer's table read backwards: (message field, TickRow column) of each tick topic
+_INPUT_KEYS = tuple((k, col) for k, (_, col) in fmt.TICK_TOPICS[fmt.INPUTS].items()
+                    if k not in ("tick", "t"))
+_EST_KEYS = tuple((k, col) for k, (_, col) in fmt.TICK_TOPICS[fmt.ESTIMATE].items()
+                  if k != "tick")
+_REF_CR, _REF_CD = ({col: k for k, (_, col) in fmt.TICK_TOPICS[fmt.REFERENCE].items()}[c]
+                    for c in ("ref_cr_g", "ref_cd_mm"))
 
 
 class Scan:
@@ -107,7 +112,7 @@ def read_recording(path: str | Path, frames: bool = True) -> Recording:
     inputs: dict[int, dict] = {}
     est: dict[int, dict] = {}
     ref: dict[int, tuple[float, float]] = {}
-    raw: list[dict] = []
+    raw: list[fmt.Frame] = []
     topics: dict[str, int] = {}
     try:
         for topic, _, data in scan:
@@ -128,10 +133,10 @@ def read_recording(path: str | Path, frames: bool = True) -> Recording:
                 inputs[m["tick"]] = m
             elif topic == fmt.REFERENCE:
                 m = json.loads(data)
-                ref[m["tick"]] = (m.get("cr_g", np.nan), m.get("cd_mm", np.nan))
+                ref[m["tick"]] = (m.get(_REF_CR, np.nan), m.get(_REF_CD, np.nan))
             elif topic == fmt.FRAMES and frames:
-                raw.append(json.loads(data))
-    except (ValueError, KeyError) as e:  # a message that is not what the format says
+                raw.append(fmt.read_frame(data))
+    except (ValueError, KeyError, TypeError) as e:  # a message not what the format says
         raise RecordingError(f"{path}: message {scan.messages}: not a chest-observer "
                              f"message ({type(e).__name__}: {e})") from None
     salvaged, note = scan.salvaged, scan.note
@@ -146,8 +151,8 @@ def read_recording(path: str | Path, frames: bool = True) -> Recording:
     ticks_idx = np.array(sorted(set(est) & set(inputs)), dtype=np.int64)
     ticks: dict[str, np.ndarray] = {"tick": ticks_idx}
     # a number left out of a message had no value (see format): NaN here
-    for k in _EST_KEYS:
-        ticks[k] = np.array([est[i].get(k, np.nan) for i in ticks_idx], dtype=float)
-    for k in _INPUT_KEYS:
-        ticks[k] = np.array([inputs[i].get(k, np.nan) for i in ticks_idx], dtype=float)
+    for k, col in _EST_KEYS:  # columns named as TickRow's fields
+        ticks[col] = np.array([est[i].get(k, np.nan) for i in ticks_idx], dtype=float)
+    for k, col in _INPUT_KEYS:
+        ticks[col] = np.array([inputs[i].get(k, np.nan) for i in ticks_idx], dtype=float)
     return Recording(path, metadata, model, ticks, raw, ref, salvaged, note, topics)

@@ -56,6 +56,8 @@ from typing import Any
 
 import numpy as np
 
+from observer_node.dbc.meanings import RecorderState
+
 from . import format as fmt
 from .format import TICK_COLS, TickRow
 
@@ -69,9 +71,6 @@ _NO_CHUNK = 1 << 62  # the mcap writer's chunk size: it never ends a chunk on it
 _MSG_BYTES = 512  # the writer's last error, UTF-8
 _FRAME_ROW = struct.Struct(f"={len(FRAME_COLS)}d")
 _TICK_ROW = struct.Struct(f"={len(TICK_COLS)}d")
-
-# RecorderState in ObserverHealth (see the DBC)
-OFF, RECORDING, RESTARTED, FAILED = range(4)
 
 
 class RecorderError(OSError):
@@ -146,7 +145,8 @@ class Rings:
         self._frames_head = head + 1
         self._ctrl_words[FRAMES_HEAD] = head + 1
 
-    def put_tick(self, row: tuple) -> None:
+    def put_tick(self, row: tuple[float, ...]) -> None:
+        """``row``: a tick's values in TICK_COLS order (``format.tick_values``)."""
         head = self._ticks_head
         _TICK_ROW.pack_into(self.mm, self._ticks_off + (head % self.capacity) * _TICK_ROW.size,
                             *row)
@@ -314,9 +314,10 @@ def _write(rings: Rings, capacity: int, f: Any, clock: tuple[int, float],
             time.sleep(0.005)
     flush()  # the last rows in a chunk of their own, published before the end record
     w.add_metadata(fmt.META_END, {
-        "frames_lost": str(int(ctrl[FRAMES_LOST])),
-        "ticks_lost": str(int(ctrl[TICKS_LOST])),
-        "frames": str(seq[fmt.FRAMES]), "ticks": str(seq[fmt.ESTIMATE])})
+        fmt.EndMeta.FRAMES_LOST.value: str(int(ctrl[FRAMES_LOST])),
+        fmt.EndMeta.TICKS_LOST.value: str(int(ctrl[TICKS_LOST])),
+        fmt.EndMeta.FRAMES.value: str(seq[fmt.FRAMES]),
+        fmt.EndMeta.TICKS.value: str(seq[fmt.ESTIMATE])})
     w.finish()
     f.flush()
 
@@ -437,7 +438,7 @@ class Recorder:
         self.boosts = 0
         self.max_parts = max_parts
         self.restart_after_s = restart_after_s
-        self.state = RECORDING
+        self.state: RecorderState = RecorderState.RECORDING
         self.errors: list[str] = []
         self._final: tuple[int, int] | None = None  # (frames, ticks) lost, once closed
         self._started = 0.0
@@ -528,18 +529,20 @@ class Recorder:
 
     def _lost(self, lost: int, head: int, flushed: int) -> int:
         ctrl = self.rings.ctrl
-        unwritten = int(ctrl[head] - ctrl[flushed]) if self.state == FAILED else 0
+        failed = self.state == RecorderState.FAILED
+        unwritten = int(ctrl[head] - ctrl[flushed]) if failed else 0
         return int(ctrl[lost]) + unwritten
 
     @property
     def degraded(self) -> bool:
         """The recording is not the whole run: a writer failed or rows were lost."""
-        return self.state != RECORDING or self.lost_ticks > 0 or self.lost_frames > 0
+        return self.state != RecorderState.RECORDING or self.lost_ticks > 0 or \
+            self.lost_frames > 0
 
     def poll(self) -> str | None:
         """Check the writer (at the status period, off the per-frame path). A dead writer
         is restarted on a new part; returns a line to log when something happened."""
-        if self.state == FAILED or self.proc.is_alive():
+        if self.state == RecorderState.FAILED or self.proc.is_alive():
             return None
         if self.rings.ctrl[STOP]:
             return None
@@ -563,7 +566,7 @@ class Recorder:
         self.proc.join()
         durable_tails(ctrl, self.parts[-1])  # the successor starts after what is in it
         self.parts.append(part)
-        self.state = RESTARTED
+        self.state = RecorderState.RESTARTED
         ctrl[STOP] = 0
         self._spawn(fd, part)
         return f"recorder: {why}; recording goes on in {part}"
@@ -571,7 +574,7 @@ class Recorder:
     def _fail(self, why: str, detail: str) -> str:
         self.proc.join()
         durable_tails(self.rings.ctrl, self.parts[-1])  # what is lost starts after the file
-        self.state = FAILED
+        self.state = RecorderState.FAILED
         return f"recorder: {why}; recording stopped ({detail}), estimates go on unrecorded"
 
     def _stop_writer(self, timeout_s: float = 30.0) -> None:
@@ -601,7 +604,7 @@ class Recorder:
         said = None
         if self.proc.exitcode != 0:
             durable_tails(self.rings.ctrl, self.parts[-1])
-        if self.proc.exitcode != 0 and self.state != FAILED:
+        if self.proc.exitcode != 0 and self.state != RecorderState.FAILED:
             why = self.rings.error() or f"{self.parts[-1]}: the recorder process ended " \
                 f"(exit code {self.proc.exitcode})"
             self.errors.append(why)
