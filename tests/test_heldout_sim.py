@@ -98,7 +98,7 @@ def test_bad_arguments_exit_2(capsys: pytest.CaptureFixture[str], tmp_path: Path
 
 SET_A = cases.case_set("a")
 SET_B = cases.case_set("b")
-WATCHED = ("hb_broken_cd_dropout", "hb_broken_pulse_rail", "hb_cr_gain", "hb_cd_saturating")
+WATCHED = ("hb_broken_cd_dropout", "hb_broken_pulse_rail", "hb_cr_gain", "hb_cd_knee")
 
 
 def _keys(cs: list[cases.Case]) -> set[str]:
@@ -240,7 +240,7 @@ def test_set_b_pulse_clips_at_its_rail(set_b: Path) -> None:
 
 
 @pytest.mark.parametrize(("case", "hit", "spared"), [("hb_cr_gain", "cr", "cd"),
-                                                     ("hb_cd_saturating", "cd", "cr")])
+                                                     ("hb_cd_knee", "cd", "cr")])
 def test_set_b_transducer_touches_one_output(set_b: Path, case: str, hit: str,
                                              spared: str) -> None:
     (eff,) = cases.select([case], "b")[0].effects
@@ -254,6 +254,8 @@ def test_set_b_transducer_touches_one_output(set_b: Path, case: str, hit: str,
         peak = int(np.argmax(y0))
         if hit == "cr":  # a sensitivity error: the same factor at every level
             assert y[peak] / y0[peak] == pytest.approx(1 + eff.size, abs=0.01)
-        else:  # saturating: reads low at the peak, as D tanh(d / D) says
-            want = eff.size * np.tanh(y0[peak] / eff.size)
+        else:  # right up to the knee, low beyond it by the second segment's slope
+            want = eff.size + lab.KNEE_SLOPE * (y0[peak] - eff.size)
             assert y[peak] < y0[peak] - 1 and y[peak] == pytest.approx(want, abs=0.5)
+            below = y0 < eff.size - 1
+            assert np.allclose(y[below], y0[below], atol=0.3)

@@ -28,8 +28,9 @@ DUMMY = "HYBRID III 50%ILE MALE, DRIVER SEAT"
 DV_MS = {"R16": (13.6, 14.4), "SLED": (14.0, 15.6), "FULL": (14.3, 16.2)}
 # stated exactly, no per-test scatter: times, ranges, and one transducer's calibration
 EXACT = {"pulse_late", "brs_late", "brs_freeze", "cd_dropout", "pulse_rail", "pulse_gain",
-         "cr_gain", "cd_saturating"}
+         "cr_gain", "cd_knee"}
 DROPOUT_S = 0.010  # how long cd_dropout's wiper stays off the track
+KNEE_SLOPE = 0.6  # cd_knee: the gain of the CD calibration's second segment
 NOISE = {"pulse_g": 0.6, "cr_g": 0.55, "cd_mm": 0.10}  # white, before the CFC filters
 
 
@@ -117,8 +118,8 @@ def record(d: Drawn, i: int, sim: dict[str, np.ndarray], counts_per_rev: int,
     cr = ph.cfc(cr_read + NOISE["cr_g"] * rng.standard_normal(t.size), 180)
     cd_true = sim["cd"][i] * 1e3
     cd = cd_true * (1.0 + e["cd_pot_nonlinear"] * (np.maximum(cd_true, 0) / 25.0) ** 2)
-    if e["cd_saturating"]:  # the pot under-reads more the further it is pushed
-        cd = e["cd_saturating"] * np.tanh(cd / e["cd_saturating"])
+    if e["cd_knee"]:  # two-segment calibration, the second segment's slope entered wrong
+        cd = np.where(cd > e["cd_knee"], e["cd_knee"] + KNEE_SLOPE * (cd - e["cd_knee"]), cd)
     cd = cd + NOISE["cd_mm"] * rng.standard_normal(t.size)
     if e["cd_dropout"]:  # the wiper lifts off its track: the raw channel reads zero
         cd[(t >= e["cd_dropout"]) & (t < e["cd_dropout"] + DROPOUT_S)] = 0.0

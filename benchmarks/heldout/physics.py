@@ -63,7 +63,7 @@ EFFECTS = {
     "cd_dropout": "",  # broken test: CD wiper lifts, raw CD reads 0 for 10 ms (start, s)
     "pulse_rail": "",  # broken test: pulse channel clips at this range (g)
     "cr_gain": "",  # transducer: CR sensitivity error (relative), CD untouched
-    "cd_saturating": "",  # transducer: CD reads D tanh(d / D) (D in mm), CR untouched
+    "cd_knee": "",  # transducer: CD reads at 0.6 gain beyond this knee (mm), CR untouched
 }
 POW_B_M = (0.015, 0.025)  # webbing_power: reference stretch, chest side and up to the retractor
 V_HYST = 0.02  # m/s: webbing_hysteresis switches between its paths within this rate
