@@ -10,9 +10,11 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from benchmarks.heldout import make_sets
+from benchmarks.heldout import cases, lab, make_sets, physics
 from benchmarks.heldout.cases import BY_NAME
+from observer_node.data import load_tests
 from observer_node.data.isomme import read_isomme
+from observer_node.data.setups import assign_setups
 
 
 def _files(root: Path) -> dict[str, bytes]:
@@ -90,3 +92,170 @@ def test_bad_arguments_exit_2(capsys: pytest.CaptureFixture[str], tmp_path: Path
     err = capsys.readouterr().err.strip()
     assert err.startswith("error: unknown case 'nope'") and "\n" not in err
     assert make_sets.main([]) == 2
+
+
+# ------------------------------------------------------------------ set B (cases_b.py)
+
+SET_A = cases.case_set("a")
+SET_B = cases.case_set("b")
+WATCHED = ("hb_broken_cd_dropout", "hb_broken_pulse_rail", "hb_cr_gain", "hb_cd_knee")
+
+
+def _keys(cs: list[cases.Case]) -> set[str]:
+    return {e.key for c in cs for e in c.effects}
+
+
+def _mix(part: tuple[str, ...]) -> tuple[int, ...]:
+    return tuple(part.count(s) for s in cases.ALL)
+
+
+@pytest.fixture(scope="module")
+def set_b(tmp_path_factory: pytest.TempPathFactory) -> Path:
+    out = tmp_path_factory.mktemp("heldout_b")
+    assert make_sets.main(["--set", "b", "--out", str(out / "on")]) == 0
+    make_sets.make(cases.select(list(WATCHED), "b"), out / "off", log=False, effects_on=False)
+    return out
+
+
+def test_set_b_is_new(capsys: pytest.CaptureFixture[str]) -> None:
+    assert len(SET_B) >= 14
+    names = [c.name for c in SET_A + SET_B]
+    assert len(set(names)) == len(names)
+    assert not {c.seed for c in SET_A} & {c.seed for c in SET_B}
+    mixes_a = {_mix(p) for c in SET_A for p in (c.est, c.val)}
+    for c in SET_B:
+        assert len(c.est) == len(c.val) == 6
+        for part in (c.est, c.val):  # every setup in every part, in proportions set A lacks
+            assert min(_mix(part)) >= 1 and _mix(part) not in mixes_a
+        est, _ = cases.test_names(c)
+        for e in c.effects:
+            assert e.key in physics.EFFECTS and set(e.tests) <= set(est)
+    # sizes: no set B effect repeats a set A (key, size) pair
+    assert not ({(e.key, e.size) for c in SET_B for e in c.effects}
+                & {(e.key, e.size) for c in SET_A for e in c.effects})
+    assert make_sets.main(["--set", "b", "--out", "x", "--case", "h_clean48"]) == 2
+    assert "unknown case 'h_clean48' in set b" in capsys.readouterr().err
+
+
+def test_set_b_covers_the_done_when_list() -> None:
+    lib = physics.EFFECTS
+    clean = [c for c in SET_B if not c.effects and not c.expect]
+    assert {c.counts_per_rev for c in clean} >= {48, 96}
+    # each library effect is expected in exactly one single-effect case
+    singles = [c.expect[0][0] for c in SET_B if len(c.expect) == 1
+               and not {lib[e.key] for e in c.effects} - {c.expect[0][0]}]
+    vocabulary = {v for v in lib.values() if v}
+    assert set(singles) >= vocabulary
+    assert all(singles.count(v) == 1 for v in vocabulary - {"input_delay"})
+    # two effects on disjoint setups, each caused by an effect on exactly those setups
+    two = [c for c in SET_B if len(c.expect) == 2]
+    assert two
+    for c in two:
+        scopes = [set(s.split("+")) for _, s in c.expect]
+        assert not scopes[0] & scopes[1]
+        for (name, scope), e in zip(c.expect, c.effects, strict=True):
+            assert lib[e.key] == name and set(e.setups) == set(scope.split("+"))
+    # a broken test and a transducer error, of other kinds than set A's
+    broken = [c for c in SET_B if c.expect_broken]
+    transducer = [c for c in SET_B if c.expect_note.startswith("unexplained")]
+    for group in (broken, transducer):
+        assert group and not any(c.expect for c in group)
+        assert all(lib[e.key] == "" for c in group for e in c.effects)
+        assert not _keys(group) & _keys(SET_A)
+    assert {c.expect_note.split()[-1] for c in transducer} == {"cr", "cd"}
+    # input delays of 1..5 ms on each input, at values set A did not use
+    for key in ("pulse_late", "brs_late"):
+        sizes = {e.size for c in SET_B for e in c.effects if e.key == key}
+        in_range = {s for s in sizes if 0.001 <= s <= 0.005}
+        assert len(in_range) >= 2
+        assert not in_range & {e.size for c in SET_A for e in c.effects if e.key == key}
+
+
+def test_set_b_generates_and_reads(set_b: Path) -> None:
+    for c in SET_B:
+        est, val = cases.test_names(c)
+        truth = json.loads((set_b / "on" / c.name / "truth.json").read_text())
+        assert truth["expected"]["broken_tests"] == list(c.expect_broken)
+        for part, names, setups in (("est", est, c.est), ("val", val, c.val)):
+            tests = load_tests([set_b / "on" / c.name / part])
+            assert sorted(t.name for t in tests) == sorted(names)
+            assert {t.counts_per_rev for t in tests} == {c.counts_per_rev}
+            groups = assign_setups(tests)
+            assert sorted((g.name, len(g.tests)) for g in groups) == sorted(
+                (s, setups.count(s)) for s in set(setups))
+            for t in tests:
+                assert np.all(np.isfinite(t.pulse_g)) and t.cd_mm is not None
+                assert t.cr_g is not None and t.cr_g.max() > 15 and t.cd_mm.max() > 10
+
+
+def test_set_b_same_seed_same_bytes(set_b: Path, tmp_path: Path) -> None:
+    c = cases.select(["hb_two_effects"], "b")
+    make_sets.make(c, tmp_path, log=False)
+    assert _files(tmp_path / "hb_two_effects") == _files(set_b / "on" / "hb_two_effects")
+
+
+def test_set_b_forms_leave_set_a_alone(tmp_path: Path) -> None:
+    """Set B's forms switched on in the same batch do not move a set A test by one bit."""
+    a = cases.select(["h_airbag"])
+    make_sets.make(a, tmp_path / "alone", log=False)
+    make_sets.make(a + [c for c in SET_B if c.effects], tmp_path / "mixed", log=False)
+    assert _files(tmp_path / "alone" / "h_airbag") == _files(tmp_path / "mixed" / "h_airbag")
+
+
+def _channel(root: Path, test: str, which: str) -> np.ndarray:
+    t = read_isomme(next(root.glob(f"*/{test}")))
+    return {"pulse": t.pulse_g, "cr": t.cr_g, "cd": t.cd_mm}[which]
+
+
+def _others_untouched(set_b: Path, case: str, broken: str) -> None:
+    for part in ("est", "val"):
+        for folder in sorted((set_b / "on" / case / part).iterdir()):
+            if folder.name != broken:
+                assert _files(folder) == _files(set_b / "off" / case / part / folder.name)
+
+
+def test_set_b_cd_dropout_reads_zero_then_recovers(set_b: Path) -> None:
+    c = cases.select(["hb_broken_cd_dropout"], "b")[0]
+    (broken,), (eff,) = c.expect_broken, c.effects
+    bad = _channel(set_b / "on" / c.name, broken, "cd")
+    good = _channel(set_b / "off" / c.name, broken, "cd")
+    t = -0.020 + np.arange(len(bad)) / 10_000
+    inside = (t > eff.size + 0.002) & (t < eff.size + lab.DROPOUT_S - 0.002)
+    assert np.abs(bad[inside]).max() < 0.5 < good[inside].min() - 10  # a loaded chest reads 0
+    after = t > eff.size + lab.DROPOUT_S + 0.003
+    assert np.allclose(bad[after], good[after], atol=0.5)  # the wiper is back on its track
+    _others_untouched(set_b, c.name, broken)
+
+
+def test_set_b_pulse_clips_at_its_rail(set_b: Path) -> None:
+    c = cases.select(["hb_broken_pulse_rail"], "b")[0]
+    (broken,), (eff,) = c.expect_broken, c.effects
+    bad = _channel(set_b / "on" / c.name, broken, "pulse")
+    good = _channel(set_b / "off" / c.name, broken, "pulse")
+    flat = np.isclose(bad, eff.size, atol=1e-5)
+    assert good.max() > eff.size + 5 and bad.max() <= eff.size + 1e-5
+    assert flat.sum() >= 50  # >= 5 ms held at the rail
+    assert np.allclose(bad[~flat], good[~flat], atol=1e-5)
+    _others_untouched(set_b, c.name, broken)
+
+
+@pytest.mark.parametrize(("case", "hit", "spared"), [("hb_cr_gain", "cr", "cd"),
+                                                     ("hb_cd_knee", "cd", "cr")])
+def test_set_b_transducer_touches_one_output(set_b: Path, case: str, hit: str,
+                                             spared: str) -> None:
+    (eff,) = cases.select([case], "b")[0].effects
+    for folder in sorted((set_b / "on" / case).glob("*/*")):
+        on, off = set_b / "on" / case, set_b / "off" / case
+        assert np.array_equal(_channel(on, folder.name, spared),
+                              _channel(off, folder.name, spared))
+        assert np.array_equal(_channel(on, folder.name, "pulse"),
+                              _channel(off, folder.name, "pulse"))
+        y, y0 = _channel(on, folder.name, hit), _channel(off, folder.name, hit)
+        peak = int(np.argmax(y0))
+        if hit == "cr":  # a sensitivity error: the same factor at every level
+            assert y[peak] / y0[peak] == pytest.approx(1 + eff.size, abs=0.01)
+        else:  # right up to the knee, low beyond it by the second segment's slope
+            want = eff.size + lab.KNEE_SLOPE * (y0[peak] - eff.size)
+            assert y[peak] < y0[peak] - 1 and y[peak] == pytest.approx(want, abs=0.5)
+            below = y0 < eff.size - 1
+            assert np.allclose(y[below], y0[below], atol=0.3)

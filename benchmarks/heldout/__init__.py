@@ -6,11 +6,13 @@
   barrier crush). Written from the physics; nothing from ``observer_node`` is imported.
 - ``lab.py``: per-test scatter of the dummy (5 % 1-sigma, clipped at 10 %), lab noise, BRS
   counts (48 or 96 per rev), CFC 180 / 600 filters, SAE J211 signs, rig metadata.
-- ``iso_mme.py``: the ISO-MME writer.  ``cases.py``: the held-out cases and their expected
-  verdicts.  ``make_sets.py``: writes them (``--no-effects``: the same tests with every
-  effect off).  ``costs.py``: what each case costs the thesis grey-box (project CLI).
+- ``iso_mme.py``: the ISO-MME writer.  ``cases.py``: set A, the held-out cases and their
+  expected verdicts (now seen by the loop's engineers).  ``cases_b.py``: set B, new cases and
+  verdicts committed before the loop ran on them.  ``make_sets.py``: writes a set
+  (``--no-effects``: the same tests with every effect off).  ``costs.py``: what each case
+  costs the thesis grey-box (project CLI).
 
-    python -m benchmarks.heldout.make_sets --out /tmp/heldout [--case NAME ...]
+    python -m benchmarks.heldout.make_sets --out /tmp/heldout [--set a|b] [--case NAME ...]
 
 Never tune the loop on these cases; report them apart from the tuned ones.
 """

@@ -2,7 +2,7 @@
 ``observer-node identify --model greybox`` + ``evaluate`` (the project's CLI, nothing else)
 on each case, and on its twin with every effect off (same dummies, pulses and noise).
 
-    python -m benchmarks.heldout.costs [--case NAME ...] [--work DIR]
+    python -m benchmarks.heldout.costs [--set a|b] [--case NAME ...] [--work DIR]
 
 About 40 s per case on this machine (two identifications, two evaluations).
 """
@@ -16,7 +16,7 @@ import sys
 import tempfile
 from pathlib import Path
 
-from .cases import select
+from .cases import SETS, select
 from .make_sets import make
 
 
@@ -36,6 +36,7 @@ def _fit(data: Path, out: Path) -> dict[str, float]:
 def main(argv: list[str] | None = None) -> int:
     ap = argparse.ArgumentParser(prog="python -m benchmarks.heldout.costs",
                                  description=__doc__.split("\n\n")[0])
+    ap.add_argument("--set", dest="case_set", choices=SETS, default="a")
     ap.add_argument("--case", action="append", metavar="NAME")
     ap.add_argument("--work", type=Path, help="keep the sets and fits here (default: temporary)")
     try:
@@ -43,7 +44,7 @@ def main(argv: list[str] | None = None) -> int:
     except SystemExit as e:
         return int(e.code or 0)
     try:
-        cases = select(args.case)
+        cases = select(args.case, args.case_set)
     except ValueError as e:
         print(f"error: {e}", file=sys.stderr)
         return 2

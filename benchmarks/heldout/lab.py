@@ -26,7 +26,11 @@ PULSE_CHANNEL = {"R16": ("S0SLED000000ACXP", "Sled carriage X acc"),
                  "FULL": ("10TUNN000000ACXP", "Tunnel X acc below seat")}
 DUMMY = "HYBRID III 50%ILE MALE, DRIVER SEAT"
 DV_MS = {"R16": (13.6, 14.4), "SLED": (14.0, 15.6), "FULL": (14.3, 16.2)}
-EXACT = {"pulse_late", "brs_late", "brs_freeze"}  # stated exactly: no per-test scatter
+# stated exactly, no per-test scatter: times, ranges, and one transducer's calibration
+EXACT = {"pulse_late", "brs_late", "brs_freeze", "cd_dropout", "pulse_rail", "pulse_gain",
+         "cr_gain", "cd_knee"}
+DROPOUT_S = 0.010  # how long cd_dropout's wiper stays off the track
+KNEE_SLOPE = 0.6  # cd_knee: the gain of the CD calibration's second segment
 NOISE = {"pulse_g": 0.6, "cr_g": 0.55, "cd_mm": 0.10}  # white, before the CFC filters
 
 
@@ -94,7 +98,11 @@ def record(d: Drawn, i: int, sim: dict[str, np.ndarray], counts_per_rev: int,
     # channel leads the pulse the physics ran on. The other way round (a channel recorded
     # after the chest moved) no causal observer can model.
     pulse = np.interp(t + e["pulse_late"], tg, sim["pulse"][i]) / ph.G
+    if e["pulse_gain"]:  # the accelerometer's sensitivity entered wrong
+        pulse = pulse * (1.0 + e["pulse_gain"])
     pulse = pulse + NOISE["pulse_g"] * rng.standard_normal(t.size)
+    if e["pulse_rail"]:  # amplifier range set too low: the channel clips at its rails
+        pulse = np.clip(pulse, -e["pulse_rail"], e["pulse_rail"])
     # BRS: the spindle's counts, leading the belt the chest feels by brs_late (as the pulse),
     # maybe frozen by a cable fault
     th = np.interp(t + e["brs_late"], t, sim["th"][i])
@@ -104,10 +112,18 @@ def record(d: Drawn, i: int, sim: dict[str, np.ndarray], counts_per_rev: int,
         k = int(np.searchsorted(t, e["brs_freeze"]))
         counts[k:] = counts[k]
     # CR (CFC 180), CD (CFC 600, maybe a non-linear pot, maybe zeroed off)
-    cr = ph.cfc(sim["cr"][i] / ph.G + NOISE["cr_g"] * rng.standard_normal(t.size), 180)
+    cr_read = sim["cr"][i] / ph.G
+    if e["cr_gain"]:  # the accelerometer's sensitivity error
+        cr_read = cr_read * (1.0 + e["cr_gain"])
+    cr = ph.cfc(cr_read + NOISE["cr_g"] * rng.standard_normal(t.size), 180)
     cd_true = sim["cd"][i] * 1e3
     cd = cd_true * (1.0 + e["cd_pot_nonlinear"] * (np.maximum(cd_true, 0) / 25.0) ** 2)
-    cd = ph.cfc(cd + NOISE["cd_mm"] * rng.standard_normal(t.size), 600) + e["zero_offset"]
+    if e["cd_knee"]:  # two-segment calibration, the second segment's slope entered wrong
+        cd = np.where(cd > e["cd_knee"], e["cd_knee"] + KNEE_SLOPE * (cd - e["cd_knee"]), cd)
+    cd = cd + NOISE["cd_mm"] * rng.standard_normal(t.size)
+    if e["cd_dropout"]:  # the wiper lifts off its track: the raw channel reads zero
+        cd[(t >= e["cd_dropout"]) & (t < e["cd_dropout"] + DROPOUT_S)] = 0.0
+    cd = ph.cfc(cd, 600) + e["zero_offset"]
     rig = RIGS[d.setup]
     code, text = PULSE_CHANNEL[d.setup]
     n = counts_per_rev

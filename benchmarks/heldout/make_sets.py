@@ -2,7 +2,7 @@
 DIR/<case>/truth.json (the case, the expected verdict, the true parameters of every test).
 Deterministic from each case's seed.
 
-    python -m benchmarks.heldout.make_sets --out DIR [--case NAME ...] [--no-effects]
+    python -m benchmarks.heldout.make_sets --out DIR [--set a|b] [--case NAME ...] [--no-effects]
 """
 
 from __future__ import annotations
@@ -17,7 +17,7 @@ import numpy as np
 
 from . import lab
 from . import physics as ph
-from .cases import CASES, Case, select
+from .cases import CASES, SETS, Case, select
 from .iso_mme import write_test
 
 
@@ -61,8 +61,11 @@ def main(argv: list[str] | None = None) -> int:
     ap = argparse.ArgumentParser(prog="python -m benchmarks.heldout.make_sets",
                                  description=__doc__.split("\n\n")[0])
     ap.add_argument("--out", required=True, type=Path, help="folder to write the sets into")
+    ap.add_argument("--set", dest="case_set", choices=SETS, default="a",
+                    help="set A (cases.py, default) or set B (cases_b.py, held out from the "
+                         "loop's engineers)")
     ap.add_argument("--case", action="append", metavar="NAME",
-                    help="only this case (repeatable); default all: "
+                    help="only this case of the set (repeatable); default all, in set A: "
                          + ", ".join(c.name for c in CASES))
     ap.add_argument("--no-effects", action="store_true",
                     help="the same tests with every effect off (what the effects cost)")
@@ -71,7 +74,7 @@ def main(argv: list[str] | None = None) -> int:
     except SystemExit as e:
         return int(e.code or 0)
     try:
-        cases = select(args.case)
+        cases = select(args.case, args.case_set)
     except ValueError as e:
         print(f"error: {e}", file=sys.stderr)
         return 2

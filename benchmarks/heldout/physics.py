@@ -53,7 +53,21 @@ EFFECTS = {
     "zero_offset": "sensor_offset",  # CD channel zeroed wrong (mm, visible at rest)
     "brs_freeze": "",  # broken test: BRS cable fault, the count freezes (time, s)
     "cd_pot_nonlinear": "",  # transducer: CD over-reads at large deflection (CR untouched)
+    # set B's forms (cases_b.py)
+    "rib_hardening": "chest_stiffening",  # ribs harden from zero, F += k3 d^3 (N/m^3)
+    "rib_visco": "chest_rate_damping",  # rib damping, F += c |d'|^1.5 sign(d') (N/(m/s)^1.5)
+    "webbing_hysteresis": "belt_unloading",  # elastic force this much lower while shortening
+    "webbing_power": "belt_stiffening",  # webbing F += a k e (e/e_ref)^2 (dimensionless a)
+    "airbag_relief": "airbag_contact",  # gas bag with a pressure-relief vent (fill scale)
+    "pulse_gain": "input_gain",  # pulse accelerometer sensitivity error (relative)
+    "cd_dropout": "",  # broken test: CD wiper lifts, raw CD reads 0 for 10 ms (start, s)
+    "pulse_rail": "",  # broken test: pulse channel clips at this range (g)
+    "cr_gain": "",  # transducer: CR sensitivity error (relative), CD untouched
+    "cd_knee": "",  # transducer: CD reads at 0.6 gain beyond this knee (mm), CR untouched
 }
+POW_B_M = (0.015, 0.025)  # webbing_power: reference stretch, chest side and up to the retractor
+V_HYST = 0.02  # m/s: webbing_hysteresis switches between its paths within this rate
+RELIEF_PA = (40e3, 10e3, 25.0)  # airbag_relief: opens at, fully open after, vent rate (1/s)
 
 # Nominal Hybrid-III-like thorax, belt and retractor (SI), before per-test scatter.
 NOMINAL = {
@@ -116,6 +130,14 @@ def _deriv(b: Batch, j: np.ndarray | int, y: np.ndarray) -> np.ndarray:
     if np.any(cf):
         fa = fa + cf * np.sign(dva) * np.abs(dva) ** 2.2
         fb = fb + cf * np.sign(dvb) * np.abs(dvb) ** 2.2
+    kh = e["rib_hardening"]
+    if np.any(kh):
+        fa = fa + kh * da ** 3
+        fb = fb + kh * db ** 3
+    cv = e["rib_visco"]
+    if np.any(cv):
+        fa = fa + cv * np.sign(dva) * np.abs(dva) ** 1.5
+        fb = fb + cv * np.sign(dvb) * np.abs(dvb) ** 1.5
     fab = p["k_ab"] * (sa - sb) + p["c_ab"] * (va - vb)
 
     # belt, chest side: pushes the contact point of the sternum rearward
@@ -128,6 +150,12 @@ def _deriv(b: Batch, j: np.ndarray | int, y: np.ndarray) -> np.ndarray:
         e0 = 0.006
         z = np.clip(np.maximum(ext, 0.0) / e0, 0.0, 6.0)
         el = el + toe * p["k_b"] * e0 * (np.expm1(z) - z)
+    pw = e["webbing_power"]
+    if np.any(pw):
+        el = el + pw * p["k_b"] * np.maximum(ext, 0.0) ** 3 / POW_B_M[0] ** 2
+    hy = e["webbing_hysteresis"]
+    if np.any(hy):  # a softer elastic path while the segment shortens
+        el = el * (1.0 - hy * 0.5 * (1.0 - np.tanh((vu - vc) / V_HYST)))
     fc = el + p["c_b"] * (vu - vc)
 
     # webbing to the retractor: retracted length grows with the spool radius
@@ -140,6 +168,11 @@ def _deriv(b: Batch, j: np.ndarray | int, y: np.ndarray) -> np.ndarray:
         e1 = 0.010
         z1 = np.clip(np.maximum(stretch, 0.0) / e1, 0.0, 6.0)
         tr = tr + toe * p["k_up"] * e1 * (np.expm1(z1) - z1)
+    if np.any(pw):
+        tr = tr + pw * p["k_up"] * np.maximum(stretch, 0.0) ** 3 / POW_B_M[1] ** 2
+    if np.any(hy):  # its elastic part only: the damping stays as it is
+        el_up = tr - p["c_up"] * (vv + r * om - vu)
+        tr = tr - el_up * hy * 0.5 * (1.0 - np.tanh((vv + r * om - vu) / V_HYST))
     slack = e["webbing_slack"] > 0
     if np.any(slack):
         fc = np.where(slack, np.maximum(fc, 0.0), fc)
@@ -167,6 +200,9 @@ def _deriv(b: Batch, j: np.ndarray | int, y: np.ndarray) -> np.ndarray:
     fbag = np.zeros_like(x)
     dq = np.zeros_like(x)
     bag = e["airbag"]  # scale of the bag's fill pressure above the nominal
+    relief = e["airbag_relief"]  # the same, for a bag with a pressure-relief vent
+    if np.any(relief):
+        bag = bag + relief
     if np.any(bag):
         pen = np.maximum((xv - x) - p["gap_bag"], 0.0)
         deployed = (t > p["t_bag"] + 0.025) & (bag > 0)
@@ -176,6 +212,9 @@ def _deriv(b: Batch, j: np.ndarray | int, y: np.ndarray) -> np.ndarray:
         area = p["Amax_bag"] * np.minimum(pen / p["dA_bag"], 1.0)
         fbag = np.where(deployed, area * p_g, 0.0)
         dq = np.where(deployed, -p["k_vent"] * q * np.sqrt(p_g / P_ATM) * 0.1, 0.0)
+        if np.any(relief):  # closed below its opening pressure, then vents fast
+            opening = np.clip((p_g - RELIEF_PA[0]) / RELIEF_PA[1], 0.0, 1.0)
+            dq = np.where(deployed & (relief > 0), -RELIEF_PA[2] * q * opening, dq)
 
     f_st = p["f_st_bag"]
     dvx = (fa + fb + fl + (1 - f_st) * fbag) / p["m_sp"]
