@@ -35,7 +35,8 @@ from pathlib import Path
 
 import numpy as np
 
-from benchmarks.heldout.cases import Case, select
+from benchmarks.heldout.cases import Case
+from benchmarks.heldout.sets import select
 from observer_node.data import load_tests
 from observer_node.ident.dataset import make_dataset
 from observer_node.loop.closed_loop import run_loop

@@ -16,9 +16,10 @@ from .data.crashtest import THESIS_WINDOW_S
 from .data.setups import assign_setups
 from .ident import arx, greybox, n4sid
 from .ident.dataset import Dataset, make_dataset
+from .ident.kinds import IDENTIFY, N4SID_BLOCK_ROWS, IdentifyOptions
 from .ident.metrics import fit_table
 from .ident.progress import Progress
-from .model.kinds import MODEL_KINDS, N4SID_BLOCK_ROWS, IdentifyOptions
+from .model.kinds import MODEL_KINDS
 from .model.modelfile import ModelFile
 from .scores import mean_abs_errors, scores
 
@@ -53,11 +54,10 @@ def split_halves(tests: list[CrashTest]) -> tuple[list[CrashTest], list[CrashTes
 def identify(kind: str, data: Dataset, nmax: int = 6, order: int = 7,
              orders: arx.ArxOrders | None = None, m1_kg: float = greybox.DEFAULT_M1_KG,
              progress: Progress | None = None, name: str | None = None) -> ModelFile:
-    """Identify one model of ``kind`` (one of :data:`MODEL_KINDS`) on ``data``."""
-    if kind not in MODEL_KINDS:
-        raise ValueError(f"unknown model kind {kind!r} ({', '.join(MODEL_KINDS)})")
-    return MODEL_KINDS[kind].identify(data, IdentifyOptions(nmax, order, orders, m1_kg,
-                                                            progress, name))
+    """Identify one model of ``kind`` (one of :data:`IDENTIFY`) on ``data``."""
+    if kind not in IDENTIFY:
+        raise ValueError(f"unknown model kind {kind!r} ({', '.join(IDENTIFY)})")
+    return IDENTIFY[kind](data, IdentifyOptions(nmax, order, orders, m1_kg, progress, name))
 
 
 def simulate_model(mf: ModelFile, data: Dataset) -> np.ndarray:

@@ -11,6 +11,7 @@ import numpy as np
 import pytest
 
 from benchmarks.heldout import cases, lab, make_sets, physics
+from benchmarks.heldout import sets as heldout_sets
 from benchmarks.heldout.cases import BY_NAME
 from observer_node.data import load_tests
 from observer_node.data.isomme import read_isomme
@@ -96,8 +97,8 @@ def test_bad_arguments_exit_2(capsys: pytest.CaptureFixture[str], tmp_path: Path
 
 # ------------------------------------------------------------------ set B (cases_b.py)
 
-SET_A = cases.case_set("a")
-SET_B = cases.case_set("b")
+SET_A = heldout_sets.case_set("a")
+SET_B = heldout_sets.case_set("b")
 WATCHED = ("hb_broken_cd_dropout", "hb_broken_pulse_rail", "hb_cr_gain", "hb_cd_knee")
 
 
@@ -113,7 +114,8 @@ def _mix(part: tuple[str, ...]) -> tuple[int, ...]:
 def set_b(tmp_path_factory: pytest.TempPathFactory) -> Path:
     out = tmp_path_factory.mktemp("heldout_b")
     assert make_sets.main(["--set", "b", "--out", str(out / "on")]) == 0
-    make_sets.make(cases.select(list(WATCHED), "b"), out / "off", log=False, effects_on=False)
+    make_sets.make(heldout_sets.select(list(WATCHED), "b"), out / "off", log=False,
+                   effects_on=False)
     return out
 
 
@@ -189,14 +191,14 @@ def test_set_b_generates_and_reads(set_b: Path) -> None:
 
 
 def test_set_b_same_seed_same_bytes(set_b: Path, tmp_path: Path) -> None:
-    c = cases.select(["hb_two_effects"], "b")
+    c = heldout_sets.select(["hb_two_effects"], "b")
     make_sets.make(c, tmp_path, log=False)
     assert _files(tmp_path / "hb_two_effects") == _files(set_b / "on" / "hb_two_effects")
 
 
 def test_set_b_forms_leave_set_a_alone(tmp_path: Path) -> None:
     """Set B's forms switched on in the same batch do not move a set A test by one bit."""
-    a = cases.select(["h_airbag"])
+    a = heldout_sets.select(["h_airbag"])
     make_sets.make(a, tmp_path / "alone", log=False)
     make_sets.make(a + [c for c in SET_B if c.effects], tmp_path / "mixed", log=False)
     assert _files(tmp_path / "alone" / "h_airbag") == _files(tmp_path / "mixed" / "h_airbag")
@@ -215,7 +217,7 @@ def _others_untouched(set_b: Path, case: str, broken: str) -> None:
 
 
 def test_set_b_cd_dropout_reads_zero_then_recovers(set_b: Path) -> None:
-    c = cases.select(["hb_broken_cd_dropout"], "b")[0]
+    c = heldout_sets.select(["hb_broken_cd_dropout"], "b")[0]
     (broken,), (eff,) = c.expect_broken, c.effects
     bad = _channel(set_b / "on" / c.name, broken, "cd")
     good = _channel(set_b / "off" / c.name, broken, "cd")
@@ -228,7 +230,7 @@ def test_set_b_cd_dropout_reads_zero_then_recovers(set_b: Path) -> None:
 
 
 def test_set_b_pulse_clips_at_its_rail(set_b: Path) -> None:
-    c = cases.select(["hb_broken_pulse_rail"], "b")[0]
+    c = heldout_sets.select(["hb_broken_pulse_rail"], "b")[0]
     (broken,), (eff,) = c.expect_broken, c.effects
     bad = _channel(set_b / "on" / c.name, broken, "pulse")
     good = _channel(set_b / "off" / c.name, broken, "pulse")
@@ -243,7 +245,7 @@ def test_set_b_pulse_clips_at_its_rail(set_b: Path) -> None:
                                                      ("hb_cd_knee", "cd", "cr")])
 def test_set_b_transducer_touches_one_output(set_b: Path, case: str, hit: str,
                                              spared: str) -> None:
-    (eff,) = cases.select([case], "b")[0].effects
+    (eff,) = heldout_sets.select([case], "b")[0].effects
     for folder in sorted((set_b / "on" / case).glob("*/*")):
         on, off = set_b / "on" / case, set_b / "off" / case
         assert np.array_equal(_channel(on, folder.name, spared),

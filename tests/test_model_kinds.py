@@ -1,5 +1,5 @@
-"""Model kinds: a kind registered in one place is identified, written, loaded and evaluated,
-with nothing else edited."""
+"""Model kinds: a kind registered once for the model file and once for identification is
+identified, written, loaded and evaluated, with nothing else edited."""
 
 from __future__ import annotations
 
@@ -11,7 +11,8 @@ import pytest
 from observer_node.data import bundled_campaign, read_isomme
 from observer_node.evaluation import evaluate_model, identify
 from observer_node.ident.dataset import make_dataset
-from observer_node.model.kinds import MODEL_KINDS, IdentifyOptions, ModelKind, registered_kind
+from observer_node.ident.kinds import IDENTIFY, IdentifyOptions, registered_identify
+from observer_node.model.kinds import MODEL_KINDS, ModelKind, registered_kind
 from observer_node.model.modelfile import ModelFile, ModelFileError
 
 
@@ -22,10 +23,10 @@ def r16():
 
 def _arx_as_toy(data, o: IdentifyOptions) -> ModelFile:
     """A toy kind: an ARX model by another name (so its outputs are known)."""
-    return replace(MODEL_KINDS["arx"].identify(data, o), kind="toy_arx", name=o.name or "toy")
+    return replace(IDENTIFY["arx"](data, o), kind="toy_arx", name=o.name or "toy")
 
 
-TOY = ModelKind("toy_arx", "an ARX model by another name", _arx_as_toy,
+TOY = ModelKind("toy_arx", "an ARX model by another name",
                 summary=lambda mf: {"toy": True}, describe=lambda mf: ["a toy"])
 
 
@@ -34,7 +35,7 @@ def test_a_registered_kind_is_identified_loaded_and_evaluated(r16):
     ref = identify("arx", data, nmax=3)
     with pytest.raises(ValueError, match="toy_arx"):
         identify("toy_arx", data)
-    with registered_kind(TOY):
+    with registered_kind(TOY), registered_identify("toy_arx", _arx_as_toy):
         mf = identify("toy_arx", data, nmax=3)
         loaded = ModelFile.from_dict(mf.to_dict(), "toy")  # the schema and loader take it
         assert loaded.kind == "toy_arx"

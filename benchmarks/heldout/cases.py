@@ -109,32 +109,6 @@ CASES: list[Case] = [
 BY_NAME = {c.name: c for c in CASES}
 
 
-SETS = ("a", "b")
-
-
-def case_set(name: str) -> list[Case]:
-    """Set A (this module) or set B (``cases_b``); ValueError for another name."""
-    if name == "a":
-        return list(CASES)
-    if name == "b":
-        from .cases_b import SET_B  # imported here: cases_b builds on this module's Case
-
-        return list(SET_B)
-    raise ValueError(f"unknown case set {name!r}; known: {', '.join(SETS)}")
-
-
-def select(names: list[str] | None, case_set_name: str = "a") -> list[Case]:
-    """The cases named from one set (all of that set for None); ValueError naming the first
-    unknown one."""
-    cases = case_set(case_set_name)
-    by_name = {c.name: c for c in cases}
-    bad = [n for n in names or [] if n not in by_name]
-    if bad:
-        raise ValueError(f"unknown case {bad[0]!r} in set {case_set_name}; known: "
-                         f"{', '.join(by_name)}")
-    return [by_name[n] for n in names] if names else cases
-
-
 def test_names(case: Case) -> tuple[list[str], list[str]]:
     """Names of the estimation and validation tests: odd numbers estimate, even validate,
     numbered per setup (R16_001, R16_003 estimate; R16_002 validates)."""

@@ -16,8 +16,8 @@ import sys
 import tempfile
 from pathlib import Path
 
-from .cases import SETS, select
 from .make_sets import make
+from .sets import SETS, select
 
 
 def _fit(data: Path, out: Path) -> dict[str, float]:

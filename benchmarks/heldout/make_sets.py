@@ -17,8 +17,9 @@ import numpy as np
 
 from . import lab
 from . import physics as ph
-from .cases import CASES, SETS, Case, select
+from .cases import CASES, Case
 from .iso_mme import write_test
+from .sets import SETS, select
 
 
 def expected(case: Case) -> dict:

@@ -1,9 +1,10 @@
 """Model kinds: one definition each, registered once.
 
-A :class:`ModelKind` says how a model of that kind is identified, what its file must agree with
-when it is loaded, and what is reported of it beside its fits. The model file's schema and
-loader, :func:`observer_node.evaluation.identify`, the evaluation's tables and the command line
-read :data:`MODEL_KINDS`.
+A :class:`ModelKind` says what a model file of that kind must agree with when it is loaded, and
+what is reported of it beside its fits. The model file's schema and loader, the evaluation's
+tables and the command line read :data:`MODEL_KINDS`. How a kind is identified is the
+identification's business, registered beside it in :mod:`observer_node.ident.kinds`: the model
+file, and so the daemon, never reach fitting code.
 
 What a model runs as does not depend on its kind: every model file becomes a linear observer
 (:class:`.observer.LinearObserver`), a grey-box with effects the non-linear one
@@ -24,29 +25,13 @@ import numpy as np
 from . import chest
 
 if TYPE_CHECKING:
-    from ..ident.arx import ArxOrders
-    from ..ident.dataset import Dataset
-    from ..ident.progress import Progress
     from .modelfile import ModelFile
-
-
-@dataclass(frozen=True)
-class IdentifyOptions:
-    """What identification may be told; each kind reads its own."""
-
-    nmax: int = 6  # ARX: the largest order searched
-    order: int = 7  # N4SID: the model order
-    orders: ArxOrders | None = None  # ARX: these orders, no search
-    m1_kg: float = 20.0  # grey-box: the fixed spine mass that sets the mass scale
-    progress: Progress | None = None
-    name: str | None = None  # the model's name (default: from the kind and its options)
 
 
 @dataclass(frozen=True)
 class ModelKind:
     name: str
     description: str
-    identify: Callable[[Dataset, IdentifyOptions], ModelFile]
     # a physical grey-box: stepped from its parameters, it may carry effects and says its
     # output timing
     physical: bool = False
@@ -79,13 +64,6 @@ def registered_kind(kind: ModelKind) -> Iterator[ModelKind]:
 
 
 # ---------------------------------------------------------------------------- grey-box
-def _identify_greybox(data: Dataset, o: IdentifyOptions) -> ModelFile:
-    from ..ident import greybox
-
-    fit = greybox.fit_greybox(data, m1_kg=o.m1_kg, progress=o.progress)
-    return greybox.to_model_file(fit, data, o.name or "greybox")
-
-
 def _greybox_disagrees(mf: ModelFile) -> str | None:
     """None unless the matrices are not the parameters' (rel. 1e-9)."""
     try:
@@ -120,42 +98,17 @@ def _greybox_lines(mf: ModelFile) -> list[str]:
 
 register_kind(ModelKind(
     "greybox", "the thesis's two-mass chest (eq. 3.1-3.8) from its physical parameters; may "
-    "carry added effects", _identify_greybox, physical=True, check=_greybox_disagrees,
+    "carry added effects", physical=True, check=_greybox_disagrees,
     summary=lambda mf: {"parameters": mf.parameters}, describe=_greybox_lines))
 
 
 # ---------------------------------------------------------------------------- ARX
-def _identify_arx(data: Dataset, o: IdentifyOptions) -> ModelFile:
-    from ..ident import arx
-    from ..ident.metrics import fit_table
-
-    orders = o.orders
-    history: list[dict] = []
-    if orders is None:
-        orders, history = arx.search_orders(data, o.nmax, progress=o.progress)
-    m = arx.estimate_arx(data, orders)
-    m.fits = fit_table(data.names, data.y[:, data.win], m.simulate(data)[:, data.win])
-    return arx.to_model_file(m, data, o.name or f"arx-nmax{o.nmax}", o.nmax, history)
-
-
 register_kind(ModelKind(
     "arx", "iterated ARX (thesis section 3.4), its orders searched up to --nmax",
-    _identify_arx,
     summary=lambda mf: {"orders": {k: mf.structure[k] for k in ("NA", "NB", "NK")}},
     describe=lambda mf: [f"orders: NA={mf.structure['NA']} NB={mf.structure['NB']} "
                          f"NK={mf.structure['NK']}"]))
 
 
 # ---------------------------------------------------------------------------- N4SID
-N4SID_BLOCK_ROWS = 24
-
-
-def _identify_n4sid(data: Dataset, o: IdentifyOptions) -> ModelFile:
-    from ..ident import n4sid
-
-    ss = n4sid.n4sid(data, o.order, N4SID_BLOCK_ROWS)
-    return n4sid.to_model_file(ss, data, o.name or f"n4sid-{o.order}", N4SID_BLOCK_ROWS)
-
-
-register_kind(ModelKind("n4sid", "a subspace (N4SID) state space of order --order",
-                        _identify_n4sid))
+register_kind(ModelKind("n4sid", "a subspace (N4SID) state space of order --order"))

@@ -1,0 +1,30 @@
+"""The held-out sets by name: set A (``cases``), set B (``cases_b``, written after set A had
+been looked at by the loop's engineers, kept from them until the loop ran on it)."""
+
+from __future__ import annotations
+
+from .cases import CASES, Case
+from .cases_b import SET_B
+
+SETS = ("a", "b")
+
+
+def case_set(name: str) -> list[Case]:
+    """Set A (this module) or set B (``cases_b``); ValueError for another name."""
+    if name == "a":
+        return list(CASES)
+    if name == "b":
+        return list(SET_B)
+    raise ValueError(f"unknown case set {name!r}; known: {', '.join(SETS)}")
+
+
+def select(names: list[str] | None, case_set_name: str = "a") -> list[Case]:
+    """The cases named from one set (all of that set for None); ValueError naming the first
+    unknown one."""
+    cases = case_set(case_set_name)
+    by_name = {c.name: c for c in cases}
+    bad = [n for n in names or [] if n not in by_name]
+    if bad:
+        raise ValueError(f"unknown case {bad[0]!r} in set {case_set_name}; known: "
+                         f"{', '.join(by_name)}")
+    return [by_name[n] for n in names] if names else cases
