@@ -112,9 +112,15 @@ def bench_table(tmp: Path) -> str:
     rows = ["| test | thesis grey-box: fit CR | fit CD | CD max error [mm] | loop's model on the "
             "bus: fit CR | fit CD | CD max error [mm] | measured CD max [mm] | "
             "max abs(daemon − offline) |", "|---|---|---|---|---|---|---|---|---|"]
-    base = result["baseline_offline"]
-    for ev, (name, off) in zip(result["events"], result["offline"].items(), strict=True):
-        live, b = ev["fit_vs_reference"], base[name]
+    base = result.baseline_offline or {}
+    for name, ev in result.events.items():
+        off, b = result.offline[name], base[name]
+        if ev is None:
+            rows.append(f"| {name} | {_num(b['cr'])} | {_num(b['cd'])} | "
+                        f"{_num(b['cd_max_err'])} | did not trigger | | | "
+                        f"{_num(off['cd_max_ref'])} | |")
+            continue
+        live = ev["fit_vs_reference"]
         diff = max(ev["max_abs_diff_offline"].values())
         rows.append(f"| {name} | {_num(b['cr'])} | {_num(b['cd'])} | {_num(b['cd_max_err'])} | "
                     f"{_num(live['cr'])} | {_num(live['cd'])} | {_num(off['cd_max_err'])} | "
