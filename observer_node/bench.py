@@ -36,8 +36,10 @@ from .data.setups import assign_setups
 from .dbc import Codec
 from .dbc.bus import DEFAULT_CHANNEL
 from .evaluation import evaluate_model
+from .ident.metrics import OutputFits
 from .model.modelfile import ModelFile
 from .recording import analyze, read_recording
+from .recording.analysis import EventAnalysis
 
 LOOP_TESTS = tuple(f"{s}_{i:03d}" for s, n in (("R16", 12), ("SLED", 6), ("FULL", 6))
                    for i in range(1, n + 1, 2))
@@ -104,11 +106,21 @@ def loop_models(loop_dir: Path, est_names: tuple[str, ...], val_names: tuple[str
 class BenchResult:
     """What the bench found, per replayed test in replay order."""
 
-    events: dict[str, dict | None]  # the analysis of the daemon's event during each test;
-    # None: the daemon did not trigger on it
-    stray_events: list[dict]  # events whose onset falls in no replayed test
-    offline: dict[str, dict[str, float]]  # per test: the model's offline fits (see _offline)
-    baseline_offline: dict[str, dict[str, float]] | None = None  # the thesis grey-box's
+    events: dict[str, EventAnalysis | None]  # the analysis of the daemon's event during
+    # each test; None: the daemon did not trigger on it
+    stray_events: list[EventAnalysis]  # events whose onset falls in no replayed test
+    offline: dict[str, OfflineFit]  # per test: the model's offline fits
+    baseline_offline: dict[str, OfflineFit] | None = None  # the thesis grey-box's
+
+
+@dataclass(frozen=True)
+class OfflineFit:
+    """A model's offline fits [%] on one test, and its peak chest deflection's error."""
+
+    cr: float
+    cd: float
+    cd_max_err_mm: float  # peak deflection of the estimate - the measured one
+    cd_max_ref_mm: float  # the measured peak deflection
 
 
 def run_bench(out: Path, model_path: str | None = None, interface: str = "auto",
@@ -138,8 +150,8 @@ def run_bench(out: Path, model_path: str | None = None, interface: str = "auto",
             sessions[s.name] = [t for t in crash if t.setup == s.name]
     else:
         sessions[""] = crash
-    events: dict[str, dict | None] = {}
-    stray: list[dict] = []
+    events: dict[str, EventAnalysis | None] = {}
+    stray: list[EventAnalysis] = []
     for setup, group in sessions.items():
         where = out / setup if setup else out
         paired, extra = _session(where, model.for_setup(setup), group, codec, interface,
@@ -157,10 +169,10 @@ def run_bench(out: Path, model_path: str | None = None, interface: str = "auto",
         elif not (diff := _max_diff(ev)) < 1e-6:
             # the daemon must step exactly what an offline run of its inputs does
             print(f"bench: WARNING: {name}: the daemon differs from the offline re-run of its own "
-                  f"inputs by {diff:.3g} ({ev['invalid_ticks']} invalid ticks): see "
+                  f"inputs by {diff:.3g} ({ev.invalid_ticks} invalid ticks): see "
                   f"{out}/analysis.json", file=sys.stderr)
     for ev in stray:
-        print(f"bench: WARNING: event {ev['event']} (onset tick {ev['onset_tick']}) falls in no "
+        print(f"bench: WARNING: event {ev.event} (onset tick {ev.onset_tick}) falls in no "
               "replayed test: a trigger between tests", file=sys.stderr)
     print(f"bench: wrote {out}/model.json, " + (", ".join(f"{s}/" for s in sessions)
           if len(sessions) > 1 or "" not in sessions else "")
@@ -168,16 +180,16 @@ def run_bench(out: Path, model_path: str | None = None, interface: str = "auto",
     return result
 
 
-def _max_diff(ev: dict) -> float:
+def _max_diff(ev: EventAnalysis) -> float:
     """The largest |daemon - offline re-run| of an event, over both outputs."""
-    return max(ev["max_abs_diff_offline"].values())
+    return max(ev.max_abs_diff_offline.cr_g, ev.max_abs_diff_offline.cd_mm)
 
 
 def _print_tables(r: BenchResult, model_name: str) -> None:
     """Per replayed test: the daemon's fits beside the offline ones (and the thesis
     grey-box's); a test the daemon did not trigger on says so."""
-    nan = math.nan
-    live = {n: (ev.get("fit_vs_reference", {}) if ev else {}) for n, ev in r.events.items()}
+    nan = OutputFits(math.nan, math.nan)
+    live = {n: (ev.fit_vs_reference or nan if ev else nan) for n, ev in r.events.items()}
     none = "did not trigger"
     print(f"\n  The daemon ran {model_name!r}" + (", the thesis grey-box beside it offline "
           "(both identified on the same tests)" if r.baseline_offline else "") + ":")
@@ -187,18 +199,16 @@ def _print_tables(r: BenchResult, model_name: str) -> None:
               f"{'fit CR':>10}{'fit CD':>8}{'CD max err':>12}{'measured CD max':>17}")
         for name, ev in r.events.items():
             b, o = r.baseline_offline[name], r.offline[name]
-            daemon = (f"{live[name].get('cr', nan):10.1f}{live[name].get('cd', nan):8.1f}"
-                      if ev else f"{none:>18}")
-            print(f"  {name:<10}{b['cr']:8.1f}{b['cd']:8.1f}{b['cd_max_err']:+10.1f}mm"
-                  f"{daemon}{o['cd_max_err']:+10.1f}mm{o['cd_max_ref']:14.1f} mm")
+            daemon = f"{live[name].cr:10.1f}{live[name].cd:8.1f}" if ev else f"{none:>18}"
+            print(f"  {name:<10}{b.cr:8.1f}{b.cd:8.1f}{b.cd_max_err_mm:+10.1f}mm"
+                  f"{daemon}{o.cd_max_err_mm:+10.1f}mm{o.cd_max_ref_mm:14.1f} mm")
     print(f"\n  {'test':<10}{'daemon fit CR':>14}{'CD':>7}{'offline fit CR':>16}{'CD':>7}"
           f"{'max |daemon - offline re-run|':>31}")
     for name, ev in r.events.items():
         o = r.offline[name]
-        daemon = (f"{live[name].get('cr', nan):14.1f}{live[name].get('cd', nan):7.1f}" if ev
-                  else f"{none:>21}")
+        daemon = f"{live[name].cr:14.1f}{live[name].cd:7.1f}" if ev else f"{none:>21}"
         diff = f"{_max_diff(ev):31.1e}" if ev else f"{none:>31}"
-        print(f"  {name:<10}{daemon}{o['cr']:16.1f}{o['cd']:7.1f}{diff}")
+        print(f"  {name:<10}{daemon}{o.cr:16.1f}{o.cd:7.1f}{diff}")
     print("\n  Fits are eq. 3.15 over 0.01..0.15 s; the daemon's window starts at its detected "
           "onset, the offline one at the lab's t = 0, hence small differences. CD max err: "
           "peak chest deflection of the estimate minus the measured one (Euro NCAP scores it "
@@ -229,7 +239,7 @@ def pair_events(ticks_per_test: list[tuple[str, int]], events: list[E],
 
 def _session(out: Path, model: ModelFile, crash: list, codec: Codec, interface: str,
              channel: str, rate: float, setup: str
-             ) -> tuple[dict[str, dict | None], list[dict]]:
+             ) -> tuple[dict[str, EventAnalysis | None], list[EventAnalysis]]:
     """The daemon (``model``) on the bus recording to ``out``/run.mcap, ``crash`` replayed
     into it, the recording analysed; its events paired with the tests (:func:`pair_events`)."""
     import can
@@ -277,16 +287,16 @@ def _session(out: Path, model: ModelFile, crash: list, codec: Codec, interface: 
     print(f"bench: daemon ticks {c.ticks}, lost {c.lost}, rejected {c.rejected}, bad E2E "
           f"{c.bad_e2e}, overruns {c.overruns}, sensor faults {core.brs_jumps} BRS jumps "
           f"{core.bias_faults} bias {core.hold_timeouts} hold timeouts")
-    events: list[dict] = analyze(read_recording(record), out_dir=out, ratings=False)["events"]
-    return pair_events(spans, events, lambda ev: int(ev["onset_tick"]))
+    events = analyze(read_recording(record), out_dir=out, ratings=False).events
+    return pair_events(spans, events, lambda ev: ev.onset_tick)
 
 
-def _offline(model: ModelFile, crash: list) -> dict[str, dict[str, float]]:
+def _offline(model: ModelFile, crash: list) -> dict[str, OfflineFit]:
     """Per test: the model's offline fits and its peak-deflection error against the lab's."""
     out = {}
     for t in crash:
         r = evaluate_model(model, [t], ratings=False)
-        c = r["criteria"][t.name]
-        out[t.name] = {**r["tests"][t.name], "cd_max_err": c["error"]["cd_max_mm"],
-                       "cd_max_ref": c["reference"]["cd_max_mm"]}
+        c, f = r.criteria[t.name], r.tests[t.name]
+        ref = c.reference.cd_max_mm if c.reference else math.nan
+        out[t.name] = OfflineFit(f.cr, f.cd, c.error.cd_max_mm, ref)
     return out

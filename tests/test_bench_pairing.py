@@ -27,16 +27,15 @@ def test_a_test_that_does_not_trigger_relabels_no_other(model_path, tmp_path, ca
         event, off = result.events[name], result.offline[name]
         assert event is not None, name
         # the event is the one of this test: its fit is this test's offline fit
-        assert abs(event["fit_vs_reference"]["cr"] - off["cr"]) < 2, name
-        assert abs(event["fit_vs_reference"]["cd"] - off["cd"]) < 2, name
+        assert abs(event.fit_vs_reference.cr - off.cr) < 2, name
+        assert abs(event.fit_vs_reference.cd - off.cd) < 2, name
     out = capsys.readouterr().out
     assert "R16_002" in out and "did not trigger" in out
 
 
 def test_pairing_by_onset_tick_keeps_every_test_and_names_strays():
     spans = [("A", 100), ("B", 100), ("C", 100)]  # ticks 0..99, 100..199, 200..299
-    events = [{"onset_tick": 120}, {"onset_tick": 150}, {"onset_tick": 260},
-              {"onset_tick": 400}]
-    paired, stray = bench.pair_events(spans, events, lambda e: e["onset_tick"])
+    events = [120, 150, 260, 400]  # onset ticks
+    paired, stray = bench.pair_events(spans, events, lambda e: e)
     assert paired == {"A": None, "B": events[0], "C": events[2]}
     assert stray == [events[1], events[3]]  # a second trigger in B, one after the last test

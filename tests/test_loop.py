@@ -99,12 +99,12 @@ def test_bench_main_job_on_the_virtual_bus(r16_loop, tmp_path, capsys):
     assert len(result.events) == 3
     for event, name in zip(result.events.values(), ("R16_002", "SLED_002", "FULL_002"),
                            strict=True):
-        live, off = event["fit_vs_reference"], result.offline[name]
-        assert abs(live["cr"] - off["cr"]) < 2 and abs(live["cd"] - off["cd"]) < 2, name
-        assert max(event["max_abs_diff_offline"].values()) < 1e-9, name
+        live, off = event.fit_vs_reference, result.offline[name]
+        assert abs(live.cr - off.cr) < 2 and abs(live.cd - off.cd) < 2, name
+        assert max(event.max_abs_diff_offline.as_dict().values()) < 1e-9, name
     # the loop's model beats the thesis grey-box on the bus, as offline
     base, off = result.baseline_offline, result.offline
-    assert sum(off[n]["cd"] for n in off) > sum(base[n]["cd"] for n in base)
+    assert sum(off[n].cd for n in off) > sum(base[n].cd for n in base)
     assert (tmp_path / "run.mcap").exists() and (tmp_path / "event0.png").exists()
     out = capsys.readouterr().out
     assert "daemon ticks" in out and "thesis grey-box (offline)" in out

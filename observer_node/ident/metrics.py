@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from dataclasses import dataclass
+
 import numpy as np
 
 OUTPUT_NAMES = ("cr", "cd")
@@ -13,6 +15,54 @@ def fit_percent(y: np.ndarray, y_hat: np.ndarray) -> float:
     if denom == 0:
         return float("nan")
     return float(100.0 * (1.0 - np.linalg.norm(y - y_hat) / denom))
+
+
+@dataclass(frozen=True)
+class OutputFits:
+    """The fit [%] (eq. 3.15) of each output: chest acceleration CR, chest deflection CD."""
+
+    cr: float
+    cd: float
+
+    @property
+    def total(self) -> float:
+        """fit_TOT [%]: CR and CD averaged (eq. 3.18)."""
+        return (self.cr + self.cd) / 2
+
+    def as_dict(self) -> dict[str, float]:
+        return {"cr": self.cr, "cd": self.cd}
+
+
+@dataclass(frozen=True)
+class Fits:
+    """The fits [%] of CR and CD and their mean fit_TOT (eq. 3.15-3.18)."""
+
+    cr: float
+    cd: float
+    total: float
+
+    @classmethod
+    def of(cls, cr: float, cd: float) -> Fits:
+        return cls(cr, cd, (cr + cd) / 2)
+
+    def as_dict(self) -> dict[str, float]:
+        return {"cr": self.cr, "cd": self.cd, "total": self.total}
+
+
+@dataclass(frozen=True)
+class FitTable:
+    """The fits over a set of tests (eq. 3.16-3.18) and each test's (eq. 3.15)."""
+
+    fit: Fits
+    tests: dict[str, OutputFits]
+
+    @classmethod
+    def from_dict(cls, d: dict) -> FitTable:
+        return cls(Fits(**d["fit"]), {n: OutputFits(**v) for n, v in d["tests"].items()})
+
+    def as_dict(self) -> dict[str, dict]:
+        return {"fit": self.fit.as_dict(),
+                "tests": {n: v.as_dict() for n, v in self.tests.items()}}
 
 
 def fit_table(names: list[str], y: np.ndarray, y_hat: np.ndarray) -> dict:

@@ -258,7 +258,8 @@ def _run(est_tests: list[CrashTest], val_tests: list[CrashTest], out: Path, rate
         prog.update(f"accepted {best.kind} on {scope_label(best.setups)}: validation fit "
                     f"{val_fit['fit']['total']:.1f} %")
     final_val = score(base, effects, val)
-    judged = {label: scores(val, model(b, e, val).simulate(val.pulse_g, val.brs_rad), ratings)
+    judged = {label: scores(val, model(b, e, val).simulate(val.pulse_g, val.brs_rad),
+                            ratings).as_dict()
               for label, b, e in (("baseline", gb.params, []), ("final", base, effects))}
     mf = _model_file(base, effects, est, rate_hz, gb, setups)
     mf.save(out / "model.json")
@@ -526,10 +527,10 @@ def _plots(out: Path, base: dict, effects: list[dict], base0: dict, val: Dataset
     y = val.y[:, val.win]
     before = model(base0, [], val).simulate(val.pulse_g, val.brs_rad)[:, val.win]
     after = model(base, effects, val).simulate(val.pulse_g, val.brs_rad)[:, val.win]
-    from ..ident.metrics import fit_table
+    from ..ident.metrics import FitTable, fit_table
 
     for label, y_hat in (("before", before), ("after", after)):
-        fits = fit_table(val.names, y, y_hat)
+        fits = FitTable.from_dict(fit_table(val.names, y, y_hat))
         for k, key in enumerate(("cr", "cd")):
             plots.measured_vs_simulated(out / f"fit_{label}_{key}.png",
                                         f"validation, {label} the loop", val.names, t, y, y_hat,
