@@ -154,7 +154,7 @@ def run_case(case: Case, work: Path, reachable: bool) -> dict:
         e10, v10 = make_dataset(est, 10_000.0), make_dataset(val, 10_000.0)
         effects = _truth(case, sim_setup, 10_000.0)
         fit = refit(P.as_dict(), effects, e10, max_nfev=25)
-        row["reachable"] = score(fit.base, fit.effects, v10)["fit"]["total"]
+        row["reachable"] = score(fit.base, fit.effects, v10).fit.total
     return row
 
 

@@ -109,12 +109,12 @@ def _reachable(case: Case, r: dict, est_tests: list, val_tests: list, same: bool
     effects = _expected_structure(case, r, _delays(case, r["settings"]["rate_hz"]))
     with np.errstate(all="ignore"):
         fit = refit(base, effects, est, max_nfev=150)
-        best = score(fit.base, fit.effects, val)["fit"]["total"]
+        best = score(fit.base, fit.effects, val).fit.total
         if same and r["effects"]:
             loop_fit = refit(r["final"]["parameters"], [
                 {k: v for k, v in e.items() if k in ("kind", "parameters", "setups")}
                 for e in r["effects"]], est, max_nfev=60)
-            best = max(best, score(loop_fit.base, loop_fit.effects, val)["fit"]["total"])
+            best = max(best, score(loop_fit.base, loop_fit.effects, val).fit.total)
     return float(best)
 
 

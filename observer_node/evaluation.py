@@ -172,9 +172,9 @@ def _order_scans(est: Dataset, val: Dataset, out_dir: Path, setup: str,
         orders, _ = arx.search_orders(est, nmax)
         m = arx.estimate_arx(est, orders)
         row = {"nmax": nmax, "estimation_fit": fit_table(
-            est.names, est.y[:, est.win], m.simulate(est)[:, est.win])["fit"]["total"]}
+            est.names, est.y[:, est.win], m.simulate(est)[:, est.win]).fit.total}
         row["validation_fit"] = fit_table(val.names, val.y[:, val.win],
-                                          m.simulate(val)[:, val.win])["fit"]["total"]
+                                          m.simulate(val)[:, val.win]).fit.total
         arx_rows.append(row)
     ss_rows = n4sid.order_scan(est, val, range(1, 21), N4SID_BLOCK_ROWS, prog)
     plots_dir = out_dir / "plots"

@@ -47,7 +47,7 @@ def scores(data: Dataset, y_hat: np.ndarray, ratings: bool = True) -> Scores:
     (eq. 3.15-3.18) on the window, the chest injury criteria of estimate and reference with
     their errors (from t = 0, :mod:`.criteria`) and, with ``ratings`` and the optional package,
     the ISO/TS 18571 ratings on the window (:mod:`.iso18571`)."""
-    fits = FitTable.from_dict(fit_table(data.names, data.y[:, data.win], y_hat[:, data.win]))
+    fits = fit_table(data.names, data.y[:, data.win], y_hat[:, data.win])
     table = iso18571.rating_table(data.names, data.y[:, data.win], y_hat[:, data.win],
                                   data.fs_hz) if ratings else None
     return Scores(fits.fit, fits.tests, criteria_table(data.names, data.y, y_hat, data.fs_hz),

@@ -56,25 +56,17 @@ class FitTable:
     fit: Fits
     tests: dict[str, OutputFits]
 
-    @classmethod
-    def from_dict(cls, d: dict) -> FitTable:
-        return cls(Fits(**d["fit"]), {n: OutputFits(**v) for n, v in d["tests"].items()})
-
     def as_dict(self) -> dict[str, dict]:
         return {"fit": self.fit.as_dict(),
                 "tests": {n: v.as_dict() for n, v in self.tests.items()}}
 
 
-def fit_table(names: list[str], y: np.ndarray, y_hat: np.ndarray) -> dict:
-    """Fits per test and output and the totals of eq. 3.16-3.18.
-
-    ``y`` and ``y_hat`` are (tests, n, 2) already cut to the scoring window. Returns
-    ``{"fit": {"cr", "cd", "total"}, "tests": {name: {"cr", "cd"}}}``.
-    """
-    tests = {
-        name: {o: fit_percent(y[i, :, k], y_hat[i, :, k]) for k, o in enumerate(OUTPUT_NAMES)}
-        for i, name in enumerate(names)
-    }
-    cr = float(np.mean([v["cr"] for v in tests.values()]))
-    cd = float(np.mean([v["cd"] for v in tests.values()]))
-    return {"fit": {"cr": cr, "cd": cd, "total": (cr + cd) / 2}, "tests": tests}
+def fit_table(names: list[str], y: np.ndarray, y_hat: np.ndarray) -> FitTable:
+    """Fits per test and output and the totals of eq. 3.16-3.18. ``y`` and ``y_hat`` are
+    (tests, n, 2) (CR, CD) already cut to the scoring window."""
+    tests = {name: OutputFits(fit_percent(y[i, :, 0], y_hat[i, :, 0]),
+                              fit_percent(y[i, :, 1], y_hat[i, :, 1]))
+             for i, name in enumerate(names)}
+    cr = float(np.mean([v.cr for v in tests.values()]))
+    cd = float(np.mean([v.cd for v in tests.values()]))
+    return FitTable(Fits.of(cr, cd), tests)

@@ -34,6 +34,7 @@ from ..data.crashtest import THESIS_WINDOW_S, CrashDataError
 from ..data.setups import Setup, allowed_setups, assign_setups
 from ..ident import greybox
 from ..ident.dataset import Dataset, make_dataset
+from ..ident.metrics import FitTable
 from ..ident.progress import Progress
 from ..model.chest import (
     PARAM_NAMES,
@@ -62,8 +63,8 @@ from .refit import fold_scores, folds, model, refit, score
 from .screening import BrokenTest, residual_outliers, screen_channels
 
 
-def _fit3(t: dict) -> dict:
-    return {k: round(float(v), 2) for k, v in t["fit"].items()}
+def _fit3(t: FitTable) -> dict[str, float]:
+    return {k: round(float(v), 2) for k, v in t.fit.as_dict().items()}
 
 
 def scope_options(kind: str, setups: list[Setup], est_setups: list[str],
@@ -256,7 +257,7 @@ def _run(est_tests: list[CrashTest], val_tests: list[CrashTest], out: Path, rate
         accepted.append(entry)
         step["decision"] = f"accepted {best.kind} on {scope_label(best.setups)}"
         prog.update(f"accepted {best.kind} on {scope_label(best.setups)}: validation fit "
-                    f"{val_fit['fit']['total']:.1f} %")
+                    f"{val_fit.fit.total:.1f} %")
     final_val = score(base, effects, val)
     judged = {label: scores(val, model(b, e, val).simulate(val.pulse_g, val.brs_rad),
                             ratings).as_dict()
@@ -294,7 +295,8 @@ def _run(est_tests: list[CrashTest], val_tests: list[CrashTest], out: Path, rate
                      "its 95 % t-interval above zero or a one-sided sign test p <= "
                      f"{SIGN_P:g}, no setup's cross-validated fit lowered by more than "
                      f"{SETUP_TOLERANCE:g} points"},
-        "validation_tests": {"baseline": baseline_val["tests"], "final": final_val["tests"]},
+        "validation_tests": {"baseline": baseline_val.as_dict()["tests"],
+                             "final": final_val.as_dict()["tests"]},
         "criteria": {k: v["criteria"] for k, v in judged.items()},
         **({"iso18571": {k: v["iso18571"] for k, v in judged.items()}}
            if "iso18571" in judged["final"] else {}),
@@ -305,7 +307,7 @@ def _run(est_tests: list[CrashTest], val_tests: list[CrashTest], out: Path, rate
         _plots(out, base, effects, gb.params, val)
     (out / "report.md").write_text(_markdown(report))
     prog.done(f"{len(accepted)} effect(s) accepted; validation fit "
-              f"{baseline_val['fit']['total']:.1f} -> {final_val['fit']['total']:.1f} %")
+              f"{baseline_val.fit.total:.1f} -> {final_val.fit.total:.1f} %")
     return report
 
 
@@ -313,8 +315,8 @@ def _mean(per_test: dict[str, float]) -> float:
     return float(np.mean(list(per_test.values())))
 
 
-def _per_test_total(table: dict) -> dict[str, float]:
-    return {n: (v["cr"] + v["cd"]) / 2 for n, v in table["tests"].items()}
+def _per_test_total(table: FitTable) -> dict[str, float]:
+    return {n: v.total for n, v in table.tests.items()}
 
 
 def _fold(base: dict, effects: list[dict], data: Dataset, train: list[int],
@@ -518,7 +520,7 @@ def _model_file(base: dict, effects: list[dict], est: Dataset, rate_hz: float,
                    "setup_rules": [s.as_dict() for s in setups if s.name in est.setups],
                    "rate_hz": rate_hz,
                    "window_s": list(est.window_s), "simulation_start_s": 0.0},
-        fits=score(base, effects, est), effects=effects, output_timing="after_input",
+        fits=score(base, effects, est).as_dict(), effects=effects, output_timing="after_input",
     )
 
 
@@ -527,10 +529,10 @@ def _plots(out: Path, base: dict, effects: list[dict], base0: dict, val: Dataset
     y = val.y[:, val.win]
     before = model(base0, [], val).simulate(val.pulse_g, val.brs_rad)[:, val.win]
     after = model(base, effects, val).simulate(val.pulse_g, val.brs_rad)[:, val.win]
-    from ..ident.metrics import FitTable, fit_table
+    from ..ident.metrics import fit_table
 
     for label, y_hat in (("before", before), ("after", after)):
-        fits = FitTable.from_dict(fit_table(val.names, y, y_hat))
+        fits = fit_table(val.names, y, y_hat)
         for k, key in enumerate(("cr", "cd")):
             plots.measured_vs_simulated(out / f"fit_{label}_{key}.png",
                                         f"validation, {label} the loop", val.names, t, y, y_hat,
