@@ -51,7 +51,7 @@ def concatenated(d: Dataset) -> tuple[np.ndarray, np.ndarray]:
 
 def score(val: Dataset, y_hat: np.ndarray) -> dict:
     with np.errstate(all="ignore"):
-        return fit_table(val.names, val.y[:, val.win], y_hat[:, val.win])["fit"]
+        return fit_table(val.names, val.y[:, val.win], y_hat[:, val.win]).fit.as_dict()
 
 
 def ss_sim(val: Dataset, A, B, C, D) -> np.ndarray:

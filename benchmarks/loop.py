@@ -146,15 +146,15 @@ def run_case(case: Case, work: Path, reachable: bool) -> dict:
     r = run_loop(est, val, work / case.name, verbose=False, plots=False, ratings=False)
     seconds = time.monotonic() - t0
     truth = {_label(e) for e in _truth(case, sim_setup, 1000.0)}
-    found = {_label(e) for e in r["effects"]}
+    found = {_label(e) for e in r.effects}
     row = {"case": case.name, "found": sorted(found), "right": found == truth,
-           "truth": sorted(truth), "before": r["baseline"]["fit"]["total"],
-           "after": r["final"]["fit"]["total"], "seconds": seconds}
+           "truth": sorted(truth), "before": r.baseline.fit.total,
+           "after": r.final.fit.total, "seconds": seconds}
     if reachable:
         e10, v10 = make_dataset(est, 10_000.0), make_dataset(val, 10_000.0)
         effects = _truth(case, sim_setup, 10_000.0)
         fit = refit(P.as_dict(), effects, e10, max_nfev=25)
-        row["reachable"] = score(fit.base, fit.effects, v10)["fit"]["total"]
+        row["reachable"] = score(fit.base, fit.effects, v10).fit.total
     return row
 
 

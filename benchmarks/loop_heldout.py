@@ -41,21 +41,22 @@ from observer_node.data import load_tests
 from observer_node.ident.dataset import make_dataset
 from observer_node.loop.closed_loop import run_loop
 from observer_node.loop.refit import refit, score
+from observer_node.loop.report import LoopReport
 from observer_node.model.effects import EFFECTS
 
 
-def _sim_scope(setups: list[str], report: dict) -> str:
+def _sim_scope(setups: list[str], report: LoopReport) -> str:
     """A loop scope (its setup names) as the simulator's setups (the tests' name prefixes)."""
     if not setups:
         return "all"
-    prefix = {s["name"]: sorted({t.split("_")[0] for t in s["tests"]}) for s in report["setups"]}
+    prefix = {s.name: sorted({t.split("_")[0] for t in s.tests}) for s in report.setups}
     return "+".join(sorted(p for s in setups for p in prefix[s]))
 
 
-def _expected_structure(case: Case, report: dict, delays_ticks: dict[str, float]) -> list[dict]:
+def _expected_structure(case: Case, report: LoopReport, delays_ticks: dict[str, float]
+                        ) -> list[dict]:
     """The expected effects in the library's terms, started from typical values."""
-    by_sim = {p: s["name"] for s in report["setups"] for p in {t.split("_")[0]
-                                                               for t in s["tests"]}}
+    by_sim = {p: s.name for s in report.setups for p in {t.split("_")[0] for t in s.tests}}
     out = []
     for kind, scope in case.expect:
         params = dict(EFFECTS[kind].typical)
@@ -86,38 +87,38 @@ def run_case(case: Case, sets: Path, work: Path, workers: int | None) -> dict:
     r = run_loop(est, val, work / case.name, verbose=False, plots=False, ratings=False,
                  workers=workers)
     seconds = time.monotonic() - t0
-    found = sorted(f"{e['kind']}@{_sim_scope(e.get('setups', []), r)}" for e in r["effects"])
+    found = sorted(f"{e['kind']}@{_sim_scope(e.get('setups', []), r)}" for e in r.effects)
     expected = sorted(f"{k}@{'+'.join(sorted(s.split('+')))}" for k, s in case.expect)
-    flagged = sorted({w["test"] for w in r["warnings"]})
-    sensor = [s["output"] for s in r["sensor_effects"]]
-    unexpl = [u["output"] for u in r["unexplained"]]
+    flagged = sorted({w.test for w in r.warnings})
+    sensor = [s["output"] for s in r.sensor_effects]
+    unexpl = [u["output"] for u in r.unexplained]
     right = found == expected and flagged == sorted(case.expect_broken)
     if case.expect_note:  # a transducer case: nothing physical, and its output called out
         output = case.expect_note.rsplit(" ", 1)[-1]  # "... on cd"
         right = right and (output in sensor or output in unexpl)
     row = {"case": case.name, "found": found, "expected": expected, "flagged": flagged,
            "sensor": sensor, "unexplained": unexpl, "right": right,
-           "before": r["baseline"]["fit"]["total"], "after": r["final"]["fit"]["total"],
-           "seconds": seconds, "possible": [f"{p['kind']}@{p['scope']}" for p in r["possible"]]}
+           "before": r.baseline.fit.total, "after": r.final.fit.total,
+           "seconds": seconds, "possible": [f"{p['kind']}@{p['scope']}" for p in r.possible]}
     row["reachable"] = _reachable(case, r, est, val, found == expected)
     return row
 
 
-def _reachable(case: Case, r: dict, est_tests: list, val_tests: list, same: bool) -> float:
+def _reachable(case: Case, r: LoopReport, est_tests: list, val_tests: list, same: bool) -> float:
     keep = [t for t in est_tests if t.name not in case.expect_broken]
-    est = make_dataset(keep, r["settings"]["rate_hz"])
+    est = make_dataset(keep, r.settings["rate_hz"])
     val = make_dataset([t for t in val_tests if t.name not in case.expect_broken],
-                       r["settings"]["rate_hz"])
-    base = dict(r["baseline"]["parameters"])
-    effects = _expected_structure(case, r, _delays(case, r["settings"]["rate_hz"]))
+                       r.settings["rate_hz"])
+    base = dict(r.baseline.parameters)
+    effects = _expected_structure(case, r, _delays(case, r.settings["rate_hz"]))
     with np.errstate(all="ignore"):
         fit = refit(base, effects, est, max_nfev=150)
-        best = score(fit.base, fit.effects, val)["fit"]["total"]
-        if same and r["effects"]:
-            loop_fit = refit(r["final"]["parameters"], [
+        best = score(fit.base, fit.effects, val).fit.total
+        if same and r.effects:
+            loop_fit = refit(r.final.parameters, [
                 {k: v for k, v in e.items() if k in ("kind", "parameters", "setups")}
-                for e in r["effects"]], est, max_nfev=60)
-            best = max(best, score(loop_fit.base, loop_fit.effects, val)["fit"]["total"])
+                for e in r.effects], est, max_nfev=60)
+            best = max(best, score(loop_fit.base, loop_fit.effects, val).fit.total)
     return float(best)
 
 

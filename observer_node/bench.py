@@ -24,16 +24,22 @@ import shutil
 import sys
 import threading
 import time
+from collections.abc import Callable
+from dataclasses import dataclass
 from pathlib import Path
-from typing import Any
+from typing import Any, TypeVar
+
+import numpy as np
 
 from .data import BENCH_TESTS, bundled_campaign, read_isomme
 from .data.setups import assign_setups
 from .dbc import Codec
 from .dbc.bus import DEFAULT_CHANNEL
 from .evaluation import evaluate_model
+from .ident.metrics import OutputFits
 from .model.modelfile import ModelFile
 from .recording import analyze, read_recording
+from .recording.analysis import EventAnalysis
 
 LOOP_TESTS = tuple(f"{s}_{i:03d}" for s, n in (("R16", 12), ("SLED", 6), ("FULL", 6))
                    for i in range(1, n + 1, 2))
@@ -96,10 +102,32 @@ def loop_models(loop_dir: Path, est_names: tuple[str, ...], val_names: tuple[str
             ModelFile.load(loop_dir / "model.json"))
 
 
+@dataclass(frozen=True)
+class BenchResult:
+    """What the bench found, per replayed test in replay order."""
+
+    events: dict[str, EventAnalysis | None]  # the analysis of the daemon's event during
+    # each test; None: the daemon did not trigger on it
+    stray_events: list[EventAnalysis]  # events whose onset falls in no replayed test
+    offline: dict[str, OfflineFit]  # per test: the model's offline fits
+    baseline_offline: dict[str, OfflineFit] | None = None  # the thesis grey-box's
+
+
+@dataclass(frozen=True)
+class OfflineFit:
+    """A model's offline fits [%] on one test, and its peak chest deflection's error."""
+
+    cr: float
+    cd: float
+    cd_max_err_mm: float  # peak deflection of the estimate - the measured one
+    cd_max_ref_mm: float  # the measured peak deflection
+
+
 def run_bench(out: Path, model_path: str | None = None, interface: str = "auto",
               channel: str = DEFAULT_CHANNEL, tests: tuple[str, ...] = BENCH_TESTS,
               rate: float = 1.0, loop_tests: tuple[str, ...] = LOOP_TESTS,
-              loop_dir: Path | None = None, rerun_loop: bool = False) -> dict:
+              loop_dir: Path | None = None, rerun_loop: bool = False) -> BenchResult:
+    tests = tuple(dict.fromkeys(tests))  # one row per test
     out.mkdir(parents=True, exist_ok=True)
     codec = Codec()
     plain: ModelFile | None = None
@@ -122,58 +150,98 @@ def run_bench(out: Path, model_path: str | None = None, interface: str = "auto",
             sessions[s.name] = [t for t in crash if t.setup == s.name]
     else:
         sessions[""] = crash
-    events: list[dict] = []
+    events: dict[str, EventAnalysis | None] = {}
+    stray: list[EventAnalysis] = []
     for setup, group in sessions.items():
         where = out / setup if setup else out
-        events += _session(where, model.for_setup(setup), group, codec, interface, channel,
-                           rate, setup)
-    result: dict[str, Any] = {"events": events}
+        paired, extra = _session(where, model.for_setup(setup), group, codec, interface,
+                                 channel, rate, setup)
+        events.update(paired)
+        stray += extra
     crash = [t for group in sessions.values() for t in group]
-    tests = tuple(t.name for t in crash)
     offline = _offline(model, crash)
-    rows = []
-    for test, ev in zip(tests, result["events"], strict=False):
-        live = ev.get("fit_vs_reference", {})
-        rows.append((test, live.get("cr", math.nan), live.get("cd", math.nan),
-                     max(ev["max_abs_diff_offline"].values())))
-    print(f"\n  The daemon ran {model.name!r}" + (", the thesis grey-box beside it offline (both "
-          "identified on the same tests)" if plain else "") + ":")
-    if plain is not None:
-        base = _offline(plain, crash)
+    base = _offline(plain, crash) if plain is not None else None
+    result = BenchResult(events, stray, offline, base)
+    _print_tables(result, model.name)
+    for name, ev in events.items():
+        if ev is None:
+            print(f"bench: WARNING: {name}: the daemon did not trigger on it", file=sys.stderr)
+        elif not (diff := _max_diff(ev)) < 1e-6:
+            # the daemon must step exactly what an offline run of its inputs does
+            print(f"bench: WARNING: {name}: the daemon differs from the offline re-run of its own "
+                  f"inputs by {diff:.3g} ({ev.invalid_ticks} invalid ticks): see "
+                  f"{out}/analysis.json", file=sys.stderr)
+    for ev in stray:
+        print(f"bench: WARNING: event {ev.event} (onset tick {ev.onset_tick}) falls in no "
+              "replayed test: a trigger between tests", file=sys.stderr)
+    print(f"bench: wrote {out}/model.json, " + (", ".join(f"{s}/" for s in sessions)
+          if len(sessions) > 1 or "" not in sessions else "")
+          + "run.mcap, analysis.json and event plots")
+    return result
+
+
+def _max_diff(ev: EventAnalysis) -> float:
+    """The largest |daemon - offline re-run| of an event, over both outputs."""
+    return max(ev.max_abs_diff_offline.cr_g, ev.max_abs_diff_offline.cd_mm)
+
+
+def _print_tables(r: BenchResult, model_name: str) -> None:
+    """Per replayed test: the daemon's fits beside the offline ones (and the thesis
+    grey-box's); a test the daemon did not trigger on says so."""
+    nan = OutputFits(math.nan, math.nan)
+    live = {n: (ev.fit_vs_reference or nan if ev else nan) for n, ev in r.events.items()}
+    none = "did not trigger"
+    print(f"\n  The daemon ran {model_name!r}" + (", the thesis grey-box beside it offline "
+          "(both identified on the same tests)" if r.baseline_offline else "") + ":")
+    if r.baseline_offline is not None:
         print(f"\n  {'':<10}{'thesis grey-box (offline)':^30}{'daemon on the bus':^30}")
         print(f"  {'test':<10}{'fit CR':>8}{'fit CD':>8}{'CD max err':>12}"
               f"{'fit CR':>10}{'fit CD':>8}{'CD max err':>12}{'measured CD max':>17}")
-        for name, lcr, lcd, _ in rows:
-            b, o = base[name], offline[name]
-            print(f"  {name:<10}{b['cr']:8.1f}{b['cd']:8.1f}{b['cd_max_err']:+10.1f}mm"
-                  f"{lcr:10.1f}{lcd:8.1f}{o['cd_max_err']:+10.1f}mm{o['cd_max_ref']:14.1f} mm")
+        for name, ev in r.events.items():
+            b, o = r.baseline_offline[name], r.offline[name]
+            daemon = f"{live[name].cr:10.1f}{live[name].cd:8.1f}" if ev else f"{none:>18}"
+            print(f"  {name:<10}{b.cr:8.1f}{b.cd:8.1f}{b.cd_max_err_mm:+10.1f}mm"
+                  f"{daemon}{o.cd_max_err_mm:+10.1f}mm{o.cd_max_ref_mm:14.1f} mm")
     print(f"\n  {'test':<10}{'daemon fit CR':>14}{'CD':>7}{'offline fit CR':>16}{'CD':>7}"
           f"{'max |daemon - offline re-run|':>31}")
-    for name, lcr, lcd, diff in rows:
-        o = offline[name]
-        print(f"  {name:<10}{lcr:14.1f}{lcd:7.1f}{o['cr']:16.1f}{o['cd']:7.1f}{diff:31.1e}")
+    for name, ev in r.events.items():
+        o = r.offline[name]
+        daemon = f"{live[name].cr:14.1f}{live[name].cd:7.1f}" if ev else f"{none:>21}"
+        diff = f"{_max_diff(ev):31.1e}" if ev else f"{none:>31}"
+        print(f"  {name:<10}{daemon}{o.cr:16.1f}{o.cd:7.1f}{diff}")
     print("\n  Fits are eq. 3.15 over 0.01..0.15 s; the daemon's window starts at its detected "
           "onset, the offline one at the lab's t = 0, hence small differences. CD max err: "
           "peak chest deflection of the estimate minus the measured one (Euro NCAP scores it "
           "from 22 to 42 mm).")
-    for (name, *_, diff), ev in zip(rows, result["events"], strict=False):
-        if not diff < 1e-6:  # the daemon must step exactly what an offline run of its inputs does
-            print(f"bench: WARNING: {name}: the daemon differs from the offline re-run of its own "
-                  f"inputs by {diff:.3g} ({ev['invalid_ticks']} invalid ticks): see "
-                  f"{out}/analysis.json", file=sys.stderr)
-    print(f"bench: wrote {out}/model.json, " + (", ".join(f"{s}/" for s in sessions)
-          if len(sessions) > 1 or "" not in sessions else "")
-          + "run.mcap, analysis.json and event plots")
-    result["offline"] = offline
-    if plain is not None:
-        result["baseline_offline"] = base
-    return result
+
+
+E = TypeVar("E")
+
+
+def pair_events(ticks_per_test: list[tuple[str, int]], events: list[E],
+                onset_tick: Callable[[E], int]) -> tuple[dict[str, E | None], list[E]]:
+    """Each replayed test (name, accelerometer frames = daemon ticks it spans, in replay
+    order from the daemon's tick 0) with the event whose onset tick falls in its span, None
+    if the daemon did not trigger on it; and the events that fall in no test's span (or a
+    second one in a test's)."""
+    starts = np.cumsum([0] + [n for _, n in ticks_per_test])
+    paired: dict[str, E | None] = {name: None for name, _ in ticks_per_test}
+    stray: list[E] = []
+    for ev in events:
+        i = int(np.searchsorted(starts, onset_tick(ev), side="right")) - 1
+        name = ticks_per_test[i][0] if 0 <= i < len(ticks_per_test) else None
+        if name is not None and paired[name] is None:
+            paired[name] = ev
+        else:
+            stray.append(ev)
+    return paired, stray
 
 
 def _session(out: Path, model: ModelFile, crash: list, codec: Codec, interface: str,
-             channel: str, rate: float, setup: str) -> list[dict]:
+             channel: str, rate: float, setup: str
+             ) -> tuple[dict[str, EventAnalysis | None], list[EventAnalysis]]:
     """The daemon (``model``) on the bus recording to ``out``/run.mcap, ``crash`` replayed
-    into it, the recording analysed; the analysis's events."""
+    into it, the recording analysed; its events paired with the tests (:func:`pair_events`)."""
     import can
 
     from .daemon.config import NodeConfig
@@ -197,9 +265,13 @@ def _session(out: Path, model: ModelFile, crash: list, codec: Codec, interface: 
         raise RuntimeError("the daemon did not start")
     print(f"bench: daemon {'for setup ' + setup + ' ' if setup else ''}listening on "
           f"{interface}:{channel}, recording to {record}; {node.cpu_latency}")
-    sched = restamp_counters(concat([
-        crash_test_schedule(t, codec, model.tick_rate_hz, reference=True, pre_s=0.2)
-        for t in crash], gap_s=0.3), codec)
+    parts = [crash_test_schedule(t, codec, model.tick_rate_hz, reference=True, pre_s=0.2)
+             for t in crash]
+    sched = restamp_counters(concat(parts, gap_s=0.3), codec)
+    # one daemon tick per accelerometer frame (lost ones bridged), from tick 0
+    accel_id = codec["TunnelAccel"].frame_id
+    spans = [(t.name, int(np.count_nonzero(p.ids == accel_id)))
+             for t, p in zip(crash, parts, strict=True)]
     bus = can.Bus(interface=interface, channel=channel)
     send = bus_sender(bus, sched)
     print(f"bench: replaying {', '.join(t.name for t in crash)} ({len(sched)} frames, "
@@ -215,16 +287,16 @@ def _session(out: Path, model: ModelFile, crash: list, codec: Codec, interface: 
     print(f"bench: daemon ticks {c.ticks}, lost {c.lost}, rejected {c.rejected}, bad E2E "
           f"{c.bad_e2e}, overruns {c.overruns}, sensor faults {core.brs_jumps} BRS jumps "
           f"{core.bias_faults} bias {core.hold_timeouts} hold timeouts")
-    events: list[dict] = analyze(read_recording(record), out_dir=out, ratings=False)["events"]
-    return events
+    events = analyze(read_recording(record), out_dir=out, ratings=False).events
+    return pair_events(spans, events, lambda ev: ev.onset_tick)
 
 
-def _offline(model: ModelFile, crash: list) -> dict[str, dict[str, float]]:
+def _offline(model: ModelFile, crash: list) -> dict[str, OfflineFit]:
     """Per test: the model's offline fits and its peak-deflection error against the lab's."""
     out = {}
     for t in crash:
         r = evaluate_model(model, [t], ratings=False)
-        c = r["criteria"][t.name]
-        out[t.name] = {**r["tests"][t.name], "cd_max_err": c["error"]["cd_max_mm"],
-                       "cd_max_ref": c["reference"]["cd_max_mm"]}
+        c, f = r.criteria[t.name], r.tests[t.name]
+        ref = c.reference.cd_max_mm if c.reference else math.nan
+        out[t.name] = OfflineFit(f.cr, f.cd, c.error.cd_max_mm, ref)
     return out

@@ -101,15 +101,35 @@ def chest_criteria(cr_g: np.ndarray, cd_mm: np.ndarray, fs_hz: float) -> ChestCr
                          viscous_criterion_m_s(cd_mm, fs_hz))
 
 
-def compare(estimate: ChestCriteria, reference: ChestCriteria) -> dict[str, dict[str, float]]:
+@dataclass(frozen=True)
+class CriteriaComparison:
+    """The criteria of an estimate beside the reference's (None: no reference frames)."""
+
+    estimate: ChestCriteria
+    reference: ChestCriteria | None = None
+
+    @property
+    def error(self) -> ChestCriteria:
+        """Estimate - reference in each criterion's unit, of the rounded values reported."""
+        if self.reference is None:
+            raise ValueError("no reference: no error")
+        e, r = self.estimate.as_dict(), self.reference.as_dict()
+        return ChestCriteria(**{k: round(e[k] - r[k], 4) for k in e})
+
+    def as_dict(self) -> dict[str, dict[str, float]]:
+        if self.reference is None:
+            return {"estimate": self.estimate.as_dict()}
+        return {"estimate": self.estimate.as_dict(), "reference": self.reference.as_dict(),
+                "error": asdict(self.error)}
+
+
+def compare(estimate: ChestCriteria, reference: ChestCriteria) -> CriteriaComparison:
     """Estimate, reference and error (estimate - reference, in each criterion's unit)."""
-    e, r = estimate.as_dict(), reference.as_dict()
-    return {"estimate": e, "reference": r,
-            "error": {k: round(e[k] - r[k], 4) for k in e}}
+    return CriteriaComparison(estimate, reference)
 
 
 def criteria_table(names: list[str], y: np.ndarray, y_hat: np.ndarray,
-                   fs_hz: float) -> dict[str, dict[str, dict[str, float]]]:
+                   fs_hz: float) -> dict[str, CriteriaComparison]:
     """Per test: the criteria of the estimate ``y_hat`` beside the reference ``y`` and their
     errors. y, y_hat: (tests, n, 2) with CR [g] and CD [mm], from t = 0."""
     return {name: compare(chest_criteria(y_hat[k, :, 0], y_hat[k, :, 1], fs_hz),
@@ -117,13 +137,14 @@ def criteria_table(names: list[str], y: np.ndarray, y_hat: np.ndarray,
             for k, name in enumerate(names)}
 
 
-def format_criteria(table: dict[str, dict[str, dict[str, float]]], indent: str = "  ") -> str:
+def format_criteria(table: dict[str, CriteriaComparison], indent: str = "  ") -> str:
     """A text table: per test, each criterion estimated, measured, and the error."""
     head = f"{indent}{'test':<12}" + "".join(
         f"{LABELS[k] + ' [' + u + ']':>26}" for k, u in UNITS.items())
     sub = f"{indent}{'':<12}" + "".join(f"{'est':>9}{'ref':>8}{'err':>9}" for _ in UNITS)
     lines = [head, sub]
-    for name, c in table.items():
+    for name, comparison in table.items():
+        c = comparison.as_dict()
         lines.append(f"{indent}{name:<12}" + "".join(
             f"{c['estimate'][k]:>9.{p}f}{c['reference'][k]:>8.{p}f}{c['error'][k]:>+9.{p}f}"
             for k, p in (("cd_max_mm", 1), ("cr_3ms_g", 1), ("vc_max_m_s", 2))))

@@ -17,11 +17,11 @@ from .data.setups import assign_setups
 from .ident import arx, greybox, n4sid
 from .ident.dataset import Dataset, make_dataset
 from .ident.kinds import IDENTIFY, N4SID_BLOCK_ROWS, IdentifyOptions
-from .ident.metrics import fit_table
+from .ident.metrics import FitTable, fit_table
 from .ident.progress import Progress
 from .model.kinds import MODEL_KINDS
 from .model.modelfile import ModelFile
-from .scores import mean_abs_errors, scores
+from .scores import Scores, mean_abs_errors, scores
 
 # Tables 4.1-4.3 of the thesis: (fit_CR,tot, fit_CD,tot, fit_TOT) on its validation tests.
 THESIS_TABLES = {
@@ -77,7 +77,7 @@ def dataset_for(mf: ModelFile, tests: list[CrashTest],
 
 def evaluate_model(mf: ModelFile, tests: list[CrashTest], out_dir: Path | None = None,
                    window_s: tuple[float, float] | None = None, title: str | None = None,
-                   ratings: bool = True) -> dict:
+                   ratings: bool = True) -> Scores:
     """Fits (eq. 3.15-3.18), injury criteria and ISO/TS 18571 ratings (see :func:`scores`)
     of a model on ``tests``; with ``out_dir``, plots and fits.json. For a model with effects
     scoped to setups, the tests' setups are told from their metadata as the loop does."""
@@ -88,12 +88,12 @@ def evaluate_model(mf: ModelFile, tests: list[CrashTest], out_dir: Path | None =
     fits = scores(data, y_hat, ratings)
     if out_dir is not None:
         out_dir.mkdir(parents=True, exist_ok=True)
-        (out_dir / "fits.json").write_text(json.dumps(fits, indent=1) + "\n")
+        (out_dir / "fits.json").write_text(json.dumps(fits.as_dict(), indent=1) + "\n")
         _plot_pair(out_dir, title or f"{mf.kind} {mf.name}", data, y_hat, fits, "fit")
     return fits
 
 
-def _plot_pair(out_dir: Path, title: str, data: Dataset, y_hat: np.ndarray, fits: dict,
+def _plot_pair(out_dir: Path, title: str, data: Dataset, y_hat: np.ndarray, fits: FitTable,
                stem: str) -> list[str]:
     t = np.arange(data.y.shape[1])[data.win] / data.fs_hz
     return [
@@ -149,7 +149,7 @@ def thesis_comparison(tests: list[CrashTest], out_dir: Path, rate_hz: float = 10
             pngs = _plot_pair(out_dir / "plots", f"{setup} {label} (validation)", val, y_hat,
                               fits, f"{setup.lower()}-{slug}")
             entry["models"][label] = {
-                "validation": fits, "estimation_fit": mf.fits["fit"],
+                "validation": fits.as_dict(), "estimation_fit": mf.fits["fit"],
                 "model_file": f"models/{setup.lower()}-{slug}.json", "plots": pngs,
                 **MODEL_KINDS[mf.kind].summary(mf),
             }
@@ -172,9 +172,9 @@ def _order_scans(est: Dataset, val: Dataset, out_dir: Path, setup: str,
         orders, _ = arx.search_orders(est, nmax)
         m = arx.estimate_arx(est, orders)
         row = {"nmax": nmax, "estimation_fit": fit_table(
-            est.names, est.y[:, est.win], m.simulate(est)[:, est.win])["fit"]["total"]}
+            est.names, est.y[:, est.win], m.simulate(est)[:, est.win]).fit.total}
         row["validation_fit"] = fit_table(val.names, val.y[:, val.win],
-                                          m.simulate(val)[:, val.win])["fit"]["total"]
+                                          m.simulate(val)[:, val.win]).fit.total
         arx_rows.append(row)
     ss_rows = n4sid.order_scan(est, val, range(1, 21), N4SID_BLOCK_ROWS, prog)
     plots_dir = out_dir / "plots"

@@ -12,12 +12,13 @@ import matplotlib.pyplot as plt
 import numpy as np
 
 from .criteria import EURO_NCAP_CD_LIMITS_MM
+from .ident.metrics import FitTable
 
 OUTPUT_LABELS = (("cr", "Chest acceleration CR [g]"), ("cd", "Chest deflection CD [mm]"))
 
 
 def measured_vs_simulated(path: Path, title: str, names: list[str], t_s: np.ndarray,
-                          y: np.ndarray, y_hat: np.ndarray, fits: dict, output: int) -> Path:
+                          y: np.ndarray, y_hat: np.ndarray, fits: FitTable, output: int) -> Path:
     """One figure, one panel per test, for output 0 (CR) or 1 (CD). y, y_hat: (tests, n, 2)."""
     key, label = OUTPUT_LABELS[output]
     n = len(names)
@@ -32,7 +33,7 @@ def measured_vs_simulated(path: Path, title: str, names: list[str], t_s: np.ndar
             for limit, colour in zip(EURO_NCAP_CD_LIMITS_MM, ("tab:green", "tab:red"),
                                      strict=True):
                 ax.axhline(limit, color=colour, ls=":", lw=0.9)
-        ax.set_title(f"{name}: fit {fits['tests'][name][key]:.1f} %", fontsize=9)
+        ax.set_title(f"{name}: fit {getattr(fits.tests[name], key):.1f} %", fontsize=9)
         ax.set_xlabel("t [ms]")
         ax.set_ylabel(label, fontsize=8)
         ax.grid(alpha=0.3)
@@ -41,7 +42,7 @@ def measured_vs_simulated(path: Path, title: str, names: list[str], t_s: np.ndar
     axes[0][0].legend(fontsize=8)
     limits = (f"; dotted: Euro NCAP chest compression limits {EURO_NCAP_CD_LIMITS_MM[0]:g} / "
               f"{EURO_NCAP_CD_LIMITS_MM[1]:g} mm" if key == "cd" else "")
-    fig.suptitle(f"{title} — {label.split(' [')[0]}, fit {fits['fit'][key]:.1f} %{limits}",
+    fig.suptitle(f"{title} — {label.split(' [')[0]}, fit {getattr(fits.fit, key):.1f} %{limits}",
                  fontsize=10)
     fig.tight_layout()
     path.parent.mkdir(parents=True, exist_ok=True)

@@ -114,13 +114,19 @@ def bench_table(tmp: Path) -> str:
     rows = ["| test | thesis grey-box: fit CR | fit CD | CD max error [mm] | loop's model on the "
             "bus: fit CR | fit CD | CD max error [mm] | measured CD max [mm] | "
             "max abs(daemon − offline) |", "|---|---|---|---|---|---|---|---|---|"]
-    base = result["baseline_offline"]
-    for ev, (name, off) in zip(result["events"], result["offline"].items(), strict=True):
-        live, b = ev["fit_vs_reference"], base[name]
-        diff = max(ev["max_abs_diff_offline"].values())
-        rows.append(f"| {name} | {_num(b['cr'])} | {_num(b['cd'])} | {_num(b['cd_max_err'])} | "
-                    f"{_num(live['cr'])} | {_num(live['cd'])} | {_num(off['cd_max_err'])} | "
-                    f"{_num(off['cd_max_ref'])} | {'< 1e-9' if diff < 1e-9 else f'{diff:.2g}'} |")
+    base = result.baseline_offline or {}
+    for name, ev in result.events.items():
+        off, b = result.offline[name], base[name]
+        if ev is None or ev.fit_vs_reference is None:
+            rows.append(f"| {name} | {_num(b.cr)} | {_num(b.cd)} | {_num(b.cd_max_err_mm)} | "
+                        f"{'did not trigger' if ev is None else 'no reference'} | | | "
+                        f"{_num(off.cd_max_ref_mm)} | |")
+            continue
+        live = ev.fit_vs_reference
+        diff = max(ev.max_abs_diff_offline.as_dict().values())
+        rows.append(f"| {name} | {_num(b.cr)} | {_num(b.cd)} | {_num(b.cd_max_err_mm)} | "
+                    f"{_num(live.cr)} | {_num(live.cd)} | {_num(off.cd_max_err_mm)} | "
+                    f"{_num(off.cd_max_ref_mm)} | {'< 1e-9' if diff < 1e-9 else f'{diff:.2g}'} |")
     return "\n".join(rows)
 
 

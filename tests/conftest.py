@@ -3,10 +3,14 @@ from __future__ import annotations
 import json
 import shutil
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 import pytest
 
 from observer_node.data import bundled_campaign, load_tests
+
+if TYPE_CHECKING:
+    from observer_node.loop.report import LoopReport
 
 DATA = Path(__file__).parent / "data"
 
@@ -43,7 +47,7 @@ R16_LOOP_EST = ("R16_001", "R16_003", "R16_005", "R16_007")
 
 
 @pytest.fixture(scope="session")
-def r16_loop(campaign, tmp_path_factory) -> tuple[Path, dict]:
+def r16_loop(campaign, tmp_path_factory) -> tuple[Path, LoopReport]:
     """observer-node loop on four odd R16 tests, validated on three even ones, with plots and
     ratings: its folder and report, shared by the loop, export-c and bench tests."""
     from observer_node.bench import STAMP, loop_stamp

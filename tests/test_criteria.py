@@ -66,7 +66,7 @@ def test_criteria_table_reports_errors_in_units():
     y_hat = y.copy()
     y_hat[0, :, 1] *= 0.9
     table = criteria_table(["T1"], y, y_hat, 1000.0)
-    c = table["T1"]
+    c = table["T1"].as_dict()
     assert c["reference"]["cd_max_mm"] == pytest.approx(peak_deflection_mm(y[0, :, 1]))
     assert c["error"]["cd_max_mm"] == pytest.approx(-4.0, abs=0.01)
     assert c["error"]["cr_3ms_g"] == 0.0

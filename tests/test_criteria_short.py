@@ -74,8 +74,8 @@ def test_accelerometer_silent_after_a_trigger_neither_kills_the_daemon_nor_analy
     assert h.node.core.events_cut == 1 and len(crit) == 1
     assert c.ticks == k and h.node.step_errors == 0
     result = analyze(read_recording(path))
-    (event,) = result["events"]
-    est = event["criteria"]["estimate"]
+    (event,) = result.events
+    est = event.criteria.as_dict()["estimate"]
     assert all(math.isnan(v) or math.isfinite(v) for v in est.values())
 
 
@@ -187,7 +187,7 @@ def test_analyze_reads_a_recording_cut_after_any_tick(model, tmp_path):
         rec = cut_at(end)
         assert rec is not None and running(rec) > 0
         seen.add(running(rec))
-        (event,) = analyze(rec, ratings=False)["events"]
-        for v in event["criteria"]["estimate"].values():
+        (event,) = analyze(rec, ratings=False).events
+        for v in event.criteria.as_dict()["estimate"].values():
             assert math.isnan(v) or math.isfinite(v)
     assert set(range(5, 10)) <= seen  # the lengths the CFC filter refused

@@ -47,10 +47,10 @@ def _play_recorded(model, channel: str, sched, record: Path, settle_s: float = 0
 
 def _assert_matches_offline(rec) -> None:
     """The recorded estimates are the offline simulation's, and fit the reference."""
-    (event,) = analyze(rec, ratings=False)["events"]
-    assert event["max_abs_diff_offline"]["cr_g"] < 1e-9
-    assert event["max_abs_diff_offline"]["cd_mm"] < 1e-9
-    assert event["fit_vs_reference"]["total"] > 55
+    (event,) = analyze(rec, ratings=False).events
+    assert event.max_abs_diff_offline.cr_g < 1e-9
+    assert event.max_abs_diff_offline.cd_mm < 1e-9
+    assert event.fit_vs_reference.total > 55
 
 
 def test_every_frame_handled_and_estimates_equal_offline(model, tmp_path):
@@ -330,11 +330,11 @@ def test_two_tests_back_to_back_are_two_events_without_spikes(model, tmp_path):
     c, _, rec = _play_recorded(model, "b2b", sched, tmp_path / "run.mcap")
     result = analyze(rec, ratings=False)
     assert c.ticks == int((sched.ids == CODEC["TunnelAccel"].frame_id).sum())
-    assert [e["event"] for e in result["events"]] == [0, 1]
-    for e in result["events"]:
-        assert e["max_abs_diff_offline"]["cr_g"] < 1e-9
-        assert e["max_abs_diff_offline"]["cd_mm"] < 1e-9
-        assert e["fit_vs_reference"]["total"] > 55
+    assert [e.event for e in result.events] == [0, 1]
+    for e in result.events:
+        assert e.max_abs_diff_offline.cr_g < 1e-9
+        assert e.max_abs_diff_offline.cd_mm < 1e-9
+        assert e.fit_vs_reference.total > 55
     T = rec.ticks
     shown = (T["valid"] > 0) & (T["running"] > 0)
     assert np.max(np.abs(T["cd_mm"][shown])) < 60 and np.max(np.abs(T["cr_g"][shown])) < 60
@@ -352,15 +352,15 @@ def test_invalid_ticks_are_marked_not_scored_as_valid(model, tmp_path):
     sched.data[k] = brs.encode({**values, "BeltSpindle_SensorFault": 1},
                                int(values["BeltSpindle_Counter"]))
     _, _, rec = _play_recorded(model, "flagged", sched, tmp_path / "run.mcap")
-    (event,) = analyze(rec, out_dir=tmp_path / "an")["events"]
-    assert event["invalid_ticks"] >= 5
-    assert event["fit_vs_reference_valid"]["ticks"] < event["ticks"]
-    assert event["max_abs_diff_offline"]["cd_mm"] < 1e-9
+    (event,) = analyze(rec, out_dir=tmp_path / "an").events
+    assert event.invalid_ticks >= 5
+    assert event.fit_vs_reference_valid.ticks < event.ticks
+    assert event.max_abs_diff_offline.cd_mm < 1e-9
     assert (tmp_path / "an" / "event0.png").stat().st_size > 10_000
     # criteria of estimate and reference with their errors, and the ISO/TS 18571 rating
-    c = event["criteria"]
+    c = event.criteria.as_dict()
     assert abs(c["error"]["cd_max_mm"]) < 10 and c["reference"]["cd_max_mm"] > 10
-    assert 0.3 < event["iso18571"]["cd"]["overall"] <= 1.0
+    assert 0.3 < event.iso18571["cd"]["overall"] <= 1.0
 
 
 def test_every_message_matches_its_topics_schema(model, tmp_path):

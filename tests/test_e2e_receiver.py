@@ -205,8 +205,8 @@ def test_stale_frame_mid_crash_is_rejected_not_bridged(model, clean_run, tmp_pat
     assert node.core.tick_index == node0.core.tick_index  # no phantom tick
     assert c.ticks == node0.counters.ticks and c.lost == 0
     assert c.bad_e2e == c.wrong_sequence == 1 and c.repeated == 0
-    (event,) = analyze(rec, ratings=False)["events"]
-    assert event["max_abs_diff_offline"]["cd_mm"] < 1e-9
+    (event,) = analyze(rec, ratings=False).events
+    assert event.max_abs_diff_offline.cd_mm < 1e-9
     differ = _assert_same_ticks(rec, rec0)
     assert 0 < len(differ) <= CoreConfig().recover_ticks + 1
     assert _criteria(sent) == _criteria(sent0) and _criteria(sent)["ChestCriteria_Valid"] == 1

@@ -12,6 +12,7 @@ import pytest
 
 from observer_node.daemon.core import ObserverCore
 from observer_node.loop.closed_loop import run_loop
+from observer_node.loop.report import LoopReport
 from observer_node.model import ModelFile
 from observer_node.simulator import PlantConfig, simulate_campaign, simulate_mixed
 
@@ -21,7 +22,7 @@ POOL = {"belt_unloading": "R16", "chest_stiffening": "R16", "pelvis_coupling": "
         "sensor_offset": "R16", "airbag_contact": "SLED"}
 
 
-def _run(effects: dict, setup: str, out: Path) -> dict:
+def _run(effects: dict, setup: str, out: Path) -> LoopReport:
     cfg = PlantConfig(effects=effects)
     est = simulate_campaign(setup, 6, seed=21, config=cfg, prefix="EST")
     val = simulate_campaign(setup, 6, seed=22, config=cfg, prefix="VAL")
@@ -31,8 +32,8 @@ def _run(effects: dict, setup: str, out: Path) -> dict:
 
 def test_clean_data_accepts_no_effect(tmp_path):
     r = _run({}, "R16", tmp_path)
-    assert r["effects"] == []
-    assert r["final"]["fit"] == r["baseline"]["fit"]
+    assert r.effects == []
+    assert r.final.fit == r.baseline.fit
     assert (tmp_path / "report.md").read_text().count("No effect was accepted") == 1
 
 
@@ -40,9 +41,9 @@ def test_clean_data_accepts_no_effect(tmp_path):
 def test_hidden_effect_is_named_and_improves_the_fit(tmp_path, draw):
     kind = random.Random(f"hidden-{draw}").choice(sorted(POOL))  # the loop is not told
     r = _run({kind: 1.0}, POOL[kind], tmp_path)
-    found = [e["kind"] for e in r["effects"]]
-    assert kind in found, (kind, found, r["history"])
-    assert r["final"]["fit"]["total"] > r["baseline"]["fit"]["total"] + 1.0
+    found = [e["kind"] for e in r.effects]
+    assert kind in found, (kind, found, r.history)
+    assert r.final.fit.total > r.baseline.fit.total + 1.0
     report = json.loads((tmp_path / "report.json").read_text())
     for e in report["effects"]:
         assert set(e) >= {"kind", "description", "parameters", "evidence", "fit"}
@@ -51,7 +52,7 @@ def test_hidden_effect_is_named_and_improves_the_fit(tmp_path, draw):
 
 def test_augmented_model_runs_in_the_daemon(tmp_path):
     r = _run({"belt_unloading": 1.0}, "R16", tmp_path)
-    assert r["effects"]
+    assert r.effects
     mf = ModelFile.load(tmp_path / "model.json")
     assert mf.effects and mf.kind == "greybox"
     test = simulate_campaign("R16", 1, seed=5, config=PlantConfig(
@@ -70,20 +71,19 @@ def test_augmented_model_runs_in_the_daemon(tmp_path):
 @pytest.mark.xdist_group(name="r16_loop")  # one worker makes the shared loop
 def test_loop_improves_campaign_validation_fit(r16_loop):
     tmp_path, r = r16_loop
-    assert r["effects"], r["history"]
+    assert r.effects, r.history
     for name in ("fit_before_cr", "fit_after_cd", "residuals"):
         assert (tmp_path / f"{name}.png").stat().st_size > 10_000
     # the criteria a restraint engineer reads, per validation test, before and after
     for label in ("baseline", "final"):
-        assert set(r["criteria"][label]) == set(r["validation"])
-    err = {k: np.mean([abs(c["error"]["cd_max_mm"]) for c in r["criteria"][k].values()])
+        assert set(r.criteria[label]) == set(r.validation)
+    err = {k: np.mean([abs(c.error.cd_max_mm) for c in r.criteria[k].values()])
            for k in ("baseline", "final")}
     assert err["final"] < err["baseline"], err  # the effects bring peak deflection closer
-    assert r["iso18571"]["final"]["mean_overall"]["cd"] > r["iso18571"]["baseline"][
-        "mean_overall"]["cd"]
+    assert r.iso18571["final"].mean_overall["cd"] > r.iso18571["baseline"].mean_overall["cd"]
     assert "Injury criteria on the validation tests" in (tmp_path / "report.md").read_text()
-    assert r["final"]["fit"]["total"] > r["baseline"]["fit"]["total"] + 5
-    assert r["validation"] == ["R16_002", "R16_004", "R16_006"]
+    assert r.final.fit.total > r.baseline.fit.total + 5
+    assert r.validation == ["R16_002", "R16_004", "R16_006"]
 
 
 @pytest.mark.xdist_group(name="r16_loop")  # one worker makes the shared loop
@@ -96,14 +96,15 @@ def test_bench_main_job_on_the_virtual_bus(r16_loop, tmp_path, capsys):
     from .conftest import R16_LOOP_EST as est
 
     result = run_bench(tmp_path, interface="virtual", loop_tests=est, loop_dir=r16_loop[0])
-    assert len(result["events"]) == 3
-    for event, name in zip(result["events"], ("R16_002", "SLED_002", "FULL_002"), strict=True):
-        live, off = event["fit_vs_reference"], result["offline"][name]
-        assert abs(live["cr"] - off["cr"]) < 2 and abs(live["cd"] - off["cd"]) < 2, name
-        assert max(event["max_abs_diff_offline"].values()) < 1e-9, name
+    assert len(result.events) == 3
+    for event, name in zip(result.events.values(), ("R16_002", "SLED_002", "FULL_002"),
+                           strict=True):
+        live, off = event.fit_vs_reference, result.offline[name]
+        assert abs(live.cr - off.cr) < 2 and abs(live.cd - off.cd) < 2, name
+        assert max(event.max_abs_diff_offline.as_dict().values()) < 1e-9, name
     # the loop's model beats the thesis grey-box on the bus, as offline
-    base, off = result["baseline_offline"], result["offline"]
-    assert sum(off[n]["cd"] for n in off) > sum(base[n]["cd"] for n in base)
+    base, off = result.baseline_offline, result.offline
+    assert sum(off[n].cd for n in off) > sum(base[n].cd for n in base)
     assert (tmp_path / "run.mcap").exists() and (tmp_path / "event0.png").exists()
     out = capsys.readouterr().out
     assert "daemon ticks" in out and "thesis grey-box (offline)" in out
@@ -133,7 +134,7 @@ def test_first_bench_uses_the_loop_result_shipped_with_this_version(tmp_path, ca
     assert "reusing the loop's result" in capsys.readouterr().out
 
 
-def _mixed(configs: dict, out: Path, seed: int = 61) -> dict:
+def _mixed(configs: dict, out: Path, seed: int = 61) -> LoopReport:
     counts = {"R16": 2, "SLED": 2, "FULL": 2}  # named T01.., the setup only in the .mme
     est = simulate_mixed(counts, seed, configs, "E")
     val = simulate_mixed(counts, seed + 1, configs, "V")
@@ -143,9 +144,9 @@ def _mixed(configs: dict, out: Path, seed: int = 61) -> dict:
 def test_an_airbag_on_some_setups_is_found_with_its_scope(tmp_path):
     bag = PlantConfig(effects={"airbag_contact": 1.0})
     r = _mixed({"R16": PlantConfig(), "SLED": bag, "FULL": bag}, tmp_path)
-    assert [s["name"] for s in r["setups"]] == ["ECE-R16", "SLED-TEST", "FULL-FRONTAL"]
-    bags = [e for e in r["effects"] if e["kind"] == "airbag_contact"]
-    assert len(bags) == 1, r["history"]
+    assert [s.name for s in r.setups] == ["ECE-R16", "SLED-TEST", "FULL-FRONTAL"]
+    bags = [e for e in r.effects if e["kind"] == "airbag_contact"]
+    assert len(bags) == 1, r.history
     e = bags[0]
     assert sorted(e["setups"]) == ["FULL-FRONTAL", "SLED-TEST"]
     assert e["applies_to"] == ["E03", "E04", "E05", "E06", "V03", "V04", "V05", "V06"]
@@ -162,7 +163,7 @@ def test_an_airbag_on_some_setups_is_found_with_its_scope(tmp_path):
 def test_a_late_brs_is_named_a_delay_of_a_fraction_of_a_tick(tmp_path):
     late = PlantConfig(brs_delay_ms=3.0)
     r = _mixed(dict.fromkeys(("R16", "SLED", "FULL"), late), tmp_path)
-    assert [e["kind"] for e in r["effects"]][:1] == ["input_delay"], r["history"]
-    p = r["effects"][0]["parameters"]
+    assert [e["kind"] for e in r.effects][:1] == ["input_delay"], r.history
+    p = r.effects[0]["parameters"]
     assert 2.0 <= p["n_brs"] <= 3.5 and p["n_pulse"] < 0.5, p
-    assert r["final"]["fit"]["total"] > r["baseline"]["fit"]["total"] + 5
+    assert r.final.fit.total > r.baseline.fit.total + 5

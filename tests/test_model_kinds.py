@@ -41,8 +41,8 @@ def test_a_registered_kind_is_identified_loaded_and_evaluated(r16):
         assert loaded.kind == "toy_arx"
         np.testing.assert_array_equal(loaded.observer().simulate(data.pulse_g, data.brs_rad),
                                       ref.observer().simulate(data.pulse_g, data.brs_rad))
-        assert evaluate_model(loaded, r16, ratings=False)["fit"] == \
-            evaluate_model(ref, r16, ratings=False)["fit"]
+        assert evaluate_model(loaded, r16, ratings=False).fit == \
+            evaluate_model(ref, r16, ratings=False).fit
         with pytest.raises(ModelFileError, match=r"k1|kind|grey-box"):  # no effects on it
             ModelFile.from_dict({**mf.to_dict(),
                                  "effects": [{"kind": "belt_unloading"}]}, "toy")

@@ -28,7 +28,7 @@ def test_fit_measure_eq_3_15():
     assert fit_percent(y, y + np.array([1.0, 0, 0, 0])) == pytest.approx(100 * (1 - 1 / 5**0.5))
     t = fit_table(["a", "b"], np.stack([np.stack([y, y], -1)] * 2),
                   np.stack([np.stack([y, np.full(4, y.mean())], -1)] * 2))
-    assert t["fit"] == {"cr": 100.0, "cd": pytest.approx(0.0), "total": pytest.approx(50.0)}
+    assert t.fit.as_dict() == {"cr": 100.0, "cd": pytest.approx(0.0), "total": pytest.approx(50.0)}
 
 
 def test_zoh_is_exact_across_tick_rates():
@@ -57,7 +57,7 @@ def test_greybox_recovers_simulator_parameters(clean_r16):
     for name, tol in (("k1", 0.02), ("k2", 0.02), ("c2", 0.03), ("R", 0.02), ("c1", 0.05)):
         assert fit.params[name] == pytest.approx(getattr(TRUTH, name), rel=tol), name
         assert 0 < fit.std_err[name] < 0.1 * fit.params[name], name
-    assert fit.fits["fit"]["total"] > 95
+    assert fit.fits.fit.total > 95
 
 
 def test_greybox_fit_drops_with_unmodelled_effects(clean_r16):
@@ -65,7 +65,7 @@ def test_greybox_fit_drops_with_unmodelled_effects(clean_r16):
     effects = simulate_campaign("R16", 6, seed=3, config=PlantConfig(
         noise=False, effects={"belt_unloading": 1.0, "chest_stiffening": 1.0}))
     dirty = greybox.fit_greybox(make_dataset(effects, 1000.0))
-    assert clean.fits["fit"]["total"] - dirty.fits["fit"]["total"] > 5
+    assert clean.fits.fit.total - dirty.fits.fit.total > 5
 
 
 def _random_dataset(seed: int, tests: int = 4, n: int = 151) -> Dataset:
@@ -119,7 +119,7 @@ def test_n4sid_identifies_a_known_system():
     B, C, D = rng.normal(size=(3, 2)), rng.normal(size=(2, 3)), np.zeros((2, 2))
     data.y = simulate_ss(A, B, C, D, np.stack([data.pulse_g, data.brs_rad], -1))
     m = n4sid.n4sid(data, 3, block_rows=10)
-    assert m.fits["fit"]["total"] > 99.5
+    assert m.fits.fit.total > 99.5
     np.testing.assert_allclose(np.sort(np.abs(np.linalg.eigvals(m.A))),
                                np.sort(np.abs(np.linalg.eigvals(A))), atol=1e-3)
     rows = n4sid.order_scan(data, None, range(1, 5), block_rows=10)

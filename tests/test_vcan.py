@@ -105,9 +105,9 @@ def test_daemon_on_vcan_handles_every_frame_and_matches_offline(model_path, tmp_
     assert not rec.salvaged
     assert len(rec.ticks["tick"]) == n_accel  # every input frame handled
     assert estimates >= n_accel and est_rx.dropped == 0  # and answered on the bus
-    (event,) = analyze(rec, ratings=False)["events"]
-    assert event["max_abs_diff_offline"]["cr_g"] < 1e-9
-    assert event["max_abs_diff_offline"]["cd_mm"] < 1e-9
+    (event,) = analyze(rec, ratings=False).events
+    assert event.max_abs_diff_offline.cr_g < 1e-9
+    assert event.max_abs_diff_offline.cd_mm < 1e-9
     assert "lost 0" in err and "rejected 0" in err
 
 
@@ -163,11 +163,12 @@ def test_replay_tool_into_daemon_matches_offline_evaluation(model_path, tmp_path
     rec = read_recording(record)
     sent = int(r.stdout.split("sent ")[1].split()[0])
     assert sent > 600 and "lost 0" in err and "rejected 0" in err
-    (event,) = analyze(rec, ratings=False)["events"]
-    assert max(event["max_abs_diff_offline"].values()) < 1e-9
-    offline = evaluate_model(ModelFile.load(model_path), [read_isomme(test)])["tests"]["R16_004"]
+    (event,) = analyze(rec, ratings=False).events
+    assert max(event.max_abs_diff_offline.as_dict().values()) < 1e-9
+    offline = evaluate_model(ModelFile.load(model_path), [read_isomme(test)]).tests["R16_004"]
     for k in ("cr", "cd"):  # onset detection vs the lab's t = 0: within 2 points
-        assert abs(event["fit_vs_reference"][k] - offline[k]) < 2.0, (event, offline)
+        assert abs(getattr(event.fit_vs_reference, k) - getattr(offline, k)) < 2.0, \
+            (event, offline)
 
 
 def test_can_fd_is_a_configuration():
@@ -223,5 +224,5 @@ def test_10_khz_as_can_fd_input_bursts(campaign, tmp_path):
                                  f"replay: {r.stdout.strip()}; salvaged "
                                  f"{rec.salvaged}; {rec.metadata.get('chest-observer-recorder')}"
                                  f"; {err}")
-    (event,) = analyze(rec, ratings=False)["events"]
-    assert max(event["max_abs_diff_offline"].values()) < 1e-9
+    (event,) = analyze(rec, ratings=False).events
+    assert max(event.max_abs_diff_offline.as_dict().values()) < 1e-9

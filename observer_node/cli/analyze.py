@@ -4,6 +4,10 @@ from __future__ import annotations
 
 import argparse
 from pathlib import Path
+from typing import TYPE_CHECKING
+
+if TYPE_CHECKING:
+    from ..recording.analysis import EventAnalysis
 
 
 def add_subparser(subparsers: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
@@ -25,31 +29,31 @@ def _do_analyze(a: argparse.Namespace) -> int:
     out = Path(a.out) if a.out else Path(a.recording).with_suffix("")
     result = analyze(rec, out_dir=out)
     meta = rec.metadata.get(fmt.META_RUN, {})
-    print(f"{rec.path}: {result['ticks']} ticks, model {meta.get(fmt.RunMeta.MODEL_KIND, '?')} "
+    print(f"{rec.path}: {result.ticks} ticks, model {meta.get(fmt.RunMeta.MODEL_KIND, '?')} "
           f"{meta.get(fmt.RunMeta.MODEL_NAME, '?')!r} at "
           f"{meta.get(fmt.RunMeta.TICK_RATE_HZ, '?')} Hz; "
-          f"valid {100 * result['valid_share']:.1f} % of ticks; "
-          f"max tick processing {result['max_proc_us']:.0f} us")
+          f"valid {100 * result.valid_share:.1f} % of ticks; "
+          f"max tick processing {result.max_proc_us:.0f} us")
     if rec.salvaged:
         print(f"  salvaged: {rec.salvage_note}")
-    for ev in result["events"]:
+    for ev in result.events:
         _print_event(ev)
-    if not result["events"]:
+    if not result.events:
         print("  no crash event in the recording (the observer never triggered)")
     print(f"wrote {out / 'analysis.json'} and plots in {out}")
     return 0
 
 
-def _print_event(ev: dict) -> None:
-    line = (f"  event {ev['event']} (onset tick {ev['onset_tick']}, {ev['ticks']} ticks): "
-            f"max |daemon - offline| CR {ev['max_abs_diff_offline']['cr_g']:.2g} g, "
-            f"CD {ev['max_abs_diff_offline']['cd_mm']:.2g} mm")
+def _print_event(ev: EventAnalysis) -> None:
+    line = (f"  event {ev.event} (onset tick {ev.onset_tick}, {ev.ticks} ticks): "
+            f"max |daemon - offline| CR {ev.max_abs_diff_offline.cr_g:.2g} g, "
+            f"CD {ev.max_abs_diff_offline.cd_mm:.2g} mm")
     print(line)
-    if "fit_vs_reference" in ev:
-        f = ev["fit_vs_reference"]
-        print(f"    fit vs reference (eq. 3.15): CR {f['cr']:.1f} %  CD {f['cd']:.1f} %  "
-              f"TOT {f['total']:.1f} %")
-    c = ev["criteria"]
+    if ev.fit_vs_reference is not None:
+        f = ev.fit_vs_reference
+        print(f"    fit vs reference (eq. 3.15): CR {f.cr:.1f} %  CD {f.cd:.1f} %  "
+              f"TOT {f.total:.1f} %")
+    c = ev.criteria.as_dict()  # the numbers as analysis.json has them
     est = c["estimate"]
     line = (f"    criteria: CD max {est['cd_max_mm']:.1f} mm, CR 3 ms {est['cr_3ms_g']:.1f} g,"
             f" VC max {est['vc_max_m_s']:.2f} m/s")
@@ -59,13 +63,13 @@ def _print_event(ev: dict) -> None:
                  f"{r['vc_max_m_s']:.2f} m/s; error {d['cd_max_mm']:+.1f} mm, "
                  f"{d['cr_3ms_g']:+.1f} g, {d['vc_max_m_s']:+.2f} m/s)")
     print(line)
-    if "iso18571" in ev:
-        iso = ev["iso18571"]
+    if ev.iso18571 is not None:
+        iso = ev.iso18571
         print(f"    ISO/TS 18571 overall rating: CR {iso['cr']['overall']:.3f}  "
               f"CD {iso['cd']['overall']:.3f} (0..1; corridor, phase, magnitude, slope "
               "in analysis.json)")
-    if ev["invalid_ticks"]:
-        v = ev.get("fit_vs_reference_valid")
-        print(f"    {ev['invalid_ticks']} of {ev['ticks']} ticks flagged invalid (gaps in the "
-              "plots)" + (f"; on the valid ones: CR {v['cr']:.1f} %  CD {v['cd']:.1f} %"
+    if ev.invalid_ticks:
+        v = ev.fit_vs_reference_valid
+        print(f"    {ev.invalid_ticks} of {ev.ticks} ticks flagged invalid (gaps in the "
+              "plots)" + (f"; on the valid ones: CR {v.cr:.1f} %  CD {v.cd:.1f} %"
                           if v else ""))

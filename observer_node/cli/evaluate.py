@@ -36,17 +36,17 @@ def _do_evaluate(a: argparse.Namespace) -> int:
         mf = ModelFile.load(a.model)
         # without --window, the model's own window
         fits = evaluate_model(mf, tests, out, _data.window(a) if a.window else None)
-        f = fits["fit"]
+        f = fits.fit
         print(f"{mf.kind} model {mf.name!r} on {len(tests)} tests:")
-        for name, v in fits["tests"].items():
-            print(f"  {name:<12} CR {v['cr']:6.1f} %  CD {v['cd']:6.1f} %")
-        print(f"  {'total':<12} CR {f['cr']:6.1f} %  CD {f['cd']:6.1f} %  TOT {f['total']:.1f} %")
+        for name, v in fits.tests.items():
+            print(f"  {name:<12} CR {v.cr:6.1f} %  CD {v.cd:6.1f} %")
+        print(f"  {'total':<12} CR {f.cr:6.1f} %  CD {f.cd:6.1f} %  TOT {f.total:.1f} %")
         print("\nchest injury criteria, estimate vs measured (from t = 0):")
-        print(format_criteria(fits["criteria"]))
-        iso = fits.get("iso18571")
+        print(format_criteria(fits.criteria))
+        iso = fits.iso18571
         if iso:
             print("\nISO/TS 18571 overall rating (0..1) on the fit window:")
-            for name, r in iso["tests"].items():
+            for name, r in iso.tests.items():
                 print(f"  {name:<12} CR {r['cr']['overall']:.3f} ({grade(r['cr']['overall'])})"
                       f"  CD {r['cd']['overall']:.3f} ({grade(r['cd']['overall'])})")
         else:

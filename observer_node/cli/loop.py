@@ -68,5 +68,5 @@ def _do_loop(a: argparse.Namespace) -> int:
                  anywhere=a.allow_anywhere, scheduler=a.scheduler, workers=a.workers)
     print((Path(a.out) / "report.md").read_text())
     print(f"wrote {a.out}/report.json, report.md, model.json and plots "
-          f"({r['seconds']} s)")
+          f"({r.seconds} s)")
     return 0

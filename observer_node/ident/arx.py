@@ -13,14 +13,14 @@ iteration on the eight NA/NB elements by simulation fit until no neighbour is be
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 
 import numpy as np
 
 from ..model.modelfile import ModelFile
 from ..model.observer import simulate_ss
 from .dataset import Dataset
-from .metrics import fit_table
+from .metrics import FitTable, fit_table
 from .progress import Progress
 
 TRANSFORM = "raw"
@@ -46,7 +46,7 @@ class ArxModel:
     orders: ArxOrders
     a: list[list[np.ndarray]]  # a[i][j]: coefficients of y_j lags 1..na_ij in output i
     b: list[list[np.ndarray]]  # b[i][j]: coefficients of u_j lags nk..nk+nb-1
-    fits: dict = field(default_factory=dict)
+    fits: FitTable | None = None  # on the data it was estimated on
 
     def state_space(self) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
         """Shift-register realisation: x(t) = [y(t-1..t-Ly), u(t-1..t-Lu)]."""
@@ -168,7 +168,7 @@ def _split(data: Dataset) -> tuple[Dataset, Dataset]:
 def _score(data: Dataset, orders: ArxOrders) -> tuple[float, ArxModel]:
     m = estimate_arx(data, orders)
     fits = fit_table(data.names, data.y[:, data.win], m.simulate(data)[:, data.win])
-    total = fits["fit"]["total"]
+    total = fits.fit.total
     m.fits = fits
     return (total if np.isfinite(total) else -np.inf), m
 
@@ -229,5 +229,5 @@ def to_model_file(model: ArxModel, data: Dataset, name: str, nmax: int | None,
         fitted_on={"tests": data.names, "setups": sorted(set(data.setups)),
                    "rate_hz": data.fs_hz, "window_s": list(data.window_s),
                    "simulation_start_s": 0.0},
-        fits=model.fits,
+        fits=model.fits.as_dict() if model.fits else {},
     )

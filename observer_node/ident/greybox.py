@@ -20,7 +20,7 @@ from ..model.chest import PARAM_NAMES, PARAM_UNITS, THESIS_STATES, discrete_thes
 from ..model.modelfile import ModelFile
 from ..model.observer import simulate_ss, transform_inputs
 from .dataset import Dataset
-from .metrics import fit_table
+from .metrics import FitTable, fit_table
 from .progress import Progress
 
 FREE = ("k1", "c1", "k2", "c2", "m2", "R")
@@ -41,7 +41,7 @@ class GreyBoxFit:
     std_err: dict[str, float]
     cost: float
     n_eval: int
-    fits: dict
+    fits: FitTable  # on the data it was fitted on
 
 
 # Several starts because the cost has local minima (the two modes can swap roles).
@@ -100,7 +100,7 @@ def fit_greybox(data: Dataset, m1_kg: float = DEFAULT_M1_KG,
     se["m1"] = 0.0
     fits = fit_table(data.names, y, simulate(params, data)[:, data.win])
     if progress:
-        progress.done(f"{evals[0]} simulations, fit total {fits['fit']['total']:.1f} %")
+        progress.done(f"{evals[0]} simulations, fit total {fits.fit.total:.1f} %")
     return GreyBoxFit(params, se, float(2 * res.cost), evals[0], fits)
 
 
@@ -117,7 +117,7 @@ def to_model_file(fit: GreyBoxFit, data: Dataset, name: str = "greybox",
         structure={"states": list(THESIS_STATES), "equations": "thesis eq. 3.1-3.8, CD = s - x",
                    "fixed": {"m1": "overall mass scale is not identifiable from CR and CD"}},
         fitted_on=_fitted_on(data),
-        fits=fit.fits, output_timing="after_input",
+        fits=fit.fits.as_dict(), output_timing="after_input",
     )
 
 

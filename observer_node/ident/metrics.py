@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from dataclasses import dataclass
+
 import numpy as np
 
 OUTPUT_NAMES = ("cr", "cd")
@@ -15,16 +17,56 @@ def fit_percent(y: np.ndarray, y_hat: np.ndarray) -> float:
     return float(100.0 * (1.0 - np.linalg.norm(y - y_hat) / denom))
 
 
-def fit_table(names: list[str], y: np.ndarray, y_hat: np.ndarray) -> dict:
-    """Fits per test and output and the totals of eq. 3.16-3.18.
+@dataclass(frozen=True)
+class OutputFits:
+    """The fit [%] (eq. 3.15) of each output: chest acceleration CR, chest deflection CD."""
 
-    ``y`` and ``y_hat`` are (tests, n, 2) already cut to the scoring window. Returns
-    ``{"fit": {"cr", "cd", "total"}, "tests": {name: {"cr", "cd"}}}``.
-    """
-    tests = {
-        name: {o: fit_percent(y[i, :, k], y_hat[i, :, k]) for k, o in enumerate(OUTPUT_NAMES)}
-        for i, name in enumerate(names)
-    }
-    cr = float(np.mean([v["cr"] for v in tests.values()]))
-    cd = float(np.mean([v["cd"] for v in tests.values()]))
-    return {"fit": {"cr": cr, "cd": cd, "total": (cr + cd) / 2}, "tests": tests}
+    cr: float
+    cd: float
+
+    @property
+    def total(self) -> float:
+        """fit_TOT [%]: CR and CD averaged (eq. 3.18)."""
+        return (self.cr + self.cd) / 2
+
+    def as_dict(self) -> dict[str, float]:
+        return {"cr": self.cr, "cd": self.cd}
+
+
+@dataclass(frozen=True)
+class Fits:
+    """The fits [%] of CR and CD and their mean fit_TOT (eq. 3.15-3.18)."""
+
+    cr: float
+    cd: float
+    total: float
+
+    @classmethod
+    def of(cls, cr: float, cd: float) -> Fits:
+        return cls(cr, cd, (cr + cd) / 2)
+
+    def as_dict(self) -> dict[str, float]:
+        return {"cr": self.cr, "cd": self.cd, "total": self.total}
+
+
+@dataclass(frozen=True)
+class FitTable:
+    """The fits over a set of tests (eq. 3.16-3.18) and each test's (eq. 3.15)."""
+
+    fit: Fits
+    tests: dict[str, OutputFits]
+
+    def as_dict(self) -> dict[str, dict]:
+        return {"fit": self.fit.as_dict(),
+                "tests": {n: v.as_dict() for n, v in self.tests.items()}}
+
+
+def fit_table(names: list[str], y: np.ndarray, y_hat: np.ndarray) -> FitTable:
+    """Fits per test and output and the totals of eq. 3.16-3.18. ``y`` and ``y_hat`` are
+    (tests, n, 2) (CR, CD) already cut to the scoring window."""
+    tests = {name: OutputFits(fit_percent(y[i, :, 0], y_hat[i, :, 0]),
+                              fit_percent(y[i, :, 1], y_hat[i, :, 1]))
+             for i, name in enumerate(names)}
+    cr = float(np.mean([v.cr for v in tests.values()]))
+    cd = float(np.mean([v.cd for v in tests.values()]))
+    return FitTable(Fits.of(cr, cd), tests)

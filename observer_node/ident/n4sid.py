@@ -15,14 +15,14 @@ away on a bench.
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 
 import numpy as np
 
 from ..model.modelfile import ModelFile
 from ..model.observer import simulate_ss
 from .dataset import Dataset
-from .metrics import fit_table
+from .metrics import FitTable, fit_table
 from .progress import Progress
 
 TRANSFORM = "raw"
@@ -36,7 +36,7 @@ class StateSpaceModel:
     D: np.ndarray
     singular_values: np.ndarray
     mirrored_poles: int = 0
-    fits: dict = field(default_factory=dict)
+    fits: FitTable | None = None  # on the data it was estimated on
 
     def simulate(self, data: Dataset) -> np.ndarray:
         with np.errstate(all="ignore"):
@@ -133,10 +133,10 @@ def order_scan(est: Dataset, val: Dataset | None, orders: range, block_rows: int
     rows = []
     for n in orders:
         m = n4sid(est, n, block_rows, svd)
-        row = {"order": n, "estimation_fit": m.fits["fit"]["total"]}
+        row = {"order": n, "estimation_fit": m.fits.fit.total if m.fits else float("nan")}
         if val is not None:
             y_hat = m.simulate(val)[:, val.win]
-            row["validation_fit"] = fit_table(val.names, val.y[:, val.win], y_hat)["fit"]["total"]
+            row["validation_fit"] = fit_table(val.names, val.y[:, val.win], y_hat).fit.total
         rows.append(row)
         if progress:
             progress.update(f"order {n}: estimation fit {row['estimation_fit']:.1f} %")
@@ -154,5 +154,5 @@ def to_model_file(m: StateSpaceModel, data: Dataset, name: str, block_rows: int)
         fitted_on={"tests": data.names, "setups": sorted(set(data.setups)),
                    "rate_hz": data.fs_hz, "window_s": list(data.window_s),
                    "simulation_start_s": 0.0},
-        fits=m.fits,
+        fits=m.fits.as_dict() if m.fits else {},
     )

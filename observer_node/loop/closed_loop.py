@@ -34,6 +34,7 @@ from ..data.crashtest import THESIS_WINDOW_S, CrashDataError
 from ..data.setups import Setup, allowed_setups, assign_setups
 from ..ident import greybox
 from ..ident.dataset import Dataset, make_dataset
+from ..ident.metrics import Fits, FitTable
 from ..ident.progress import Progress
 from ..model.chest import (
     PARAM_NAMES,
@@ -59,11 +60,12 @@ from .cluster import Runner, cluster
 from .diagnosis import sensor_fold_scores, unexplained
 from .evidence import POSSIBLE_MIN, SETUP_TOLERANCE, SIGN_P, Evidence, judge
 from .refit import fold_scores, folds, model, refit, score
+from .report import LoopReport, ModelFit
 from .screening import BrokenTest, residual_outliers, screen_channels
 
 
-def _fit3(t: dict) -> dict:
-    return {k: round(float(v), 2) for k, v in t["fit"].items()}
+def _fit3(t: FitTable) -> dict[str, float]:
+    return {k: round(float(v), 2) for k, v in t.fit.as_dict().items()}
 
 
 def scope_options(kind: str, setups: list[Setup], est_setups: list[str],
@@ -89,7 +91,7 @@ def run_loop(est_tests: list[CrashTest], val_tests: list[CrashTest], out: Path,
              margin: float = 1.0, top_k: int = 5, max_effects: int = 4,
              verbose: bool = True, plots: bool = True, ratings: bool = True,
              groups: list[tuple[str, str]] | None = None, anywhere: bool = False,
-             scheduler: str | None = None, workers: int | None = None) -> dict:
+             scheduler: str | None = None, workers: int | None = None) -> LoopReport:
     """Run the loop and write report.json, report.md, model.json and (``plots``) the plots of
     the validation tests before and after, into ``out``; returns the report. ``ratings``:
     ISO/TS 18571 ratings beside the fits (when the optional package is installed).
@@ -104,7 +106,7 @@ def run_loop(est_tests: list[CrashTest], val_tests: list[CrashTest], out: Path,
 def _run(est_tests: list[CrashTest], val_tests: list[CrashTest], out: Path, rate_hz: float,
          window_s: tuple[float, float], margin: float, top_k: int, max_effects: int,
          verbose: bool, plots: bool, ratings: bool, groups: list[tuple[str, str]] | None,
-         anywhere: bool, runner: Runner) -> dict:
+         anywhere: bool, runner: Runner) -> LoopReport:
     t_start = time.monotonic()
     prog = Progress("loop", enabled=verbose)
     out.mkdir(parents=True, exist_ok=True)
@@ -256,7 +258,7 @@ def _run(est_tests: list[CrashTest], val_tests: list[CrashTest], out: Path, rate
         accepted.append(entry)
         step["decision"] = f"accepted {best.kind} on {scope_label(best.setups)}"
         prog.update(f"accepted {best.kind} on {scope_label(best.setups)}: validation fit "
-                    f"{val_fit['fit']['total']:.1f} %")
+                    f"{val_fit.fit.total:.1f} %")
     final_val = score(base, effects, val)
     judged = {label: scores(val, model(b, e, val).simulate(val.pulse_g, val.brs_rad), ratings)
               for label, b, e in (("baseline", gb.params, []), ("final", base, effects))}
@@ -266,25 +268,25 @@ def _run(est_tests: list[CrashTest], val_tests: list[CrashTest], out: Path, rate
     _model_file(dict(gb.params), [], est, rate_hz, gb, setups).save(out / "baseline-model.json")
     resid_final = _residual(base, effects, est)
     y_final = model(base, effects, est).simulate(est.pulse_g, est.brs_rad)
-    report = {
-        "baseline": {"fit": _fit3(baseline_val), "parameters": gb.params,
-                     "std_err": gb.std_err},
-        "effects": accepted,
-        "possible": sorted(possible, key=lambda p: -p["evidence"]["gain_points"]),
-        "sensor_effects": [sensor] if sensor else [],
-        "unexplained": [] if sensor else unexplained(est, y_final),
-        "warnings": [b.as_dict() for b in broken],
-        "left_out": _with_and_without(broken, base, effects, est_tests, val_tests, est_kept,
-                                      val, rate_hz, window_s),
-        "final": {"fit": _fit3(final_val), "parameters": base, "std_err": base_se},
-        "setups": [s.as_dict() for s in setups],
-        "model": "model.json", "baseline_model": "baseline-model.json",
-        "software_version": __version__,
-        "estimation": est.names, "validation": val.names,
-        "residual_tests": {"baseline": tests0, "final": correlation_tests(resid_final, est)},
-        "first_ranking": first_ranking,
-        "history": history,
-        "settings": {"rate_hz": rate_hz, "window_s": list(window_s), "margin": margin,
+    iso = {k: v.iso18571 for k, v in judged.items() if v.iso18571 is not None}
+    report = LoopReport(
+        baseline=ModelFit(Fits(**_fit3(baseline_val)), gb.params, gb.std_err),
+        effects=accepted,
+        possible=sorted(possible, key=lambda p: -p["evidence"]["gain_points"]),
+        sensor_effects=[sensor] if sensor else [],
+        unexplained=[] if sensor else unexplained(est, y_final),
+        warnings=broken,
+        left_out=_with_and_without(broken, base, effects, est_tests, val_tests, est_kept,
+                                   val, rate_hz, window_s),
+        final=ModelFit(Fits(**_fit3(final_val)), base, base_se),
+        setups=setups,
+        model="model.json", baseline_model="baseline-model.json",
+        software_version=__version__,
+        estimation=est.names, validation=val.names,
+        residual_tests={"baseline": tests0, "final": correlation_tests(resid_final, est)},
+        first_ranking=first_ranking,
+        history=history,
+        settings={"rate_hz": rate_hz, "window_s": list(window_s), "margin": margin,
                      "top_k": top_k, "groups": [f"{n}={p}" for n, p in groups or []],
                      "allow_anywhere": anywhere, "workers": runner.workers,
                      "cross_validation": "two-fold inside estimation tests, each setup's "
@@ -293,18 +295,18 @@ def _run(est_tests: list[CrashTest], val_tests: list[CrashTest], out: Path, rate
                      "its 95 % t-interval above zero or a one-sided sign test p <= "
                      f"{SIGN_P:g}, no setup's cross-validated fit lowered by more than "
                      f"{SETUP_TOLERANCE:g} points"},
-        "validation_tests": {"baseline": baseline_val["tests"], "final": final_val["tests"]},
-        "criteria": {k: v["criteria"] for k, v in judged.items()},
-        **({"iso18571": {k: v["iso18571"] for k, v in judged.items()}}
-           if "iso18571" in judged["final"] else {}),
-        "seconds": round(time.monotonic() - t_start, 1),
-    }
-    (out / "report.json").write_text(json.dumps(report, indent=1, default=float) + "\n")
+        validation_tests={"baseline": baseline_val.tests, "final": final_val.tests},
+        criteria={k: v.criteria for k, v in judged.items()},
+        iso18571=iso if len(iso) == len(judged) else None,
+        seconds=round(time.monotonic() - t_start, 1),
+    )
+    as_json = report.as_dict()
+    (out / "report.json").write_text(json.dumps(as_json, indent=1, default=float) + "\n")
     if plots:
         _plots(out, base, effects, gb.params, val)
-    (out / "report.md").write_text(_markdown(report))
+    (out / "report.md").write_text(_markdown(as_json))
     prog.done(f"{len(accepted)} effect(s) accepted; validation fit "
-              f"{baseline_val['fit']['total']:.1f} -> {final_val['fit']['total']:.1f} %")
+              f"{baseline_val.fit.total:.1f} -> {final_val.fit.total:.1f} %")
     return report
 
 
@@ -312,8 +314,8 @@ def _mean(per_test: dict[str, float]) -> float:
     return float(np.mean(list(per_test.values())))
 
 
-def _per_test_total(table: dict) -> dict[str, float]:
-    return {n: (v["cr"] + v["cd"]) / 2 for n, v in table["tests"].items()}
+def _per_test_total(table: FitTable) -> dict[str, float]:
+    return {n: v.total for n, v in table.tests.items()}
 
 
 def _fold(base: dict, effects: list[dict], data: Dataset, train: list[int],
@@ -517,7 +519,7 @@ def _model_file(base: dict, effects: list[dict], est: Dataset, rate_hz: float,
                    "setup_rules": [s.as_dict() for s in setups if s.name in est.setups],
                    "rate_hz": rate_hz,
                    "window_s": list(est.window_s), "simulation_start_s": 0.0},
-        fits=score(base, effects, est), effects=effects, output_timing="after_input",
+        fits=score(base, effects, est).as_dict(), effects=effects, output_timing="after_input",
     )
 
 

@@ -6,14 +6,14 @@ own setup (``Dataset.setups``)."""
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 from scipy import optimize
 
 from ..ident.dataset import Dataset
 from ..ident.greybox import FREE, STARTS
-from ..ident.metrics import fit_table
+from ..ident.metrics import Fits, FitTable, fit_table
 from ..model.effects import EFFECTS
 from ..model.nonlinear import NonlinearGreyBox
 from .analysis import weights
@@ -140,15 +140,14 @@ def _copy_effect(e: dict) -> dict:
             **({"setups": list(e["setups"])} if "setups" in e else {})}
 
 
-def score(base: dict, effects: list[dict], data: Dataset) -> dict:
-    """The thesis's fit (eq. 3.15-3.18) of a model on ``data``."""
+def score(base: dict, effects: list[dict], data: Dataset) -> FitTable:
+    """The thesis's fit (eq. 3.15-3.18) of a model on ``data``; a total that ran away
+    (not finite) scores -1000 %."""
     with np.errstate(all="ignore"):
         y_hat = model(base, effects, data).simulate(data.pulse_g, data.brs_rad)
     t = fit_table(data.names, data.y[:, data.win], y_hat[:, data.win])
-    for k in ("cr", "cd", "total"):
-        if not np.isfinite(t["fit"][k]):
-            t["fit"][k] = -1e3
-    return t
+    f = t.fit
+    return replace(t, fit=Fits(_finite(f.cr), _finite(f.cd), _finite(f.total)))
 
 
 def folds(data: Dataset) -> tuple[list[int], list[int]]:
@@ -172,8 +171,8 @@ def fold_scores(base: dict, effects: list[dict], data: Dataset, train: list[int]
     """Refit on tests ``train``, then fit_TOT (eq. 3.15, CR and CD averaged) of each test in
     ``test``: one fold of the cross-validation, one task for the cluster."""
     r = refit(base, effects, data.subset(train), max_nfev)
-    t = score(r.base, r.effects, data.subset(test))["tests"]
-    return {n: _finite((v["cr"] + v["cd"]) / 2) for n, v in t.items()}
+    t = score(r.base, r.effects, data.subset(test)).tests
+    return {n: _finite(v.total) for n, v in t.items()}
 
 
 def _finite(v: float) -> float:

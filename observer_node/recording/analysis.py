@@ -4,13 +4,15 @@ the reference frames (the thesis's fit, eq. 3.15), and plotted."""
 from __future__ import annotations
 
 import json
+from dataclasses import dataclass
 from pathlib import Path
+from typing import Any
 
 import numpy as np
 
 from .. import iso18571
-from ..criteria import EURO_NCAP_CD_LIMITS_MM, chest_criteria, compare
-from ..ident.metrics import fit_percent
+from ..criteria import EURO_NCAP_CD_LIMITS_MM, CriteriaComparison, chest_criteria, compare
+from ..ident.metrics import Fits, OutputFits, fit_percent
 from . import format as fmt
 from .reader import Recording, RecordingError
 
@@ -41,78 +43,159 @@ def offline_estimates(rec: Recording, event: int) -> tuple[np.ndarray, np.ndarra
     return ticks, y
 
 
+@dataclass(frozen=True)
+class OfflineDiff:
+    """The largest |daemon estimate - offline re-run| over an event's running ticks."""
+
+    cr_g: float
+    cd_mm: float
+
+    def as_dict(self) -> dict[str, float]:
+        return {"cr_g": self.cr_g, "cd_mm": self.cd_mm}
+
+
+@dataclass(frozen=True)
+class ValidFits:
+    """The fits [%] on the ticks the daemon flagged valid, and how many there were."""
+
+    cr: float
+    cd: float
+    ticks: int
+
+    def as_dict(self) -> dict[str, float | int]:
+        return {"cr": self.cr, "cd": self.cd, "ticks": self.ticks}
+
+
+@dataclass(frozen=True)
+class EventAnalysis:
+    """One recorded event: its onset, the daemon against its own offline re-run, and with
+    reference frames (else None) its fits [%] and criteria against the measured ones."""
+
+    event: int
+    onset_tick: int
+    ticks: int  # from the onset to the event's last running tick
+    invalid_ticks: int  # running ticks the daemon flagged invalid
+    max_abs_diff_offline: OfflineDiff
+    fit_vs_offline: OutputFits
+    criteria: CriteriaComparison
+    fit_vs_reference: Fits | None = None
+    fit_vs_reference_valid: ValidFits | None = None  # None also when under 11 valid ticks
+    offline_fit_vs_reference: OutputFits | None = None
+    iso18571: dict[str, dict[str, float]] | None = None  # per output (cr, cd): the ratings
+
+    def as_dict(self) -> dict[str, Any]:
+        out: dict[str, Any] = {
+            "event": self.event, "onset_tick": self.onset_tick, "ticks": self.ticks,
+            "invalid_ticks": self.invalid_ticks,
+            "max_abs_diff_offline": self.max_abs_diff_offline.as_dict(),
+            "fit_vs_offline": self.fit_vs_offline.as_dict()}
+        if self.fit_vs_reference is not None:
+            out["fit_vs_reference"] = self.fit_vs_reference.as_dict()
+        if self.fit_vs_reference_valid is not None:
+            out["fit_vs_reference_valid"] = self.fit_vs_reference_valid.as_dict()
+        if self.offline_fit_vs_reference is not None:
+            out["offline_fit_vs_reference"] = self.offline_fit_vs_reference.as_dict()
+        out["criteria"] = self.criteria.as_dict()
+        if self.iso18571 is not None:
+            out["iso18571"] = self.iso18571
+        return out
+
+
+@dataclass(frozen=True)
+class Analysis:
+    """A recording read back (see :func:`analyze`)."""
+
+    file: str
+    salvaged: bool
+    note: str  # what salvaging a cut file did ("" if nothing)
+    ticks: int
+    topics: dict[str, int]  # messages per topic
+    valid_share: float  # share of ticks flagged valid, 0..1
+    max_proc_us: float  # the longest tick processing [us]
+    events: list[EventAnalysis]
+
+    def as_dict(self) -> dict[str, Any]:
+        return {"file": self.file, "salvaged": self.salvaged, "note": self.note,
+                "ticks": self.ticks, "topics": self.topics, "valid_share": self.valid_share,
+                "max_proc_us": self.max_proc_us, "events": [e.as_dict() for e in self.events]}
+
+
 def analyze(rec: Recording, window_s: tuple[float, float] = (0.01, 0.15),
-            out_dir: Path | None = None, ratings: bool = True) -> dict:
+            out_dir: Path | None = None, ratings: bool = True) -> Analysis:
     """Per event: the fit (eq. 3.15) of the estimates against the reference and against the
     offline simulation of the same model, the largest difference from the offline run, the
     chest injury criteria of the estimates (beside the reference's, with their errors) over
     the event's ticks from the onset, and (``ratings``, optional package) the ISO/TS 18571
-    ratings against the reference on the window."""
+    ratings against the reference on the window; with ``out_dir``, analysis.json and plots."""
     T = rec.ticks
     fs = rec.model.tick_rate_hz if rec.model else rec.tick_rate_hz
     events = sorted({int(e) for e in T["event"][T["running"] > 0]})
-    result: dict = {"file": str(rec.path), "salvaged": rec.salvaged, "note": rec.salvage_note,
-                    "ticks": len(T["tick"]), "topics": rec.topics,
-                    "valid_share": float(T["valid"].mean()) if len(T["tick"]) else 0.0,
-                    "max_proc_us": float(T["proc_us"].max()) if len(T["tick"]) else 0.0,
-                    "events": []}
+    result = Analysis(str(rec.path), rec.salvaged, rec.salvage_note, len(T["tick"]),
+                      rec.topics,
+                      float(T["valid"].mean()) if len(T["tick"]) else 0.0,
+                      float(T["proc_us"].max()) if len(T["tick"]) else 0.0, [])
     for e in events:
-        ticks, y_off = offline_estimates(rec, e)
-        idx = {int(k): i for i, k in enumerate(T["tick"])}
-        rows = np.array([idx[int(k)] for k in ticks])
-        y_est = np.column_stack([T["cr_g"][rows], T["cd_mm"][rows]])
-        running = T["running"][rows] > 0
-        valid = T["valid"][rows] > 0
-        onset = int(ticks[0])
-        t_rel = (ticks - onset) / fs
-        win = (t_rel >= window_s[0] - 1e-9) & (t_rel <= window_s[1] + 1e-9) & running
-        entry: dict = {"event": e, "onset_tick": onset, "ticks": len(ticks),
-                       "invalid_ticks": int((running & ~valid).sum()),
-                       "max_abs_diff_offline": {
-                           "cr_g": float(np.max(np.abs(y_est[running, 0] - y_off[running, 0]))),
-                           "cd_mm": float(np.max(np.abs(y_est[running, 1] - y_off[running, 1])))},
-                       "fit_vs_offline": {
-                           "cr": fit_percent(y_off[win, 0], y_est[win, 0]),
-                           "cd": fit_percent(y_off[win, 1], y_est[win, 1])}}
-        have_ref = np.array([int(k) in rec.reference for k in ticks])
-        if (have_ref & win).sum() > 10:
-            r = np.array([rec.reference.get(int(k), (np.nan, np.nan)) for k in ticks])
-            w = win & have_ref
-            entry["fit_vs_reference"] = {"cr": fit_percent(r[w, 0], y_est[w, 0]),
-                                         "cd": fit_percent(r[w, 1], y_est[w, 1])}
-            entry["fit_vs_reference"]["total"] = (entry["fit_vs_reference"]["cr"]
-                                                  + entry["fit_vs_reference"]["cd"]) / 2
-            # The same on the ticks the daemon flagged valid only: what a consumer of the
-            # bus would have used (input faults, late frames, sensor faults left out).
-            wv = w & valid
-            if wv.sum() > 10:
-                entry["fit_vs_reference_valid"] = {"cr": fit_percent(r[wv, 0], y_est[wv, 0]),
-                                                   "cd": fit_percent(r[wv, 1], y_est[wv, 1]),
-                                                   "ticks": int(wv.sum())}
-            entry["offline_fit_vs_reference"] = {"cr": fit_percent(r[w, 0], y_off[w, 0]),
-                                                 "cd": fit_percent(r[w, 1], y_off[w, 1])}
-            m = running & have_ref
-            entry["criteria"] = compare(chest_criteria(y_est[m, 0], y_est[m, 1], fs),
-                                        chest_criteria(r[m, 0], r[m, 1], fs))
-            if ratings and iso18571.available():
-                entry["iso18571"] = {key: iso18571.rate(r[w, j], y_est[w, j], fs)
-                                     for j, key in enumerate(("cr", "cd"))}
-        else:
-            r = None
-            entry["criteria"] = {"estimate": chest_criteria(y_est[running, 0],
-                                                            y_est[running, 1], fs).as_dict()}
+        entry, t_rel, y_est, y_off, r, shown = _event(rec, e, window_s, fs, ratings)
         if out_dir is not None:
             _plot_event(out_dir / f"event{e}.png", rec, e, t_rel, y_est, y_off, r, entry,
-                        running & valid)
-        result["events"].append(entry)
+                        shown)
+        result.events.append(entry)
     if out_dir is not None:
         out_dir.mkdir(parents=True, exist_ok=True)
-        (out_dir / "analysis.json").write_text(json.dumps(result, indent=1) + "\n")
+        (out_dir / "analysis.json").write_text(json.dumps(result.as_dict(), indent=1) + "\n")
     return result
 
 
+def _event(rec: Recording, e: int, window_s: tuple[float, float], fs: float, ratings: bool
+           ) -> tuple[EventAnalysis, np.ndarray, np.ndarray, np.ndarray, np.ndarray | None,
+                      np.ndarray]:
+    """One event's analysis, and what its plot draws: time since onset [s], the daemon's and
+    the offline estimates (n, 2), the reference (None without) and the ticks shown."""
+    T = rec.ticks
+    ticks, y_off = offline_estimates(rec, e)
+    idx = {int(k): i for i, k in enumerate(T["tick"])}
+    rows = np.array([idx[int(k)] for k in ticks])
+    y_est = np.column_stack([T["cr_g"][rows], T["cd_mm"][rows]])
+    running = T["running"][rows] > 0
+    valid = T["valid"][rows] > 0
+    onset = int(ticks[0])
+    t_rel = (ticks - onset) / fs
+    win = (t_rel >= window_s[0] - 1e-9) & (t_rel <= window_s[1] + 1e-9) & running
+    head = (e, onset, len(ticks), int((running & ~valid).sum()),
+            OfflineDiff(float(np.max(np.abs(y_est[running, 0] - y_off[running, 0]))),
+                        float(np.max(np.abs(y_est[running, 1] - y_off[running, 1])))),
+            OutputFits(fit_percent(y_off[win, 0], y_est[win, 0]),
+                       fit_percent(y_off[win, 1], y_est[win, 1])))
+    have_ref = np.array([int(k) in rec.reference for k in ticks])
+    if not (have_ref & win).sum() > 10:
+        entry = EventAnalysis(*head, criteria=CriteriaComparison(
+            chest_criteria(y_est[running, 0], y_est[running, 1], fs)))
+        return entry, t_rel, y_est, y_off, None, running & valid
+    r = np.array([rec.reference.get(int(k), (np.nan, np.nan)) for k in ticks])
+    w = win & have_ref
+    # The same on the ticks the daemon flagged valid only: what a consumer of the bus would
+    # have used (input faults, late frames, sensor faults left out).
+    wv = w & valid
+    m = running & have_ref
+    entry = EventAnalysis(
+        *head,
+        fit_vs_reference=Fits.of(fit_percent(r[w, 0], y_est[w, 0]),
+                                 fit_percent(r[w, 1], y_est[w, 1])),
+        fit_vs_reference_valid=ValidFits(fit_percent(r[wv, 0], y_est[wv, 0]),
+                                         fit_percent(r[wv, 1], y_est[wv, 1]),
+                                         int(wv.sum())) if wv.sum() > 10 else None,
+        offline_fit_vs_reference=OutputFits(fit_percent(r[w, 0], y_off[w, 0]),
+                                            fit_percent(r[w, 1], y_off[w, 1])),
+        criteria=compare(chest_criteria(y_est[m, 0], y_est[m, 1], fs),
+                         chest_criteria(r[m, 0], r[m, 1], fs)),
+        iso18571={key: iso18571.rate(r[w, j], y_est[w, j], fs)
+                  for j, key in enumerate(("cr", "cd"))}
+        if ratings and iso18571.available() else None)
+    return entry, t_rel, y_est, y_off, r, running & valid
+
+
 def _plot_event(path: Path, rec: Recording, e: int, t: np.ndarray, y_est: np.ndarray,
-                y_off: np.ndarray, ref: np.ndarray | None, entry: dict,
+                y_off: np.ndarray, ref: np.ndarray | None, entry: EventAnalysis,
                 shown: np.ndarray) -> None:
     """The estimate is drawn only where the daemon flagged it valid and running: elsewhere a
     gap, with invalid stretches shaded, so nothing the daemon disowned reads as data."""
@@ -141,12 +224,12 @@ def _plot_event(path: Path, rec: Recording, e: int, t: np.ndarray, y_est: np.nda
         ax.grid(alpha=0.3)
     axes[-1].set_xlabel("t since onset [ms]")
     axes[0].legend(fontsize=8)
-    fit = entry.get("fit_vs_reference")
+    fit = entry.fit_vs_reference
     title = f"{rec.path.name} event {e}"
     if fit:
-        title += f": fit CR {fit['cr']:.1f} %, CD {fit['cd']:.1f} %"
-    if entry["invalid_ticks"]:
-        title += f"; {entry['invalid_ticks']} ticks flagged invalid (shaded)"
+        title += f": fit CR {fit.cr:.1f} %, CD {fit.cd:.1f} %"
+    if entry.invalid_ticks:
+        title += f"; {entry.invalid_ticks} ticks flagged invalid (shaded)"
     fig.suptitle(title)
     fig.tight_layout()
     path.parent.mkdir(parents=True, exist_ok=True)
