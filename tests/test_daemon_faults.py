@@ -167,3 +167,22 @@ def test_bad_record_path_from_the_cli_is_one_line(model_path, tmp_path):
 
 def test_counters_wrap_modulo_65536():
     assert wrap16(65535) == 65535 and wrap16(65536) == 0 and wrap16(70000) == 70000 - 65536
+
+
+def test_the_recorder_start_timeout_is_the_configs(model, tmp_path, monkeypatch):
+    """Under CPU emulation on a busy host the recorder's start-up took over the default 120 s;
+    the run was refused. How long to wait is the bench's to say."""
+    from observer_node.recording.writer import Recorder
+
+    waited: list[float] = []
+    real = Recorder.wait_ready
+
+    def spy(self: Recorder, timeout_s: float = 120.0) -> None:
+        waited.append(timeout_s)
+        real(self, timeout_s)
+
+    monkeypatch.setattr(Recorder, "wait_ready", spy)
+    with Harness(model, "startto", record=tmp_path / "run.mcap",
+                 recorder_start_timeout_s=900.0):
+        pass
+    assert waited == [900.0]

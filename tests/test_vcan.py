@@ -72,7 +72,9 @@ def _start_daemon(model_path: Path, record: Path, tmp: Path,
                    f"fd = {'true' if fd else 'false'}\n"
                    # Under software emulation a polling idle vCPU takes the host core that
                    # emulates the others: correctness here, timing on a real bench PC.
-                   "cpu_latency_us = -1\n")
+                   "cpu_latency_us = -1\n"
+                   # The recorder's imports under emulation on a busy host took over 120 s.
+                   "recorder_start_timeout_s = 900.0\n")
     p = subprocess.Popen([sys.executable, "-m", "observer_node", "run", "--config", str(cfg)],
                          cwd=ROOT, stderr=subprocess.PIPE, text=True)
     line = p.stderr.readline()

@@ -40,6 +40,9 @@ class NodeConfig:
     reconnect_s: float = 0.5
     cpu_latency_us: int = 0  # PM QoS while running; -1: leave power management alone
     rt_priority: int = 0  # SCHED_FIFO priority of the tick loop (1-99); 0: normal scheduling
+    # how long the recorder may take to write the file's header before the run is refused
+    # (its start-up imports take seconds on a busy PC, minutes under CPU emulation)
+    recorder_start_timeout_s: float = 120.0
     core: CoreConfig = field(default_factory=CoreConfig)
 
     @classmethod
@@ -103,7 +106,7 @@ _NODE: _Schema = {
     "status_period_s": _num(0.01, 10), "accel_timeout_s": _num(0, 60),
     "brs_timeout_s": _num(0.001, 10), "idle_after_s": _num(0.01, 3600),
     "reconnect_s": _num(0.01, 60), "cpu_latency_us": _num(-1, 100_000, True),
-    "rt_priority": _num(0, 99, True)}
+    "rt_priority": _num(0, 99, True), "recorder_start_timeout_s": _num(1, 3600)}
 _CORE: _Schema = {
     "trigger_g": _num(0.5, 100), "trigger_ticks": _num(1, 100, True),
     "onset_g": _num(0, 100), "pretrigger_s": _num(0, 1), "bias_window_s": _num(0.002, 10),

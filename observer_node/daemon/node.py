@@ -103,7 +103,7 @@ class ObserverNode:
                 self.recorder = Recorder(self.cfg.record, self.metadata(), atts,
                                          self.codec.path, rows_per_s=self.model.tick_rate_hz,
                                          live=self.cfg.live)
-                self.recorder.wait_ready()
+                self.recorder.wait_ready(self.cfg.recorder_start_timeout_s)
             self.port = self._port_factory(self.input_ids)
         except BaseException:
             if self.recorder is not None:
