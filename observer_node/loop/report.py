@@ -1,7 +1,7 @@
 """What observer-node loop reports (report.json, read back by the bench and the README
-figures): typed at its top level, serialised by :meth:`LoopReport.as_dict` to the JSON the
-loop has always written. The effects, candidates and history inside stay the JSON objects
-report.md documents."""
+figures): typed, serialised by :meth:`LoopReport.as_dict` to the JSON the loop has always
+written (the key order of each object is part of that: report.json is compared byte for byte).
+The candidate rankings and the history stay the JSON objects report.md documents."""
 
 from __future__ import annotations
 
@@ -12,7 +12,129 @@ from ..criteria import CriteriaComparison
 from ..data.setups import Setup
 from ..ident.metrics import Fits, OutputFits
 from ..scores import IsoRatings
+from .evidence import Evidence
 from .screening import BrokenTest
+
+
+@dataclass(frozen=True)
+class RunnerUp:
+    """The best cross-validated candidate of another kind than the accepted one."""
+
+    kind: str
+    scope: str  # its setups joined by "+", or "all"
+    cv_fit: float  # its mean cross-validated fit_TOT [%] (rounded to 0.01)
+
+    def as_dict(self) -> dict[str, Any]:
+        return {"kind": self.kind, "scope": self.scope, "cv_fit": self.cv_fit}
+
+
+@dataclass(frozen=True)
+class OtherScope:
+    """The accepted effect on the other scope it was tried on."""
+
+    scope: str
+    cv_fit: float  # mean cross-validated fit_TOT [%] there
+    margin_points: float  # accepted scope's cv fit minus this one's [fit points]
+
+    def as_dict(self) -> dict[str, Any]:
+        return {"scope": self.scope, "cv_fit": self.cv_fit, "margin_points": self.margin_points}
+
+
+@dataclass(frozen=True)
+class EffectEvidence:
+    """Why an effect was accepted: its share of the residual [0..1] in the ranking, the
+    rule's verdict, its signature's share of the residual before and after the refit, the
+    cross-validated fit_TOT [%] before and after, the runner-up and the margin [points], and
+    the residual's input cross-correlation / coloured band (RMS and largest) before and after.
+    Values are as reported (rounded)."""
+
+    ranking_share: float
+    scope_shares: dict[str, float] | None
+    rule: Evidence
+    explained_share_before: float
+    explained_share_after: float
+    cv_fit_before: float
+    cv_fit_after: float
+    runner_up: RunnerUp | None
+    margin_points: float | None  # None with no runner-up
+    other_scope: OtherScope | None
+    input_xcorr_rms_ratio_before: float
+    input_xcorr_rms_ratio_after: float
+    input_xcorr_max_ratio_before: float
+    input_xcorr_max_ratio_after: float
+
+    def as_dict(self) -> dict[str, Any]:
+        return {
+            "ranking_share": self.ranking_share, "scope_shares": self.scope_shares,
+            "rule": self.rule.as_dict(),
+            "explained_share_before": self.explained_share_before,
+            "explained_share_after": self.explained_share_after,
+            "cv_fit_before": self.cv_fit_before, "cv_fit_after": self.cv_fit_after,
+            **({"runner_up": self.runner_up.as_dict(), "margin_points": self.margin_points}
+               if self.runner_up is not None else {}),
+            **({"other_scope": self.other_scope.as_dict()}
+               if self.other_scope is not None else {}),
+            "input_xcorr_rms_ratio_before": self.input_xcorr_rms_ratio_before,
+            "input_xcorr_rms_ratio_after": self.input_xcorr_rms_ratio_after,
+            "input_xcorr_max_ratio_before": self.input_xcorr_max_ratio_before,
+            "input_xcorr_max_ratio_after": self.input_xcorr_max_ratio_after,
+        }
+
+    @classmethod
+    def from_dict(cls, d: dict[str, Any]) -> EffectEvidence:
+        ru, os_ = d.get("runner_up"), d.get("other_scope")
+        return cls(d["ranking_share"], d["scope_shares"], Evidence.from_dict(d["rule"]),
+                   d["explained_share_before"], d["explained_share_after"],
+                   d["cv_fit_before"], d["cv_fit_after"],
+                   RunnerUp(**ru) if ru is not None else None, d.get("margin_points"),
+                   OtherScope(**os_) if os_ is not None else None,
+                   d["input_xcorr_rms_ratio_before"], d["input_xcorr_rms_ratio_after"],
+                   d["input_xcorr_max_ratio_before"], d["input_xcorr_max_ratio_after"])
+
+
+@dataclass(frozen=True)
+class AcceptedEffect:
+    """An effect the loop added: its kind and one-line description, its parameters (units:
+    the effect's definition, :mod:`observer_node.model.effects`) and their standard errors,
+    the setups it acts on and those setups' estimation and validation tests (None: every
+    test), warnings on its parameters, the rule's verdict in one line, the evidence, and the
+    validation fits [%] of the model with it (rounded to 0.01)."""
+
+    kind: str
+    description: str
+    parameters: dict[str, Any]
+    std_err: dict[str, float]
+    setups: list[str] | None
+    applies_to: list[str] | None  # test names; None with setups None
+    warnings: list[str]
+    confidence: str
+    evidence: EffectEvidence
+    fit: Fits
+
+    @property
+    def scope(self) -> str:
+        """The setups it acts on joined by "+", or "all"."""
+        return "all" if self.setups is None else "+".join(self.setups)
+
+    def model_entry(self) -> dict[str, Any]:
+        """The effect as model.json and the refit take it."""
+        return {"kind": self.kind, "parameters": self.parameters,
+                **({"setups": self.setups} if self.setups is not None else {})}
+
+    def as_dict(self) -> dict[str, Any]:
+        return {"kind": self.kind, "description": self.description,
+                "parameters": self.parameters, "std_err": self.std_err,
+                **({"setups": self.setups, "applies_to": self.applies_to}
+                   if self.setups is not None else {}),
+                "warnings": self.warnings, "confidence": self.confidence,
+                "evidence": self.evidence.as_dict(), "fit": self.fit.as_dict()}
+
+    @classmethod
+    def from_dict(cls, d: dict[str, Any]) -> AcceptedEffect:
+        """An entry of report.json's ``effects``, read back."""
+        return cls(d["kind"], d["description"], d["parameters"], d["std_err"],
+                   d.get("setups"), d.get("applies_to"), d["warnings"], d["confidence"],
+                   EffectEvidence.from_dict(d["evidence"]), Fits(**d["fit"]))
 
 
 @dataclass(frozen=True)
@@ -37,7 +159,7 @@ class LoopReport:
     loop got there."""
 
     baseline: ModelFit
-    effects: list[dict[str, Any]]  # accepted, in order
+    effects: list[AcceptedEffect]  # in the order accepted
     possible: list[dict[str, Any]]  # not accepted, largest gain first
     sensor_effects: list[dict[str, Any]]
     unexplained: list[dict[str, Any]]
@@ -61,7 +183,7 @@ class LoopReport:
 
     def as_dict(self) -> dict[str, Any]:
         return {
-            "baseline": self.baseline.as_dict(), "effects": self.effects,
+            "baseline": self.baseline.as_dict(), "effects": [e.as_dict() for e in self.effects],
             "possible": self.possible, "sensor_effects": self.sensor_effects,
             "unexplained": self.unexplained, "warnings": [w.as_dict() for w in self.warnings],
             "left_out": self.left_out, "final": self.final.as_dict(),
