@@ -66,7 +66,9 @@ from .report import (
     LoopReport,
     ModelFit,
     OtherScope,
+    PossibleEffect,
     RunnerUp,
+    SensorEffect,
 )
 from .screening import BrokenTest, residual_outliers, screen_channels
 
@@ -150,8 +152,8 @@ def _run(est_tests: list[CrashTest], val_tests: list[CrashTest], out: Path, rate
     cv_now = _cv(runner, [(base, effects)], est, folds_)[0]
     history: list[dict] = []
     accepted: list[AcceptedEffect] = []
-    possible: list[dict] = []
-    sensor: dict | None = None
+    possible: list[PossibleEffect] = []
+    sensor: SensorEffect | None = None
     first_ranking: list[dict] = []
     resid0 = _residual(base, effects, est)
     tests0 = correlation_tests(resid0, est)
@@ -196,19 +198,18 @@ def _run(est_tests: list[CrashTest], val_tests: list[CrashTest], out: Path, rate
             "sensor": {o: ev.as_dict() for o, ev in sensor_ev.items()}}
         history.append(step)
         # "possible": what the data cannot defend against the model as it now stands
-        possible = [{"kind": c.kind, "scope": scope_label(c.setups),
-                     "after": [e["kind"] for e in effects], "evidence": ev.as_dict(),
-                     "why_not": ev.reason}
+        possible = [PossibleEffect(c.kind, scope_label(c.setups), [e["kind"] for e in effects],
+                                   ev, ev.reason)
                     for _, c, ev in tried if not ev.accepted and ev.gain_points >= POSSIBLE_MIN]
         passing = [(cv, c, ev) for cv, c, ev in tried if ev.accepted]
         best_sensor = max(sensor_ev.items(), key=lambda kv: kv[1].gain_points, default=None)
         if best_sensor is not None and best_sensor[1].accepted and (
                 not passing or best_sensor[1].gain_points > passing[0][2].gain_points):
             o, ev = best_sensor
-            sensor = {"output": o, "family": "sensor", "after": [e["kind"] for e in effects],
-                      "looks_like": f"a static function of {o.upper()}: the {o.upper()} "
-                      "transducer's gain or non-linearity, not the chest's physics",
-                      "evidence": ev.as_dict(), "confidence": ev.confidence}
+            sensor = SensorEffect(o, [e["kind"] for e in effects],
+                                  f"a static function of {o.upper()}: the {o.upper()} "
+                                  "transducer's gain or non-linearity, not the chest's physics",
+                                  ev)
             step["decision"] = (f"a sensor effect on {o} explains the residual better than "
                                 "any physical effect: reported, not added to the model")
             break
@@ -278,7 +279,8 @@ def _run(est_tests: list[CrashTest], val_tests: list[CrashTest], out: Path, rate
     report = LoopReport(
         baseline=ModelFit(Fits(**_fit3(baseline_val)), gb.params, gb.std_err),
         effects=accepted,
-        possible=sorted(possible, key=lambda p: -p["evidence"]["gain_points"]),
+        # by the gain as reported (rounded to 0.001 points): ties keep the order tried
+        possible=sorted(possible, key=lambda p: -round(p.evidence.gain_points, 3)),
         sensor_effects=[sensor] if sensor else [],
         unexplained=[] if sensor else unexplained(est, y_final),
         warnings=broken,
@@ -655,27 +657,27 @@ def _markdown_findings(r: LoopReport) -> list[str]:
         lines.append("")
     for s in r.sensor_effects:
         lines += ["## Sensor effect (not physics)", "",
-                  f"- **{s['output'].upper()}**: {s['looks_like']}",
-                  f"- confidence: {s['confidence']}",
+                  f"- **{s.output.upper()}**: {s.looks_like}",
+                  f"- confidence: {s.confidence}",
                   "- not added to model.json: check the transducer's calibration", ""]
     for u in r.unexplained:
-        gains = ", ".join(f"{k} {v:+.1f}" for k, v in u["gain_points"].items())
+        gains = ", ".join(f"{k} {v:+.1f}" for k, v in u.gain_points.items())
         lines += ["## Unexplained", "",
-                  f"- the residual of **{u['output'].upper()}** on {', '.join(u['setups'])} "
+                  f"- the residual of **{u.output.upper()}** on {', '.join(u.setups)} "
                   f"is structured and no effect of the library explains it under the rule; "
-                  f"it looks like {u['looks_like']}",
+                  f"it looks like {u.looks_like}",
                   f"- a correction of that shape would add (fit points per setup): {gains}; "
-                  f"the same in the other output: {u['other_output_gain_points']:+.1f}", ""]
+                  f"the same in the other output: {u.other_output_gain_points:+.1f}", ""]
     if r.possible:
         lines += ["## Possible, not accepted", "",
                   "| effect | scope | after | gain (95 % CI), tests improved | why not |",
                   "|---|---|---|---|---|"]
-        for p in r.possible:
-            ev = p["evidence"]
-            lo, hi = ev["ci95_points"]
-            lines.append(f"| {p['kind']} | {p['scope']} | {'+'.join(p['after']) or '-'} | "
-                         f"{ev['gain_points']:+.2f} ({lo:+.2f}..{hi:+.2f}), "
-                         f"{ev['tests_improved']}/{ev['tests']} | {p['why_not']} |")
+        for p in r.possible:  # the gain as report.json rounds it (to 0.001 points)
+            ev = p.evidence
+            low, high = ev.ci95_points
+            lines.append(f"| {p.kind} | {p.scope} | {'+'.join(p.after) or '-'} | "
+                         f"{round(ev.gain_points, 3):+.2f} ({low:+.2f}..{high:+.2f}), "
+                         f"{ev.tests_improved}/{ev.tests} | {p.why_not} |")
         lines.append("")
     return lines
 

@@ -12,6 +12,7 @@ from ..criteria import CriteriaComparison
 from ..data.setups import Setup
 from ..ident.metrics import Fits, OutputFits
 from ..scores import IsoRatings
+from .diagnosis import Unexplained
 from .evidence import Evidence
 from .screening import BrokenTest
 
@@ -152,6 +153,43 @@ class ModelFit:
 
 
 @dataclass(frozen=True)
+class PossibleEffect:
+    """A candidate that gained something but failed the rule: reported, never a finding."""
+
+    kind: str
+    scope: str  # its setups joined by "+", or "all"
+    after: list[str]  # the effects the model had when it was tried
+    evidence: Evidence
+    why_not: str
+
+    def as_dict(self) -> dict[str, Any]:
+        return {"kind": self.kind, "scope": self.scope, "after": self.after,
+                "evidence": self.evidence.as_dict(), "why_not": self.why_not}
+
+
+@dataclass(frozen=True)
+class SensorEffect:
+    """A static correction of one output that beat every physical effect under the rule:
+    the transducer's gain or non-linearity, reported and not added to the model."""
+
+    output: str  # "cr" or "cd"
+    after: list[str]  # the effects the model had when it was tried
+    looks_like: str
+    evidence: Evidence
+
+    family = "sensor"
+
+    @property
+    def confidence(self) -> str:
+        return self.evidence.confidence
+
+    def as_dict(self) -> dict[str, Any]:
+        return {"output": self.output, "family": self.family, "after": self.after,
+                "looks_like": self.looks_like, "evidence": self.evidence.as_dict(),
+                "confidence": self.confidence}
+
+
+@dataclass(frozen=True)
 class LoopReport:
     """The thesis grey-box and the final model on the validation tests, the effects accepted
     (each with its evidence, scope, parameters and validation fit), those possible but not
@@ -160,9 +198,9 @@ class LoopReport:
 
     baseline: ModelFit
     effects: list[AcceptedEffect]  # in the order accepted
-    possible: list[dict[str, Any]]  # not accepted, largest gain first
-    sensor_effects: list[dict[str, Any]]
-    unexplained: list[dict[str, Any]]
+    possible: list[PossibleEffect]  # largest gain first
+    sensor_effects: list[SensorEffect]
+    unexplained: list[Unexplained]
     warnings: list[BrokenTest]  # tests left out of the fits
     left_out: dict[str, Any]  # the fits with and without them ({} when none)
     final: ModelFit
@@ -184,13 +222,16 @@ class LoopReport:
     def as_dict(self) -> dict[str, Any]:
         return {
             "baseline": self.baseline.as_dict(), "effects": [e.as_dict() for e in self.effects],
-            "possible": self.possible, "sensor_effects": self.sensor_effects,
-            "unexplained": self.unexplained, "warnings": [w.as_dict() for w in self.warnings],
+            "possible": [p.as_dict() for p in self.possible],
+            "sensor_effects": [s.as_dict() for s in self.sensor_effects],
+            "unexplained": [u.as_dict() for u in self.unexplained],
+            "warnings": [w.as_dict() for w in self.warnings],
             "left_out": self.left_out, "final": self.final.as_dict(),
             "setups": [s.as_dict() for s in self.setups], "model": self.model,
             "baseline_model": self.baseline_model, "software_version": self.software_version,
             "estimation": self.estimation, "validation": self.validation,
-            "residual_tests": self.residual_tests, "first_ranking": self.first_ranking,
+            "residual_tests": self.residual_tests,
+            "first_ranking": self.first_ranking,
             "history": self.history, "settings": self.settings,
             "validation_tests": {k: {n: f.as_dict() for n, f in v.items()}
                                  for k, v in self.validation_tests.items()},
