@@ -11,10 +11,13 @@ from observer_node.loop.evidence import judge
 from observer_node.loop.report import (
     AcceptedEffect,
     EffectEvidence,
+    LoopStep,
     OtherScope,
     PossibleEffect,
+    RankedCandidate,
     RunnerUp,
     SensorEffect,
+    TriedCandidate,
 )
 
 # report.json's keys, in order, as observer-node loop wrote them before the entries were typed
@@ -86,3 +89,19 @@ def test_possible_sensor_and_unexplained_entries_keep_their_keys():
     assert list(u) == ["output", "setups", "looks_like", "shape", "gain_points",
                        "other_output_gain_points"]
 
+
+def test_a_round_of_the_loop_keeps_its_keys():
+    rule = _rule()
+    ranked = RankedCandidate("pelvis_coupling", 0.256, "all", None, {"kp": 1.0e4})
+    step = LoopStep(["belt_unloading"], 86.0, [ranked],
+                    [TriedCandidate("chest_stiffening", "all", 94.0, rule)],
+                    {"cr": rule, "cd": rule})
+    step.decision = "accepted chest_stiffening on all"  # decided when the round ends
+    d = step.as_dict()
+    assert list(d) == ["effects_before", "cv_fit_before", "ranking", "tried", "sensor",
+                       "decision"]
+    assert list(d["ranking"][0]) == ["kind", "explained_share", "scope", "scope_shares",
+                                     "initial_parameters"]
+    assert list(d["tried"][0]) == ["kind", "scope", "cv_fit", "evidence"]
+    assert list(d["tried"][0]["evidence"]) == RULE_KEYS
+    assert list(d["sensor"]) == ["cr", "cd"] and d["decision"].startswith("accepted")

@@ -64,11 +64,14 @@ from .report import (
     AcceptedEffect,
     EffectEvidence,
     LoopReport,
+    LoopStep,
     ModelFit,
     OtherScope,
     PossibleEffect,
+    RankedCandidate,
     RunnerUp,
     SensorEffect,
+    TriedCandidate,
 )
 from .screening import BrokenTest, residual_outliers, screen_channels
 
@@ -150,20 +153,19 @@ def _run(est_tests: list[CrashTest], val_tests: list[CrashTest], out: Path, rate
     baseline_val = score(base, effects, val)
     folds_ = folds(est)
     cv_now = _cv(runner, [(base, effects)], est, folds_)[0]
-    history: list[dict] = []
+    history: list[LoopStep] = []
     accepted: list[AcceptedEffect] = []
     possible: list[PossibleEffect] = []
     sensor: SensorEffect | None = None
-    first_ranking: list[dict] = []
+    first_ranking: list[RankedCandidate] = []
     resid0 = _residual(base, effects, est)
     tests0 = correlation_tests(resid0, est)
     while len(accepted) < max_effects:
         current = model(base, effects, est)
         prog.update(f"residual analysis with {len(effects)} effect(s)")
         ranked = candidates(current, est, {e["kind"] for e in effects}, scopes)
-        ranking = [{"kind": c.kind, "explained_share": round(c.explained, 4),
-                    "scope": scope_label(c.setups), "scope_shares": c.scope_shares,
-                    "initial_parameters": c.parameters} for c in ranked]
+        ranking = [RankedCandidate(c.kind, round(c.explained, 4), scope_label(c.setups),
+                                   c.scope_shares, c.parameters) for c in ranked]
         if not first_ranking:
             first_ranking = ranking
         # Named effects first; the generic formula only when none of them helps.
@@ -190,12 +192,9 @@ def _run(est_tests: list[CrashTest], val_tests: list[CrashTest], out: Path, rate
         tried.sort(key=lambda t: -t[0])
         sensor_ev = _sensor_candidates(runner, base, effects, est, folds_, cv_now, test_setup,
                                        margin)
-        step: dict[str, Any] = {
-            "effects_before": [e["kind"] for e in effects], "cv_fit_before": _mean(cv_now),
-            "ranking": ranking,
-            "tried": [{"kind": c.kind, "scope": scope_label(c.setups), "cv_fit": cv,
-                       "evidence": ev.as_dict()} for cv, c, ev in tried],
-            "sensor": {o: ev.as_dict() for o, ev in sensor_ev.items()}}
+        step = LoopStep([e["kind"] for e in effects], _mean(cv_now), ranking,
+                        [TriedCandidate(c.kind, scope_label(c.setups), cv, ev)
+                         for cv, c, ev in tried], sensor_ev)
         history.append(step)
         # "possible": what the data cannot defend against the model as it now stands
         possible = [PossibleEffect(c.kind, scope_label(c.setups), [e["kind"] for e in effects],
@@ -210,11 +209,11 @@ def _run(est_tests: list[CrashTest], val_tests: list[CrashTest], out: Path, rate
                                   f"a static function of {o.upper()}: the {o.upper()} "
                                   "transducer's gain or non-linearity, not the chest's physics",
                                   ev)
-            step["decision"] = (f"a sensor effect on {o} explains the residual better than "
+            step.decision = (f"a sensor effect on {o} explains the residual better than "
                                 "any physical effect: reported, not added to the model")
             break
         if not passing:
-            step["decision"] = ("no candidate passes the rule (mean paired gain >= "
+            step.decision = ("no candidate passes the rule (mean paired gain >= "
                                 f"{margin:g} points, above the scatter, no setup "
                                 "lowered): " + "; ".join(f"{c.kind} on {scope_label(c.setups)}: "
                                                           f"{ev.reason}"
@@ -236,7 +235,7 @@ def _run(est_tests: list[CrashTest], val_tests: list[CrashTest], out: Path, rate
         # Not for a parameter-free switch (the one-sided belt): its signature, linearised along
         # a trajectory that never switches, says little (why it is always tried).
         if best.parameters and share_after >= share_before and share_after >= 0.02:
-            step["decision"] = (f"{best.kind}: the refitted residual is not less "
+            step.decision = (f"{best.kind}: the refitted residual is not less "
                                 "correlated with its signature "
                                 f"({share_before:.3f} -> {share_after:.3f}): not accepted")
             break
@@ -255,7 +254,7 @@ def _run(est_tests: list[CrashTest], val_tests: list[CrashTest], out: Path, rate
                 ranking_share=round(best.explained, 4), scope_shares=best.scope_shares,
                 rule=ev_best, explained_share_before=round(share_before, 4),
                 explained_share_after=round(share_after, 4),
-                cv_fit_before=round(step["cv_fit_before"], 2), cv_fit_after=round(cv_best, 2),
+                cv_fit_before=round(step.cv_fit_before, 2), cv_fit_after=round(cv_best, 2),
                 runner_up=runner_up, margin_points=margin_points, other_scope=other_scope,
                 input_xcorr_rms_ratio_before=round(xc_before, 2),
                 input_xcorr_rms_ratio_after=round(xc_after, 2),
@@ -263,7 +262,7 @@ def _run(est_tests: list[CrashTest], val_tests: list[CrashTest], out: Path, rate
                 input_xcorr_max_ratio_after=round(_max_ratio(ct_new), 2)),
             fit=Fits(**_fit3(val_fit)))
         accepted.append(entry)
-        step["decision"] = f"accepted {best.kind} on {scope_label(best.setups)}"
+        step.decision = f"accepted {best.kind} on {scope_label(best.setups)}"
         prog.update(f"accepted {best.kind} on {scope_label(best.setups)}: validation fit "
                     f"{val_fit.fit.total:.1f} %")
     final_val = score(base, effects, val)
@@ -585,7 +584,7 @@ def _markdown(r: LoopReport) -> str:
         lines += _markdown_effect(e)
     lines += ["## First ranking of candidates (share of the residual explained)", "",
               "| effect | scope | explained |", "|---|---|---|"]
-    lines += [f"| {c['kind']} | {c['scope']} | {100 * c['explained_share']:.1f} % |"
+    lines += [f"| {c.kind} | {c.scope} | {100 * c.explained_share:.1f} % |"
               for c in r.first_ranking]
     rt = r.residual_tests
     lines += ["", "## Residual tests on the estimation tests", "",

@@ -1,7 +1,7 @@
 """What observer-node loop reports (report.json, read back by the bench and the README
 figures): typed, serialised by :meth:`LoopReport.as_dict` to the JSON the loop has always
 written (the key order of each object is part of that: report.json is compared byte for byte).
-The candidate rankings and the history stay the JSON objects report.md documents."""
+"""
 
 from __future__ import annotations
 
@@ -190,6 +190,60 @@ class SensorEffect:
 
 
 @dataclass(frozen=True)
+class RankedCandidate:
+    """An effect as the residual analysis ranks it: the share [0..1] of the residual its
+    signature explains (rounded to 0.0001) on its scope, the shares on the scopes tried, and
+    the initial parameters the regression gives it (the effect's units)."""
+
+    kind: str
+    explained_share: float
+    scope: str  # its setups joined by "+", or "all"
+    scope_shares: dict[str, float] | None
+    initial_parameters: dict[str, Any]
+
+    def as_dict(self) -> dict[str, Any]:
+        return {"kind": self.kind, "explained_share": self.explained_share,
+                "scope": self.scope, "scope_shares": self.scope_shares,
+                "initial_parameters": self.initial_parameters}
+
+
+@dataclass(frozen=True)
+class TriedCandidate:
+    """A candidate cross-validated in a round: its mean cross-validated fit_TOT [%] with it
+    and the rule's verdict."""
+
+    kind: str
+    scope: str
+    cv_fit: float
+    evidence: Evidence
+
+    def as_dict(self) -> dict[str, Any]:
+        return {"kind": self.kind, "scope": self.scope, "cv_fit": self.cv_fit,
+                "evidence": self.evidence.as_dict()}
+
+
+@dataclass
+class LoopStep:
+    """One round of the loop: the effects the model had and its mean cross-validated
+    fit_TOT [%], the ranking, the candidates tried (best first), the sensor candidates per
+    output, and what was decided (set when the round ends)."""
+
+    effects_before: list[str]
+    cv_fit_before: float
+    ranking: list[RankedCandidate]
+    tried: list[TriedCandidate]
+    sensor: dict[str, Evidence]
+    decision: str = ""
+
+    def as_dict(self) -> dict[str, Any]:
+        return {"effects_before": self.effects_before, "cv_fit_before": self.cv_fit_before,
+                "ranking": [c.as_dict() for c in self.ranking],
+                "tried": [t.as_dict() for t in self.tried],
+                "sensor": {o: ev.as_dict() for o, ev in self.sensor.items()},
+                "decision": self.decision}
+
+
+@dataclass(frozen=True)
 class LoopReport:
     """The thesis grey-box and the final model on the validation tests, the effects accepted
     (each with its evidence, scope, parameters and validation fit), those possible but not
@@ -211,8 +265,8 @@ class LoopReport:
     estimation: list[str]  # test names
     validation: list[str]
     residual_tests: dict[str, dict[str, dict[str, float]]]  # baseline, final: per output
-    first_ranking: list[dict[str, Any]]
-    history: list[dict[str, Any]]  # one step per round of candidates
+    first_ranking: list[RankedCandidate]
+    history: list[LoopStep]  # one per round of candidates
     settings: dict[str, Any]
     validation_tests: dict[str, dict[str, OutputFits]]  # baseline, final: per test
     criteria: dict[str, dict[str, CriteriaComparison]]  # baseline, final: per test
@@ -231,8 +285,8 @@ class LoopReport:
             "baseline_model": self.baseline_model, "software_version": self.software_version,
             "estimation": self.estimation, "validation": self.validation,
             "residual_tests": self.residual_tests,
-            "first_ranking": self.first_ranking,
-            "history": self.history, "settings": self.settings,
+            "first_ranking": [c.as_dict() for c in self.first_ranking],
+            "history": [s.as_dict() for s in self.history], "settings": self.settings,
             "validation_tests": {k: {n: f.as_dict() for n, f in v.items()}
                                  for k, v in self.validation_tests.items()},
             "criteria": {k: {n: c.as_dict() for n, c in v.items()}
