@@ -90,8 +90,8 @@ def run_case(case: Case, sets: Path, work: Path, workers: int | None) -> dict:
     found = sorted(f"{e.kind}@{_sim_scope(e.setups or [], r)}" for e in r.effects)
     expected = sorted(f"{k}@{'+'.join(sorted(s.split('+')))}" for k, s in case.expect)
     flagged = sorted({w.test for w in r.warnings})
-    sensor = [s["output"] for s in r.sensor_effects]
-    unexpl = [u["output"] for u in r.unexplained]
+    sensor = [s.output for s in r.sensor_effects]
+    unexpl = [u.output for u in r.unexplained]
     right = found == expected and flagged == sorted(case.expect_broken)
     if case.expect_note:  # a transducer case: nothing physical, and its output called out
         output = case.expect_note.rsplit(" ", 1)[-1]  # "... on cd"
@@ -99,7 +99,7 @@ def run_case(case: Case, sets: Path, work: Path, workers: int | None) -> dict:
     row = {"case": case.name, "found": found, "expected": expected, "flagged": flagged,
            "sensor": sensor, "unexplained": unexpl, "right": right,
            "before": r.baseline.fit.total, "after": r.final.fit.total,
-           "seconds": seconds, "possible": [f"{p['kind']}@{p['scope']}" for p in r.possible]}
+           "seconds": seconds, "possible": [f"{p.kind}@{p.scope}" for p in r.possible]}
     row["reachable"] = _reachable(case, r, est, val, found == expected)
     return row
 
