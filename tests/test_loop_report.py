@@ -11,6 +11,7 @@ from observer_node.loop.evidence import judge
 from observer_node.loop.report import (
     AcceptedEffect,
     EffectEvidence,
+    LeftOut,
     LoopStep,
     OtherScope,
     PossibleEffect,
@@ -105,3 +106,16 @@ def test_a_round_of_the_loop_keeps_its_keys():
     assert list(d["tried"][0]) == ["kind", "scope", "cv_fit", "evidence"]
     assert list(d["tried"][0]["evidence"]) == RULE_KEYS
     assert list(d["sensor"]) == ["cr", "cd"] and d["decision"].startswith("accepted")
+
+
+def test_the_fits_with_and_without_left_out_tests_keep_their_keys():
+    without = Fits(94.85, 98.54, 96.69)
+    both = LeftOut(["EST_001", "VAL_002"], without, Fits(94.0, 98.0, 96.0),
+                   "cannot be scored: 50 samples missing").as_dict()
+    assert list(both) == ["tests", "validation_fit_without",
+                          "validation_fit_if_fitted_with_them", "validation_fit_with_them"]
+    assert both["validation_fit_without"] == {"cr": 94.85, "cd": 98.54, "total": 96.69}
+    assert both["validation_fit_with_them"] == "cannot be scored: 50 samples missing"
+    # only validation tests left out: no refit with them
+    assert list(LeftOut(["VAL_002"], without, None, without).as_dict()) == [
+        "tests", "validation_fit_without", "validation_fit_with_them"]

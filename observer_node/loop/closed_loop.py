@@ -24,7 +24,6 @@ import itertools
 import json
 import time
 from pathlib import Path
-from typing import Any
 
 import numpy as np
 
@@ -63,6 +62,7 @@ from .refit import fold_scores, folds, model, refit, score
 from .report import (
     AcceptedEffect,
     EffectEvidence,
+    LeftOut,
     LoopReport,
     LoopStep,
     ModelFit,
@@ -361,33 +361,34 @@ def _sensor_candidates(runner: Runner, base: dict, effects: list[dict], data: Da
 def _with_and_without(broken: list[BrokenTest], base: dict, effects: list[dict],
                       est_tests: list[CrashTest], val_tests: list[CrashTest],
                       est_kept: list[CrashTest], val: Dataset, rate_hz: float,
-                      window_s: tuple[float, float]) -> dict:
+                      window_s: tuple[float, float]) -> LeftOut | None:
     """What the fits are with the left-out tests and without: the final structure refitted
     with the left-out estimation tests back in, scored on the validation tests; and the final
     model scored on the validation tests with the left-out ones back in."""
     names = {b.test for b in broken}
     if not names:
-        return {}
-    out: dict[str, Any] = {"tests": sorted(names),
-                           "validation_fit_without": _fit3(score(base, effects, val))}
+        return None
+    fitted_with: Fits | str | None = None
+    scored_with: Fits | str | None = None
     back_est = [t for t in est_tests if t.name in names]
     if back_est:
         try:
             est_all = make_dataset([*est_kept, *back_est], rate_hz, window_s)
             with np.errstate(all="ignore"):
                 r = refit(base, effects, est_all, max_nfev=60)
-            out["validation_fit_if_fitted_with_them"] = _fit3(score(r.base, r.effects, val))
+            fitted_with = Fits(**_fit3(score(r.base, r.effects, val)))
         except (CrashDataError, ValueError) as e:  # missing samples: not fittable at all
-            out["validation_fit_if_fitted_with_them"] = f"cannot be fitted: {e}"
+            fitted_with = f"cannot be fitted: {e}"
     back_val = [t for t in val_tests if t.name in names]
     if back_val:
         try:
             val_all = make_dataset([*[t for t in val_tests if t.name not in names],
                                     *back_val], rate_hz, window_s)
-            out["validation_fit_with_them"] = _fit3(score(base, effects, val_all))
+            scored_with = Fits(**_fit3(score(base, effects, val_all)))
         except (CrashDataError, ValueError) as e:
-            out["validation_fit_with_them"] = f"cannot be scored: {e}"
-    return out
+            scored_with = f"cannot be scored: {e}"
+    return LeftOut(sorted(names), Fits(**_fit3(score(base, effects, val))), fitted_with,
+                   scored_with)
 
 
 def _with_widest_scope(c: Candidate, options: list[list[str] | None]) -> list[Candidate]:
@@ -646,13 +647,15 @@ def _markdown_findings(r: LoopReport) -> list[str]:
                   "| test | channel | why |", "|---|---|---|"]
         lines += [f"| {w.test} | {w.channel} | {w.reason} |" for w in r.warnings]
         lo = r.left_out
-        lines += ["", f"- validation fit_TOT without them: {_pct(lo['validation_fit_without'])}"]
-        if "validation_fit_if_fitted_with_them" in lo:
-            lines.append("- with the left-out estimation tests fitted too: "
-                         + _pct(lo["validation_fit_if_fitted_with_them"]))
-        if "validation_fit_with_them" in lo:
-            lines.append("- scored on the left-out validation tests too: "
-                         + _pct(lo["validation_fit_with_them"]))
+        if lo is not None:  # always, with warnings
+            lines += ["", "- validation fit_TOT without them: "
+                      + _pct(lo.validation_fit_without)]
+            if lo.validation_fit_if_fitted_with_them is not None:
+                lines.append("- with the left-out estimation tests fitted too: "
+                             + _pct(lo.validation_fit_if_fitted_with_them))
+            if lo.validation_fit_with_them is not None:
+                lines.append("- scored on the left-out validation tests too: "
+                             + _pct(lo.validation_fit_with_them))
         lines.append("")
     for s in r.sensor_effects:
         lines += ["## Sensor effect (not physics)", "",
@@ -681,5 +684,5 @@ def _markdown_findings(r: LoopReport) -> list[str]:
     return lines
 
 
-def _pct(f: dict | str) -> str:
-    return f"{f['total']:.1f} %" if isinstance(f, dict) else f
+def _pct(f: Fits | str) -> str:
+    return f"{f.total:.1f} %" if isinstance(f, Fits) else f

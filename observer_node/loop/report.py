@@ -244,6 +244,29 @@ class LoopStep:
 
 
 @dataclass(frozen=True)
+class LeftOut:
+    """The validation fits [%] (rounded to 0.01) with the tests left out and without them:
+    the final model as fitted; its structure refitted with the left-out estimation tests back
+    in; scored on the left-out validation tests too. A text says why one could not be had;
+    None: no such tests."""
+
+    tests: list[str]
+    validation_fit_without: Fits
+    validation_fit_if_fitted_with_them: Fits | str | None = None
+    validation_fit_with_them: Fits | str | None = None
+
+    def as_dict(self) -> dict[str, Any]:
+        out: dict[str, Any] = {"tests": self.tests,
+                               "validation_fit_without": self.validation_fit_without.as_dict()}
+        for key, f in (("validation_fit_if_fitted_with_them",
+                        self.validation_fit_if_fitted_with_them),
+                       ("validation_fit_with_them", self.validation_fit_with_them)):
+            if f is not None:
+                out[key] = f if isinstance(f, str) else f.as_dict()
+        return out
+
+
+@dataclass(frozen=True)
 class LoopReport:
     """The thesis grey-box and the final model on the validation tests, the effects accepted
     (each with its evidence, scope, parameters and validation fit), those possible but not
@@ -256,7 +279,7 @@ class LoopReport:
     sensor_effects: list[SensorEffect]
     unexplained: list[Unexplained]
     warnings: list[BrokenTest]  # tests left out of the fits
-    left_out: dict[str, Any]  # the fits with and without them ({} when none)
+    left_out: LeftOut | None  # the fits with and without them (None: none left out)
     final: ModelFit
     setups: list[Setup]
     model: str  # file names in the output folder
@@ -280,7 +303,8 @@ class LoopReport:
             "sensor_effects": [s.as_dict() for s in self.sensor_effects],
             "unexplained": [u.as_dict() for u in self.unexplained],
             "warnings": [w.as_dict() for w in self.warnings],
-            "left_out": self.left_out, "final": self.final.as_dict(),
+            "left_out": self.left_out.as_dict() if self.left_out is not None else {},
+            "final": self.final.as_dict(),
             "setups": [s.as_dict() for s in self.setups], "model": self.model,
             "baseline_model": self.baseline_model, "software_version": self.software_version,
             "estimation": self.estimation, "validation": self.validation,
