@@ -210,14 +210,13 @@ def _run(est_tests: list[CrashTest], val_tests: list[CrashTest], out: Path, rate
                                   "transducer's gain or non-linearity, not the chest's physics",
                                   ev)
             step.decision = (f"a sensor effect on {o} explains the residual better than "
-                                "any physical effect: reported, not added to the model")
+                             "any physical effect: reported, not added to the model")
             break
         if not passing:
             step.decision = ("no candidate passes the rule (mean paired gain >= "
-                                f"{margin:g} points, above the scatter, no setup "
-                                "lowered): " + "; ".join(f"{c.kind} on {scope_label(c.setups)}: "
-                                                          f"{ev.reason}"
-                                                          for _, c, ev in tried[:4]))
+                             f"{margin:g} points, above the scatter, no setup "
+                             "lowered): " + "; ".join(f"{c.kind} on {scope_label(c.setups)}: "
+                                                       f"{ev.reason}" for _, c, ev in tried[:4]))
             break
         cv_best, best, ev_best = passing[0]
         cv_tests_best = per_test[id(best)]
@@ -236,8 +235,8 @@ def _run(est_tests: list[CrashTest], val_tests: list[CrashTest], out: Path, rate
         # a trajectory that never switches, says little (why it is always tried).
         if best.parameters and share_after >= share_before and share_after >= 0.02:
             step.decision = (f"{best.kind}: the refitted residual is not less "
-                                "correlated with its signature "
-                                f"({share_before:.3f} -> {share_after:.3f}): not accepted")
+                             "correlated with its signature "
+                             f"({share_before:.3f} -> {share_after:.3f}): not accepted")
             break
         base, effects, base_se = fit.base, fit.effects, fit.base_std_err
         cv_now = cv_tests_best
