@@ -146,7 +146,7 @@ def run_case(case: Case, work: Path, reachable: bool) -> dict:
     r = run_loop(est, val, work / case.name, verbose=False, plots=False, ratings=False)
     seconds = time.monotonic() - t0
     truth = {_label(e) for e in _truth(case, sim_setup, 1000.0)}
-    found = {_label(e) for e in r.effects}
+    found = {_label(e.model_entry()) for e in r.effects}
     row = {"case": case.name, "found": sorted(found), "right": found == truth,
            "truth": sorted(truth), "before": r.baseline.fit.total,
            "after": r.final.fit.total, "seconds": seconds}

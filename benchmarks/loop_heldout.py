@@ -87,11 +87,11 @@ def run_case(case: Case, sets: Path, work: Path, workers: int | None) -> dict:
     r = run_loop(est, val, work / case.name, verbose=False, plots=False, ratings=False,
                  workers=workers)
     seconds = time.monotonic() - t0
-    found = sorted(f"{e['kind']}@{_sim_scope(e.get('setups', []), r)}" for e in r.effects)
+    found = sorted(f"{e.kind}@{_sim_scope(e.setups or [], r)}" for e in r.effects)
     expected = sorted(f"{k}@{'+'.join(sorted(s.split('+')))}" for k, s in case.expect)
     flagged = sorted({w.test for w in r.warnings})
-    sensor = [s["output"] for s in r.sensor_effects]
-    unexpl = [u["output"] for u in r.unexplained]
+    sensor = [s.output for s in r.sensor_effects]
+    unexpl = [u.output for u in r.unexplained]
     right = found == expected and flagged == sorted(case.expect_broken)
     if case.expect_note:  # a transducer case: nothing physical, and its output called out
         output = case.expect_note.rsplit(" ", 1)[-1]  # "... on cd"
@@ -99,7 +99,7 @@ def run_case(case: Case, sets: Path, work: Path, workers: int | None) -> dict:
     row = {"case": case.name, "found": found, "expected": expected, "flagged": flagged,
            "sensor": sensor, "unexplained": unexpl, "right": right,
            "before": r.baseline.fit.total, "after": r.final.fit.total,
-           "seconds": seconds, "possible": [f"{p['kind']}@{p['scope']}" for p in r.possible]}
+           "seconds": seconds, "possible": [f"{p.kind}@{p.scope}" for p in r.possible]}
     row["reachable"] = _reachable(case, r, est, val, found == expected)
     return row
 
@@ -115,9 +115,8 @@ def _reachable(case: Case, r: LoopReport, est_tests: list, val_tests: list, same
         fit = refit(base, effects, est, max_nfev=150)
         best = score(fit.base, fit.effects, val).fit.total
         if same and r.effects:
-            loop_fit = refit(r.final.parameters, [
-                {k: v for k, v in e.items() if k in ("kind", "parameters", "setups")}
-                for e in r.effects], est, max_nfev=60)
+            loop_fit = refit(r.final.parameters, [e.model_entry() for e in r.effects], est,
+                             max_nfev=60)
             best = max(best, score(loop_fit.base, loop_fit.effects, val).fit.total)
     return float(best)
 

@@ -35,7 +35,7 @@ def one_run(workers: int, loaded: bool, out: Path) -> tuple[float, list[str], fl
     try:
         t0 = time.monotonic()
         r = run_loop(est, val, out, verbose=False, plots=False, ratings=False, workers=workers)
-        return time.monotonic() - t0, [e["kind"] for e in r.effects], \
+        return time.monotonic() - t0, [e.kind for e in r.effects], \
             r.final.fit.total
     finally:
         for p in spinners:

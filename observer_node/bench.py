@@ -75,6 +75,7 @@ def loop_models(loop_dir: Path, est_names: tuple[str, ...], val_names: tuple[str
     in ``loop_dir`` or the one shipped with the package when it was made from these test
     files by this version (said so), else (or with ``rerun``) a new run of the loop."""
     from .loop.closed_loop import run_loop
+    from .loop.report import AcceptedEffect
 
     stamp = loop_stamp(est_names)
     if not rerun and _stamp_of(loop_dir) == stamp:
@@ -95,9 +96,9 @@ def loop_models(loop_dir: Path, est_names: tuple[str, ...], val_names: tuple[str
                  plots=False, ratings=False)
         (loop_dir / STAMP).write_text(json.dumps(stamp, indent=1) + "\n")
     report = json.loads((loop_dir / "report.json").read_text())
+    effects = [AcceptedEffect.from_dict(e) for e in report["effects"]]
     print("bench: the loop's effects: " + (", ".join(
-        f"{e['kind']} on {', '.join(e.get('setups', ['all']))}" for e in report["effects"])
-        or "none"))
+        f"{e.kind} on {', '.join(e.setups or ['all'])}" for e in effects) or "none"))
     return (ModelFile.load(loop_dir / "baseline-model.json"),
             ModelFile.load(loop_dir / "model.json"))
 

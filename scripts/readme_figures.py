@@ -31,6 +31,10 @@ import sys
 import tempfile
 from collections.abc import Callable
 from pathlib import Path
+from typing import TYPE_CHECKING
+
+if TYPE_CHECKING:
+    from observer_node.loop.evidence import Evidence
 
 ROOT = Path(__file__).resolve().parent.parent
 README = ROOT / "README.md"
@@ -64,6 +68,7 @@ def evaluate_table(tmp: Path) -> str:
 
 def loop_table(tmp: Path) -> str:
     from observer_node.cli import main
+    from observer_node.loop.report import AcceptedEffect
     from observer_node.model.effects import EFFECTS
 
     out = tmp / "loop"
@@ -77,29 +82,30 @@ def loop_table(tmp: Path) -> str:
             "cross-validated fit_TOT) |",
             "|---|---|---|---|---|---|---|---|"]
     b = r["baseline"]["fit"]
-    cv0 = r["effects"][0]["evidence"]["cv_fit_before"] if r["effects"] else None
+    effects = [AcceptedEffect.from_dict(e) for e in r["effects"]]
+    cv0 = effects[0].evidence.cv_fit_before if effects else None
     rows.append(f"| thesis grey-box | all | {_num(b['cr'])} | {_num(b['cd'])} | "
                 f"{_num(b['total'])} | {'' if cv0 is None else _num(cv0)} | | |")
-    for e in r["effects"]:
-        units = EFFECTS[e["kind"]].units if e["kind"] in EFFECTS else {}
-        se = e.get("std_err", {})
+    for e in effects:
+        units = EFFECTS[e.kind].units if e.kind in EFFECTS else {}
+        se = e.std_err
         params = ", ".join(f"{k} = {v:.3g}" + (f" ± {se[k]:.2g}" if k in se else "")
                            + f" {units.get(k, '')}".rstrip()
-                           for k, v in e["parameters"].items())
-        f, ev = e["fit"], e["evidence"]
-        ru = ev.get("runner_up")
-        rows.append(f"| + {e['kind']}{f' ({params})' if params else ''} | "
-                    f"{', '.join(e.get('setups', ['all']))} | {_num(f['cr'])} | "
-                    f"{_num(f['cd'])} | {_num(f['total'])} | {_num(ev['cv_fit_after'])} | "
-                    f"{_gain(ev['rule'])} | "
-                    + (f"{ru['kind']} on {ru['scope']} ({_num(ru['cv_fit'])}) |" if ru else "|"))
+                           for k, v in e.parameters.items())
+        f, ev = e.fit, e.evidence
+        ru = ev.runner_up
+        rows.append(f"| + {e.kind}{f' ({params})' if params else ''} | "
+                    f"{', '.join(e.setups or ['all'])} | {_num(f.cr)} | "
+                    f"{_num(f.cd)} | {_num(f.total)} | {_num(ev.cv_fit_after)} | "
+                    f"{_gain(ev.rule)} | "
+                    + (f"{ru.kind} on {ru.scope} ({_num(ru.cv_fit)}) |" if ru else "|"))
     return "\n".join(rows)
 
 
-def _gain(rule: dict) -> str:
-    lo, hi = rule["ci95_points"]
-    return (f"{_num(rule['gain_points'])} ({_num(lo)}..{_num(hi)}), "
-            f"{rule['tests_improved']}/{rule['tests']}")
+def _gain(rule: Evidence) -> str:
+    lo, hi = rule.ci95_points
+    return (f"{_num(rule.gain_points)} ({_num(lo)}..{_num(hi)}), "
+            f"{rule.tests_improved}/{rule.tests}")
 
 
 def bench_table(tmp: Path) -> str:

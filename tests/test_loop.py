@@ -41,7 +41,7 @@ def test_clean_data_accepts_no_effect(tmp_path):
 def test_hidden_effect_is_named_and_improves_the_fit(tmp_path, draw):
     kind = random.Random(f"hidden-{draw}").choice(sorted(POOL))  # the loop is not told
     r = _run({kind: 1.0}, POOL[kind], tmp_path)
-    found = [e["kind"] for e in r.effects]
+    found = [e.kind for e in r.effects]
     assert kind in found, (kind, found, r.history)
     assert r.final.fit.total > r.baseline.fit.total + 1.0
     report = json.loads((tmp_path / "report.json").read_text())
@@ -145,14 +145,15 @@ def test_an_airbag_on_some_setups_is_found_with_its_scope(tmp_path):
     bag = PlantConfig(effects={"airbag_contact": 1.0})
     r = _mixed({"R16": PlantConfig(), "SLED": bag, "FULL": bag}, tmp_path)
     assert [s.name for s in r.setups] == ["ECE-R16", "SLED-TEST", "FULL-FRONTAL"]
-    bags = [e for e in r.effects if e["kind"] == "airbag_contact"]
+    bags = [e for e in r.effects if e.kind == "airbag_contact"]
     assert len(bags) == 1, r.history
     e = bags[0]
-    assert sorted(e["setups"]) == ["FULL-FRONTAL", "SLED-TEST"]
-    assert e["applies_to"] == ["E03", "E04", "E05", "E06", "V03", "V04", "V05", "V06"]
-    assert set(e["std_err"]) == {"kab", "gap", "cab"}
-    assert all(0 < e["std_err"][k] < abs(e["parameters"][k]) for k in e["std_err"])
-    assert "runner_up" in e["evidence"] and e["evidence"]["margin_points"] > 0
+    assert sorted(e.setups or []) == ["FULL-FRONTAL", "SLED-TEST"]
+    assert e.applies_to == ["E03", "E04", "E05", "E06", "V03", "V04", "V05", "V06"]
+    assert set(e.std_err) == {"kab", "gap", "cab"}
+    assert all(0 < e.std_err[k] < abs(e.parameters[k]) for k in e.std_err)
+    assert e.evidence.runner_up is not None
+    assert e.evidence.margin_points is not None and e.evidence.margin_points > 0
     mf = ModelFile.load(tmp_path / "model.json")
     assert mf.setups() == ["FULL-FRONTAL", "SLED-TEST"]
     assert "airbag_contact" not in [x["kind"] for x in mf.for_setup("ECE-R16").effects]
@@ -163,7 +164,7 @@ def test_an_airbag_on_some_setups_is_found_with_its_scope(tmp_path):
 def test_a_late_brs_is_named_a_delay_of_a_fraction_of_a_tick(tmp_path):
     late = PlantConfig(brs_delay_ms=3.0)
     r = _mixed(dict.fromkeys(("R16", "SLED", "FULL"), late), tmp_path)
-    assert [e["kind"] for e in r.effects][:1] == ["input_delay"], r.history
-    p = r.effects[0]["parameters"]
+    assert [e.kind for e in r.effects][:1] == ["input_delay"], r.history
+    p = r.effects[0].parameters
     assert 2.0 <= p["n_brs"] <= 3.5 and p["n_pulse"] < 0.5, p
     assert r.final.fit.total > r.baseline.fit.total + 5

@@ -110,7 +110,7 @@ def test_a_transducer_non_linearity_is_a_static_function_of_one_output(campaign)
     assert np.mean(gains["cd"]["static"]) > 5.0
     assert np.mean(gains["cr"]["static"]) < 0.5
     u = unexplained(bent, y_hat)
-    assert [x["output"] for x in u] == ["cd"] and u[0]["shape"] == "static"
+    assert [x.output for x in u] == ["cd"] and u[0].shape == "static"
     assert unexplained(data, y_hat) == []
 
 

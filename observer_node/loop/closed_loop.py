@@ -24,7 +24,6 @@ import itertools
 import json
 import time
 from pathlib import Path
-from typing import Any
 
 import numpy as np
 
@@ -60,7 +59,20 @@ from .cluster import Runner, cluster
 from .diagnosis import sensor_fold_scores, unexplained
 from .evidence import POSSIBLE_MIN, SETUP_TOLERANCE, SIGN_P, Evidence, judge
 from .refit import fold_scores, folds, model, refit, score
-from .report import LoopReport, ModelFit
+from .report import (
+    AcceptedEffect,
+    EffectEvidence,
+    LeftOut,
+    LoopReport,
+    LoopStep,
+    ModelFit,
+    OtherScope,
+    PossibleEffect,
+    RankedCandidate,
+    RunnerUp,
+    SensorEffect,
+    TriedCandidate,
+)
 from .screening import BrokenTest, residual_outliers, screen_channels
 
 
@@ -141,20 +153,19 @@ def _run(est_tests: list[CrashTest], val_tests: list[CrashTest], out: Path, rate
     baseline_val = score(base, effects, val)
     folds_ = folds(est)
     cv_now = _cv(runner, [(base, effects)], est, folds_)[0]
-    history: list[dict] = []
-    accepted: list[dict] = []
-    possible: list[dict] = []
-    sensor: dict | None = None
-    first_ranking: list[dict] = []
+    history: list[LoopStep] = []
+    accepted: list[AcceptedEffect] = []
+    possible: list[PossibleEffect] = []
+    sensor: SensorEffect | None = None
+    first_ranking: list[RankedCandidate] = []
     resid0 = _residual(base, effects, est)
     tests0 = correlation_tests(resid0, est)
     while len(accepted) < max_effects:
         current = model(base, effects, est)
         prog.update(f"residual analysis with {len(effects)} effect(s)")
         ranked = candidates(current, est, {e["kind"] for e in effects}, scopes)
-        ranking = [{"kind": c.kind, "explained_share": round(c.explained, 4),
-                    "scope": scope_label(c.setups), "scope_shares": c.scope_shares,
-                    "initial_parameters": c.parameters} for c in ranked]
+        ranking = [RankedCandidate(c.kind, round(c.explained, 4), scope_label(c.setups),
+                                   c.scope_shares, c.parameters) for c in ranked]
         if not first_ranking:
             first_ranking = ranking
         # Named effects first; the generic formula only when none of them helps.
@@ -181,36 +192,31 @@ def _run(est_tests: list[CrashTest], val_tests: list[CrashTest], out: Path, rate
         tried.sort(key=lambda t: -t[0])
         sensor_ev = _sensor_candidates(runner, base, effects, est, folds_, cv_now, test_setup,
                                        margin)
-        step: dict[str, Any] = {
-            "effects_before": [e["kind"] for e in effects], "cv_fit_before": _mean(cv_now),
-            "ranking": ranking,
-            "tried": [{"kind": c.kind, "scope": scope_label(c.setups), "cv_fit": cv,
-                       "evidence": ev.as_dict()} for cv, c, ev in tried],
-            "sensor": {o: ev.as_dict() for o, ev in sensor_ev.items()}}
+        step = LoopStep([e["kind"] for e in effects], _mean(cv_now), ranking,
+                        [TriedCandidate(c.kind, scope_label(c.setups), cv, ev)
+                         for cv, c, ev in tried], sensor_ev)
         history.append(step)
         # "possible": what the data cannot defend against the model as it now stands
-        possible = [{"kind": c.kind, "scope": scope_label(c.setups),
-                     "after": [e["kind"] for e in effects], "evidence": ev.as_dict(),
-                     "why_not": ev.reason}
+        possible = [PossibleEffect(c.kind, scope_label(c.setups), [e["kind"] for e in effects],
+                                   ev, ev.reason)
                     for _, c, ev in tried if not ev.accepted and ev.gain_points >= POSSIBLE_MIN]
         passing = [(cv, c, ev) for cv, c, ev in tried if ev.accepted]
         best_sensor = max(sensor_ev.items(), key=lambda kv: kv[1].gain_points, default=None)
         if best_sensor is not None and best_sensor[1].accepted and (
                 not passing or best_sensor[1].gain_points > passing[0][2].gain_points):
             o, ev = best_sensor
-            sensor = {"output": o, "family": "sensor", "after": [e["kind"] for e in effects],
-                      "looks_like": f"a static function of {o.upper()}: the {o.upper()} "
-                      "transducer's gain or non-linearity, not the chest's physics",
-                      "evidence": ev.as_dict(), "confidence": ev.confidence}
-            step["decision"] = (f"a sensor effect on {o} explains the residual better than "
-                                "any physical effect: reported, not added to the model")
+            sensor = SensorEffect(o, [e["kind"] for e in effects],
+                                  f"a static function of {o.upper()}: the {o.upper()} "
+                                  "transducer's gain or non-linearity, not the chest's physics",
+                                  ev)
+            step.decision = (f"a sensor effect on {o} explains the residual better than "
+                             "any physical effect: reported, not added to the model")
             break
         if not passing:
-            step["decision"] = ("no candidate passes the rule (mean paired gain >= "
-                                f"{margin:g} points, above the scatter, no setup "
-                                "lowered): " + "; ".join(f"{c.kind} on {scope_label(c.setups)}: "
-                                                          f"{ev.reason}"
-                                                          for _, c, ev in tried[:4]))
+            step.decision = ("no candidate passes the rule (mean paired gain >= "
+                             f"{margin:g} points, above the scatter, no setup "
+                             "lowered): " + "; ".join(f"{c.kind} on {scope_label(c.setups)}: "
+                                                       f"{ev.reason}" for _, c, ev in tried[:4]))
             break
         cv_best, best, ev_best = passing[0]
         cv_tests_best = per_test[id(best)]
@@ -228,35 +234,34 @@ def _run(est_tests: list[CrashTest], val_tests: list[CrashTest], out: Path, rate
         # Not for a parameter-free switch (the one-sided belt): its signature, linearised along
         # a trajectory that never switches, says little (why it is always tried).
         if best.parameters and share_after >= share_before and share_after >= 0.02:
-            step["decision"] = (f"{best.kind}: the refitted residual is not less "
-                                "correlated with its signature "
-                                f"({share_before:.3f} -> {share_after:.3f}): not accepted")
+            step.decision = (f"{best.kind}: the refitted residual is not less "
+                             "correlated with its signature "
+                             f"({share_before:.3f} -> {share_after:.3f}): not accepted")
             break
         base, effects, base_se = fit.base, fit.effects, fit.base_std_err
         cv_now = cv_tests_best
         val_fit = score(base, effects, val)
         params, se = effects[-1]["parameters"], fit.effect_std_err[-1]
-        entry = {"kind": best.kind, "description": describe(best.kind, params),
-                 "parameters": params, "std_err": se,
-                 **_scope_entry(best.setups, est, val),
-                 "warnings": parameter_warnings(best.kind, params, se, rate_hz),
-                 "confidence": ev_best.confidence,
-                 "evidence": {"ranking_share": round(best.explained, 4),
-                              "scope_shares": best.scope_shares,
-                              "rule": ev_best.as_dict(),
-                              "explained_share_before": round(share_before, 4),
-                              "explained_share_after": round(share_after, 4),
-                              "cv_fit_before": round(step["cv_fit_before"], 2),
-                              "cv_fit_after": round(cv_best, 2),
-                              **_rival([(cv_best, best), *((cv, c) for cv, c, _ in tried
-                                                           if c is not best)]),
-                              "input_xcorr_rms_ratio_before": round(xc_before, 2),
-                              "input_xcorr_rms_ratio_after": round(xc_after, 2),
-                              "input_xcorr_max_ratio_before": round(_max_ratio(ct_old), 2),
-                              "input_xcorr_max_ratio_after": round(_max_ratio(ct_new), 2)},
-                 "fit": _fit3(val_fit)}
+        runner_up, margin_points, other_scope = _rival(
+            [(cv_best, best), *((cv, c) for cv, c, _ in tried if c is not best)])
+        entry = AcceptedEffect(
+            kind=best.kind, description=describe(best.kind, params), parameters=params,
+            std_err=se, setups=best.setups, applies_to=_applies_to(best.setups, est, val),
+            warnings=parameter_warnings(best.kind, params, se, rate_hz),
+            confidence=ev_best.confidence,
+            evidence=EffectEvidence(
+                ranking_share=round(best.explained, 4), scope_shares=best.scope_shares,
+                rule=ev_best, explained_share_before=round(share_before, 4),
+                explained_share_after=round(share_after, 4),
+                cv_fit_before=round(step.cv_fit_before, 2), cv_fit_after=round(cv_best, 2),
+                runner_up=runner_up, margin_points=margin_points, other_scope=other_scope,
+                input_xcorr_rms_ratio_before=round(xc_before, 2),
+                input_xcorr_rms_ratio_after=round(xc_after, 2),
+                input_xcorr_max_ratio_before=round(_max_ratio(ct_old), 2),
+                input_xcorr_max_ratio_after=round(_max_ratio(ct_new), 2)),
+            fit=Fits(**_fit3(val_fit)))
         accepted.append(entry)
-        step["decision"] = f"accepted {best.kind} on {scope_label(best.setups)}"
+        step.decision = f"accepted {best.kind} on {scope_label(best.setups)}"
         prog.update(f"accepted {best.kind} on {scope_label(best.setups)}: validation fit "
                     f"{val_fit.fit.total:.1f} %")
     final_val = score(base, effects, val)
@@ -272,7 +277,8 @@ def _run(est_tests: list[CrashTest], val_tests: list[CrashTest], out: Path, rate
     report = LoopReport(
         baseline=ModelFit(Fits(**_fit3(baseline_val)), gb.params, gb.std_err),
         effects=accepted,
-        possible=sorted(possible, key=lambda p: -p["evidence"]["gain_points"]),
+        # by the gain as reported (rounded to 0.001 points): ties keep the order tried
+        possible=sorted(possible, key=lambda p: -round(p.evidence.gain_points, 3)),
         sensor_effects=[sensor] if sensor else [],
         unexplained=[] if sensor else unexplained(est, y_final),
         warnings=broken,
@@ -304,7 +310,7 @@ def _run(est_tests: list[CrashTest], val_tests: list[CrashTest], out: Path, rate
     (out / "report.json").write_text(json.dumps(as_json, indent=1, default=float) + "\n")
     if plots:
         _plots(out, base, effects, gb.params, val)
-    (out / "report.md").write_text(_markdown(as_json))
+    (out / "report.md").write_text(_markdown(report))
     prog.done(f"{len(accepted)} effect(s) accepted; validation fit "
               f"{baseline_val.fit.total:.1f} -> {final_val.fit.total:.1f} %")
     return report
@@ -354,33 +360,34 @@ def _sensor_candidates(runner: Runner, base: dict, effects: list[dict], data: Da
 def _with_and_without(broken: list[BrokenTest], base: dict, effects: list[dict],
                       est_tests: list[CrashTest], val_tests: list[CrashTest],
                       est_kept: list[CrashTest], val: Dataset, rate_hz: float,
-                      window_s: tuple[float, float]) -> dict:
+                      window_s: tuple[float, float]) -> LeftOut | None:
     """What the fits are with the left-out tests and without: the final structure refitted
     with the left-out estimation tests back in, scored on the validation tests; and the final
     model scored on the validation tests with the left-out ones back in."""
     names = {b.test for b in broken}
     if not names:
-        return {}
-    out: dict[str, Any] = {"tests": sorted(names),
-                           "validation_fit_without": _fit3(score(base, effects, val))}
+        return None
+    fitted_with: Fits | str | None = None
+    scored_with: Fits | str | None = None
     back_est = [t for t in est_tests if t.name in names]
     if back_est:
         try:
             est_all = make_dataset([*est_kept, *back_est], rate_hz, window_s)
             with np.errstate(all="ignore"):
                 r = refit(base, effects, est_all, max_nfev=60)
-            out["validation_fit_if_fitted_with_them"] = _fit3(score(r.base, r.effects, val))
+            fitted_with = Fits(**_fit3(score(r.base, r.effects, val)))
         except (CrashDataError, ValueError) as e:  # missing samples: not fittable at all
-            out["validation_fit_if_fitted_with_them"] = f"cannot be fitted: {e}"
+            fitted_with = f"cannot be fitted: {e}"
     back_val = [t for t in val_tests if t.name in names]
     if back_val:
         try:
             val_all = make_dataset([*[t for t in val_tests if t.name not in names],
                                     *back_val], rate_hz, window_s)
-            out["validation_fit_with_them"] = _fit3(score(base, effects, val_all))
+            scored_with = Fits(**_fit3(score(base, effects, val_all)))
         except (CrashDataError, ValueError) as e:
-            out["validation_fit_with_them"] = f"cannot be scored: {e}"
-    return out
+            scored_with = f"cannot be scored: {e}"
+    return LeftOut(sorted(names), Fits(**_fit3(score(base, effects, val))), fitted_with,
+                   scored_with)
 
 
 def _with_widest_scope(c: Candidate, options: list[list[str] | None]) -> list[Candidate]:
@@ -392,30 +399,28 @@ def _with_widest_scope(c: Candidate, options: list[list[str] | None]) -> list[Ca
     return [c, Candidate(c.kind, c.explained, c.parameters, None, widest, c.scope_shares)]
 
 
-def _scope_entry(scope: list[str] | None, est: Dataset, val: Dataset) -> dict:
-    """``setups`` and ``applies_to`` (the estimation and validation tests it acts on) of a
-    scoped effect; nothing for an effect on every test."""
+def _applies_to(scope: list[str] | None, est: Dataset, val: Dataset) -> list[str] | None:
+    """The estimation and validation tests a scoped effect acts on (None: every test)."""
     if scope is None:
-        return {}
-    names = [n for d in (est, val) for n, s in zip(d.names, d.setups, strict=True) if s in scope]
-    return {"setups": scope, "applies_to": names}
+        return None
+    return [n for d in (est, val) for n, s in zip(d.names, d.setups, strict=True) if s in scope]
 
 
-def _rival(tried: list[tuple[float, Candidate]]) -> dict:
-    """The runner-up (the best of another kind, and the winner's other scope) and margins."""
+def _rival(tried: list[tuple[float, Candidate]]
+           ) -> tuple[RunnerUp | None, float | None, OtherScope | None]:
+    """The runner-up (the best of another kind) and the margin [points] to it, and the
+    winner on its other scope; ``tried``: (cv fit_TOT [%], candidate), the winner first."""
     cv_best, best = tried[0]
-    out: dict[str, Any] = {}
+    runner_up, margin, other_scope = None, None, None
     other = next(((cv, c) for cv, c in tried if c.kind != best.kind), None)
     if other is not None:
-        out["runner_up"] = {"kind": other[1].kind, "scope": scope_label(other[1].setups),
-                            "cv_fit": round(other[0], 2)}
-        out["margin_points"] = round(cv_best - other[0], 2)
+        runner_up = RunnerUp(other[1].kind, scope_label(other[1].setups), round(other[0], 2))
+        margin = round(cv_best - other[0], 2)
     scope = next(((cv, c) for cv, c in tried if c.kind == best.kind and c is not best), None)
     if scope is not None:
-        out["other_scope"] = {"scope": scope_label(scope[1].setups),
-                              "cv_fit": round(scope[0], 2),
-                              "margin_points": round(cv_best - scope[0], 2)}
-    return out
+        other_scope = OtherScope(scope_label(scope[1].setups), round(scope[0], 2),
+                                 round(cv_best - scope[0], 2))
+    return runner_up, margin, other_scope
 
 
 def parameter_warnings(kind: str, params: dict, std_err: dict[str, float],
@@ -539,82 +544,49 @@ def _plots(out: Path, base: dict, effects: list[dict], base0: dict, val: Dataset
     plots.residuals(out / "residuals.png", val.names, t, y - before, y - after)
 
 
-def _markdown(r: dict) -> str:
-    b, f = r["baseline"]["fit"], r["final"]["fit"]
+def _markdown(r: LoopReport) -> str:
+    b, f = r.baseline.fit, r.final.fit
+    iso = r.iso18571
     lines = ["# Closed loop: residual, missing effect, refit", "",
-             f"Estimation tests: {', '.join(r['estimation'])}  ",
-             f"Validation tests: {', '.join(r['validation'])} (fits below are on these)", "",
+             f"Estimation tests: {', '.join(r.estimation)}  ",
+             f"Validation tests: {', '.join(r.validation)} (fits below are on these)", "",
              "## Setups", "", "| setup | tests | from | impossible here |", "|---|---|---|---|"]
-    lines += [f"| {s['name']} | {', '.join(s['tests'])} | {s['rule']} | "
-              f"{'; '.join(f'{k} ({v})' for k, v in s.get('impossible', {}).items()) or '-'} |"
-              for s in r["setups"]]
+    lines += [f"| {s.name} | {', '.join(s.tests)} | {s.how} | "
+              f"{'; '.join(f'{k} ({v})' for k, v in s.impossible.items()) or '-'} |"
+              for s in r.setups]
     lines += ["", "## Fits", "",
               "| model | acts on | fit CR | fit CD | fit TOT |", "|---|---|---|---|---|",
-              f"| thesis grey-box | all | {b['cr']:.1f} | {b['cd']:.1f} | {b['total']:.1f} |"]
-    for e in r["effects"]:
-        lines.append(f"| + {e['kind']} | {'+'.join(e.get('setups', ['all']))} | "
-                     f"{e['fit']['cr']:.1f} | {e['fit']['cd']:.1f} | {e['fit']['total']:.1f} |")
-    lines += [f"| **final** | | **{f['cr']:.1f}** | **{f['cd']:.1f}** | **{f['total']:.1f}** |",
-              ""]
-    if not r["effects"]:
-        lines += ["No effect was accepted: none passed the rule (" + r["settings"]["rule"]
+              f"| thesis grey-box | all | {b.cr:.1f} | {b.cd:.1f} | {b.total:.1f} |"]
+    for e in r.effects:
+        lines.append(f"| + {e.kind} | {'+'.join(e.setups or ['all'])} | "
+                     f"{e.fit.cr:.1f} | {e.fit.cd:.1f} | {e.fit.total:.1f} |")
+    lines += [f"| **final** | | **{f.cr:.1f}** | **{f.cd:.1f}** | **{f.total:.1f}** |", ""]
+    if not r.effects:
+        lines += ["No effect was accepted: none passed the rule (" + r.settings["rule"]
                   + ").", ""]
     lines += _markdown_findings(r)
     lines += ["## Injury criteria on the validation tests", "",
               "Mean |estimate - measured| over the validation tests (peak chest deflection, "
               "chest X acceleration 3 ms clip, viscous criterion; per test in report.json)"
-              + (" and the mean ISO/TS 18571 overall rating (0..1):" if "iso18571" in r
+              + (" and the mean ISO/TS 18571 overall rating (0..1):" if iso is not None
                  else ":"), "",
               "| model | CD max [mm] | CR 3 ms [g] | VC max [m/s] |"
-              + (" ISO 18571 CR | CD |" if "iso18571" in r else ""),
-              "|---|---|---|---|" + ("---|---|" if "iso18571" in r else "")]
+              + (" ISO 18571 CR | CD |" if iso is not None else ""),
+              "|---|---|---|---|" + ("---|---|" if iso is not None else "")]
     for label in ("baseline", "final"):
-        err = mean_abs_errors(r["criteria"][label])
-        iso = r["iso18571"][label]["mean_overall"] if "iso18571" in r else None
+        err = mean_abs_errors({n: c.as_dict() for n, c in r.criteria[label].items()})
+        mean = iso[label].mean_overall if iso is not None else None
         lines.append(f"| {'thesis grey-box' if label == 'baseline' else 'final'} | "
                      f"{err['cd_max_mm']:.1f} | {err['cr_3ms_g']:.1f} | {err['vc_max_m_s']:.2f} |"
-                     + (f" {iso['cr']:.3f} | {iso['cd']:.3f} |" if iso else ""))
+                     + (f" {mean['cr']:.3f} | {mean['cd']:.3f} |" if mean else ""))
     lines.append("")
-    for e in r["effects"]:
-        ev = e["evidence"]
-        se = e.get("std_err", {})
-        params = ", ".join((f"{k} = {v:.4g}" + (f" ± {se[k]:.2g}" if k in se else ""))
-                           if isinstance(v, float) else f"{k} = {v}"
-                           for k, v in e["parameters"].items())
-        rival = ""
-        if "runner_up" in ev:
-            ru = ev["runner_up"]
-            rival = (f"- why this and not that: the runner-up, {ru['kind']} on {ru['scope']}, "
-                     f"cross-validated {ru['cv_fit']:.1f} %, {ev['margin_points']:.1f} points "
-                     "lower")
-        if "other_scope" in ev:
-            os_ = ev["other_scope"]
-            rival += (("\n" if rival else "") + f"- on {os_['scope']} instead it "
-                      f"cross-validated {os_['cv_fit']:.1f} % ({os_['margin_points']:+.1f} "
-                      "points from the accepted scope)")
-        where = (f"acts on setups {', '.join(e['setups'])}: {', '.join(e['applies_to'])}"
-                 if "setups" in e else "acts on every test")
-        lines += [f"## {e['kind']}", "", e["description"], "",
-                  f"- {where}",
-                  f"- parameters (± standard error): {params or '(none)'}",
-                  f"- confidence (cross-validated, paired over tests): {e['confidence']}",
-                  *(f"- **warning**: {w}" for w in e.get("warnings", [])),
-                  *([rival] if rival else []),
-                  f"- explained {100 * ev['explained_share_before']:.1f} % of the residual before"
-                  f" the refit, {100 * ev['explained_share_after']:.1f} % after",
-                  f"- cross-validated fit_TOT inside the estimation tests: "
-                  f"{ev['cv_fit_before']:.1f} -> {ev['cv_fit_after']:.1f} %",
-                  f"- input cross-correlation / coloured 99 % band, RMS over lags: "
-                  f"{ev['input_xcorr_rms_ratio_before']:.2f} -> "
-                  f"{ev['input_xcorr_rms_ratio_after']:.2f} (largest: "
-                  f"{ev['input_xcorr_max_ratio_before']:.2f} -> "
-                  f"{ev['input_xcorr_max_ratio_after']:.2f})",
-                  ""]
+    for e in r.effects:
+        lines += _markdown_effect(e)
     lines += ["## First ranking of candidates (share of the residual explained)", "",
               "| effect | scope | explained |", "|---|---|---|"]
-    lines += [f"| {c['kind']} | {c['scope']} | {100 * c['explained_share']:.1f} % |"
-              for c in r["first_ranking"]]
-    rt = r["residual_tests"]
+    lines += [f"| {c.kind} | {c.scope} | {100 * c.explained_share:.1f} % |"
+              for c in r.first_ranking]
+    rt = r.residual_tests
     lines += ["", "## Residual tests on the estimation tests", "",
               "| | lag-1 autocorr CR | CD | input xcorr / band CR | CD |", "|---|---|---|---|---|"]
     for label in ("baseline", "final"):
@@ -625,53 +597,91 @@ def _markdown(r: dict) -> str:
     lines += ["", "The residual stays far from white (lag-1 autocorrelation near 1: CFC "
               "filtering colours it), so whiteness cannot decide; the cross-validated fit and "
               "the input cross-correlation against Ljung's coloured band do.", "",
-              f"Plots: fit_before_*.png, fit_after_*.png, residuals.png. Model: {r['model']}. "
-              f"Run time {r['seconds']} s.", ""]
+              f"Plots: fit_before_*.png, fit_after_*.png, residuals.png. Model: {r.model}. "
+              f"Run time {r.seconds} s.", ""]
     return "\n".join(lines)
 
 
-def _markdown_findings(r: dict) -> list[str]:
+def _markdown_effect(e: AcceptedEffect) -> list[str]:
+    """An accepted effect's section: scope, parameters, confidence, warnings, rivals."""
+    ev, se = e.evidence, e.std_err
+    params = ", ".join((f"{k} = {v:.4g}" + (f" ± {se[k]:.2g}" if k in se else ""))
+                       if isinstance(v, float) else f"{k} = {v}"
+                       for k, v in e.parameters.items())
+    rival = ""
+    if ev.runner_up is not None:
+        ru = ev.runner_up
+        rival = (f"- why this and not that: the runner-up, {ru.kind} on {ru.scope}, "
+                 f"cross-validated {ru.cv_fit:.1f} %, {ev.margin_points:.1f} points lower")
+    if ev.other_scope is not None:
+        os_ = ev.other_scope
+        rival += (("\n" if rival else "") + f"- on {os_.scope} instead it "
+                  f"cross-validated {os_.cv_fit:.1f} % ({os_.margin_points:+.1f} "
+                  "points from the accepted scope)")
+    where = (f"acts on setups {', '.join(e.setups)}: {', '.join(e.applies_to or [])}"
+             if e.setups is not None else "acts on every test")
+    return [f"## {e.kind}", "", e.description, "",
+            f"- {where}",
+            f"- parameters (± standard error): {params or '(none)'}",
+            f"- confidence (cross-validated, paired over tests): {e.confidence}",
+            *(f"- **warning**: {w}" for w in e.warnings),
+            *([rival] if rival else []),
+            f"- explained {100 * ev.explained_share_before:.1f} % of the residual before"
+            f" the refit, {100 * ev.explained_share_after:.1f} % after",
+            f"- cross-validated fit_TOT inside the estimation tests: "
+            f"{ev.cv_fit_before:.1f} -> {ev.cv_fit_after:.1f} %",
+            f"- input cross-correlation / coloured 99 % band, RMS over lags: "
+            f"{ev.input_xcorr_rms_ratio_before:.2f} -> "
+            f"{ev.input_xcorr_rms_ratio_after:.2f} (largest: "
+            f"{ev.input_xcorr_max_ratio_before:.2f} -> "
+            f"{ev.input_xcorr_max_ratio_after:.2f})",
+            ""]
+
+
+def _markdown_findings(r: LoopReport) -> list[str]:
     """Warnings (broken tests), sensor effects, unexplained structure and possible effects."""
     lines: list[str] = []
-    if r["warnings"]:
+    if r.warnings:
         lines += ["## Warnings: tests left out of the fits", "",
                   "| test | channel | why |", "|---|---|---|"]
-        lines += [f"| {w['test']} | {w['channel']} | {w['reason']} |" for w in r["warnings"]]
-        lo = r["left_out"]
-        lines += ["", f"- validation fit_TOT without them: {_pct(lo['validation_fit_without'])}"]
-        if "validation_fit_if_fitted_with_them" in lo:
-            lines.append("- with the left-out estimation tests fitted too: "
-                         + _pct(lo["validation_fit_if_fitted_with_them"]))
-        if "validation_fit_with_them" in lo:
-            lines.append("- scored on the left-out validation tests too: "
-                         + _pct(lo["validation_fit_with_them"]))
+        lines += [f"| {w.test} | {w.channel} | {w.reason} |" for w in r.warnings]
+        lo = r.left_out
+        if lo is not None:  # always, with warnings
+            lines += ["", "- validation fit_TOT without them: "
+                      + _pct(lo.validation_fit_without)]
+            if lo.validation_fit_if_fitted_with_them is not None:
+                lines.append("- with the left-out estimation tests fitted too: "
+                             + _pct(lo.validation_fit_if_fitted_with_them))
+            if lo.validation_fit_with_them is not None:
+                lines.append("- scored on the left-out validation tests too: "
+                             + _pct(lo.validation_fit_with_them))
         lines.append("")
-    for s in r["sensor_effects"]:
+    for s in r.sensor_effects:
         lines += ["## Sensor effect (not physics)", "",
-                  f"- **{s['output'].upper()}**: {s['looks_like']}",
-                  f"- confidence: {s['confidence']}",
+                  f"- **{s.output.upper()}**: {s.looks_like}",
+                  f"- confidence: {s.confidence}",
                   "- not added to model.json: check the transducer's calibration", ""]
-    for u in r["unexplained"]:
-        gains = ", ".join(f"{k} {v:+.1f}" for k, v in u["gain_points"].items())
+    for u in r.unexplained:
+        gains = ", ".join(f"{k} {v:+.1f}" for k, v in u.gain_points.items())
         lines += ["## Unexplained", "",
-                  f"- the residual of **{u['output'].upper()}** on {', '.join(u['setups'])} "
+                  f"- the residual of **{u.output.upper()}** on {', '.join(u.setups)} "
                   f"is structured and no effect of the library explains it under the rule; "
-                  f"it looks like {u['looks_like']}",
+                  f"it looks like {u.looks_like}",
                   f"- a correction of that shape would add (fit points per setup): {gains}; "
-                  f"the same in the other output: {u['other_output_gain_points']:+.1f}", ""]
-    if r["possible"]:
+                  f"the same in the other output: {u.other_output_gain_points:+.1f}", ""]
+    if r.possible:
         lines += ["## Possible, not accepted", "",
                   "| effect | scope | after | gain (95 % CI), tests improved | why not |",
                   "|---|---|---|---|---|"]
-        for p in r["possible"]:
-            ev = p["evidence"]
-            lo, hi = ev["ci95_points"]
-            lines.append(f"| {p['kind']} | {p['scope']} | {'+'.join(p['after']) or '-'} | "
-                         f"{ev['gain_points']:+.2f} ({lo:+.2f}..{hi:+.2f}), "
-                         f"{ev['tests_improved']}/{ev['tests']} | {p['why_not']} |")
+        for p in r.possible:  # the gain as report.json rounds it (to 0.001 points)
+            ev = p.evidence
+            low, high = ev.ci95_points
+            lines.append(f"| {p.kind} | {p.scope} | {'+'.join(p.after) or '-'} | "
+                         f"{round(ev.gain_points, 3):+.2f} ({low:+.2f}..{high:+.2f}), "
+                         f"{ev.tests_improved}/{ev.tests} | {p.why_not} |")
         lines.append("")
     return lines
 
 
-def _pct(f: dict | str) -> str:
-    return f"{f['total']:.1f} %" if isinstance(f, dict) else f
+def _pct(f: Fits | str) -> str:
+    return f"{f.total:.1f} %" if isinstance(f, Fits) else f

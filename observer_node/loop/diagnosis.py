@@ -16,6 +16,9 @@ same rule (:mod:`.evidence`).
 
 from __future__ import annotations
 
+from dataclasses import dataclass
+from typing import Any
+
 import numpy as np
 
 from ..ident.dataset import Dataset
@@ -60,7 +63,27 @@ def shape_gains(data: Dataset, y_hat: np.ndarray) -> dict[str, dict[str, np.ndar
     return out
 
 
-def unexplained(data: Dataset, y_hat: np.ndarray, min_points: float = 1.0) -> list[dict]:
+@dataclass(frozen=True)
+class Unexplained:
+    """Structure left in one output's residual that no effect explains: the setups where a
+    correction of its shape would add at least the minimum, what it looks like, the gain
+    [fit points] per setup (rounded to 0.01) and the mean gain in the other output."""
+
+    output: str  # "cr" or "cd"
+    setups: list[str]
+    looks_like: str
+    shape: str  # a key of SHAPES
+    gain_points: dict[str, float]
+    other_output_gain_points: float
+
+    def as_dict(self) -> dict[str, Any]:
+        return {"output": self.output, "setups": self.setups, "looks_like": self.looks_like,
+                "shape": self.shape, "gain_points": self.gain_points,
+                "other_output_gain_points": self.other_output_gain_points}
+
+
+def unexplained(data: Dataset, y_hat: np.ndarray, min_points: float = 1.0
+                ) -> list[Unexplained]:
     """Structure left in the residual: per output, the shape whose correction would add at
     least ``min_points`` fit points on some setup, with the setups where it does."""
     gains = shape_gains(data, y_hat)
@@ -72,11 +95,10 @@ def unexplained(data: Dataset, y_hat: np.ndarray, min_points: float = 1.0) -> li
                      for s in setups}
         where = [s for s, v in per_setup.items() if v >= min_points]
         if where:
-            out.append({"output": o, "setups": where,
-                        "looks_like": SHAPES[shape].format(o=o.upper()), "shape": shape,
-                        "gain_points": {s: round(v, 2) for s, v in per_setup.items()},
-                        "other_output_gain_points": round(float(np.mean(
-                            [np.mean(v) for v in gains[_other(o)].values()])), 2)})
+            out.append(Unexplained(
+                o, where, SHAPES[shape].format(o=o.upper()), shape,
+                {s: round(v, 2) for s, v in per_setup.items()},
+                round(float(np.mean([np.mean(v) for v in gains[_other(o)].values()])), 2)))
     return out
 
 

@@ -59,6 +59,11 @@ class Evidence:
         d["setup_gain_points"] = {k: round(v, 2) for k, v in self.setup_gain_points.items()}
         return d
 
+    @classmethod
+    def from_dict(cls, d: dict) -> Evidence:
+        """Evidence as :meth:`as_dict` wrote it (rounded)."""
+        return cls(**{**d, "ci95_points": tuple(d["ci95_points"])})
+
     @property
     def confidence(self) -> str:
         """One line for the report: gain, interval, tests improved."""

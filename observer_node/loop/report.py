@@ -1,7 +1,7 @@
 """What observer-node loop reports (report.json, read back by the bench and the README
-figures): typed at its top level, serialised by :meth:`LoopReport.as_dict` to the JSON the
-loop has always written. The effects, candidates and history inside stay the JSON objects
-report.md documents."""
+figures): typed, serialised by :meth:`LoopReport.as_dict` to the JSON the loop has always
+written (the key order of each object is part of that: report.json is compared byte for byte).
+"""
 
 from __future__ import annotations
 
@@ -12,7 +12,130 @@ from ..criteria import CriteriaComparison
 from ..data.setups import Setup
 from ..ident.metrics import Fits, OutputFits
 from ..scores import IsoRatings
+from .diagnosis import Unexplained
+from .evidence import Evidence
 from .screening import BrokenTest
+
+
+@dataclass(frozen=True)
+class RunnerUp:
+    """The best cross-validated candidate of another kind than the accepted one."""
+
+    kind: str
+    scope: str  # its setups joined by "+", or "all"
+    cv_fit: float  # its mean cross-validated fit_TOT [%] (rounded to 0.01)
+
+    def as_dict(self) -> dict[str, Any]:
+        return {"kind": self.kind, "scope": self.scope, "cv_fit": self.cv_fit}
+
+
+@dataclass(frozen=True)
+class OtherScope:
+    """The accepted effect on the other scope it was tried on."""
+
+    scope: str
+    cv_fit: float  # mean cross-validated fit_TOT [%] there
+    margin_points: float  # accepted scope's cv fit minus this one's [fit points]
+
+    def as_dict(self) -> dict[str, Any]:
+        return {"scope": self.scope, "cv_fit": self.cv_fit, "margin_points": self.margin_points}
+
+
+@dataclass(frozen=True)
+class EffectEvidence:
+    """Why an effect was accepted: its share of the residual [0..1] in the ranking, the
+    rule's verdict, its signature's share of the residual before and after the refit, the
+    cross-validated fit_TOT [%] before and after, the runner-up and the margin [points], and
+    the residual's input cross-correlation / coloured band (RMS and largest) before and after.
+    Values are as reported (rounded)."""
+
+    ranking_share: float
+    scope_shares: dict[str, float] | None
+    rule: Evidence
+    explained_share_before: float
+    explained_share_after: float
+    cv_fit_before: float
+    cv_fit_after: float
+    runner_up: RunnerUp | None
+    margin_points: float | None  # None with no runner-up
+    other_scope: OtherScope | None
+    input_xcorr_rms_ratio_before: float
+    input_xcorr_rms_ratio_after: float
+    input_xcorr_max_ratio_before: float
+    input_xcorr_max_ratio_after: float
+
+    def as_dict(self) -> dict[str, Any]:
+        return {
+            "ranking_share": self.ranking_share, "scope_shares": self.scope_shares,
+            "rule": self.rule.as_dict(),
+            "explained_share_before": self.explained_share_before,
+            "explained_share_after": self.explained_share_after,
+            "cv_fit_before": self.cv_fit_before, "cv_fit_after": self.cv_fit_after,
+            **({"runner_up": self.runner_up.as_dict(), "margin_points": self.margin_points}
+               if self.runner_up is not None else {}),
+            **({"other_scope": self.other_scope.as_dict()}
+               if self.other_scope is not None else {}),
+            "input_xcorr_rms_ratio_before": self.input_xcorr_rms_ratio_before,
+            "input_xcorr_rms_ratio_after": self.input_xcorr_rms_ratio_after,
+            "input_xcorr_max_ratio_before": self.input_xcorr_max_ratio_before,
+            "input_xcorr_max_ratio_after": self.input_xcorr_max_ratio_after,
+        }
+
+    @classmethod
+    def from_dict(cls, d: dict[str, Any]) -> EffectEvidence:
+        ru, os_ = d.get("runner_up"), d.get("other_scope")
+        return cls(d["ranking_share"], d["scope_shares"], Evidence.from_dict(d["rule"]),
+                   d["explained_share_before"], d["explained_share_after"],
+                   d["cv_fit_before"], d["cv_fit_after"],
+                   RunnerUp(**ru) if ru is not None else None, d.get("margin_points"),
+                   OtherScope(**os_) if os_ is not None else None,
+                   d["input_xcorr_rms_ratio_before"], d["input_xcorr_rms_ratio_after"],
+                   d["input_xcorr_max_ratio_before"], d["input_xcorr_max_ratio_after"])
+
+
+@dataclass(frozen=True)
+class AcceptedEffect:
+    """An effect the loop added: its kind and one-line description, its parameters (units:
+    the effect's definition, :mod:`observer_node.model.effects`) and their standard errors,
+    the setups it acts on and those setups' estimation and validation tests (None: every
+    test), warnings on its parameters, the rule's verdict in one line, the evidence, and the
+    validation fits [%] of the model with it (rounded to 0.01)."""
+
+    kind: str
+    description: str
+    parameters: dict[str, Any]
+    std_err: dict[str, float]
+    setups: list[str] | None
+    applies_to: list[str] | None  # test names; None with setups None
+    warnings: list[str]
+    confidence: str
+    evidence: EffectEvidence
+    fit: Fits
+
+    @property
+    def scope(self) -> str:
+        """The setups it acts on joined by "+", or "all"."""
+        return "all" if self.setups is None else "+".join(self.setups)
+
+    def model_entry(self) -> dict[str, Any]:
+        """The effect as model.json and the refit take it."""
+        return {"kind": self.kind, "parameters": self.parameters,
+                **({"setups": self.setups} if self.setups is not None else {})}
+
+    def as_dict(self) -> dict[str, Any]:
+        return {"kind": self.kind, "description": self.description,
+                "parameters": self.parameters, "std_err": self.std_err,
+                **({"setups": self.setups, "applies_to": self.applies_to}
+                   if self.setups is not None else {}),
+                "warnings": self.warnings, "confidence": self.confidence,
+                "evidence": self.evidence.as_dict(), "fit": self.fit.as_dict()}
+
+    @classmethod
+    def from_dict(cls, d: dict[str, Any]) -> AcceptedEffect:
+        """An entry of report.json's ``effects``, read back."""
+        return cls(d["kind"], d["description"], d["parameters"], d["std_err"],
+                   d.get("setups"), d.get("applies_to"), d["warnings"], d["confidence"],
+                   EffectEvidence.from_dict(d["evidence"]), Fits(**d["fit"]))
 
 
 @dataclass(frozen=True)
@@ -30,6 +153,120 @@ class ModelFit:
 
 
 @dataclass(frozen=True)
+class PossibleEffect:
+    """A candidate that gained something but failed the rule: reported, never a finding."""
+
+    kind: str
+    scope: str  # its setups joined by "+", or "all"
+    after: list[str]  # the effects the model had when it was tried
+    evidence: Evidence
+    why_not: str
+
+    def as_dict(self) -> dict[str, Any]:
+        return {"kind": self.kind, "scope": self.scope, "after": self.after,
+                "evidence": self.evidence.as_dict(), "why_not": self.why_not}
+
+
+@dataclass(frozen=True)
+class SensorEffect:
+    """A static correction of one output that beat every physical effect under the rule:
+    the transducer's gain or non-linearity, reported and not added to the model."""
+
+    output: str  # "cr" or "cd"
+    after: list[str]  # the effects the model had when it was tried
+    looks_like: str
+    evidence: Evidence
+
+    family = "sensor"
+
+    @property
+    def confidence(self) -> str:
+        return self.evidence.confidence
+
+    def as_dict(self) -> dict[str, Any]:
+        return {"output": self.output, "family": self.family, "after": self.after,
+                "looks_like": self.looks_like, "evidence": self.evidence.as_dict(),
+                "confidence": self.confidence}
+
+
+@dataclass(frozen=True)
+class RankedCandidate:
+    """An effect as the residual analysis ranks it: the share [0..1] of the residual its
+    signature explains (rounded to 0.0001) on its scope, the shares on the scopes tried, and
+    the initial parameters the regression gives it (the effect's units)."""
+
+    kind: str
+    explained_share: float
+    scope: str  # its setups joined by "+", or "all"
+    scope_shares: dict[str, float] | None
+    initial_parameters: dict[str, Any]
+
+    def as_dict(self) -> dict[str, Any]:
+        return {"kind": self.kind, "explained_share": self.explained_share,
+                "scope": self.scope, "scope_shares": self.scope_shares,
+                "initial_parameters": self.initial_parameters}
+
+
+@dataclass(frozen=True)
+class TriedCandidate:
+    """A candidate cross-validated in a round: its mean cross-validated fit_TOT [%] with it
+    and the rule's verdict."""
+
+    kind: str
+    scope: str
+    cv_fit: float
+    evidence: Evidence
+
+    def as_dict(self) -> dict[str, Any]:
+        return {"kind": self.kind, "scope": self.scope, "cv_fit": self.cv_fit,
+                "evidence": self.evidence.as_dict()}
+
+
+@dataclass
+class LoopStep:
+    """One round of the loop: the effects the model had and its mean cross-validated
+    fit_TOT [%], the ranking, the candidates tried (best first), the sensor candidates per
+    output, and what was decided (set when the round ends)."""
+
+    effects_before: list[str]
+    cv_fit_before: float
+    ranking: list[RankedCandidate]
+    tried: list[TriedCandidate]
+    sensor: dict[str, Evidence]
+    decision: str = ""
+
+    def as_dict(self) -> dict[str, Any]:
+        return {"effects_before": self.effects_before, "cv_fit_before": self.cv_fit_before,
+                "ranking": [c.as_dict() for c in self.ranking],
+                "tried": [t.as_dict() for t in self.tried],
+                "sensor": {o: ev.as_dict() for o, ev in self.sensor.items()},
+                "decision": self.decision}
+
+
+@dataclass(frozen=True)
+class LeftOut:
+    """The validation fits [%] (rounded to 0.01) with the tests left out and without them:
+    the final model as fitted; its structure refitted with the left-out estimation tests back
+    in; scored on the left-out validation tests too. A text says why one could not be had;
+    None: no such tests."""
+
+    tests: list[str]
+    validation_fit_without: Fits
+    validation_fit_if_fitted_with_them: Fits | str | None = None
+    validation_fit_with_them: Fits | str | None = None
+
+    def as_dict(self) -> dict[str, Any]:
+        out: dict[str, Any] = {"tests": self.tests,
+                               "validation_fit_without": self.validation_fit_without.as_dict()}
+        for key, f in (("validation_fit_if_fitted_with_them",
+                        self.validation_fit_if_fitted_with_them),
+                       ("validation_fit_with_them", self.validation_fit_with_them)):
+            if f is not None:
+                out[key] = f if isinstance(f, str) else f.as_dict()
+        return out
+
+
+@dataclass(frozen=True)
 class LoopReport:
     """The thesis grey-box and the final model on the validation tests, the effects accepted
     (each with its evidence, scope, parameters and validation fit), those possible but not
@@ -37,12 +274,12 @@ class LoopReport:
     loop got there."""
 
     baseline: ModelFit
-    effects: list[dict[str, Any]]  # accepted, in order
-    possible: list[dict[str, Any]]  # not accepted, largest gain first
-    sensor_effects: list[dict[str, Any]]
-    unexplained: list[dict[str, Any]]
+    effects: list[AcceptedEffect]  # in the order accepted
+    possible: list[PossibleEffect]  # largest gain first
+    sensor_effects: list[SensorEffect]
+    unexplained: list[Unexplained]
     warnings: list[BrokenTest]  # tests left out of the fits
-    left_out: dict[str, Any]  # the fits with and without them ({} when none)
+    left_out: LeftOut | None  # the fits with and without them (None: none left out)
     final: ModelFit
     setups: list[Setup]
     model: str  # file names in the output folder
@@ -51,8 +288,8 @@ class LoopReport:
     estimation: list[str]  # test names
     validation: list[str]
     residual_tests: dict[str, dict[str, dict[str, float]]]  # baseline, final: per output
-    first_ranking: list[dict[str, Any]]
-    history: list[dict[str, Any]]  # one step per round of candidates
+    first_ranking: list[RankedCandidate]
+    history: list[LoopStep]  # one per round of candidates
     settings: dict[str, Any]
     validation_tests: dict[str, dict[str, OutputFits]]  # baseline, final: per test
     criteria: dict[str, dict[str, CriteriaComparison]]  # baseline, final: per test
@@ -61,15 +298,19 @@ class LoopReport:
 
     def as_dict(self) -> dict[str, Any]:
         return {
-            "baseline": self.baseline.as_dict(), "effects": self.effects,
-            "possible": self.possible, "sensor_effects": self.sensor_effects,
-            "unexplained": self.unexplained, "warnings": [w.as_dict() for w in self.warnings],
-            "left_out": self.left_out, "final": self.final.as_dict(),
+            "baseline": self.baseline.as_dict(), "effects": [e.as_dict() for e in self.effects],
+            "possible": [p.as_dict() for p in self.possible],
+            "sensor_effects": [s.as_dict() for s in self.sensor_effects],
+            "unexplained": [u.as_dict() for u in self.unexplained],
+            "warnings": [w.as_dict() for w in self.warnings],
+            "left_out": self.left_out.as_dict() if self.left_out is not None else {},
+            "final": self.final.as_dict(),
             "setups": [s.as_dict() for s in self.setups], "model": self.model,
             "baseline_model": self.baseline_model, "software_version": self.software_version,
             "estimation": self.estimation, "validation": self.validation,
-            "residual_tests": self.residual_tests, "first_ranking": self.first_ranking,
-            "history": self.history, "settings": self.settings,
+            "residual_tests": self.residual_tests,
+            "first_ranking": [c.as_dict() for c in self.first_ranking],
+            "history": [s.as_dict() for s in self.history], "settings": self.settings,
             "validation_tests": {k: {n: f.as_dict() for n, f in v.items()}
                                  for k, v in self.validation_tests.items()},
             "criteria": {k: {n: c.as_dict() for n, c in v.items()}

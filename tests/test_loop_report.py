@@ -1,0 +1,121 @@
+"""The loop report's entries are types serialised to the JSON objects report.json has always
+had: same keys, same order (report.json is compared byte for byte between versions)."""
+
+from __future__ import annotations
+
+import json
+
+from observer_node.ident.metrics import Fits
+from observer_node.loop.diagnosis import Unexplained
+from observer_node.loop.evidence import judge
+from observer_node.loop.report import (
+    AcceptedEffect,
+    EffectEvidence,
+    LeftOut,
+    LoopStep,
+    OtherScope,
+    PossibleEffect,
+    RankedCandidate,
+    RunnerUp,
+    SensorEffect,
+    TriedCandidate,
+)
+
+# report.json's keys, in order, as observer-node loop wrote them before the entries were typed
+ACCEPTED_KEYS = ["kind", "description", "parameters", "std_err", "setups", "applies_to",
+                 "warnings", "confidence", "evidence", "fit"]
+EVIDENCE_KEYS = ["ranking_share", "scope_shares", "rule", "explained_share_before",
+                 "explained_share_after", "cv_fit_before", "cv_fit_after", "runner_up",
+                 "margin_points", "other_scope", "input_xcorr_rms_ratio_before",
+                 "input_xcorr_rms_ratio_after", "input_xcorr_max_ratio_before",
+                 "input_xcorr_max_ratio_after"]
+RULE_KEYS = ["gain_points", "ci95_points", "gain_in_scope_points", "test_gain_points",
+             "tests_improved", "tests", "sign_test_p", "setup_gain_points", "accepted",
+             "reason"]
+
+
+def _rule():
+    before = {"A": 80.0, "B": 82.0, "C": 79.0, "D": 81.0}
+    after = {"A": 83.1, "B": 84.2, "C": 82.5, "D": 83.3}
+    return judge(before, after, {"A": "R16", "B": "R16", "C": "SLED", "D": "SLED"}, ["SLED"],
+                 1.0)
+
+
+def _accepted(setups: list[str] | None, rivals: bool) -> AcceptedEffect:
+    rule = _rule()
+    ev = EffectEvidence(0.1234, {"SLED": 0.1234, "all": 0.05}, rule, 0.1834, 0.025, 94.0,
+                        96.0, RunnerUp("pelvis_coupling", "all", 94.3) if rivals else None,
+                        1.8 if rivals else None, OtherScope("all", 95.1, 0.9) if rivals else None,
+                        0.28, 0.54, 0.79, 1.68)
+    return AcceptedEffect("airbag_contact", "airbag", {"kab": 2.2e4, "gap": 0.09},
+                          {"kab": 520.0, "gap": 0.00085}, setups,
+                          ["C", "D"] if setups else None, [], rule.confidence, ev,
+                          Fits(95.6, 96.7, 96.15))
+
+
+def test_an_accepted_effect_is_written_with_the_keys_report_json_has():
+    d = _accepted(["SLED"], rivals=True).as_dict()
+    assert list(d) == ACCEPTED_KEYS
+    assert list(d["evidence"]) == EVIDENCE_KEYS
+    assert list(d["evidence"]["rule"]) == RULE_KEYS
+    assert list(d["evidence"]["runner_up"]) == ["kind", "scope", "cv_fit"]
+    assert list(d["evidence"]["other_scope"]) == ["scope", "cv_fit", "margin_points"]
+    assert list(d["fit"]) == ["cr", "cd", "total"]
+    # on every test, without rivals: no setups, applies_to, runner-up, margin or other scope
+    plain = _accepted(None, rivals=False).as_dict()
+    assert list(plain) == [k for k in ACCEPTED_KEYS if k not in ("setups", "applies_to")]
+    assert list(plain["evidence"]) == [k for k in EVIDENCE_KEYS if k not in (
+        "runner_up", "margin_points", "other_scope")]
+
+
+def test_an_accepted_effect_reads_back_from_report_json_unchanged():
+    for e in (_accepted(["SLED"], rivals=True), _accepted(None, rivals=False)):
+        text = json.dumps(e.as_dict(), indent=1)
+        back = AcceptedEffect.from_dict(json.loads(text))
+        assert json.dumps(back.as_dict(), indent=1) == text
+        assert back.scope == e.scope and back.model_entry() == e.model_entry()
+    assert _accepted(["SLED"], True).model_entry()["setups"] == ["SLED"]
+    assert "setups" not in _accepted(None, False).model_entry()
+
+
+def test_possible_sensor_and_unexplained_entries_keep_their_keys():
+    rule = _rule()
+    p = PossibleEffect("input_delay", "all", ["belt_unloading"], rule, "gains 0.43 < 1 points")
+    assert list(p.as_dict()) == ["kind", "scope", "after", "evidence", "why_not"]
+    assert list(p.as_dict()["evidence"]) == RULE_KEYS
+    s = SensorEffect("cd", [], "a static function of CD", rule).as_dict()
+    assert list(s) == ["output", "family", "after", "looks_like", "evidence", "confidence"]
+    assert s["family"] == "sensor" and s["confidence"] == rule.confidence
+    u = Unexplained("cd", ["R16"], "a lag", "lag", {"R16": 1.5, "SLED": 0.2}, 0.1).as_dict()
+    assert list(u) == ["output", "setups", "looks_like", "shape", "gain_points",
+                       "other_output_gain_points"]
+
+
+def test_a_round_of_the_loop_keeps_its_keys():
+    rule = _rule()
+    ranked = RankedCandidate("pelvis_coupling", 0.256, "all", None, {"kp": 1.0e4})
+    step = LoopStep(["belt_unloading"], 86.0, [ranked],
+                    [TriedCandidate("chest_stiffening", "all", 94.0, rule)],
+                    {"cr": rule, "cd": rule})
+    step.decision = "accepted chest_stiffening on all"  # decided when the round ends
+    d = step.as_dict()
+    assert list(d) == ["effects_before", "cv_fit_before", "ranking", "tried", "sensor",
+                       "decision"]
+    assert list(d["ranking"][0]) == ["kind", "explained_share", "scope", "scope_shares",
+                                     "initial_parameters"]
+    assert list(d["tried"][0]) == ["kind", "scope", "cv_fit", "evidence"]
+    assert list(d["tried"][0]["evidence"]) == RULE_KEYS
+    assert list(d["sensor"]) == ["cr", "cd"] and d["decision"].startswith("accepted")
+
+
+def test_the_fits_with_and_without_left_out_tests_keep_their_keys():
+    without = Fits(94.85, 98.54, 96.69)
+    both = LeftOut(["EST_001", "VAL_002"], without, Fits(94.0, 98.0, 96.0),
+                   "cannot be scored: 50 samples missing").as_dict()
+    assert list(both) == ["tests", "validation_fit_without",
+                          "validation_fit_if_fitted_with_them", "validation_fit_with_them"]
+    assert both["validation_fit_without"] == {"cr": 94.85, "cd": 98.54, "total": 96.69}
+    assert both["validation_fit_with_them"] == "cannot be scored: 50 samples missing"
+    # only validation tests left out: no refit with them
+    assert list(LeftOut(["VAL_002"], without, None, without).as_dict()) == [
+        "tests", "validation_fit_without", "validation_fit_with_them"]
