@@ -135,3 +135,34 @@ def test_gains_of_varying_size_on_every_test_are_accepted():
     assert ev.accepted, ev.reason
     after["T3"] = 69.0  # three of four: chance
     assert not judge(before, after, setups, None, 1.0).accepted
+
+
+def _passing(*entries: tuple[list[str] | None, list[float]]) -> tuple[list, dict]:
+    """Passing candidates of one kind on the given scopes, best first, with their per-test
+    cross-validated fits (90 % + gains)."""
+    from observer_node.loop.analysis import Candidate
+    passing, per_test = [], {}
+    for scope, gains in entries:
+        c = Candidate("sensor_offset", 0.5, {}, None, scope)
+        before, after = _cv(gains)
+        passing.append((float(np.mean(list(after.values()))), c,
+                        judge(before, after, SETUPS, scope, 1.0)))
+        per_test[id(c)] = after
+    return passing, per_test
+
+
+def test_a_narrower_scope_that_fits_no_better_gives_way_to_the_wider():
+    from observer_node.loop.closed_loop import _defended_scope
+    # "on A and B only" gains a little more on average, but not test by test
+    passing, per_test = _passing((["A", "B"], [2.5, 0.4, 2.9, 0.2, 1.2, 1.1]),
+                                 (None, [1.1, 1.0, 1.3, 0.9, 1.2, 1.1]))
+    (_, chosen, _), given_up = _defended_scope(passing, per_test)
+    assert chosen.setups is None and given_up == "A+B"
+
+
+def test_a_narrower_scope_that_beats_the_wider_test_by_test_is_kept():
+    from observer_node.loop.closed_loop import _defended_scope
+    passing, per_test = _passing((["A", "B"], [2.5, 2.4, 2.9, 2.2, 1.2, 1.1]),
+                                 (None, [1.1, 1.0, 1.3, 0.9, 1.0, 1.0]))
+    (_, chosen, _), given_up = _defended_scope(passing, per_test)
+    assert chosen.setups == ["A", "B"] and given_up == ""

@@ -9,7 +9,8 @@
    non-linear, simulated as such); each is judged by two-fold cross-validation *inside* the
    estimation tests. The best is accepted only if it raises the cross-validated fit_TOT by at
    least ``margin`` points and, refitted on all estimation tests, its signature explains less
-   of the new residual than of the old (or under 2 % of it). Parameter-free effects are always
+   of the new residual than of the old (or under 2 % of it). A narrower scope is named only if
+   it beats the same effect on a wider passing scope above the scatter. Parameter-free effects are always
    tried: their linearised signature predicts a switching force badly. The residual's
    cross-correlation with the inputs (against Ljung's coloured band) is reported before and
    after, but does not decide: on simulator data it rose for true effects too. Repeat until
@@ -57,7 +58,7 @@ from .analysis import (
 )
 from .cluster import Runner, cluster
 from .diagnosis import sensor_fold_scores, unexplained
-from .evidence import POSSIBLE_MIN, SETUP_TOLERANCE, SIGN_P, Evidence, judge
+from .evidence import POSSIBLE_MIN, SETUP_TOLERANCE, SIGN_P, Evidence, above_scatter, judge
 from .refit import fold_scores, folds, model, refit, score
 from .report import (
     AcceptedEffect,
@@ -218,7 +219,7 @@ def _run(est_tests: list[CrashTest], val_tests: list[CrashTest], out: Path, rate
                              "lowered): " + "; ".join(f"{c.kind} on {scope_label(c.setups)}: "
                                                        f"{ev.reason}" for _, c, ev in tried[:4]))
             break
-        cv_best, best, ev_best = passing[0]
+        (cv_best, best, ev_best), narrower = _defended_scope(passing, per_test)
         cv_tests_best = per_test[id(best)]
         prog.update(f"refitting with {best.kind} on all estimation tests")
         fit = refit(base, [*effects, best.effect()], est, max_nfev=120)
@@ -261,7 +262,8 @@ def _run(est_tests: list[CrashTest], val_tests: list[CrashTest], out: Path, rate
                 input_xcorr_max_ratio_after=round(_max_ratio(ct_new), 2)),
             fit=Fits(**_fit3(val_fit)))
         accepted.append(entry)
-        step.decision = f"accepted {best.kind} on {scope_label(best.setups)}"
+        step.decision = f"accepted {best.kind} on {scope_label(best.setups)}" + (
+            f" (on {narrower} only it fits no better beyond the scatter)" if narrower else "")
         prog.update(f"accepted {best.kind} on {scope_label(best.setups)}: validation fit "
                     f"{val_fit.fit.total:.1f} %")
     final_val = score(base, effects, val)
@@ -388,6 +390,26 @@ def _with_and_without(broken: list[BrokenTest], base: dict, effects: list[dict],
             scored_with = f"cannot be scored: {e}"
     return LeftOut(sorted(names), Fits(**_fit3(score(base, effects, val))), fitted_with,
                    scored_with)
+
+
+def _defended_scope(passing: list[tuple[float, Candidate, Evidence]],
+                    per_test: dict[int, dict[str, float]]
+                    ) -> tuple[tuple[float, Candidate, Evidence], str]:
+    """The best passing candidate, or the same effect on a wider scope that passes too when
+    the narrower one does not beat it test by test above the scatter: "on these setups only"
+    is a claim the data must defend like the effect itself. Also the narrower scope given up
+    ("" when none). ``passing``: (cv fit_TOT [%], candidate, evidence), best first;
+    ``per_test``: each candidate's per-test cross-validated fit_TOT [%] by ``id``."""
+    best = passing[0][1]
+    for entry in passing[1:]:
+        c = entry[1]
+        wider = best.setups is not None and (c.setups is None or set(best.setups) < set(c.setups))
+        if c.kind == best.kind and wider:
+            a, b = per_test[id(best)], per_test[id(c)]
+            diff = np.array([a[n] - b[n] for n in a if n in b], float)
+            if not above_scatter(diff)[0]:
+                return entry, scope_label(best.setups)
+    return passing[0], ""
 
 
 def _with_widest_scope(c: Candidate, options: list[list[str] | None]) -> list[Candidate]:

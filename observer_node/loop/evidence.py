@@ -21,7 +21,11 @@ scoped effect that frees the shared parameters helps (or harms) the other setups
 well. The gain on the tests it acts on is reported beside.
 
 A candidate that gains something but fails the rule is **possible**: reported, never named as a
-finding. """
+finding.
+
+A scope is a claim too: "on SLED and FULL only" says the R16 rig does not have the effect. When
+the same effect also passes on a wider scope, the narrower one is named only if it beats the
+wider one test by test, above the scatter (:func:`above_scatter`); otherwise the wider. """
 
 from __future__ import annotations
 
@@ -73,6 +77,20 @@ class Evidence:
                 f"{self.sign_test_p:.3f})")
 
 
+def above_scatter(d: np.ndarray) -> tuple[bool, float, float, int, float]:
+    """Whether paired per-test differences ``d`` are above test-to-test scatter: the 95 %
+    t-interval of their mean above zero, or the one-sided sign test p <= ``SIGN_P``. Returns
+    that, the mean, the interval's half width, the tests that improve and the sign test's p."""
+    mean = float(np.mean(d))
+    if len(d) > 1 and np.std(d, ddof=1) > 0:
+        half = float(stats.t.ppf(0.975, len(d) - 1) * np.std(d, ddof=1) / np.sqrt(len(d)))
+    else:
+        half = float("inf")
+    improved = int(np.sum(d > 0))
+    sign_p = float(stats.binomtest(improved, len(d), 0.5, alternative="greater").pvalue)
+    return mean - half > 0 or sign_p <= SIGN_P, mean, half, improved, sign_p
+
+
 def judge(before: dict[str, float], after: dict[str, float], setups: dict[str, str],
           scope: list[str] | None, margin: float) -> Evidence:
     """Judge a candidate from the per-test cross-validated fit_TOT [%] without it (``before``)
@@ -81,14 +99,8 @@ def judge(before: dict[str, float], after: dict[str, float], setups: dict[str, s
     names = [n for n in before if n in after]
     gain = {n: after[n] - before[n] for n in names}
     inside = [gain[n] for n in names if scope is None or setups[n] in scope] or [0.0]
-    d = np.array([gain[n] for n in names], float)
-    mean = float(np.mean(d))
-    if len(d) > 1 and np.std(d, ddof=1) > 0:
-        half = float(stats.t.ppf(0.975, len(d) - 1) * np.std(d, ddof=1) / np.sqrt(len(d)))
-    else:
-        half = float("inf")
-    improved = int(np.sum(d > 0))
-    sign_p = float(stats.binomtest(improved, len(d), 0.5, alternative="greater").pvalue)
+    above, mean, half, improved, sign_p = above_scatter(
+        np.array([gain[n] for n in names], float))
     per_setup = {s: float(np.mean([gain[n] for n in names if setups[n] == s]))
                  for s in dict.fromkeys(setups[n] for n in names)}
     worst = min(per_setup, key=lambda s: per_setup[s])
@@ -96,11 +108,11 @@ def judge(before: dict[str, float], after: dict[str, float], setups: dict[str, s
         reason = f"gains {mean:.2f} < {margin:g} points"
     elif per_setup[worst] < -SETUP_TOLERANCE:
         reason = f"lowers setup {worst}'s cross-validated fit by {-per_setup[worst]:.2f} points"
-    elif mean - half <= 0 and sign_p > SIGN_P:
+    elif not above:
         reason = (f"gains {mean:.2f} points but the 95 % interval reaches "
-                  f"{mean - half:+.2f} and only {improved} of {len(d)} tests improve: not "
+                  f"{mean - half:+.2f} and only {improved} of {len(names)} tests improve: not "
                   "above test-to-test scatter")
     else:
         reason = ""
     return Evidence(mean, (mean - half, mean + half), float(np.mean(inside)), gain, improved,
-                    len(d), sign_p, per_setup, not reason, reason)
+                    len(names), sign_p, per_setup, not reason, reason)
