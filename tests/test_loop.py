@@ -152,7 +152,7 @@ def test_an_airbag_on_some_setups_is_found_with_its_scope(tmp_path):
     assert e.applies_to == ["E03", "E04", "E05", "E06", "V03", "V04", "V05", "V06"]
     assert set(e.std_err) == {"kab", "gap", "cab"}
     assert all(0 < e.std_err[k] < abs(e.parameters[k]) for k in e.std_err)
-    assert e.evidence.runner_up is not None
+    assert e.evidence.runner_up is not None and e.evidence.runner_up.told_apart is not None
     assert e.evidence.margin_points is not None and e.evidence.margin_points > 0
     mf = ModelFile.load(tmp_path / "model.json")
     assert mf.setups() == ["FULL-FRONTAL", "SLED-TEST"]

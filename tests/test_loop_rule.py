@@ -166,3 +166,18 @@ def test_a_narrower_scope_that_beats_the_wider_test_by_test_is_kept():
                                  (None, [1.1, 1.0, 1.3, 0.9, 1.0, 1.0]))
     (_, chosen, _), given_up = _defended_scope(passing, per_test)
     assert chosen.setups == ["A", "B"] and given_up == ""
+
+
+def test_a_runner_up_the_data_cannot_tell_from_the_winner_is_said_so():
+    from observer_node.loop.analysis import Candidate
+    from observer_node.loop.closed_loop import _rival
+    win, rival = Candidate("chest_stiffening", 0.5, {}), Candidate("pelvis_coupling", 0.5, {})
+    # the winner is ahead on average, but on 3 of 6 tests only
+    per_test = {id(win): _cv([3.4, 3.0, 3.8, 4.1, 2.0, 3.6])[1],
+                id(rival): _cv([4.6, 3.6, 1.6, 4.0, 3.4, 3.8])[1]}
+    ru, margin, _ = _rival([(93.3, win), (93.2, rival)], per_test)
+    assert ru is not None and ru.kind == "pelvis_coupling"
+    assert ru.told_apart is False and ru.tests_better == 2 and margin == 0.1
+    per_test[id(rival)] = _cv([1.0, 1.2, 0.9, 1.1, 1.0, 1.3])[1]
+    ru, _, _ = _rival([(93.3, win), (91.1, rival)], per_test)
+    assert ru is not None and ru.told_apart is True and ru.tests_better == 6

@@ -10,11 +10,11 @@
    estimation tests. The best is accepted only if it raises the cross-validated fit_TOT by at
    least ``margin`` points and, refitted on all estimation tests, its signature explains less
    of the new residual than of the old (or under 2 % of it). A narrower scope is named only if
-   it beats the same effect on a wider passing scope above the scatter. Parameter-free effects are always
-   tried: their linearised signature predicts a switching force badly. The residual's
-   cross-correlation with the inputs (against Ljung's coloured band) is reported before and
-   after, but does not decide: on simulator data it rose for true effects too. Repeat until
-   no candidate helps.
+   it beats the same effect on a wider passing scope above the scatter. Parameter-free
+   effects are always tried: their linearised signature predicts a switching force badly.
+   The residual's cross-correlation with the inputs (against Ljung's coloured band) is
+   reported before and after, but does not decide: on simulator data it rose for true
+   effects too. Repeat until no candidate helps.
 4. The validation tests, untouched until now, give the fits before, after each effect and at
    the end. Everything is written to OUTDIR (report.json, report.md, model.json, plots).
 """
@@ -244,7 +244,7 @@ def _run(est_tests: list[CrashTest], val_tests: list[CrashTest], out: Path, rate
         val_fit = score(base, effects, val)
         params, se = effects[-1]["parameters"], fit.effect_std_err[-1]
         runner_up, margin_points, other_scope = _rival(
-            [(cv_best, best), *((cv, c) for cv, c, _ in tried if c is not best)])
+            [(cv_best, best), *((cv, c) for cv, c, _ in tried if c is not best)], per_test)
         entry = AcceptedEffect(
             kind=best.kind, description=describe(best.kind, params), parameters=params,
             std_err=se, setups=best.setups, applies_to=_applies_to(best.setups, est, val),
@@ -428,15 +428,21 @@ def _applies_to(scope: list[str] | None, est: Dataset, val: Dataset) -> list[str
     return [n for d in (est, val) for n, s in zip(d.names, d.setups, strict=True) if s in scope]
 
 
-def _rival(tried: list[tuple[float, Candidate]]
+def _rival(tried: list[tuple[float, Candidate]], per_test: dict[int, dict[str, float]]
            ) -> tuple[RunnerUp | None, float | None, OtherScope | None]:
-    """The runner-up (the best of another kind) and the margin [points] to it, and the
-    winner on its other scope; ``tried``: (cv fit_TOT [%], candidate), the winner first."""
+    """The runner-up (the best of another kind), whether the winner beats it test by test
+    above the scatter, and the margin [points] to it, and the winner on its other scope;
+    ``tried``: (cv fit_TOT [%], candidate), the winner first; ``per_test``: each candidate's
+    per-test cross-validated fit_TOT [%] by ``id``."""
     cv_best, best = tried[0]
     runner_up, margin, other_scope = None, None, None
     other = next(((cv, c) for cv, c in tried if c.kind != best.kind), None)
     if other is not None:
-        runner_up = RunnerUp(other[1].kind, scope_label(other[1].setups), round(other[0], 2))
+        a, b = per_test[id(best)], per_test[id(other[1])]
+        told_apart, _, _, better, _ = above_scatter(
+            np.array([a[n] - b[n] for n in a if n in b], float))
+        runner_up = RunnerUp(other[1].kind, scope_label(other[1].setups), round(other[0], 2),
+                             told_apart, better)
         margin = round(cv_best - other[0], 2)
     scope = next(((cv, c) for cv, c in tried if c.kind == best.kind and c is not best), None)
     if scope is not None:
@@ -635,6 +641,12 @@ def _markdown_effect(e: AcceptedEffect) -> list[str]:
         ru = ev.runner_up
         rival = (f"- why this and not that: the runner-up, {ru.kind} on {ru.scope}, "
                  f"cross-validated {ru.cv_fit:.1f} %, {ev.margin_points:.1f} points lower")
+        if ru.told_apart is not None:
+            n = len(ev.rule.test_gain_points)
+            rival += (f"; {e.kind} fits better on {ru.tests_better} of {n} estimation tests, "
+                      + ("above the scatter" if ru.told_apart else
+                         f"**not above the scatter: the data cannot tell {e.kind} from "
+                         f"{ru.kind}**"))
     if ev.other_scope is not None:
         os_ = ev.other_scope
         rival += (("\n" if rival else "") + f"- on {os_.scope} instead it "

@@ -24,9 +24,16 @@ class RunnerUp:
     kind: str
     scope: str  # its setups joined by "+", or "all"
     cv_fit: float  # its mean cross-validated fit_TOT [%] (rounded to 0.01)
+    # Whether the accepted effect beats it test by test above the scatter (the rule's paired
+    # interval or sign test), and on how many estimation tests it fits better; None in reports
+    # written before 2026-11-24.
+    told_apart: bool | None = None
+    tests_better: int | None = None
 
     def as_dict(self) -> dict[str, Any]:
-        return {"kind": self.kind, "scope": self.scope, "cv_fit": self.cv_fit}
+        return {"kind": self.kind, "scope": self.scope, "cv_fit": self.cv_fit,
+                **({"told_apart": self.told_apart, "tests_better": self.tests_better}
+                   if self.told_apart is not None else {})}
 
 
 @dataclass(frozen=True)
