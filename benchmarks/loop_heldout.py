@@ -8,7 +8,8 @@ verdicts before the loop ran on them. Nothing in the loop is tuned on them.
 
 Per case the loop runs blind at its defaults on 6 estimation + 6 validation tests. Printed:
 
-- what it named (kind@scope, scopes as the simulator's setups), the tests it flagged, and
+- what it named (kind@scope, scopes as the simulator's setups; "?" where the report says the
+  data cannot tell it from its runner-up), the tests it flagged, and
   whether that is the expected verdict (for the transducer case: nothing physical named and
   "unexplained" or a sensor effect on CD);
 - the validation fit_TOT before and after;
@@ -16,7 +17,9 @@ Per case the loop runs blind at its defaults on 6 estimation + 6 validation test
   loop's rate on the same estimation tests (the flagged broken tests left out), from typical
   starting values and, where the loop named the same structure, from the loop's own result;
   the better of the two, scored on the same validation tests;
-- the gap (reachable - after) and the loop's time.
+- the gap (reachable - after) and the loop's time;
+- at the end: how many cases are right, and how many named effects are not there (and of
+  those, how many the report said it could not tell from their runner-up).
 
     python -m benchmarks.loop_heldout [--set a|b] [--cases NAME ...] [--sets DIR] [--out DIR]
                                       [--workers N] [--json FILE]
@@ -88,6 +91,10 @@ def run_case(case: Case, sets: Path, work: Path, workers: int | None) -> dict:
                  workers=workers)
     seconds = time.monotonic() - t0
     found = sorted(f"{e.kind}@{_sim_scope(e.setups or [], r)}" for e in r.effects)
+    # named, but the report says the data cannot tell it from its runner-up
+    untold = sorted(f"{e.kind}@{_sim_scope(e.setups or [], r)}" for e in r.effects
+                    if e.evidence.runner_up is not None
+                    and e.evidence.runner_up.told_apart is False)
     expected = sorted(f"{k}@{'+'.join(sorted(s.split('+')))}" for k, s in case.expect)
     flagged = sorted({w.test for w in r.warnings})
     sensor = [s.output for s in r.sensor_effects]
@@ -97,7 +104,7 @@ def run_case(case: Case, sets: Path, work: Path, workers: int | None) -> dict:
         output = case.expect_note.rsplit(" ", 1)[-1]  # "... on cd"
         right = right and (output in sensor or output in unexpl)
     row = {"case": case.name, "found": found, "expected": expected, "flagged": flagged,
-           "sensor": sensor, "unexplained": unexpl, "right": right,
+           "sensor": sensor, "unexplained": unexpl, "right": right, "untold": untold,
            "before": r.baseline.fit.total, "after": r.final.fit.total,
            "seconds": seconds, "possible": [f"{p.kind}@{p.scope}" for p in r.possible]}
     row["reachable"] = _reachable(case, r, est, val, found == expected)
@@ -153,7 +160,8 @@ def main() -> None:
         row = run_case(case, sets, work, a.workers)
         rows.append(row)
         reach = row.get("reachable", math.nan)
-        named = ", ".join(row["found"]) or "(none)"
+        named = ", ".join(f + ("?" if f in row["untold"] else "")
+                          for f in row["found"]) or "(none)"
         if row["sensor"]:
             named += f"; sensor: {','.join(row['sensor'])}"
         if row["unexplained"]:
@@ -172,6 +180,11 @@ def main() -> None:
     both = sum(r["right"] and r["reachable"] - r["after"] <= 2.0 for r in rows)
     print(f"right: {ok}/{len(rows)}; within 2 points of reach: {close}/{len(rows)}; "
           f"both: {both}/{len(rows)}", flush=True)
+    extra = [(f, f in r["untold"]) for r in rows for f in r["found"] if f not in r["expected"]]
+    true = [(f, f in r["untold"]) for r in rows for f in r["found"] if f in r["expected"]]
+    print(f"named but not there: {len(extra)}, of them said not told apart from the runner-up "
+          f"(?): {sum(u for _, u in extra)}; named and there: {len(true)}, of them said not "
+          f"told apart: {sum(u for _, u in true)}", flush=True)
 
 
 if __name__ == "__main__":
