@@ -578,7 +578,7 @@ def _markdown(r: LoopReport) -> str:
         mean = iso[label].mean_overall if iso is not None else None
         lines.append(f"| {'thesis grey-box' if label == 'baseline' else 'final'} | "
                      f"{err['cd_max_mm']:.1f} | {err['cr_3ms_g']:.1f} | {err['vc_max_m_s']:.2f} |"
-                     + (f" {mean['cr']:.3f} | {mean['cd']:.3f} |" if mean else ""))
+                     + (f" {mean.cr:.3f} | {mean.cd:.3f} |" if mean else ""))
     lines.append("")
     for e in r.effects:
         lines += _markdown_effect(e)

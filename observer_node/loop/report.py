@@ -11,7 +11,7 @@ from typing import Any
 from ..criteria import CriteriaComparison
 from ..data.setups import Setup
 from ..ident.metrics import Fits, OutputFits
-from ..scores import IsoRatings
+from ..iso18571 import IsoRatings
 from .diagnosis import Unexplained
 from .evidence import Evidence
 from .screening import BrokenTest
