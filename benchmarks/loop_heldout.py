@@ -113,11 +113,11 @@ def run_case(case: Case, sets: Path, work: Path, workers: int | None) -> dict:
 
 def _reachable(case: Case, r: LoopReport, est_tests: list, val_tests: list, same: bool) -> float:
     keep = [t for t in est_tests if t.name not in case.expect_broken]
-    est = make_dataset(keep, r.settings["rate_hz"])
+    est = make_dataset(keep, r.settings.rate_hz)
     val = make_dataset([t for t in val_tests if t.name not in case.expect_broken],
-                       r.settings["rate_hz"])
+                       r.settings.rate_hz)
     base = dict(r.baseline.parameters)
-    effects = _expected_structure(case, r, _delays(case, r.settings["rate_hz"]))
+    effects = _expected_structure(case, r, _delays(case, r.settings.rate_hz))
     with np.errstate(all="ignore"):
         fit = refit(base, effects, est, max_nfev=150)
         best = score(fit.base, fit.effects, val).fit.total

@@ -19,6 +19,7 @@ from .ident.dataset import Dataset, make_dataset
 from .ident.kinds import IDENTIFY, N4SID_BLOCK_ROWS, IdentifyOptions
 from .ident.metrics import FitTable, fit_table
 from .ident.progress import Progress
+from .iso18571 import IsoRatings
 from .model.kinds import MODEL_KINDS
 from .model.modelfile import ModelFile
 from .scores import Scores, mean_abs_errors, scores
@@ -212,8 +213,9 @@ def format_tables(result: dict) -> str:
             ref_s = (f"{ref['cr']:>9.1f}{ref['cd']:>6.1f}{ref['total']:>6.1f}" if ref
                      else " " * 21)
             err = mean_abs_errors(v["criteria"])
-            iso = v.get("iso18571", {}).get("mean_overall")
-            iso_s = f"{iso['cr']:>12.3f}{iso['cd']:>6.3f}" if iso else f"{'(not installed)':>18}"
+            # the ratings as evaluation.json has them, read back
+            iso = IsoRatings.from_dict(v["iso18571"]).mean_overall if "iso18571" in v else None
+            iso_s = f"{iso.cr:>12.3f}{iso.cd:>6.3f}" if iso else f"{'(not installed)':>18}"
             lines.append(f"  {label:<13}{f['cr']:>8.1f}{f['cd']:>8.1f}{f['total']:>9.1f}   "
                          f"{ref_s}   {err['cd_max_mm']:>15.1f} mm{err['cr_3ms_g']:>5.1f} g"
                          f"{err['vc_max_m_s']:>5.2f}m/s {iso_s}")

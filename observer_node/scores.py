@@ -12,18 +12,7 @@ from . import iso18571
 from .criteria import CriteriaComparison, criteria_table
 from .ident.dataset import Dataset
 from .ident.metrics import FitTable, fit_table
-
-
-@dataclass(frozen=True)
-class IsoRatings:
-    """ISO/TS 18571 ratings, each 0..1: per test and output (cr, cd) overall, corridor,
-    phase, magnitude and slope; and the mean overall rating per output."""
-
-    tests: dict[str, dict[str, dict[str, float]]]
-    mean_overall: dict[str, float]
-
-    def as_dict(self) -> dict[str, dict]:
-        return {"tests": self.tests, "mean_overall": self.mean_overall}
+from .iso18571 import IsoRatings
 
 
 @dataclass(frozen=True)
@@ -51,7 +40,7 @@ def scores(data: Dataset, y_hat: np.ndarray, ratings: bool = True) -> Scores:
     table = iso18571.rating_table(data.names, data.y[:, data.win], y_hat[:, data.win],
                                   data.fs_hz) if ratings else None
     return Scores(fits.fit, fits.tests, criteria_table(data.names, data.y, y_hat, data.fs_hz),
-                  IsoRatings(table, iso18571.mean_overall(table)) if table is not None else None)
+                  table)
 
 
 def mean_abs_errors(criteria: dict) -> dict[str, float]:

@@ -3,6 +3,8 @@ the ISO/TS 18571 rating's wiring."""
 
 from __future__ import annotations
 
+import json
+
 import numpy as np
 import pytest
 
@@ -82,6 +84,36 @@ def test_iso18571_rates_identical_curves_one_and_a_shift_lower():
     y = 30 * np.sin(np.pi * t / 0.15)
     same = iso18571.rate(y, y, 1000.0)
     shifted = iso18571.rate(y, np.interp(t - 0.005, t, y), 1000.0)
-    assert same["overall"] == pytest.approx(1.0)
-    assert 0.5 < shifted["overall"] < 0.99 and shifted["phase"] < 1.0
-    assert iso18571.grade(same["overall"]) == "excellent"
+    assert same.overall == pytest.approx(1.0)
+    assert 0.5 < shifted.overall < 0.99 and shifted.phase < 1.0
+    assert iso18571.grade(same.overall) == "excellent"
+
+
+RATING_KEYS = ["overall", "corridor", "phase", "magnitude", "slope"]
+
+
+def test_iso18571_ratings_keep_the_json_keys_and_read_back_unchanged():
+    """fits.json, evaluation.json, report.json and analysis.json have written the ratings
+    with these keys in this order since before they were typed."""
+    pytest.importorskip("objective_rating_metrics")
+    from observer_node import iso18571
+    from observer_node.iso18571 import IsoRatings, OutputRatings
+
+    t = np.arange(0, 0.15, 1e-3)
+    y = np.stack([np.column_stack([a * np.sin(np.pi * t / 0.15), 40 * np.sin(np.pi * t / 0.3)])
+                  for a in (30.0, 20.0)])  # (tests, n, 2)
+    y_hat = np.apply_along_axis(lambda c: np.interp(t - 0.004, t, c), 1, y)  # 4 ms late
+    table = iso18571.rating_table(["A", "B"], y, y_hat, 1000.0)
+    d = table.as_dict()
+    assert list(d) == ["tests", "mean_overall"]
+    assert list(d["tests"]) == ["A", "B"] and list(d["tests"]["A"]) == ["cr", "cd"]
+    assert list(d["tests"]["A"]["cd"]) == RATING_KEYS
+    assert list(d["mean_overall"]) == ["cr", "cd"]
+    # each test's output rated as one curve; the mean is of the overall ratings, to 0.001
+    assert table.tests["B"].cd == iso18571.rate(y[1, :, 1], y_hat[1, :, 1], 1000.0)
+    assert table.mean_overall.cr == round((table.tests["A"].cr.overall
+                                           + table.tests["B"].cr.overall) / 2, 3)
+    text = json.dumps(d, indent=1)
+    assert json.dumps(IsoRatings.from_dict(json.loads(text)).as_dict(), indent=1) == text
+    one = json.dumps(table.tests["A"].as_dict(), indent=1)  # as analysis.json has an event's
+    assert json.dumps(OutputRatings.from_dict(json.loads(one)).as_dict(), indent=1) == one

@@ -360,7 +360,7 @@ def test_invalid_ticks_are_marked_not_scored_as_valid(model, tmp_path):
     # criteria of estimate and reference with their errors, and the ISO/TS 18571 rating
     c = event.criteria.as_dict()
     assert abs(c["error"]["cd_max_mm"]) < 10 and c["reference"]["cd_max_mm"] > 10
-    assert 0.3 < event.iso18571["cd"]["overall"] <= 1.0
+    assert 0.3 < event.iso18571.cd.overall <= 1.0
 
 
 def test_every_message_matches_its_topics_schema(model, tmp_path):

@@ -80,7 +80,7 @@ def test_loop_improves_campaign_validation_fit(r16_loop):
     err = {k: np.mean([abs(c.error.cd_max_mm) for c in r.criteria[k].values()])
            for k in ("baseline", "final")}
     assert err["final"] < err["baseline"], err  # the effects bring peak deflection closer
-    assert r.iso18571["final"].mean_overall["cd"] > r.iso18571["baseline"].mean_overall["cd"]
+    assert r.iso18571["final"].mean_overall.cd > r.iso18571["baseline"].mean_overall.cd
     assert "Injury criteria on the validation tests" in (tmp_path / "report.md").read_text()
     assert r.final.fit.total > r.baseline.fit.total + 5
     assert r.validation == ["R16_002", "R16_004", "R16_006"]

@@ -4,14 +4,19 @@ had: same keys, same order (report.json is compared byte for byte between versio
 from __future__ import annotations
 
 import json
+from pathlib import Path
+
+import pytest
 
 from observer_node.ident.metrics import Fits
+from observer_node.loop.analysis import CorrelationTests, OutputCorrelation
 from observer_node.loop.diagnosis import Unexplained
 from observer_node.loop.evidence import judge
 from observer_node.loop.report import (
     AcceptedEffect,
     EffectEvidence,
     LeftOut,
+    LoopSettings,
     LoopStep,
     OtherScope,
     PossibleEffect,
@@ -20,6 +25,8 @@ from observer_node.loop.report import (
     SensorEffect,
     TriedCandidate,
 )
+
+EXAMPLE = Path(__file__).parent.parent / "observer_node" / "examples" / "bench-loop"
 
 # report.json's keys, in order, as observer-node loop wrote them before the entries were typed
 ACCEPTED_KEYS = ["kind", "description", "parameters", "std_err", "setups", "applies_to",
@@ -120,3 +127,44 @@ def test_the_fits_with_and_without_left_out_tests_keep_their_keys():
     # only validation tests left out: no refit with them
     assert list(LeftOut(["VAL_002"], without, None, without).as_dict()) == [
         "tests", "validation_fit_without", "validation_fit_with_them"]
+
+
+def _correlation(scale: float) -> OutputCorrelation:
+    return OutputCorrelation(0.98, 0.92, 1.9 * scale, 1.17 * scale, 1.96 * scale, 1.23 * scale)
+
+
+def test_the_residual_tests_keep_their_keys_and_read_back_unchanged():
+    t = CorrelationTests(_correlation(1.0), _correlation(0.5))
+    d = t.as_dict()
+    assert list(d) == ["cr", "cd"]
+    assert list(d["cd"]) == ["lag1_autocorrelation", "share_of_lags_outside_white_band",
+                             "xcorr_pulse_ratio", "xcorr_pulse_rms_ratio",
+                             "xcorr_brs_rate_ratio", "xcorr_brs_rate_rms_ratio"]
+    text = json.dumps(d, indent=1)
+    assert json.dumps(CorrelationTests.from_dict(json.loads(text)).as_dict(), indent=1) == text
+    # the largest ratio over the inputs (per output, and over both), the mean RMS ratio
+    assert t.cr.max_ratio == 1.96 and t.cd.max_ratio == 0.98 and t.max_ratio == 1.96
+    assert t.rms_ratio == pytest.approx((1.17 + 1.23) * 1.5 / 4)
+
+
+def test_the_loop_settings_keep_their_keys_and_read_back_unchanged():
+    s = LoopSettings(1000.0, (0.01, 0.15), 1.0, 5, ["rig=R16_*"], False, 2,
+                     "two-fold inside estimation tests", "mean paired gain >= 1 points")
+    d = s.as_dict()
+    assert list(d) == ["rate_hz", "window_s", "margin", "top_k", "groups", "allow_anywhere",
+                       "workers", "cross_validation", "rule"]
+    assert d["window_s"] == [0.01, 0.15]  # a JSON array, as before
+    text = json.dumps(d, indent=1)
+    back = LoopSettings.from_dict(json.loads(text))
+    assert back == s and json.dumps(back.as_dict(), indent=1) == text
+
+
+def test_the_bundled_report_json_reads_back_to_the_same_text():
+    """The example loop report's residual tests and settings, read back and written again,
+    are the same JSON text."""
+    report = json.loads((EXAMPLE / "report.json").read_text())
+    for label, tests in report["residual_tests"].items():
+        assert json.dumps(CorrelationTests.from_dict(tests).as_dict(), indent=1) == json.dumps(
+            tests, indent=1), label
+    assert json.dumps(LoopSettings.from_dict(report["settings"]).as_dict(), indent=1) == (
+        json.dumps(report["settings"], indent=1))

@@ -65,8 +65,8 @@ def _print_event(ev: EventAnalysis) -> None:
     print(line)
     if ev.iso18571 is not None:
         iso = ev.iso18571
-        print(f"    ISO/TS 18571 overall rating: CR {iso['cr']['overall']:.3f}  "
-              f"CD {iso['cd']['overall']:.3f} (0..1; corridor, phase, magnitude, slope "
+        print(f"    ISO/TS 18571 overall rating: CR {iso.cr.overall:.3f}  "
+              f"CD {iso.cd.overall:.3f} (0..1; corridor, phase, magnitude, slope "
               "in analysis.json)")
     if ev.invalid_ticks:
         v = ev.fit_vs_reference_valid

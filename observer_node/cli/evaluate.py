@@ -47,8 +47,8 @@ def _do_evaluate(a: argparse.Namespace) -> int:
         if iso:
             print("\nISO/TS 18571 overall rating (0..1) on the fit window:")
             for name, r in iso.tests.items():
-                print(f"  {name:<12} CR {r['cr']['overall']:.3f} ({grade(r['cr']['overall'])})"
-                      f"  CD {r['cd']['overall']:.3f} ({grade(r['cd']['overall'])})")
+                print(f"  {name:<12} CR {r.cr.overall:.3f} ({grade(r.cr.overall)})"
+                      f"  CD {r.cd.overall:.3f} ({grade(r.cd.overall)})")
         else:
             print("\n(ISO/TS 18571 ratings: pip install 'chest-observer[iso18571]')")
         print(f"wrote {out / 'fits.json'} and plots in {out}")

@@ -15,6 +15,7 @@ from __future__ import annotations
 
 from collections.abc import Callable
 from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
 from scipy import optimize
@@ -40,35 +41,94 @@ def _xcorr(a: np.ndarray, b: np.ndarray, lag: int) -> float:
     return float(np.dot(a[:lag], b[-lag:])) / len(a)
 
 
-def correlation_tests(resid: np.ndarray, data: Dataset) -> dict:
-    """Autocorrelation and input cross-correlation of the residual, per output.
+@dataclass(frozen=True)
+class OutputCorrelation:
+    """One output's residual: its lag-1 autocorrelation, the share of lags 1..L outside the
+    white band, and with each input (the crash pulse, the BRS rate) the largest and the RMS
+    over lags of the |cross-correlation| as a ratio to Ljung's coloured band (> 1 means
+    significant)."""
 
-    ``resid`` is (tests, n_window, 2). Returns per output: lag-1 autocorrelation, share of
-    lags 1..L outside the white band, and the largest |cross-correlation| with each input as a
-    ratio to Ljung's coloured band (> 1 means significant)."""
-    inputs = {"pulse": data.pulse_g[:, data.win],
-              "brs_rate": np.diff(data.brs_rad, axis=1, prepend=data.brs_rad[:, :1])[:, data.win]}
-    out = {}
-    for k, name in enumerate(("cr", "cd")):
+    lag1_autocorrelation: float
+    share_of_lags_outside_white_band: float
+    xcorr_pulse_ratio: float
+    xcorr_pulse_rms_ratio: float
+    xcorr_brs_rate_ratio: float
+    xcorr_brs_rate_rms_ratio: float
+
+    @property
+    def max_ratio(self) -> float:
+        """The largest cross-correlation / band over the inputs."""
+        return max(self.xcorr_pulse_ratio, self.xcorr_brs_rate_ratio)
+
+    def as_dict(self) -> dict[str, float]:
+        return {"lag1_autocorrelation": self.lag1_autocorrelation,
+                "share_of_lags_outside_white_band": self.share_of_lags_outside_white_band,
+                "xcorr_pulse_ratio": self.xcorr_pulse_ratio,
+                "xcorr_pulse_rms_ratio": self.xcorr_pulse_rms_ratio,
+                "xcorr_brs_rate_ratio": self.xcorr_brs_rate_ratio,
+                "xcorr_brs_rate_rms_ratio": self.xcorr_brs_rate_rms_ratio}
+
+    @classmethod
+    def from_dict(cls, d: dict[str, float]) -> OutputCorrelation:
+        return cls(d["lag1_autocorrelation"], d["share_of_lags_outside_white_band"],
+                   d["xcorr_pulse_ratio"], d["xcorr_pulse_rms_ratio"],
+                   d["xcorr_brs_rate_ratio"], d["xcorr_brs_rate_rms_ratio"])
+
+
+@dataclass(frozen=True)
+class CorrelationTests:
+    """The residual's correlation tests per output: chest acceleration CR, deflection CD."""
+
+    cr: OutputCorrelation
+    cd: OutputCorrelation
+
+    @property
+    def max_ratio(self) -> float:
+        """The largest cross-correlation / band over outputs and inputs."""
+        return max(self.cr.xcorr_pulse_ratio, self.cr.xcorr_brs_rate_ratio,
+                   self.cd.xcorr_pulse_ratio, self.cd.xcorr_brs_rate_ratio)
+
+    @property
+    def rms_ratio(self) -> float:
+        """Mean over outputs and inputs of the RMS cross-correlation / band."""
+        return float(np.mean([self.cr.xcorr_pulse_rms_ratio, self.cr.xcorr_brs_rate_rms_ratio,
+                              self.cd.xcorr_pulse_rms_ratio, self.cd.xcorr_brs_rate_rms_ratio]))
+
+    def as_dict(self) -> dict[str, Any]:
+        return {"cr": self.cr.as_dict(), "cd": self.cd.as_dict()}
+
+    @classmethod
+    def from_dict(cls, d: dict[str, Any]) -> CorrelationTests:
+        """An entry of report.json's ``residual_tests``, read back."""
+        return cls(OutputCorrelation.from_dict(d["cr"]), OutputCorrelation.from_dict(d["cd"]))
+
+
+def correlation_tests(resid: np.ndarray, data: Dataset) -> CorrelationTests:
+    """Autocorrelation and input cross-correlation of the residual ``resid`` (tests,
+    n_window, 2), per output."""
+    inputs = (data.pulse_g[:, data.win],
+              np.diff(data.brs_rad, axis=1, prepend=data.brs_rad[:, :1])[:, data.win])
+    out = []
+    for k in range(2):
         e = resid[:, :, k]
         e = e - e.mean(axis=1, keepdims=True)
         N = e.size
         Re = np.array([np.mean([_xcorr(t, t, lag) for t in e]) for lag in range(MAX_LAG + 1)])
         rho = Re / Re[0] if Re[0] > 0 else Re
         white_band = 2.58 / np.sqrt(N)
-        entry = {"lag1_autocorrelation": float(rho[1]),
-                 "share_of_lags_outside_white_band": float(np.mean(np.abs(rho[1:]) > white_band))}
-        for uname, u in inputs.items():
+        ratios: list[float] = []  # per input: the largest and the RMS ratio
+        for u in inputs:
             u = u - u.mean(axis=1, keepdims=True)
             Ru = np.array([np.mean([_xcorr(t, t, lag) for t in u]) for lag in range(MAX_LAG + 1)])
             P = Re[0] * Ru[0] + 2 * np.sum(Re[1:] * Ru[1:])
             band = 2.58 * np.sqrt(max(P, 1e-30) / N)
             r = [np.mean([_xcorr(a, b, lag) for a, b in zip(e, u, strict=True)])
                  for lag in range(-MAX_LAG, MAX_LAG + 1)]
-            entry[f"xcorr_{uname}_ratio"] = float(np.max(np.abs(r)) / band)
-            entry[f"xcorr_{uname}_rms_ratio"] = float(np.sqrt(np.mean(np.square(r))) / band)
-        out[name] = entry
-    return out
+            ratios += [float(np.max(np.abs(r)) / band),
+                       float(np.sqrt(np.mean(np.square(r))) / band)]
+        out.append(OutputCorrelation(float(rho[1]),
+                                     float(np.mean(np.abs(rho[1:]) > white_band)), *ratios))
+    return CorrelationTests(*out)
 
 
 @dataclass

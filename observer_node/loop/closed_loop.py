@@ -65,6 +65,7 @@ from .report import (
     EffectEvidence,
     LeftOut,
     LoopReport,
+    LoopSettings,
     LoopStep,
     ModelFit,
     OtherScope,
@@ -228,7 +229,7 @@ def _run(est_tests: list[CrashTest], val_tests: list[CrashTest], out: Path, rate
         share_before, share_after = _signature_shares(best, effects, base, fit.effects,
                                                       fit.base, resid_old, resid_new, est)
         ct_old, ct_new = correlation_tests(resid_old, est), correlation_tests(resid_new, est)
-        xc_before, xc_after = _rms_ratio(ct_old), _rms_ratio(ct_new)
+        xc_before, xc_after = ct_old.rms_ratio, ct_new.rms_ratio
         # The input cross-correlation is reported, not decisive: on simulator data it rose
         # for true effects too (what remains is discretisation error correlated with the pulse).
         # Less correlated than before, or no longer worth mentioning (< 2 % of the residual).
@@ -258,8 +259,8 @@ def _run(est_tests: list[CrashTest], val_tests: list[CrashTest], out: Path, rate
                 runner_up=runner_up, margin_points=margin_points, other_scope=other_scope,
                 input_xcorr_rms_ratio_before=round(xc_before, 2),
                 input_xcorr_rms_ratio_after=round(xc_after, 2),
-                input_xcorr_max_ratio_before=round(_max_ratio(ct_old), 2),
-                input_xcorr_max_ratio_after=round(_max_ratio(ct_new), 2)),
+                input_xcorr_max_ratio_before=round(ct_old.max_ratio, 2),
+                input_xcorr_max_ratio_after=round(ct_new.max_ratio, 2)),
             fit=Fits(**_fit3(val_fit)))
         accepted.append(entry)
         step.decision = f"accepted {best.kind} on {scope_label(best.setups)}" + (
@@ -294,15 +295,15 @@ def _run(est_tests: list[CrashTest], val_tests: list[CrashTest], out: Path, rate
         residual_tests={"baseline": tests0, "final": correlation_tests(resid_final, est)},
         first_ranking=first_ranking,
         history=history,
-        settings={"rate_hz": rate_hz, "window_s": list(window_s), "margin": margin,
-                     "top_k": top_k, "groups": [f"{n}={p}" for n, p in groups or []],
-                     "allow_anywhere": anywhere, "workers": runner.workers,
-                     "cross_validation": "two-fold inside estimation tests, each setup's "
-                     "tests alternating between the folds; per-test gains paired",
-                     "rule": f"mean paired gain >= {margin:g} points over the estimation tests, "
-                     "its 95 % t-interval above zero or a one-sided sign test p <= "
-                     f"{SIGN_P:g}, no setup's cross-validated fit lowered by more than "
-                     f"{SETUP_TOLERANCE:g} points"},
+        settings=LoopSettings(
+            rate_hz=rate_hz, window_s=window_s, margin=margin, top_k=top_k,
+            groups=[f"{n}={p}" for n, p in groups or []], allow_anywhere=anywhere,
+            workers=runner.workers,
+            cross_validation="two-fold inside estimation tests, each setup's tests "
+            "alternating between the folds; per-test gains paired",
+            rule=f"mean paired gain >= {margin:g} points over the estimation tests, its 95 % "
+            f"t-interval above zero or a one-sided sign test p <= {SIGN_P:g}, no setup's "
+            f"cross-validated fit lowered by more than {SETUP_TOLERANCE:g} points"),
         validation_tests={"baseline": baseline_val.tests, "final": final_val.tests},
         criteria={k: v.criteria for k, v in judged.items()},
         iso18571=iso if len(iso) == len(judged) else None,
@@ -515,17 +516,6 @@ def _signature_shares(c: Candidate, effects: list[dict], base: dict[str, float],
     return before, after
 
 
-def _max_ratio(tests: dict) -> float:
-    return max(v for o in tests.values() for k, v in o.items()
-               if k.startswith("xcorr") and not k.endswith("rms_ratio"))
-
-
-def _rms_ratio(tests: dict) -> float:
-    """Mean over outputs and inputs of the RMS input cross-correlation / coloured band."""
-    return float(np.mean([v for o in tests.values() for k, v in o.items()
-                          if k.endswith("rms_ratio")]))
-
-
 def _model_file(base: dict, effects: list[dict], est: Dataset, rate_hz: float,
                 gb: greybox.GreyBoxFit, setups: list[Setup]) -> ModelFile:
     """The model file the daemon runs: with effects the 6-state chest and its force input,
@@ -590,7 +580,7 @@ def _markdown(r: LoopReport) -> str:
                      f"{e.fit.cr:.1f} | {e.fit.cd:.1f} | {e.fit.total:.1f} |")
     lines += [f"| **final** | | **{f.cr:.1f}** | **{f.cd:.1f}** | **{f.total:.1f}** |", ""]
     if not r.effects:
-        lines += ["No effect was accepted: none passed the rule (" + r.settings["rule"]
+        lines += ["No effect was accepted: none passed the rule (" + r.settings.rule
                   + ").", ""]
     lines += _markdown_findings(r)
     lines += ["## Injury criteria on the validation tests", "",
@@ -606,7 +596,7 @@ def _markdown(r: LoopReport) -> str:
         mean = iso[label].mean_overall if iso is not None else None
         lines.append(f"| {'thesis grey-box' if label == 'baseline' else 'final'} | "
                      f"{err['cd_max_mm']:.1f} | {err['cr_3ms_g']:.1f} | {err['vc_max_m_s']:.2f} |"
-                     + (f" {mean['cr']:.3f} | {mean['cd']:.3f} |" if mean else ""))
+                     + (f" {mean.cr:.3f} | {mean.cd:.3f} |" if mean else ""))
     lines.append("")
     for e in r.effects:
         lines += _markdown_effect(e)
@@ -619,9 +609,9 @@ def _markdown(r: LoopReport) -> str:
               "| | lag-1 autocorr CR | CD | input xcorr / band CR | CD |", "|---|---|---|---|---|"]
     for label in ("baseline", "final"):
         t = rt[label]
-        lines.append(f"| {label} | {t['cr']['lag1_autocorrelation']:.3f} | "
-                     f"{t['cd']['lag1_autocorrelation']:.3f} | "
-                     f"{_max_ratio({'cr': t['cr']}):.2f} | {_max_ratio({'cd': t['cd']}):.2f} |")
+        lines.append(f"| {label} | {t.cr.lag1_autocorrelation:.3f} | "
+                     f"{t.cd.lag1_autocorrelation:.3f} | "
+                     f"{t.cr.max_ratio:.2f} | {t.cd.max_ratio:.2f} |")
     lines += ["", "The residual stays far from white (lag-1 autocorrelation near 1: CFC "
               "filtering colours it), so whiteness cannot decide; the cross-validated fit and "
               "the input cross-correlation against Ljung's coloured band do.", "",

@@ -11,7 +11,8 @@ from typing import Any
 from ..criteria import CriteriaComparison
 from ..data.setups import Setup
 from ..ident.metrics import Fits, OutputFits
-from ..scores import IsoRatings
+from ..iso18571 import IsoRatings
+from .analysis import CorrelationTests
 from .diagnosis import Unexplained
 from .evidence import Evidence
 from .screening import BrokenTest
@@ -274,6 +275,37 @@ class LeftOut:
 
 
 @dataclass(frozen=True)
+class LoopSettings:
+    """How the loop was run: the tick rate [Hz], the fit window [s], the margin an effect must
+    add [fit_TOT points], how many candidates a round tries, the --group patterns, whether
+    effects were tried where the setups' metadata rule them out, the worker processes, and the
+    cross-validation and the rule in words."""
+
+    rate_hz: float
+    window_s: tuple[float, float]
+    margin: float
+    top_k: int
+    groups: list[str]  # NAME=PATTERN
+    allow_anywhere: bool
+    workers: int
+    cross_validation: str
+    rule: str
+
+    def as_dict(self) -> dict[str, Any]:
+        return {"rate_hz": self.rate_hz, "window_s": list(self.window_s),
+                "margin": self.margin, "top_k": self.top_k, "groups": self.groups,
+                "allow_anywhere": self.allow_anywhere, "workers": self.workers,
+                "cross_validation": self.cross_validation, "rule": self.rule}
+
+    @classmethod
+    def from_dict(cls, d: dict[str, Any]) -> LoopSettings:
+        """report.json's ``settings``, read back."""
+        return cls(d["rate_hz"], (d["window_s"][0], d["window_s"][1]), d["margin"],
+                   d["top_k"], d["groups"], d["allow_anywhere"], d["workers"],
+                   d["cross_validation"], d["rule"])
+
+
+@dataclass(frozen=True)
 class LoopReport:
     """The thesis grey-box and the final model on the validation tests, the effects accepted
     (each with its evidence, scope, parameters and validation fit), those possible but not
@@ -294,10 +326,10 @@ class LoopReport:
     software_version: str
     estimation: list[str]  # test names
     validation: list[str]
-    residual_tests: dict[str, dict[str, dict[str, float]]]  # baseline, final: per output
+    residual_tests: dict[str, CorrelationTests]  # baseline, final (on the estimation tests)
     first_ranking: list[RankedCandidate]
     history: list[LoopStep]  # one per round of candidates
-    settings: dict[str, Any]
+    settings: LoopSettings
     validation_tests: dict[str, dict[str, OutputFits]]  # baseline, final: per test
     criteria: dict[str, dict[str, CriteriaComparison]]  # baseline, final: per test
     iso18571: dict[str, IsoRatings] | None  # baseline, final (None: not rated)
@@ -315,9 +347,10 @@ class LoopReport:
             "setups": [s.as_dict() for s in self.setups], "model": self.model,
             "baseline_model": self.baseline_model, "software_version": self.software_version,
             "estimation": self.estimation, "validation": self.validation,
-            "residual_tests": self.residual_tests,
+            "residual_tests": {k: t.as_dict() for k, t in self.residual_tests.items()},
             "first_ranking": [c.as_dict() for c in self.first_ranking],
-            "history": [s.as_dict() for s in self.history], "settings": self.settings,
+            "history": [s.as_dict() for s in self.history],
+            "settings": self.settings.as_dict(),
             "validation_tests": {k: {n: f.as_dict() for n, f in v.items()}
                                  for k, v in self.validation_tests.items()},
             "criteria": {k: {n: c.as_dict() for n, c in v.items()}

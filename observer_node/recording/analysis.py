@@ -13,6 +13,7 @@ import numpy as np
 from .. import iso18571
 from ..criteria import EURO_NCAP_CD_LIMITS_MM, CriteriaComparison, chest_criteria, compare
 from ..ident.metrics import Fits, OutputFits, fit_percent
+from ..iso18571 import OutputRatings
 from . import format as fmt
 from .reader import Recording, RecordingError
 
@@ -81,7 +82,7 @@ class EventAnalysis:
     fit_vs_reference: Fits | None = None
     fit_vs_reference_valid: ValidFits | None = None  # None also when under 11 valid ticks
     offline_fit_vs_reference: OutputFits | None = None
-    iso18571: dict[str, dict[str, float]] | None = None  # per output (cr, cd): the ratings
+    iso18571: OutputRatings | None = None  # against the reference on the window
 
     def as_dict(self) -> dict[str, Any]:
         out: dict[str, Any] = {
@@ -97,7 +98,7 @@ class EventAnalysis:
             out["offline_fit_vs_reference"] = self.offline_fit_vs_reference.as_dict()
         out["criteria"] = self.criteria.as_dict()
         if self.iso18571 is not None:
-            out["iso18571"] = self.iso18571
+            out["iso18571"] = self.iso18571.as_dict()
         return out
 
 
@@ -188,8 +189,7 @@ def _event(rec: Recording, e: int, window_s: tuple[float, float], fs: float, rat
                                             fit_percent(r[w, 1], y_off[w, 1])),
         criteria=compare(chest_criteria(y_est[m, 0], y_est[m, 1], fs),
                          chest_criteria(r[m, 0], r[m, 1], fs)),
-        iso18571={key: iso18571.rate(r[w, j], y_est[w, j], fs)
-                  for j, key in enumerate(("cr", "cd"))}
+        iso18571=iso18571.rate_outputs(r[w], y_est[w], fs)
         if ratings and iso18571.available() else None)
     return entry, t_rel, y_est, y_off, r, running & valid
 
