@@ -50,8 +50,9 @@ def _rule():
 
 def _accepted(setups: list[str] | None, rivals: bool) -> AcceptedEffect:
     rule = _rule()
+    runner_up = RunnerUp("pelvis_coupling", "all", 94.3, False, 4)
     ev = EffectEvidence(0.1234, {"SLED": 0.1234, "all": 0.05}, rule, 0.1834, 0.025, 94.0,
-                        96.0, RunnerUp("pelvis_coupling", "all", 94.3, False, 4) if rivals else None,
+                        96.0, runner_up if rivals else None,
                         1.8 if rivals else None, OtherScope("all", 95.1, 0.9) if rivals else None,
                         0.28, 0.54, 0.79, 1.68)
     return AcceptedEffect("airbag_contact", "airbag", {"kab": 2.2e4, "gap": 0.09},
