@@ -77,7 +77,7 @@ POW_B_M = (0.015, 0.025)  # webbing_power: reference stretch, chest side and up 
 V_HYST = 0.02  # m/s: webbing_hysteresis switches between its paths within this rate
 RELIEF_PA = (40e3, 10e3, 25.0)  # airbag_relief: opens at, fully open after, vent rate (1/s)
 BILIN_ON_M = 0.016  # rib_bilinear: deflection where the ribs' second load path starts
-KNEE_M = (0.008, 0.014)  # webbing_knee: knee stretch, chest side and up to the retractor
+KNEE_M = (0.022, 0.016)  # webbing_knee: knee stretch, chest side and up to the retractor
 # neck_head: small-amplitude neck stiffness (N/m; ~5.5 Hz with 5 kg), secant stiffness tripled
 # at NECK_REF_M, damping ratio. Constants, not NOMINAL keys, so sets A and B draw as before.
 NECK_K, NECK_REF_M, NECK_ZETA = 6.0e3, 0.080, 0.25
