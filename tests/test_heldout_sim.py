@@ -261,3 +261,143 @@ def test_set_b_transducer_touches_one_output(set_b: Path, case: str, hit: str,
             assert y[peak] < y0[peak] - 1 and y[peak] == pytest.approx(want, abs=0.5)
             below = y0 < eff.size - 1
             assert np.allclose(y[below], y0[below], atol=0.3)
+
+
+# ------------------------------------------------------------------ set C (cases_c.py)
+
+SET_C = heldout_sets.case_set("c")
+WATCHED_C = ("hc_broken_pulse_shift", "hc_neck_head")
+VOCABULARY_C = ("chest_stiffening", "chest_rate_damping", "belt_unloading", "belt_stiffening",
+                "airbag_contact", "pelvis_coupling", "input_delay")
+
+
+@pytest.fixture(scope="module")
+def set_c(tmp_path_factory: pytest.TempPathFactory) -> Path:
+    out = tmp_path_factory.mktemp("heldout_c")
+    assert make_sets.main(["--set", "c", "--out", str(out / "on")]) == 0
+    make_sets.make(heldout_sets.select(list(WATCHED_C), "c"), out / "off", log=False,
+                   effects_on=False)
+    return out
+
+
+def test_set_c_is_new(capsys: pytest.CaptureFixture[str]) -> None:
+    before = SET_A + SET_B
+    assert len(SET_C) == 12
+    names = [c.name for c in before + SET_C]
+    assert len(set(names)) == len(names)
+    assert not {c.seed for c in before} & {c.seed for c in SET_C}
+    assert len({c.seed for c in SET_C}) == len(SET_C)
+    mixes_before = {_mix(p) for c in before for p in (c.est, c.val)}
+    for c in SET_C:
+        assert len(c.est) == len(c.val) == 6
+        assert set(c.est) == set(c.val)  # validation on the setups the estimation saw
+        for part in (c.est, c.val):
+            assert _mix(part) not in mixes_before
+        est, _ = cases.test_names(c)
+        for e in c.effects:
+            assert e.key in physics.EFFECTS and set(e.tests) <= set(est)
+            assert set(e.setups) & set(c.est)  # acts on a setup the case has
+    assert {c.counts_per_rev for c in SET_C} - {c.counts_per_rev for c in before}
+    # no set C effect repeats a (key, size) pair of set A or B
+    assert not ({(e.key, e.size) for c in SET_C for e in c.effects}
+                & {(e.key, e.size) for c in before for e in c.effects})
+    assert make_sets.main(["--set", "c", "--out", "x", "--case", "hb_clean48"]) == 2
+    assert "unknown case 'hb_clean48' in set c" in capsys.readouterr().err
+
+
+def test_set_c_covers_the_issue_list() -> None:
+    lib, before = physics.EFFECTS, SET_A + SET_B
+    counts_before = {c.counts_per_rev for c in before}
+    clean = [c for c in SET_C if not c.effects and not c.expect and not c.expect_note]
+    assert any(c.counts_per_rev not in counts_before for c in clean)
+    # each effect of the list expected in exactly one single-effect case, caused by it alone
+    singles = [c for c in SET_C if len(c.expect) == 1 and len(c.effects) == 1]
+    named = [c.expect[0][0] for c in singles]
+    assert sorted(named) == sorted(VOCABULARY_C)
+    for c in singles:
+        (kind, scope), (e,) = c.expect[0], c.effects
+        assert lib[e.key] == kind and not e.tests and not c.expect_broken
+        assert scope == "all" if set(e.setups) >= set(c.est) else scope == "+".join(e.setups)
+    # one input delay, 1..5 ms, at a delay neither set used on either input
+    delays = {e.size for c in SET_C for e in c.effects if lib[e.key] == "input_delay"}
+    assert len(delays) == 1 and 0.001 <= min(delays) <= 0.005
+    assert not delays & {e.size for c in before for e in c.effects
+                         if lib[e.key] == "input_delay"}
+    # two effects on disjoint setups of the case, each caused by an effect on exactly those
+    (two,) = [c for c in SET_C if len(c.expect) == 2]
+    scopes = [set(s.split("+")) for _, s in two.expect]
+    assert not scopes[0] & scopes[1] and all(s <= set(two.est) for s in scopes)
+    for (name, scope), e in zip(two.expect, two.effects, strict=True):
+        assert lib[e.key] == name and set(e.setups) == set(scope.split("+"))
+    # a broken test of a kind neither set used, named, with nothing else to find
+    (broken,) = [c for c in SET_C if c.expect_broken]
+    assert not broken.expect and all(lib[e.key] == "" for e in broken.effects)
+    assert {t for e in broken.effects for t in e.tests} == set(broken.expect_broken)
+    assert not _keys([broken]) & _keys(before)
+    # physics outside the vocabulary: nothing named, the residual described
+    (odd,) = [c for c in SET_C if c.expect_note]
+    assert odd.expect_note.startswith("none named; unexplained") and not odd.expect
+    assert not odd.expect_broken and all(lib[e.key] == "" for e in odd.effects)
+    assert not _keys([odd]) & _keys(before) and "residual" in odd.notes
+
+
+def test_set_c_generates_and_reads(set_c: Path) -> None:
+    for c in SET_C:
+        est, val = cases.test_names(c)
+        truth = json.loads((set_c / "on" / c.name / "truth.json").read_text())
+        assert truth["expected"]["broken_tests"] == list(c.expect_broken)
+        assert truth["expected"]["note"] == c.expect_note
+        for part, names, setups in (("est", est, c.est), ("val", val, c.val)):
+            tests = load_tests([set_c / "on" / c.name / part])
+            assert sorted(t.name for t in tests) == sorted(names)
+            assert {t.counts_per_rev for t in tests} == {c.counts_per_rev}
+            groups = assign_setups(tests)
+            assert sorted((g.name, len(g.tests)) for g in groups) == sorted(
+                (s, setups.count(s)) for s in set(setups))
+            for t in tests:
+                assert np.all(np.isfinite(t.pulse_g)) and t.cd_mm is not None
+                assert t.cr_g is not None and t.cr_g.max() > 15 and t.cd_mm.max() > 10
+                assert np.array_equal(t.brs, np.round(t.brs)) and np.ptp(t.brs) > 5
+
+
+def test_set_c_same_seed_same_bytes(set_c: Path, tmp_path: Path) -> None:
+    c = heldout_sets.select(["hc_two_effects", "hc_clean64"], "c")
+    make_sets.make(c, tmp_path, log=False)
+    for name in ("hc_two_effects", "hc_clean64"):
+        assert _files(tmp_path / name) == _files(set_c / "on" / name)
+
+
+def test_set_c_forms_leave_sets_a_and_b_alone(tmp_path: Path) -> None:
+    """Set C's forms (and its extra states) in the same batch do not move a set A or set B
+    test by one bit."""
+    ab = heldout_sets.select(["h_lumbar"]) + heldout_sets.select(["hb_airbag_relief"], "b")
+    make_sets.make(ab, tmp_path / "alone", log=False)
+    make_sets.make(ab + [c for c in SET_C if c.effects], tmp_path / "mixed", log=False)
+    for c in ab:
+        assert _files(tmp_path / "alone" / c.name) == _files(tmp_path / "mixed" / c.name)
+
+
+def test_set_c_pulse_zero_shift_stays(set_c: Path) -> None:
+    c = heldout_sets.select(["hc_broken_pulse_shift"], "c")[0]
+    (broken,), (eff,) = c.expect_broken, c.effects
+    bad = _channel(set_c / "on" / c.name, broken, "pulse")
+    good = _channel(set_c / "off" / c.name, broken, "pulse")
+    t = -0.020 + np.arange(len(bad)) / 10_000
+    after = t >= lab.SHIFT_AT_S - 1e-9
+    assert np.array_equal(bad[~after], good[~after])
+    assert np.allclose(bad[after] - good[after], eff.size, atol=1e-5)
+    assert abs(bad[-200:].mean()) > eff.size - 1 > abs(good[-200:].mean())  # car at rest
+    _others_untouched(set_c, c.name, broken)
+
+
+def test_set_c_neck_is_physics_on_both_outputs(set_c: Path) -> None:
+    """The case outside the vocabulary moves the chest (both outputs), not one channel."""
+    c = heldout_sets.select(["hc_neck_head"], "c")[0]
+    on, off = set_c / "on" / c.name, set_c / "off" / c.name
+    for folder in sorted(on.glob("*/*")):
+        assert np.array_equal(_channel(on, folder.name, "pulse"),
+                              _channel(off, folder.name, "pulse"))
+        cr, cr0 = _channel(on, folder.name, "cr"), _channel(off, folder.name, "cr")
+        cd, cd0 = _channel(on, folder.name, "cd"), _channel(off, folder.name, "cd")
+        assert cr.max() < cr0.max() - 1  # the head pulls the spine forward: less retardation
+        assert cd.max() > cd0.max() + 1  # and the belt carries it: more deflection

@@ -5,14 +5,15 @@
   limiter) integrated by RK4 at 20 kHz, and crash pulses (R16 sled, sled with interior,
   barrier crush). Written from the physics; nothing from ``observer_node`` is imported.
 - ``lab.py``: per-test scatter of the dummy (5 % 1-sigma, clipped at 10 %), lab noise, BRS
-  counts (48 or 96 per rev), CFC 180 / 600 filters, SAE J211 signs, rig metadata.
+  counts (48, 64, 96 or 128 per rev), CFC 180 / 600 filters, SAE J211 signs, rig metadata.
 - ``iso_mme.py``: the ISO-MME writer.  ``cases.py``: set A, the held-out cases and their
   expected verdicts (now seen by the loop's engineers).  ``cases_b.py``: set B, new cases and
-  verdicts committed before the loop ran on them.  ``make_sets.py``: writes a set
-  (``--no-effects``: the same tests with every effect off).  ``costs.py``: what each case
-  costs the thesis grey-box (project CLI).
+  verdicts committed before the loop ran on them (now seen too).  ``cases_c.py``: set C, the
+  same again, on two-setup mixes, with a case outside the loop's vocabulary.
+  ``make_sets.py``: writes a set (``--no-effects``: the same tests with every effect off).
+  ``costs.py``: what each case costs the thesis grey-box (project CLI).
 
-    python -m benchmarks.heldout.make_sets --out /tmp/heldout [--set a|b] [--case NAME ...]
+    python -m benchmarks.heldout.make_sets --out /tmp/heldout [--set a|b|c] [--case NAME ...]
 
 Never tune the loop on these cases; report them apart from the tuned ones.
 """

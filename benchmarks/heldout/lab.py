@@ -28,9 +28,10 @@ DUMMY = "HYBRID III 50%ILE MALE, DRIVER SEAT"
 DV_MS = {"R16": (13.6, 14.4), "SLED": (14.0, 15.6), "FULL": (14.3, 16.2)}
 # stated exactly, no per-test scatter: times, ranges, and one transducer's calibration
 EXACT = {"pulse_late", "brs_late", "brs_freeze", "cd_dropout", "pulse_rail", "pulse_gain",
-         "cr_gain", "cd_knee"}
+         "cr_gain", "cd_knee", "pulse_zero_shift"}
 DROPOUT_S = 0.010  # how long cd_dropout's wiper stays off the track
 KNEE_SLOPE = 0.6  # cd_knee: the gain of the CD calibration's second segment
+SHIFT_AT_S = 0.011  # pulse_zero_shift: when the zero shifts (in the crash-box spike)
 NOISE = {"pulse_g": 0.6, "cr_g": 0.55, "cd_mm": 0.10}  # white, before the CFC filters
 
 
@@ -100,6 +101,8 @@ def record(d: Drawn, i: int, sim: dict[str, np.ndarray], counts_per_rev: int,
     pulse = np.interp(t + e["pulse_late"], tg, sim["pulse"][i]) / ph.G
     if e["pulse_gain"]:  # the accelerometer's sensitivity entered wrong
         pulse = pulse * (1.0 + e["pulse_gain"])
+    if e["pulse_zero_shift"]:  # a shock shifts the sensor's zero: it stays shifted
+        pulse = pulse + e["pulse_zero_shift"] * (t >= SHIFT_AT_S)
     pulse = pulse + NOISE["pulse_g"] * rng.standard_normal(t.size)
     if e["pulse_rail"]:  # amplifier range set too low: the channel clips at its rails
         pulse = np.clip(pulse, -e["pulse_rail"], e["pulse_rail"])

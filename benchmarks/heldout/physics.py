@@ -64,10 +64,23 @@ EFFECTS = {
     "pulse_rail": "",  # broken test: pulse channel clips at this range (g)
     "cr_gain": "",  # transducer: CR sensitivity error (relative), CD untouched
     "cd_knee": "",  # transducer: CD reads at 0.6 gain beyond this knee (mm), CR untouched
+    # set C's forms (cases_c.py)
+    "rib_bilinear": "chest_stiffening",  # rib stiffness grows by this x k_r past BILIN_ON_M
+    "rib_valve": "chest_rate_damping",  # F += c d'^2 while compressing only (N/(m/s)^2)
+    "webbing_set": "belt_unloading",  # chest side unloads to a set of this x its peak stretch
+    "webbing_knee": "belt_stiffening",  # webbing stiffness grows by this x k past KNEE_M
+    "airbag_sealed": "airbag_contact",  # unvented gas bag (fill scale of the vented one's)
+    "pulse_zero_shift": "",  # broken test: pulse channel zero shifts by this at SHIFT_AT_S (g)
+    "neck_head": "",  # head and upper neck on the spine through a soft neck (mass, kg)
 }
 POW_B_M = (0.015, 0.025)  # webbing_power: reference stretch, chest side and up to the retractor
 V_HYST = 0.02  # m/s: webbing_hysteresis switches between its paths within this rate
 RELIEF_PA = (40e3, 10e3, 25.0)  # airbag_relief: opens at, fully open after, vent rate (1/s)
+BILIN_ON_M = 0.016  # rib_bilinear: deflection where the ribs' second load path starts
+KNEE_M = (0.022, 0.016)  # webbing_knee: knee stretch, chest side and up to the retractor
+# neck_head: small-amplitude neck stiffness (N/m; ~5.5 Hz with 5 kg), secant stiffness tripled
+# at NECK_REF_M, damping ratio. Constants, not NOMINAL keys, so sets A and B draw as before.
+NECK_K, NECK_REF_M, NECK_ZETA = 6.0e3, 0.080, 0.25
 
 # Nominal Hybrid-III-like thorax, belt and retractor (SI), before per-test scatter.
 NOMINAL = {
@@ -104,13 +117,13 @@ class Batch:
     vv: np.ndarray  # vehicle velocity change, m/s
 
 
-N_STATE = 14  # x vx sa va sb vb u vu th om L p vp q
+N_STATE = 17  # x vx sa va sb vb u vu th om L p vp q, chest-side peak stretch, head, its speed
 
 
 def _deriv(b: Batch, j: np.ndarray | int, y: np.ndarray) -> np.ndarray:
     p, e = b.p, b.eff
     t = _stage_time(j)
-    x, vx, sa, va, sb, vb, u, vu, th, om, lk, pp, vp, q = y
+    x, vx, sa, va, sb, vb, u, vu, th, om, lk, pp, vp, q, pk, hh, vh = y
     if np.ndim(j) == 0:
         xv, vv = b.xv[:, [int(j)]], b.vv[:, [int(j)]]  # (n, 1)
     else:
@@ -138,6 +151,14 @@ def _deriv(b: Batch, j: np.ndarray | int, y: np.ndarray) -> np.ndarray:
     if np.any(cv):
         fa = fa + cv * np.sign(dva) * np.abs(dva) ** 1.5
         fb = fb + cv * np.sign(dvb) * np.abs(dvb) ** 1.5
+    kl = e["rib_bilinear"]
+    if np.any(kl):
+        fa = fa + kl * p["k_ra"] * np.sign(da) * np.maximum(np.abs(da) - BILIN_ON_M, 0.0)
+        fb = fb + kl * p["k_rb"] * np.sign(db) * np.maximum(np.abs(db) - BILIN_ON_M, 0.0)
+    cvv = e["rib_valve"]
+    if np.any(cvv):  # resists compression (d' > 0) only
+        fa = fa + cvv * np.maximum(dva, 0.0) ** 2
+        fb = fb + cvv * np.maximum(dvb, 0.0) ** 2
     fab = p["k_ab"] * (sa - sb) + p["c_ab"] * (va - vb)
 
     # belt, chest side: pushes the contact point of the sternum rearward
@@ -156,6 +177,15 @@ def _deriv(b: Batch, j: np.ndarray | int, y: np.ndarray) -> np.ndarray:
     hy = e["webbing_hysteresis"]
     if np.any(hy):  # a softer elastic path while the segment shortens
         el = el * (1.0 - hy * 0.5 * (1.0 - np.tanh((vu - vc) / V_HYST)))
+    kn = e["webbing_knee"]
+    if np.any(kn):
+        el = el + kn * p["k_b"] * np.maximum(ext - KNEE_M[0], 0.0)
+    st = e["webbing_set"]
+    if np.any(st):  # below its peak stretch the webbing unloads to a permanent set
+        peak = np.maximum(pk, ext)
+        s0 = st * peak
+        unl = p["k_b"] * peak * np.maximum(ext - s0, 0.0) / np.maximum(peak - s0, 1e-9)
+        el = np.where((st > 0) & (peak > 1e-6) & (ext < peak), unl, el)
     fc = el + p["c_b"] * (vu - vc)
 
     # webbing to the retractor: retracted length grows with the spool radius
@@ -170,6 +200,8 @@ def _deriv(b: Batch, j: np.ndarray | int, y: np.ndarray) -> np.ndarray:
         tr = tr + toe * p["k_up"] * e1 * (np.expm1(z1) - z1)
     if np.any(pw):
         tr = tr + pw * p["k_up"] * np.maximum(stretch, 0.0) ** 3 / POW_B_M[1] ** 2
+    if np.any(kn):
+        tr = tr + kn * p["k_up"] * np.maximum(stretch - KNEE_M[1], 0.0)
     if np.any(hy):  # its elastic part only: the damping stays as it is
         el_up = tr - p["c_up"] * (vv + r * om - vu)
         tr = tr - el_up * hy * 0.5 * (1.0 - np.tanh((vv + r * om - vu) / V_HYST))
@@ -203,6 +235,9 @@ def _deriv(b: Batch, j: np.ndarray | int, y: np.ndarray) -> np.ndarray:
     relief = e["airbag_relief"]  # the same, for a bag with a pressure-relief vent
     if np.any(relief):
         bag = bag + relief
+    sealed = e["airbag_sealed"]  # the same, for a bag without vents
+    if np.any(sealed):
+        bag = bag + sealed
     if np.any(bag):
         pen = np.maximum((xv - x) - p["gap_bag"], 0.0)
         deployed = (t > p["t_bag"] + 0.025) & (bag > 0)
@@ -215,14 +250,30 @@ def _deriv(b: Batch, j: np.ndarray | int, y: np.ndarray) -> np.ndarray:
         if np.any(relief):  # closed below its opening pressure, then vents fast
             opening = np.clip((p_g - RELIEF_PA[0]) / RELIEF_PA[1], 0.0, 1.0)
             dq = np.where(deployed & (relief > 0), -RELIEF_PA[2] * q * opening, dq)
+        if np.any(sealed):  # no vent: the gas only compresses
+            dq = np.where(sealed > 0, 0.0, dq)
+
+    # optional: head and upper neck, tied to the spine only (pulls it forward as it lags)
+    fn = np.zeros_like(x)
+    dvh = np.zeros_like(x)
+    mh = e["neck_head"]
+    if np.any(mh):
+        z = hh - x
+        c_n = 2.0 * NECK_ZETA * np.sqrt(NECK_K * mh)
+        fn = NECK_K * z * (1.0 + 2.0 * (z / NECK_REF_M) ** 2) + c_n * (vh - vx)
+        fn = np.where(mh > 0, fn, 0.0)
+        dvh = -fn / np.where(mh > 0, mh, 1.0)
 
     f_st = p["f_st_bag"]
     dvx = (fa + fb + fl + (1 - f_st) * fbag) / p["m_sp"]
+    if np.any(mh):
+        dvx = dvx + fn / p["m_sp"]
     dva = (-fa - fab + p["beta"] * fc + 0.5 * f_st * fbag) / p["m_a"]
     dvb = (-fb + fab + (1 - p["beta"]) * fc + 0.5 * f_st * fbag) / p["m_b"]
     dvu = (tr - fc - fr) / p["m_u"]
     dom = (tau_pt - r * np.maximum(tr, 0.0) + tau_tb - p["c_spool"] * om) / p["J"]
-    return np.stack([vx, dvx, va, dva, vb, dvb, vu, dvu, om, dom, dlk, vp, dvp, dq])
+    return np.stack([vx, dvx, va, dva, vb, dvb, vu, dvu, om, dom, dlk, vp, dvp, dq,
+                     np.zeros_like(x), vh, dvh])
 
 
 def simulate(b: Batch) -> dict[str, np.ndarray]:
@@ -245,6 +296,8 @@ def simulate(b: Batch) -> dict[str, np.ndarray]:
             y = y + (h / 6.0) * (k1 + 2 * k2 + 2 * k3 + k4)
             locked = _stage_time(j + 2) >= b.p["t_lock"]
             y[10] = np.where(locked, np.maximum(y[10], y[8]), y[8])  # ratchet follows pay-in
+            beta = b.p["beta"]  # webbing_set's peak chest-side stretch so far
+            y[14] = np.maximum(y[14], y[6] - (beta * y[2] + (1 - beta) * y[4]))
         keep[:, :, i] = y[:, :, 0]
     jj = np.arange(N_SAMPLES) * GRID
     d = _deriv(b, jj, keep)

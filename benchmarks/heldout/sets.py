@@ -1,20 +1,24 @@
 """The held-out sets by name: set A (``cases``), set B (``cases_b``, written after set A had
-been looked at by the loop's engineers, kept from them until the loop ran on it)."""
+been looked at by the loop's engineers, kept from them until the loop ran on it), set C
+(``cases_c``, written after set B had been looked at, the same way)."""
 
 from __future__ import annotations
 
 from .cases import CASES, Case
 from .cases_b import SET_B
+from .cases_c import SET_C
 
-SETS = ("a", "b")
+SETS = ("a", "b", "c")
 
 
 def case_set(name: str) -> list[Case]:
-    """Set A (this module) or set B (``cases_b``); ValueError for another name."""
+    """Set A (``cases``), B (``cases_b``) or C (``cases_c``); ValueError for another name."""
     if name == "a":
         return list(CASES)
     if name == "b":
         return list(SET_B)
+    if name == "c":
+        return list(SET_C)
     raise ValueError(f"unknown case set {name!r}; known: {', '.join(SETS)}")
 
 
