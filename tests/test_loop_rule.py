@@ -175,9 +175,17 @@ def test_a_runner_up_the_data_cannot_tell_from_the_winner_is_said_so():
     # the winner is ahead on average, but on 3 of 6 tests only
     per_test = {id(win): _cv([3.4, 3.0, 3.8, 4.1, 2.0, 3.6])[1],
                 id(rival): _cv([4.6, 3.6, 1.6, 4.0, 3.4, 3.8])[1]}
-    ru, margin, _ = _rival([(93.3, win), (93.2, rival)], per_test)
+    ev = judge(*_cv([4.6, 3.6, 1.6, 4.0, 3.4, 3.8]), SETUPS, None, 1.0)  # it passes too
+    ru, margin, _ = _rival([(93.3, win, ev), (93.2, rival, ev)], per_test)
     assert ru is not None and ru.kind == "pelvis_coupling"
     assert ru.told_apart is False and ru.tests_better == 2 and margin == 0.1
+    assert ru.passes_rule and ru.rival
+    # a runner-up far behind on every test is told apart, and one that fails the rule is
+    # no rival whatever the paired test says
     per_test[id(rival)] = _cv([1.0, 1.2, 0.9, 1.1, 1.0, 1.3])[1]
-    ru, _, _ = _rival([(93.3, win), (91.1, rival)], per_test)
-    assert ru is not None and ru.told_apart is True and ru.tests_better == 6
+    ru, _, _ = _rival([(93.3, win, ev), (91.1, rival, ev)], per_test)
+    assert ru is not None and ru.told_apart is True and ru.tests_better == 6 and not ru.rival
+    weak = judge(*_cv([0.4, 0.2, -0.1, 0.3, 0.0, 0.2]), SETUPS, None, 1.0)
+    per_test[id(rival)] = _cv([3.5, 3.1, 3.7, 4.0, 2.1, 3.5])[1]
+    ru, _, _ = _rival([(93.3, win, ev), (93.2, rival, weak)], per_test)
+    assert ru is not None and ru.told_apart is False and not ru.passes_rule and not ru.rival

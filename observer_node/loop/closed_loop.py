@@ -245,7 +245,7 @@ def _run(est_tests: list[CrashTest], val_tests: list[CrashTest], out: Path, rate
         val_fit = score(base, effects, val)
         params, se = effects[-1]["parameters"], fit.effect_std_err[-1]
         runner_up, margin_points, other_scope = _rival(
-            [(cv_best, best), *((cv, c) for cv, c, _ in tried if c is not best)], per_test)
+            [(cv_best, best, ev_best), *(t for t in tried if t[1] is not best)], per_test)
         entry = AcceptedEffect(
             kind=best.kind, description=describe(best.kind, params), parameters=params,
             std_err=se, setups=best.setups, applies_to=_applies_to(best.setups, est, val),
@@ -429,23 +429,26 @@ def _applies_to(scope: list[str] | None, est: Dataset, val: Dataset) -> list[str
     return [n for d in (est, val) for n, s in zip(d.names, d.setups, strict=True) if s in scope]
 
 
-def _rival(tried: list[tuple[float, Candidate]], per_test: dict[int, dict[str, float]]
+def _rival(tried: list[tuple[float, Candidate, Evidence]],
+           per_test: dict[int, dict[str, float]]
            ) -> tuple[RunnerUp | None, float | None, OtherScope | None]:
     """The runner-up (the best of another kind), whether the winner beats it test by test
-    above the scatter, and the margin [points] to it, and the winner on its other scope;
-    ``tried``: (cv fit_TOT [%], candidate), the winner first; ``per_test``: each candidate's
-    per-test cross-validated fit_TOT [%] by ``id``."""
-    cv_best, best = tried[0]
+    above the scatter and whether it passes the rule itself, the margin [points] to it, and
+    the winner on its other scope; ``tried``: (cv fit_TOT [%], candidate, its evidence), the
+    winner first; ``per_test``: each candidate's per-test cross-validated fit_TOT [%] by
+    ``id``."""
+    cv_best, best, _ = tried[0]
     runner_up, margin, other_scope = None, None, None
-    other = next(((cv, c) for cv, c in tried if c.kind != best.kind), None)
+    other = next(((cv, c, ev) for cv, c, ev in tried if c.kind != best.kind), None)
     if other is not None:
         a, b = per_test[id(best)], per_test[id(other[1])]
         told_apart, _, _, better, _ = above_scatter(
             np.array([a[n] - b[n] for n in a if n in b], float))
         runner_up = RunnerUp(other[1].kind, scope_label(other[1].setups), round(other[0], 2),
-                             told_apart, better)
+                             told_apart, better, other[2].accepted)
         margin = round(cv_best - other[0], 2)
-    scope = next(((cv, c) for cv, c in tried if c.kind == best.kind and c is not best), None)
+    scope = next(((cv, c) for cv, c, _ in tried if c.kind == best.kind and c is not best),
+                 None)
     if scope is not None:
         other_scope = OtherScope(scope_label(scope[1].setups), round(scope[0], 2),
                                  round(cv_best - scope[0], 2))
@@ -634,9 +637,10 @@ def _markdown_effect(e: AcceptedEffect) -> list[str]:
         if ru.told_apart is not None:
             n = len(ev.rule.test_gain_points)
             rival += (f"; {e.kind} fits better on {ru.tests_better} of {n} estimation tests, "
-                      + ("above the scatter" if ru.told_apart else
-                         f"**not above the scatter: the data cannot tell {e.kind} from "
-                         f"{ru.kind}**"))
+                      + ("above the scatter" if ru.told_apart else "not above the scatter")
+                      + (f"; **{ru.kind} passes the rule too: the data cannot tell the two "
+                         "apart**" if ru.rival else
+                         "" if ru.passes_rule else f"; {ru.kind} does not pass the rule"))
     if ev.other_scope is not None:
         os_ = ev.other_scope
         rival += (("\n" if rival else "") + f"- on {os_.scope} instead it "

@@ -26,15 +26,22 @@ class RunnerUp:
     scope: str  # its setups joined by "+", or "all"
     cv_fit: float  # its mean cross-validated fit_TOT [%] (rounded to 0.01)
     # Whether the accepted effect beats it test by test above the scatter (the rule's paired
-    # interval or sign test), and on how many estimation tests it fits better; None in reports
-    # written before 2026-11-24.
+    # interval or sign test), on how many estimation tests it fits better, and whether the
+    # runner-up passes the rule itself; None in reports written before 2026-11-24.
     told_apart: bool | None = None
     tests_better: int | None = None
+    passes_rule: bool | None = None
 
     def as_dict(self) -> dict[str, Any]:
         return {"kind": self.kind, "scope": self.scope, "cv_fit": self.cv_fit,
-                **({"told_apart": self.told_apart, "tests_better": self.tests_better}
-                   if self.told_apart is not None else {})}
+                **({"told_apart": self.told_apart, "tests_better": self.tests_better,
+                    "passes_rule": self.passes_rule} if self.told_apart is not None else {})}
+
+    @property
+    def rival(self) -> bool:
+        """The runner-up passes the rule too and the data cannot tell it from the accepted
+        effect: the accepted one is then one of two explanations, not a finding on its own."""
+        return bool(self.passes_rule) and self.told_apart is False
 
 
 @dataclass(frozen=True)
