@@ -62,7 +62,7 @@ def _broken(test, **arrays):
 
 
 @pytest.mark.parametrize("fault", ["frozen_brs", "nan_cd", "spike_cr", "saturated_cd",
-                                   "frozen_cd"])
+                                   "frozen_cd", "zero_shift_pulse"])
 def test_a_broken_channel_is_named(campaign, fault):
     t = next(x for x in campaign if x.name == "R16_003")
     i = t.index_of(0.030)
@@ -83,6 +83,10 @@ def test_a_broken_channel_is_named(campaign, fault):
         cd = t.cd_mm.copy()
         lim = 0.7 * np.max(cd)  # the amplifier's range ends below the peak compression
         b, channel = _broken(t, cd_mm=np.minimum(cd, lim)), "cd"
+    elif fault == "zero_shift_pulse":  # the accelerometer's zero moves by 3 g in the crash
+        pulse = t.pulse_g.copy()
+        pulse[t.index_of(0.012):] += 3.0
+        b, channel = _broken(t, pulse_g=pulse), "pulse"
     else:
         cd = t.cd_mm.copy()
         cd[i:i + 40] = cd[i]
@@ -90,6 +94,17 @@ def test_a_broken_channel_is_named(campaign, fault):
     found = screen_channels(b, 0.15)
     assert [f.channel for f in found] == [channel], found
     assert found[0].test == "R16_003" and found[0].reason
+
+
+def test_a_pulse_still_decelerating_at_rest_needs_a_record_after_the_crash(campaign):
+    # without samples well after the scoring window there is no rest to judge the zero by
+    t = next(x for x in campaign if x.name == "R16_003")
+    pulse = t.pulse_g.copy()
+    pulse[t.index_of(0.012):] += 3.0
+    end = t.index_of(0.16)
+    short = _broken(t, pulse_g=pulse[:end], brs=t.brs[:end], cr_g=t.cr_g[:end],
+                    cd_mm=t.cd_mm[:end])
+    assert [f.channel for f in screen_channels(short, 0.15)] == []
 
 
 def test_a_test_far_below_the_others_is_an_outlier():
