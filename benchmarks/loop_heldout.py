@@ -9,7 +9,8 @@ verdicts before the loop ran on them. Nothing in the loop is tuned on them.
 Per case the loop runs blind at its defaults on 6 estimation + 6 validation tests. Printed:
 
 - what it named (kind@scope, scopes as the simulator's setups; "?" where the runner-up passes the
-  rule too and the data cannot tell the two apart), the tests it flagged, and
+  rule too and the data cannot tell the two apart, "!" where the validation tests do not
+  confirm it), the tests it flagged, and
   whether that is the expected verdict (for the transducer case: nothing physical named and
   "unexplained" or a sensor effect on CD);
 - the validation fit_TOT before and after;
@@ -18,8 +19,8 @@ Per case the loop runs blind at its defaults on 6 estimation + 6 validation test
   starting values and, where the loop named the same structure, from the loop's own result;
   the better of the two, scored on the same validation tests;
 - the gap (reachable - after) and the loop's time;
-- at the end: how many cases are right, and how many named effects are not there (and of
-  those, how many are marked "?").
+- at the end: how many cases are right, and how many named effects are there and not there,
+  and of each how many are marked "?" and "!".
 
     python -m benchmarks.loop_heldout [--set a|b|c] [--cases NAME ...] [--sets DIR] [--out DIR]
                                       [--workers N] [--json FILE]
@@ -94,6 +95,9 @@ def run_case(case: Case, sets: Path, work: Path, workers: int | None) -> dict:
     # named, but its runner-up passes the rule too and the data cannot tell the two apart
     untold = sorted(f"{e.kind}@{_sim_scope(e.setups or [], r)}" for e in r.effects
                     if e.evidence.runner_up is not None and e.evidence.runner_up.rival)
+    # named, but the validation tests do not confirm it (a warning in the report)
+    unconfirmed = sorted(f"{e.kind}@{_sim_scope(e.setups or [], r)}" for e in r.effects
+                         if any("do not confirm" in w for w in e.warnings))
     expected = sorted(f"{k}@{'+'.join(sorted(s.split('+')))}" for k, s in case.expect)
     flagged = sorted({w.test for w in r.warnings})
     sensor = [s.output for s in r.sensor_effects]
@@ -104,6 +108,7 @@ def run_case(case: Case, sets: Path, work: Path, workers: int | None) -> dict:
         right = right and (output in sensor or output in unexpl)
     row = {"case": case.name, "found": found, "expected": expected, "flagged": flagged,
            "sensor": sensor, "unexplained": unexpl, "right": right, "untold": untold,
+           "unconfirmed": unconfirmed,
            "before": r.baseline.fit.total, "after": r.final.fit.total,
            "seconds": seconds, "possible": [f"{p.kind}@{p.scope}" for p in r.possible]}
     row["reachable"] = _reachable(case, r, est, val, found == expected)
@@ -160,6 +165,7 @@ def main() -> None:
         rows.append(row)
         reach = row.get("reachable", math.nan)
         named = ", ".join(f + ("?" if f in row["untold"] else "")
+                          + ("!" if f in row["unconfirmed"] else "")
                           for f in row["found"]) or "(none)"
         if row["sensor"]:
             named += f"; sensor: {','.join(row['sensor'])}"
@@ -179,11 +185,13 @@ def main() -> None:
     both = sum(r["right"] and r["reachable"] - r["after"] <= 2.0 for r in rows)
     print(f"right: {ok}/{len(rows)}; within 2 points of reach: {close}/{len(rows)}; "
           f"both: {both}/{len(rows)}", flush=True)
-    extra = [(f, f in r["untold"]) for r in rows for f in r["found"] if f not in r["expected"]]
-    true = [(f, f in r["untold"]) for r in rows for f in r["found"] if f in r["expected"]]
-    print(f"named but not there: {len(extra)}, of them marked ? (a runner-up that passes "
-          f"too, not told apart): {sum(u for _, u in extra)}; named and there: {len(true)}, "
-          f"of them marked ?: {sum(u for _, u in true)}", flush=True)
+    for there in (False, True):
+        named = [(f in r["untold"], f in r["unconfirmed"]) for r in rows for f in r["found"]
+                 if (f in r["expected"]) == there]
+        print(f"named and {'there' if there else 'not there'}: {len(named)}, marked ? (a "
+              f"runner-up that passes too, not told apart): {sum(u for u, _ in named)}, "
+              f"marked ! (the validation tests do not confirm it): "
+              f"{sum(c for _, c in named)}", flush=True)
 
 
 if __name__ == "__main__":

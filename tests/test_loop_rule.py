@@ -204,3 +204,11 @@ def test_a_runner_up_the_data_cannot_tell_from_the_winner_is_said_so():
     per_test[id(rival)] = _cv([3.5, 3.1, 3.7, 4.0, 2.1, 3.5])[1]
     ru, _, _ = _rival([(93.3, win, ev), (93.2, rival, weak)], per_test)
     assert ru is not None and ru.told_apart is False and not ru.passes_rule and not ru.rival
+
+
+def test_an_effect_the_validation_tests_do_not_confirm_carries_a_warning():
+    from observer_node.loop.closed_loop import validation_warning
+    [w] = validation_warning(88.5, 87.5)
+    assert "do not confirm" in w and "88.5 to 87.5" in w
+    assert validation_warning(88.5, 88.3) == []  # refit noise
+    assert validation_warning(88.5, 92.0) == []

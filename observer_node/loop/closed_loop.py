@@ -153,6 +153,7 @@ def _run(est_tests: list[CrashTest], val_tests: list[CrashTest], out: Path, rate
     base_se: dict[str, float] = dict(gb.std_err)
     effects: list[dict] = []
     baseline_val = score(base, effects, val)
+    val_before = baseline_val.fit.total
     folds_ = folds(est)
     cv_now = _cv(runner, [(base, effects)], est, folds_)[0]
     history: list[LoopStep] = []
@@ -249,7 +250,8 @@ def _run(est_tests: list[CrashTest], val_tests: list[CrashTest], out: Path, rate
         entry = AcceptedEffect(
             kind=best.kind, description=describe(best.kind, params), parameters=params,
             std_err=se, setups=best.setups, applies_to=_applies_to(best.setups, est, val),
-            warnings=parameter_warnings(best.kind, params, se, rate_hz),
+            warnings=[*parameter_warnings(best.kind, params, se, rate_hz),
+                      *validation_warning(val_before, val_fit.fit.total)],
             confidence=ev_best.confidence,
             evidence=EffectEvidence(
                 ranking_share=round(best.explained, 4), scope_shares=best.scope_shares,
@@ -263,6 +265,7 @@ def _run(est_tests: list[CrashTest], val_tests: list[CrashTest], out: Path, rate
                 input_xcorr_max_ratio_after=round(ct_new.max_ratio, 2)),
             fit=Fits(**_fit3(val_fit)))
         accepted.append(entry)
+        val_before = val_fit.fit.total
         step.decision = f"accepted {best.kind} on {scope_label(best.setups)}" + (
             f" (on {narrower} only it fits no better beyond the scatter)" if narrower else "")
         prog.update(f"accepted {best.kind} on {scope_label(best.setups)}: validation fit "
@@ -453,6 +456,19 @@ def _rival(tried: list[tuple[float, Candidate, Evidence]],
         other_scope = OtherScope(scope_label(scope[1].setups), round(scope[0], 2),
                                  round(cv_best - scope[0], 2))
     return runner_up, margin, other_scope
+
+
+VALIDATION_TOLERANCE = 0.3  # fit points: as SETUP_TOLERANCE, refit noise
+
+
+def validation_warning(fit_before: float, fit_after: float) -> list[str]:
+    """A warning when the validation tests' fit_TOT [%] falls as an effect is accepted. The
+    rule never sees these tests, so they are not used to decide, only to tell the engineer
+    that the estimation tests' verdict does not carry over."""
+    if fit_after >= fit_before - VALIDATION_TOLERANCE:
+        return []
+    return [f"the validation tests, which the rule never sees, do not confirm it: their "
+            f"fit_TOT fell from {fit_before:.1f} to {fit_after:.1f} %"]
 
 
 def parameter_warnings(kind: str, params: dict, std_err: dict[str, float],
