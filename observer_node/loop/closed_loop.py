@@ -58,7 +58,7 @@ from .analysis import (
 )
 from .cluster import Runner, cluster
 from .diagnosis import sensor_fold_scores, unexplained
-from .evidence import POSSIBLE_MIN, SETUP_TOLERANCE, SIGN_P, Evidence, above_scatter, judge
+from .evidence import POSSIBLE_MIN, SETUP_TOLERANCE, SIGN_P, Evidence, beats, judge
 from .refit import fold_scores, folds, model, refit, score
 from .report import (
     AcceptedEffect,
@@ -408,11 +408,8 @@ def _defended_scope(passing: list[tuple[float, Candidate, Evidence]],
     for entry in passing[1:]:
         c = entry[1]
         wider = best.setups is not None and (c.setups is None or set(best.setups) < set(c.setups))
-        if c.kind == best.kind and wider:
-            a, b = per_test[id(best)], per_test[id(c)]
-            diff = np.array([a[n] - b[n] for n in a if n in b], float)
-            if not above_scatter(diff)[0]:
-                return entry, scope_label(best.setups)
+        if c.kind == best.kind and wider and not beats(per_test[id(best)], per_test[id(c)])[0]:
+            return entry, scope_label(best.setups)
     return passing[0], ""
 
 
@@ -444,9 +441,7 @@ def _rival(tried: list[tuple[float, Candidate, Evidence]],
     runner_up, margin, other_scope = None, None, None
     other = next(((cv, c, ev) for cv, c, ev in tried if c.kind != best.kind), None)
     if other is not None:
-        a, b = per_test[id(best)], per_test[id(other[1])]
-        told_apart, _, _, better, _ = above_scatter(
-            np.array([a[n] - b[n] for n in a if n in b], float))
+        told_apart, better = beats(per_test[id(best)], per_test[id(other[1])])
         runner_up = RunnerUp(other[1].kind, scope_label(other[1].setups), round(other[0], 2),
                              told_apart, better, other[2].accepted)
         margin = round(cv_best - other[0], 2)

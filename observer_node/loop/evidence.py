@@ -91,6 +91,13 @@ def above_scatter(d: np.ndarray) -> tuple[bool, float, float, int, float]:
     return mean - half > 0 or sign_p <= SIGN_P, mean, half, improved, sign_p
 
 
+def beats(a: dict[str, float], b: dict[str, float]) -> tuple[bool, int]:
+    """Whether per-test fits ``a`` beat ``b`` test by test above the scatter
+    (:func:`above_scatter` on the paired differences), and on how many tests ``a`` is better."""
+    above, _, _, better, _ = above_scatter(np.array([a[n] - b[n] for n in a if n in b], float))
+    return above, better
+
+
 def judge(before: dict[str, float], after: dict[str, float], setups: dict[str, str],
           scope: list[str] | None, margin: float) -> Evidence:
     """Judge a candidate from the per-test cross-validated fit_TOT [%] without it (``before``)
