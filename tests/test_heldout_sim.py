@@ -110,13 +110,19 @@ def _mix(part: tuple[str, ...]) -> tuple[int, ...]:
     return tuple(part.count(s) for s in cases.ALL)
 
 
-@pytest.fixture(scope="module")
-def set_b(tmp_path_factory: pytest.TempPathFactory) -> Path:
-    out = tmp_path_factory.mktemp("heldout_b")
-    assert make_sets.main(["--set", "b", "--out", str(out / "on")]) == 0
-    make_sets.make(heldout_sets.select(list(WATCHED), "b"), out / "off", log=False,
+def _generate(tmp_path_factory: pytest.TempPathFactory, case_set: str,
+              watched: tuple[str, ...]) -> Path:
+    """A whole set in OUT/on, and the watched cases with their effects off in OUT/off."""
+    out = tmp_path_factory.mktemp(f"heldout_{case_set}")
+    assert make_sets.main(["--set", case_set, "--out", str(out / "on")]) == 0
+    make_sets.make(heldout_sets.select(list(watched), case_set), out / "off", log=False,
                    effects_on=False)
     return out
+
+
+@pytest.fixture(scope="module")
+def set_b(tmp_path_factory: pytest.TempPathFactory) -> Path:
+    return _generate(tmp_path_factory, "b", WATCHED)
 
 
 def test_set_b_is_new(capsys: pytest.CaptureFixture[str]) -> None:
@@ -273,11 +279,7 @@ VOCABULARY_C = ("chest_stiffening", "chest_rate_damping", "belt_unloading", "bel
 
 @pytest.fixture(scope="module")
 def set_c(tmp_path_factory: pytest.TempPathFactory) -> Path:
-    out = tmp_path_factory.mktemp("heldout_c")
-    assert make_sets.main(["--set", "c", "--out", str(out / "on")]) == 0
-    make_sets.make(heldout_sets.select(list(WATCHED_C), "c"), out / "off", log=False,
-                   effects_on=False)
-    return out
+    return _generate(tmp_path_factory, "c", WATCHED_C)
 
 
 def test_set_c_is_new(capsys: pytest.CaptureFixture[str]) -> None:
