@@ -9,8 +9,8 @@ verdicts before the loop ran on them. Nothing in the loop is tuned on them.
 Per case the loop runs blind at its defaults on 6 estimation + 6 validation tests. Printed:
 
 - what it named (kind@scope, scopes as the simulator's setups; "?" where the runner-up passes the
-  rule too and the data cannot tell the two apart, "!" where the validation tests do not
-  confirm it), the tests it flagged, and
+  rule too and the data cannot tell the two apart), what passed the rule but the validation
+  tests refused ("refused:"), the tests it flagged, and
   whether that is the expected verdict (for the transducer case: nothing physical named and
   "unexplained" or a sensor effect on CD);
 - the validation fit_TOT before and after;
@@ -20,7 +20,7 @@ Per case the loop runs blind at its defaults on 6 estimation + 6 validation test
   the better of the two, scored on the same validation tests;
 - the gap (reachable - after) and the loop's time;
 - at the end: how many cases are right, and how many named effects are there and not there,
-  and of each how many are marked "?" and "!".
+  how many are marked "?", and how many refused effects are there and not there.
 
     python -m benchmarks.loop_heldout [--set a|b|c] [--cases NAME ...] [--sets DIR] [--out DIR]
                                       [--workers N] [--json FILE]
@@ -95,9 +95,9 @@ def run_case(case: Case, sets: Path, work: Path, workers: int | None) -> dict:
     # named, but its runner-up passes the rule too and the data cannot tell the two apart
     untold = sorted(f"{e.kind}@{_sim_scope(e.setups or [], r)}" for e in r.effects
                     if e.evidence.runner_up is not None and e.evidence.runner_up.rival)
-    # named, but the validation tests do not confirm it (a warning in the report)
-    unconfirmed = sorted(f"{e.kind}@{_sim_scope(e.setups or [], r)}" for e in r.effects
-                         if any("do not confirm" in w for w in e.warnings))
+    # passed the rule, refused because the validation tests do not confirm it
+    refused = sorted(f"{p.kind}@{_sim_scope([] if p.scope == 'all' else p.scope.split('+'), r)}"
+                     for p in r.possible if "do not confirm" in p.why_not)
     expected = sorted(f"{k}@{'+'.join(sorted(s.split('+')))}" for k, s in case.expect)
     flagged = sorted({w.test for w in r.warnings})
     sensor = [s.output for s in r.sensor_effects]
@@ -108,7 +108,7 @@ def run_case(case: Case, sets: Path, work: Path, workers: int | None) -> dict:
         right = right and (output in sensor or output in unexpl)
     row = {"case": case.name, "found": found, "expected": expected, "flagged": flagged,
            "sensor": sensor, "unexplained": unexpl, "right": right, "untold": untold,
-           "unconfirmed": unconfirmed,
+           "refused": refused,
            "before": r.baseline.fit.total, "after": r.final.fit.total,
            "seconds": seconds, "possible": [f"{p.kind}@{p.scope}" for p in r.possible]}
     row["reachable"] = _reachable(case, r, est, val, found == expected)
@@ -165,8 +165,9 @@ def main() -> None:
         rows.append(row)
         reach = row.get("reachable", math.nan)
         named = ", ".join(f + ("?" if f in row["untold"] else "")
-                          + ("!" if f in row["unconfirmed"] else "")
                           for f in row["found"]) or "(none)"
+        if row["refused"]:
+            named += f"; refused: {','.join(row['refused'])}"
         if row["sensor"]:
             named += f"; sensor: {','.join(row['sensor'])}"
         if row["unexplained"]:
@@ -186,13 +187,13 @@ def main() -> None:
     print(f"right: {ok}/{len(rows)}; within 2 points of reach: {close}/{len(rows)}; "
           f"both: {both}/{len(rows)}", flush=True)
     for there in (False, True):
-        named = [(f in r["untold"], f in r["unconfirmed"]) for r in rows for f in r["found"]
+        named = [f in r["untold"] for r in rows for f in r["found"]
                  if (f in r["expected"]) == there]
+        refused = sum((f in r["expected"]) == there for r in rows for f in r["refused"])
         print(f"named and {'there' if there else 'not there'}: {len(named)}, marked ? (a "
-              f"runner-up that passes too, not told apart): {sum(u for u, _ in named)}, "
-              f"marked ! (the validation tests do not confirm it): "
-              f"{sum(c for _, c in named)}", flush=True)
-
+              f"runner-up that passes too, not told apart): {sum(named)}; refused by the "
+              f"validation tests and {'there' if there else 'not there'}: {refused}",
+              flush=True)
 
 if __name__ == "__main__":
     main()

@@ -206,9 +206,30 @@ def test_a_runner_up_the_data_cannot_tell_from_the_winner_is_said_so():
     assert ru is not None and ru.told_apart is False and not ru.passes_rule and not ru.rival
 
 
-def test_an_effect_the_validation_tests_do_not_confirm_carries_a_warning():
-    from observer_node.loop.closed_loop import validation_warning
-    [w] = validation_warning(88.5, 87.5)
-    assert "do not confirm" in w and "88.5 to 87.5" in w
-    assert validation_warning(88.5, 88.3) == []  # refit noise
-    assert validation_warning(88.5, 92.0) == []
+def test_an_effect_the_validation_tests_do_not_confirm_is_refused():
+    from observer_node.loop.closed_loop import validation_refusal
+    assert "do not confirm" in (validation_refusal(88.5, 87.5) or "")
+    assert "88.5 to 87.5" in (validation_refusal(88.5, 87.5) or "")
+    assert validation_refusal(88.5, 88.3) is None  # refit noise
+    assert validation_refusal(88.5, 92.0) is None
+
+
+@pytest.mark.parametrize("setups", [["R16"] * 3 + ["SLED"] * 3,
+                                    ["R16"] * 5 + ["SLED"] * 4 + ["FULL"] * 3])
+def test_cross_validation_leaves_one_test_out_and_every_fold_trains_on_every_setup(setups):
+    from observer_node.ident.dataset import Dataset
+    from observer_node.loop.refit import MAX_FOLDS, folds
+
+    n = len(setups)
+    z = np.zeros((n, 10))
+    data = Dataset([f"T{i}" for i in range(n)], setups, 1000.0, z, z, np.zeros((n, 10, 2)),
+                   slice(0, 10), (0.0, 0.01))
+    fs = folds(data)
+    assert len(fs) == min(n, MAX_FOLDS)
+    held = sorted(i for _, test in fs for i in test)
+    assert held == list(range(n))  # every test scored once, by a model that never saw it
+    for train, test in fs:
+        assert not set(train) & set(test) and sorted(train + test) == list(range(n))
+        assert {setups[i] for i in train} == set(setups)
+    if n <= MAX_FOLDS:
+        assert all(len(test) == 1 for _, test in fs)

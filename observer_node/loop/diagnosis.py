@@ -9,9 +9,9 @@ CD. Two shapes are looked for per output, each fitted by least squares to the re
 - ``lag``: the estimate's rate dy/dt (a time shift or a rate term the model lacks).
 
 Their size is given as the fit points [%, eq. 3.15] the correction would add. The sensor
-candidate (:func:`sensor_fold_scores`) is the static correction of one output, fitted on one
-half of the estimation tests and scored on the other, so it competes with physics under the
-same rule (:mod:`.evidence`).
+candidate (:func:`sensor_fold_scores`) is the static correction of one output, fitted on
+each cross-validation fold's training tests and scored on its held-out ones, so it competes
+with physics under the same rule (:mod:`.evidence`).
 """
 
 from __future__ import annotations
@@ -23,7 +23,7 @@ import numpy as np
 
 from ..ident.dataset import Dataset
 from ..ident.metrics import OUTPUT_NAMES, fit_percent
-from .refit import model, refit
+from .refit import FOLD_NFEV, model, refit_from
 
 SHAPES = {"static": "a static function of {o} (a transducer's non-linearity: its error grows "
                     "with the value)",
@@ -107,11 +107,12 @@ def _other(o: str) -> str:
 
 
 def sensor_fold_scores(base: dict, effects: list[dict], data: Dataset, train: list[int],
-                       test: list[int], max_nfev: int = 60) -> dict[str, dict[str, float]]:
-    """One fold of the sensor candidate: refit the current model on ``train``, fit a static
+                       test: list[int], max_nfev: int = FOLD_NFEV) -> dict[str, dict[str, float]]:
+    """One fold of the sensor candidate: refit the current model (fitted on all tests, the
+    start) on ``train``, fit a static
     correction of each output there, score each ``test`` test's fit_TOT [%] with it. Returns
     {output: {test: fit_TOT}}."""
-    r = refit(base, effects, data.subset(train), max_nfev)
+    r = refit_from(base, effects, data.subset(train), max_nfev)
     tr, te = data.subset(train), data.subset(test)
     with np.errstate(all="ignore"):
         yh_tr = model(r.base, r.effects, tr).simulate(tr.pulse_g, tr.brs_rad)

@@ -150,27 +150,33 @@ def score(base: dict, effects: list[dict], data: Dataset) -> FitTable:
     return replace(t, fit=Fits(_finite(f.cr), _finite(f.cd), _finite(f.total)))
 
 
-def folds(data: Dataset) -> tuple[list[int], list[int]]:
-    """Two halves of the tests, each setup's tests alternating between them (so both halves
-    hold every setup with two tests or more)."""
-    a: list[int] = []
-    b: list[int] = []
-    for setup in dict.fromkeys(data.setups):
-        members = [i for i, s in enumerate(data.setups) if s == setup]
-        # start each setup on the smaller half, so odd-sized setups balance out
-        first, second = (a, b) if len(a) <= len(b) else (b, a)
-        first += members[0::2]
-        second += members[1::2]
-    if not a or not b:
-        return list(range(data.n_tests)), list(range(data.n_tests))
-    return sorted(a), sorted(b)
+#: leave one test out up to this many estimation tests; beyond, this many folds
+MAX_FOLDS = 6
+#: iterations a fold's refit gets from the all-test fit: leaving a test or two out moves
+#: the solution a little, so it converges in a few (checked against cold folds, docs/loop.md)
+FOLD_NFEV = 15
+
+
+def folds(data: Dataset, k_max: int = MAX_FOLDS) -> list[tuple[list[int], list[int]]]:
+    """(train, test) test indices of each fold: leave one test out when there are at most
+    ``k_max`` tests, else ``k_max`` folds, each setup's tests dealt round-robin over them (so
+    every fold trains on every setup with ``k_max`` tests or fewer left out)."""
+    n = data.n_tests
+    if n < 2:
+        return [(list(range(n)), list(range(n)))]
+    order = [i for setup in dict.fromkeys(data.setups)
+             for i, s in enumerate(data.setups) if s == setup]
+    k = min(n, k_max)
+    held = [sorted(order[j::k]) for j in range(k)]
+    return [([i for i in range(n) if i not in h], h) for h in held]
 
 
 def fold_scores(base: dict, effects: list[dict], data: Dataset, train: list[int],
-                test: list[int], max_nfev: int = 60) -> dict[str, float]:
-    """Refit on tests ``train``, then fit_TOT (eq. 3.15, CR and CD averaged) of each test in
-    ``test``: one fold of the cross-validation, one task for the cluster."""
-    r = refit(base, effects, data.subset(train), max_nfev)
+                test: list[int], max_nfev: int = FOLD_NFEV) -> dict[str, float]:
+    """Refit on tests ``train``, starting at ``base``/``effects`` (the fit on all tests), then
+    fit_TOT (eq. 3.15, CR and CD averaged) of each test in ``test``: one fold of the
+    cross-validation, one task for the cluster."""
+    r = refit_from(base, effects, data.subset(train), max_nfev)
     t = score(r.base, r.effects, data.subset(test)).tests
     return {n: _finite(v.total) for n, v in t.items()}
 
