@@ -403,3 +403,178 @@ def test_set_c_neck_is_physics_on_both_outputs(set_c: Path) -> None:
         cd, cd0 = _channel(on, folder.name, "cd"), _channel(off, folder.name, "cd")
         assert cr.max() < cr0.max() - 1  # the head pulls the spine forward: less retardation
         assert cd.max() > cd0.max() + 1  # and the belt carries it: more deflection
+
+
+# ------------------------------------------------------------------ set D (cases_d.py)
+
+SET_D = heldout_sets.case_set("d")
+WATCHED_D = ("hd_broken_cd_spikes", "hd_broken_brs_reversed", "hd_cr_soft_clip")
+PHYSICAL = ("chest_stiffening", "chest_rate_damping", "belt_unloading", "belt_stiffening",
+            "airbag_contact", "pelvis_coupling")
+INTERIOR = {"SLED", "FULL"}  # the rigs with a car interior; R16 has none
+
+
+@pytest.fixture(scope="module")
+def set_d(tmp_path_factory: pytest.TempPathFactory) -> Path:
+    return _generate(tmp_path_factory, "d", WATCHED_D)
+
+
+def _pairs(cs: list[cases.Case]) -> set[tuple[str, float]]:
+    return {(e.key, e.size) for c in cs for e in c.effects}
+
+
+def test_set_d_is_new(capsys: pytest.CaptureFixture[str]) -> None:
+    before = SET_A + SET_B + SET_C
+    assert len(SET_D) == 14
+    names = [c.name for c in before + SET_D]
+    assert len(set(names)) == len(names)
+    seeds = [c.seed for c in SET_D]
+    assert len(set(seeds)) == len(seeds) and all(13000 <= s < 14000 for s in seeds)
+    assert not {c.seed for c in before} & set(seeds)
+    mixes_before = {_mix(p) for c in before for p in (c.est, c.val)}
+    for c in SET_D:
+        assert len(c.est) == len(c.val) == 6
+        assert set(c.est) == set(c.val)  # validation on the setups the estimation saw
+        for part in (c.est, c.val):
+            assert _mix(part) not in mixes_before
+        est, _ = cases.test_names(c)
+        for e in c.effects:
+            assert e.key in physics.EFFECTS and set(e.tests) <= set(est)
+            assert set(e.setups) & set(c.est)  # acts on a setup the case has
+    assert not _pairs(SET_D) & _pairs(before)  # no (key, size) of A, B or C again
+    assert make_sets.main(["--set", "d", "--out", "x", "--case", "hc_clean64"]) == 2
+    assert "unknown case 'hc_clean64' in set d" in capsys.readouterr().err
+
+
+def test_set_d_covers_the_issue_list() -> None:
+    lib, before = physics.EFFECTS, SET_A + SET_B + SET_C
+    clean = [c for c in SET_D if not c.effects and not c.expect and not c.expect_note]
+    assert sorted(c.counts_per_rev for c in clean) == [48, 96]
+    # each physical effect expected in exactly one single-effect case, caused by it alone, in
+    # a (form, size) no earlier set used
+    singles = [c for c in SET_D if len(c.expect) == 1 and len(c.effects) == 1
+               and c.expect[0][0] != "input_delay"]
+    assert sorted(c.expect[0][0] for c in singles) == sorted(PHYSICAL)
+    for c in singles:
+        (kind, scope), (e,) = c.expect[0], c.effects
+        assert lib[e.key] == kind and not e.tests and not c.expect_broken
+        assert scope == "all" if set(e.setups) >= set(c.est) else scope == "+".join(e.setups)
+        if kind == "airbag_contact":  # on the rigs with an interior, beside one without
+            assert set(e.setups) <= INTERIOR and set(c.est) - INTERIOR
+    # two effects on disjoint setups of the case, each caused by an effect on exactly those
+    (two,) = [c for c in SET_D if len(c.expect) == 2]
+    scopes = [set(s.split("+")) for _, s in two.expect]
+    assert not scopes[0] & scopes[1] and all(s <= set(two.est) for s in scopes)
+    for (name, scope), e in zip(two.expect, two.effects, strict=True):
+        assert lib[e.key] == name and set(e.setups) == set(scope.split("+"))
+    # broken tests of kinds no earlier set used, named, with nothing else to find
+    broken = [c for c in SET_D if c.expect_broken]
+    assert broken
+    for c in broken:
+        assert not c.expect and not c.expect_note and len(c.expect_broken) == 1
+        assert all(lib[e.key] == "" for e in c.effects)
+        assert {t for e in c.effects for t in e.tests} == set(c.expect_broken)
+    assert not _keys(broken) & _keys(before)
+    # one transducer error on an output, of a kind no earlier set used: nothing physical named
+    (sensor,) = [c for c in SET_D if c.expect_note]
+    assert sensor.expect_note.startswith("unexplained") and not sensor.expect
+    assert not sensor.expect_broken and all(lib[e.key] == "" for e in sensor.effects)
+    assert not _keys([sensor]) & _keys(before)
+    # one input delay on each input, 1..5 ms, at a delay no earlier set used on either input
+    delays_before = {e.size for c in before for e in c.effects if lib[e.key] == "input_delay"}
+    for key in ("pulse_late", "brs_late"):
+        (case,) = [c for c in SET_D if _keys([c]) == {key}]
+        (e,) = case.effects
+        assert case.expect == (("input_delay", "all"),) and set(e.setups) >= set(case.est)
+        assert 0.001 <= e.size <= 0.005 and e.size not in delays_before
+    assert len(clean) + len(singles) + 1 + len(broken) + 1 + 2 == len(SET_D)
+
+
+def test_set_d_generates_and_reads(set_d: Path) -> None:
+    for c in SET_D:
+        est, val = cases.test_names(c)
+        truth = json.loads((set_d / "on" / c.name / "truth.json").read_text())
+        assert truth["expected"]["broken_tests"] == list(c.expect_broken)
+        assert truth["expected"]["note"] == c.expect_note
+        for part, names, setups in (("est", est, c.est), ("val", val, c.val)):
+            tests = load_tests([set_d / "on" / c.name / part])
+            assert sorted(t.name for t in tests) == sorted(names)
+            assert {t.counts_per_rev for t in tests} == {c.counts_per_rev}
+            groups = assign_setups(tests)
+            assert sorted((g.name, len(g.tests)) for g in groups) == sorted(
+                (s, setups.count(s)) for s in set(setups))
+            for t in tests:
+                assert np.all(np.isfinite(t.pulse_g)) and t.cd_mm is not None
+                assert t.cr_g is not None and t.cr_g.max() > 15 and t.cd_mm.max() > 10
+                assert np.array_equal(t.brs, np.round(t.brs)) and np.ptp(t.brs) > 5
+
+
+def test_set_d_same_seed_same_bytes(set_d: Path, tmp_path: Path) -> None:
+    c = heldout_sets.select(["hd_two_effects", "hd_clean48"], "d")
+    make_sets.make(c, tmp_path, log=False)
+    for name in ("hd_two_effects", "hd_clean48"):
+        assert _files(tmp_path / name) == _files(set_d / "on" / name)
+
+
+def test_set_d_forms_leave_sets_a_b_and_c_alone(tmp_path: Path) -> None:
+    """Set D's cases (and its lab-side forms) in the same batch do not move a set A, B or C
+    test by one bit."""
+    abc = (heldout_sets.select(["h_broken_brs"]) + heldout_sets.select(["hb_cd_knee"], "b")
+           + heldout_sets.select(["hc_neck_head", "hc_webbing_set"], "c"))
+    make_sets.make(abc, tmp_path / "alone", log=False)
+    make_sets.make(abc + [c for c in SET_D if c.effects], tmp_path / "mixed", log=False)
+    for c in abc:
+        assert _files(tmp_path / "alone" / c.name) == _files(tmp_path / "mixed" / c.name)
+
+
+def _times(n: int) -> np.ndarray:
+    return -0.020 + np.arange(n) / 10_000
+
+
+def test_set_d_cd_spikes_only_at_the_spikes(set_d: Path) -> None:
+    c = heldout_sets.select(["hd_broken_cd_spikes"], "d")[0]
+    (broken,), (eff,) = c.expect_broken, c.effects
+    bad = _channel(set_d / "on" / c.name, broken, "cd")
+    good = _channel(set_d / "off" / c.name, broken, "cd")
+    t = _times(len(bad))
+    near = np.zeros(len(t), dtype=bool)
+    for t_s, sign in lab.SPIKES_S:
+        at = (t >= t_s) & (t < t_s + lab.SPIKE_SAMPLES / 10_000)
+        assert sign * (bad[at] - good[at]).max() > eff.size / 4  # a spike the filter kept
+        near |= np.abs(t - t_s) < 0.003
+    assert np.allclose(bad[~near], good[~near], atol=0.2)  # clean between the spikes
+    for which in ("cr", "pulse"):
+        assert np.array_equal(_channel(set_d / "on" / c.name, broken, which),
+                              _channel(set_d / "off" / c.name, broken, which))
+    _others_untouched(set_d, c.name, broken)
+
+
+def test_set_d_brs_reversed_counts_the_other_way(set_d: Path) -> None:
+    c = heldout_sets.select(["hd_broken_brs_reversed"], "d")[0]
+    (broken,) = c.expect_broken
+    bad = read_isomme(next((set_d / "on" / c.name).glob(f"*/{broken}")))
+    good = read_isomme(next((set_d / "off" / c.name).glob(f"*/{broken}")))
+    assert np.ptp(good.brs) > 10 and np.array_equal(bad.brs, -good.brs)
+    # the pretensioner's pay-in now reads as pay-out, before anything else moves
+    first = int(np.flatnonzero(good.brs)[0])
+    assert good.brs[first] > 0 > bad.brs[first]
+    assert np.array_equal(bad.cr_g, good.cr_g) and np.array_equal(bad.cd_mm, good.cd_mm)
+    _others_untouched(set_d, c.name, broken)
+
+
+def test_set_d_cr_compresses_cr_only(set_d: Path) -> None:
+    """The transducer error is a static function of cr, in cr alone: low at the peak by the
+    conditioner's tanh, right at small levels; CD and the pulse as without it."""
+    c = heldout_sets.select(["hd_cr_soft_clip"], "d")[0]
+    (eff,) = c.effects
+    on, off = set_d / "on" / c.name, set_d / "off" / c.name
+    for folder in sorted(on.glob("*/*")):
+        for which in ("cd", "pulse"):
+            assert np.array_equal(_channel(on, folder.name, which),
+                                  _channel(off, folder.name, which))
+        cr, cr0 = _channel(on, folder.name, "cr"), _channel(off, folder.name, "cr")
+        peak = int(np.argmax(cr0))
+        want = eff.size * np.tanh(cr0[peak] / eff.size)
+        assert cr[peak] < cr0[peak] - 1 and cr[peak] == pytest.approx(want, abs=0.5)
+        small = np.abs(cr0) < 4
+        assert np.allclose(cr[small], cr0[small], atol=0.2)

@@ -10,10 +10,11 @@
   expected verdicts (now seen by the loop's engineers).  ``cases_b.py``: set B, new cases and
   verdicts committed before the loop ran on them (now seen too).  ``cases_c.py``: set C, the
   same again, on two-setup mixes, with a case outside the loop's vocabulary.
+  ``cases_d.py``: set D, the same again, on lopsided and single-setup mixes.
   ``make_sets.py``: writes a set (``--no-effects``: the same tests with every effect off).
   ``costs.py``: what each case costs the thesis grey-box (project CLI).
 
-    python -m benchmarks.heldout.make_sets --out /tmp/heldout [--set a|b|c] [--case NAME ...]
+    python -m benchmarks.heldout.make_sets --out /tmp/heldout [--set a|b|c|d] [--case NAME ...]
 
 Never tune the loop on these cases; report them apart from the tuned ones.
 """

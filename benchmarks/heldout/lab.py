@@ -28,10 +28,15 @@ DUMMY = "HYBRID III 50%ILE MALE, DRIVER SEAT"
 DV_MS = {"R16": (13.6, 14.4), "SLED": (14.0, 15.6), "FULL": (14.3, 16.2)}
 # stated exactly, no per-test scatter: times, ranges, and one transducer's calibration
 EXACT = {"pulse_late", "brs_late", "brs_freeze", "cd_dropout", "pulse_rail", "pulse_gain",
-         "cr_gain", "cd_knee", "pulse_zero_shift"}
+         "cr_gain", "cd_knee", "pulse_zero_shift", "cd_spikes", "brs_reversed",
+         "cr_soft_clip"}
 DROPOUT_S = 0.010  # how long cd_dropout's wiper stays off the track
 KNEE_SLOPE = 0.6  # cd_knee: the gain of the CD calibration's second segment
 SHIFT_AT_S = 0.011  # pulse_zero_shift: when the zero shifts (in the crash-box spike)
+# cd_spikes: an intermittent CD connector; when each spike starts (s), its sign, its width
+# (samples of the raw 10 kHz channel, before CFC 600)
+SPIKES_S = ((0.016, 1), (0.029, -1), (0.043, 1), (0.057, -1), (0.068, 1), (0.084, -1))
+SPIKE_SAMPLES = 3
 NOISE = {"pulse_g": 0.6, "cr_g": 0.55, "cd_mm": 0.10}  # white, before the CFC filters
 
 
@@ -114,16 +119,24 @@ def record(d: Drawn, i: int, sim: dict[str, np.ndarray], counts_per_rev: int,
     if e["brs_freeze"] > 0:
         k = int(np.searchsorted(t, e["brs_freeze"]))
         counts[k:] = counts[k]
+    if e["brs_reversed"]:  # the recorder's count direction set wrong: pay-in reads as pay-out
+        counts = -counts
     # CR (CFC 180), CD (CFC 600, maybe a non-linear pot, maybe zeroed off)
     cr_read = sim["cr"][i] / ph.G
     if e["cr_gain"]:  # the accelerometer's sensitivity error
         cr_read = cr_read * (1.0 + e["cr_gain"])
+    if e["cr_soft_clip"]:  # a conditioner near its output range: reads low, more so at peaks
+        cr_read = e["cr_soft_clip"] * np.tanh(cr_read / e["cr_soft_clip"])
     cr = ph.cfc(cr_read + NOISE["cr_g"] * rng.standard_normal(t.size), 180)
     cd_true = sim["cd"][i] * 1e3
     cd = cd_true * (1.0 + e["cd_pot_nonlinear"] * (np.maximum(cd_true, 0) / 25.0) ** 2)
     if e["cd_knee"]:  # two-segment calibration, the second segment's slope entered wrong
         cd = np.where(cd > e["cd_knee"], e["cd_knee"] + KNEE_SLOPE * (cd - e["cd_knee"]), cd)
     cd = cd + NOISE["cd_mm"] * rng.standard_normal(t.size)
+    if e["cd_spikes"]:  # the connector opens and closes: short spikes
+        for t_s, sign in SPIKES_S:
+            k = int(np.searchsorted(t, t_s - 1e-9))
+            cd[k:k + SPIKE_SAMPLES] += sign * e["cd_spikes"]
     if e["cd_dropout"]:  # the wiper lifts off its track: the raw channel reads zero
         cd[(t >= e["cd_dropout"]) & (t < e["cd_dropout"] + DROPOUT_S)] = 0.0
     cd = ph.cfc(cd, 600) + e["zero_offset"]

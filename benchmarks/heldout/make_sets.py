@@ -2,7 +2,8 @@
 DIR/<case>/truth.json (the case, the expected verdict, the true parameters of every test).
 Deterministic from each case's seed.
 
-    python -m benchmarks.heldout.make_sets --out DIR [--set a|b|c] [--case NAME ...] [--no-effects]
+    python -m benchmarks.heldout.make_sets --out DIR [--set a|b|c|d] [--case NAME ...]
+        [--no-effects]
 """
 
 from __future__ import annotations
@@ -63,8 +64,8 @@ def main(argv: list[str] | None = None) -> int:
                                  description=__doc__.split("\n\n")[0])
     ap.add_argument("--out", required=True, type=Path, help="folder to write the sets into")
     ap.add_argument("--set", dest="case_set", choices=SETS, default="a",
-                    help="set A (cases.py, default), set B (cases_b.py) or set C (cases_c.py, "
-                         "held out from the loop's engineers)")
+                    help="set A (cases.py, default), set B (cases_b.py), set C (cases_c.py) or "
+                         "set D (cases_d.py, held out from the loop's engineers)")
     ap.add_argument("--case", action="append", metavar="NAME",
                     help="only this case of the set (repeatable); default all, in set A: "
                          + ", ".join(c.name for c in CASES))

@@ -72,6 +72,10 @@ EFFECTS = {
     "airbag_sealed": "airbag_contact",  # unvented gas bag (fill scale of the vented one's)
     "pulse_zero_shift": "",  # broken test: pulse channel zero shifts by this at SHIFT_AT_S (g)
     "neck_head": "",  # head and upper neck on the spine through a soft neck (mass, kg)
+    # set D's lab-side forms (cases_d.py): recorded channels only, the physics untouched
+    "cd_spikes": "",  # broken test: CD connector spikes of this height (mm) at SPIKES_S
+    "cr_soft_clip": "",  # transducer: CR amplifier compresses, reads R tanh(cr / R) (R, g)
+    "brs_reversed": "",  # broken test: BRS direction set wrong in the recorder (1 = on)
 }
 POW_B_M = (0.015, 0.025)  # webbing_power: reference stretch, chest side and up to the retractor
 V_HYST = 0.02  # m/s: webbing_hysteresis switches between its paths within this rate

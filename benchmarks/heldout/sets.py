@@ -1,24 +1,29 @@
 """The held-out sets by name: set A (``cases``), set B (``cases_b``, written after set A had
 been looked at by the loop's engineers, kept from them until the loop ran on it), set C
-(``cases_c``, written after set B had been looked at, the same way)."""
+(``cases_c``, written after set B had been looked at, the same way), set D (``cases_d``,
+written after set C had been looked at, the same way)."""
 
 from __future__ import annotations
 
 from .cases import CASES, Case
 from .cases_b import SET_B
 from .cases_c import SET_C
+from .cases_d import SET_D
 
-SETS = ("a", "b", "c")
+SETS = ("a", "b", "c", "d")
 
 
 def case_set(name: str) -> list[Case]:
-    """Set A (``cases``), B (``cases_b``) or C (``cases_c``); ValueError for another name."""
+    """Set A (``cases``), B (``cases_b``), C (``cases_c``) or D (``cases_d``); ValueError
+    for another name."""
     if name == "a":
         return list(CASES)
     if name == "b":
         return list(SET_B)
     if name == "c":
         return list(SET_C)
+    if name == "d":
+        return list(SET_D)
     raise ValueError(f"unknown case set {name!r}; known: {', '.join(SETS)}")
 
 
