@@ -132,6 +132,14 @@ def _reachable(case: Case, r: LoopReport, est_tests: list, val_tests: list, same
     return float(best)
 
 
+def generate(case_set: str, cases: list[Case], out: Path) -> Path:
+    """The cases' crash tests, simulated into ``out`` by ``benchmarks.heldout.make_sets``."""
+    subprocess.run([sys.executable, "-m", "benchmarks.heldout.make_sets", "--out", str(out),
+                    "--set", case_set, *[x for c in cases for x in ("--case", c.name)]],
+                   check=True)
+    return out
+
+
 def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__,
                                  formatter_class=argparse.RawDescriptionHelpFormatter)
@@ -150,12 +158,7 @@ def main() -> None:
     except ValueError as e:
         print(f"loop_heldout: {e}", file=sys.stderr)
         sys.exit(2)
-    sets = a.sets
-    if sets is None:
-        sets = Path(tempfile.mkdtemp()) / "sets"
-        subprocess.run([sys.executable, "-m", "benchmarks.heldout.make_sets", "--out",
-                        str(sets), "--set", a.case_set, "--case", *[c.name for c in cases]],
-                       check=True)
+    sets = a.sets or generate(a.case_set, cases, Path(tempfile.mkdtemp()) / "sets")
     work = a.out or Path(tempfile.mkdtemp())
     print(f"loop reports in {work}/CASE/report.md", flush=True)
     print(f"{'case':<20}{'named (kind@scope)':<46}{'flagged':<10}{'right':>6}{'before':>8}"

@@ -578,3 +578,11 @@ def test_set_d_cr_compresses_cr_only(set_d: Path) -> None:
         assert cr[peak] < cr0[peak] - 1 and cr[peak] == pytest.approx(want, abs=0.5)
         small = np.abs(cr0) < 4
         assert np.allclose(cr[small], cr0[small], atol=0.2)
+
+
+def test_the_loop_benchmark_generates_every_case_it_is_asked_for(tmp_path: Path) -> None:
+    from benchmarks.loop_heldout import generate
+
+    two = heldout_sets.select(["hd_clean48", "hd_clean96"], "d")
+    out = generate("d", two, tmp_path / "sets")
+    assert sorted(p.name for p in out.iterdir() if p.is_dir()) == ["hd_clean48", "hd_clean96"]
