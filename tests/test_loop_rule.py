@@ -233,3 +233,17 @@ def test_cross_validation_leaves_one_test_out_and_every_fold_trains_on_every_set
         assert {setups[i] for i in train} == set(setups)
     if n <= MAX_FOLDS:
         assert all(len(test) == 1 for _, test in fs)
+
+
+def test_the_report_says_the_validation_tests_refused_an_effect_when_nothing_was_named():
+    from observer_node.loop.closed_loop import none_accepted
+    from observer_node.loop.report import LoopStep
+
+    step = LoopStep([], 88.0, [], [], {})
+    step.decision = ("airbag_contact on FULL passes the rule on the estimation tests, but the "
+                     "validation tests do not confirm it: their fit_TOT falls from 88.5 to "
+                     "87.5 %: not accepted")
+    line = none_accepted([step], "RULE")
+    assert line.startswith("No effect was accepted: airbag_contact") and "do not confirm" in line
+    step.decision = "no candidate passes the rule (...)"
+    assert none_accepted([step], "RULE") == "No effect was accepted: none passed the rule (RULE)."

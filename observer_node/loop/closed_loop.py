@@ -612,8 +612,7 @@ def _markdown(r: LoopReport) -> str:
                      f"{e.fit.cr:.1f} | {e.fit.cd:.1f} | {e.fit.total:.1f} |")
     lines += [f"| **final** | | **{f.cr:.1f}** | **{f.cd:.1f}** | **{f.total:.1f}** |", ""]
     if not r.effects:
-        lines += ["No effect was accepted: none passed the rule (" + r.settings.rule
-                  + ").", ""]
+        lines += [none_accepted(r.history, r.settings.rule), ""]
     lines += _markdown_findings(r)
     lines += ["## Injury criteria on the validation tests", "",
               "Mean |estimate - measured| over the validation tests (peak chest deflection, "
@@ -650,6 +649,15 @@ def _markdown(r: LoopReport) -> str:
               f"Plots: fit_before_*.png, fit_after_*.png, residuals.png. Model: {r.model}. "
               f"Run time {r.seconds} s.", ""]
     return "\n".join(lines)
+
+
+def none_accepted(history: list[LoopStep], rule: str) -> str:
+    """report.md's line when the model stays the thesis grey-box: why, as the loop decided
+    (no candidate passed, the validation tests refused the one that did, or a sensor)."""
+    why = history[-1].decision if history else ""
+    if not why or why.startswith("no candidate passes"):
+        return f"No effect was accepted: none passed the rule ({rule})."
+    return f"No effect was accepted: {why}."
 
 
 def _markdown_effect(e: AcceptedEffect) -> list[str]:
