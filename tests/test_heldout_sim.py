@@ -343,14 +343,15 @@ def test_set_c_covers_the_issue_list() -> None:
     assert not _keys([odd]) & _keys(before) and "residual" in odd.notes
 
 
-def test_set_c_generates_and_reads(set_c: Path) -> None:
-    for c in SET_C:
+def _generated_and_read(case_list: list, root: Path) -> None:
+    """Every case of a generated set reads with the product's reader as its case says."""
+    for c in case_list:
         est, val = cases.test_names(c)
-        truth = json.loads((set_c / "on" / c.name / "truth.json").read_text())
+        truth = json.loads((root / "on" / c.name / "truth.json").read_text())
         assert truth["expected"]["broken_tests"] == list(c.expect_broken)
         assert truth["expected"]["note"] == c.expect_note
         for part, names, setups in (("est", est, c.est), ("val", val, c.val)):
-            tests = load_tests([set_c / "on" / c.name / part])
+            tests = load_tests([root / "on" / c.name / part])
             assert sorted(t.name for t in tests) == sorted(names)
             assert {t.counts_per_rev for t in tests} == {c.counts_per_rev}
             groups = assign_setups(tests)
@@ -360,6 +361,10 @@ def test_set_c_generates_and_reads(set_c: Path) -> None:
                 assert np.all(np.isfinite(t.pulse_g)) and t.cd_mm is not None
                 assert t.cr_g is not None and t.cr_g.max() > 15 and t.cd_mm.max() > 10
                 assert np.array_equal(t.brs, np.round(t.brs)) and np.ptp(t.brs) > 5
+
+
+def test_set_c_generates_and_reads(set_c: Path) -> None:
+    _generated_and_read(SET_C, set_c)
 
 
 def test_set_c_same_seed_same_bytes(set_c: Path, tmp_path: Path) -> None:
@@ -491,22 +496,7 @@ def test_set_d_covers_the_issue_list() -> None:
 
 
 def test_set_d_generates_and_reads(set_d: Path) -> None:
-    for c in SET_D:
-        est, val = cases.test_names(c)
-        truth = json.loads((set_d / "on" / c.name / "truth.json").read_text())
-        assert truth["expected"]["broken_tests"] == list(c.expect_broken)
-        assert truth["expected"]["note"] == c.expect_note
-        for part, names, setups in (("est", est, c.est), ("val", val, c.val)):
-            tests = load_tests([set_d / "on" / c.name / part])
-            assert sorted(t.name for t in tests) == sorted(names)
-            assert {t.counts_per_rev for t in tests} == {c.counts_per_rev}
-            groups = assign_setups(tests)
-            assert sorted((g.name, len(g.tests)) for g in groups) == sorted(
-                (s, setups.count(s)) for s in set(setups))
-            for t in tests:
-                assert np.all(np.isfinite(t.pulse_g)) and t.cd_mm is not None
-                assert t.cr_g is not None and t.cr_g.max() > 15 and t.cd_mm.max() > 10
-                assert np.array_equal(t.brs, np.round(t.brs)) and np.ptp(t.brs) > 5
+    _generated_and_read(SET_D, set_d)
 
 
 def test_set_d_same_seed_same_bytes(set_d: Path, tmp_path: Path) -> None:
