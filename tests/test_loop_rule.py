@@ -10,10 +10,11 @@ import sys
 import numpy as np
 import pytest
 
+from observer_node.data.filters import cfc_filter
 from observer_node.ident.dataset import make_dataset
 from observer_node.loop.diagnosis import shape_gains, unexplained
 from observer_node.loop.evidence import judge
-from observer_node.loop.screening import residual_outliers, screen_channels
+from observer_node.loop.screening import polarity_outliers, residual_outliers, screen_channels
 
 SETUPS = {f"T{i}": s for i, s in enumerate(["A", "A", "B", "B", "C", "C"])}
 
@@ -62,7 +63,7 @@ def _broken(test, **arrays):
 
 
 @pytest.mark.parametrize("fault", ["frozen_brs", "nan_cd", "spike_cr", "saturated_cd",
-                                   "frozen_cd", "zero_shift_pulse"])
+                                   "frozen_cd", "zero_shift_pulse", "filtered_spikes_cd"])
 def test_a_broken_channel_is_named(campaign, fault):
     t = next(x for x in campaign if x.name == "R16_003")
     i = t.index_of(0.030)
@@ -87,6 +88,13 @@ def test_a_broken_channel_is_named(campaign, fault):
         pulse = t.pulse_g.copy()
         pulse[t.index_of(0.012):] += 3.0
         b, channel = _broken(t, pulse_g=pulse), "pulse"
+    elif fault == "filtered_spikes_cd":
+        # an intermittent connector: 0.3 ms spikes of 35 mm in the raw channel, which the
+        # lab's CFC 600 spreads over a millisecond or more (no longer single samples)
+        raw = np.zeros_like(t.cd_mm)
+        for k, sign in ((i, 1.0), (t.index_of(0.060), -1.0)):
+            raw[k:k + round(3e-4 * t.fs_hz)] = 35.0 * sign
+        b, channel = _broken(t, cd_mm=t.cd_mm + cfc_filter(raw, t.fs_hz, 600)), "cd"
     else:
         cd = t.cd_mm.copy()
         cd[i:i + 40] = cd[i]
@@ -94,6 +102,24 @@ def test_a_broken_channel_is_named(campaign, fault):
     found = screen_channels(b, 0.15)
     assert [f.channel for f in found] == [channel], found
     assert found[0].test == "R16_003" and found[0].reason
+
+
+def test_a_brs_recorded_at_the_wrong_polarity_is_named(campaign):
+    # the count direction set wrong: the pretensioner's pay-in reads as pay-out and the load
+    # limiter's pay-out as pay-in, in one test of the campaign
+    assert polarity_outliers(campaign, 0.15) == []
+    t = next(x for x in campaign if x.name == "SLED_002")
+    flipped = [_broken(x, brs=2 * x.brs[0] - x.brs) if x is t else x for x in campaign]
+    found = polarity_outliers(flipped, 0.15)
+    assert [(f.test, f.channel) for f in found] == [("SLED_002", "brs")], found
+    assert "pay" in found[0].reason
+
+
+def test_a_campaign_that_pays_in_more_than_out_is_not_called_reversed(campaign):
+    # a polarity is judged against the other tests: when every test's spindle pays in most
+    # (a strong pretensioner, a light load) none of them stands out
+    flipped = [_broken(x, brs=2 * x.brs[0] - x.brs) for x in campaign]
+    assert polarity_outliers(flipped, 0.15) == []
 
 
 def test_a_pulse_still_decelerating_at_rest_needs_a_record_after_the_crash(campaign):

@@ -77,7 +77,7 @@ from .report import (
     SensorEffect,
     TriedCandidate,
 )
-from .screening import BrokenTest, residual_outliers, screen_channels
+from .screening import BrokenTest, polarity_outliers, residual_outliers, screen_channels
 
 
 def _fit3(t: FitTable) -> dict[str, float]:
@@ -129,6 +129,9 @@ def _run(est_tests: list[CrashTest], val_tests: list[CrashTest], out: Path, rate
     setups = assign_setups([*est_tests, *val_tests], groups)
     # Broken channels are found on the recorded data, before anything is fitted on them.
     broken = [b for t in (*est_tests, *val_tests) for b in screen_channels(t, window_s[1])]
+    flagged = {b.test for b in broken}
+    broken += [b for b in polarity_outliers([*est_tests, *val_tests], window_s[1])
+               if b.test not in flagged]
     left_out = {b.test for b in broken}
     est_kept = [t for t in est_tests if t.name not in left_out]
     val_kept = [t for t in val_tests if t.name not in left_out]
