@@ -232,6 +232,24 @@ def test_a_runner_up_the_data_cannot_tell_from_the_winner_is_said_so():
     assert ru is not None and ru.told_apart is False and not ru.passes_rule and not ru.rival
 
 
+def test_a_passing_rival_is_not_hidden_behind_a_better_runner_up_that_fails_the_rule():
+    # set D's stiffening webbing: input_gain cross-validated higher but lowered one setup
+    # (fails), pelvis_coupling passed; the rival to report is the one that passes
+    from observer_node.loop.analysis import Candidate
+    from observer_node.loop.closed_loop import _rival
+    win = Candidate("chest_stiffening", 0.5, {})
+    failing, passing = Candidate("input_gain", 0.5, {}), Candidate("pelvis_coupling", 0.5, {})
+    per_test = {id(win): _cv([3.4, 3.0, 3.8, 4.1, 2.0, 3.6])[1],
+                id(failing): _cv([4.9, 4.4, 4.5, 4.6, -0.5, -0.4])[1],
+                id(passing): _cv([4.6, 3.6, 1.6, 4.0, 3.4, 3.8])[1]}
+    ev_fail = judge(*_cv([4.9, 4.4, 4.5, 4.6, -0.5, -0.4]), SETUPS, None, 1.0)
+    ev_pass = judge(*_cv([4.6, 3.6, 1.6, 4.0, 3.4, 3.8]), SETUPS, None, 1.0)
+    assert not ev_fail.accepted and ev_pass.accepted
+    ru, _, _ = _rival([(93.3, win, ev_pass), (93.5, failing, ev_fail),
+                       (93.2, passing, ev_pass)], per_test)
+    assert ru is not None and ru.kind == "pelvis_coupling" and ru.rival
+
+
 def test_an_effect_the_validation_tests_do_not_confirm_is_refused():
     from observer_node.loop.closed_loop import validation_refusal
     assert "do not confirm" in (validation_refusal(88.5, 87.5) or "")

@@ -452,14 +452,16 @@ def _applies_to(scope: list[str] | None, est: Dataset, val: Dataset) -> list[str
 def _rival(tried: list[tuple[float, Candidate, Evidence]],
            per_test: dict[int, dict[str, float]]
            ) -> tuple[RunnerUp | None, float | None, OtherScope | None]:
-    """The runner-up (the best of another kind), whether the winner beats it test by test
-    above the scatter and whether it passes the rule itself, the margin [points] to it, and
-    the winner on its other scope; ``tried``: (cv fit_TOT [%], candidate, its evidence), the
-    winner first; ``per_test``: each candidate's per-test cross-validated fit_TOT [%] by
-    ``id``."""
+    """The runner-up (the best of another kind that passes the rule, else the best of another
+    kind: one that fails the rule must not hide a rival that passes), whether the winner beats
+    it test by test above the scatter and whether it passes the rule itself, the margin
+    [points] to it, and the winner on its other scope; ``tried``: (cv fit_TOT [%],
+    candidate, its evidence), the winner first; ``per_test``: each candidate's per-test
+    cross-validated fit_TOT [%] by ``id``."""
     cv_best, best, _ = tried[0]
     runner_up, margin, other_scope = None, None, None
-    other = next(((cv, c, ev) for cv, c, ev in tried if c.kind != best.kind), None)
+    others = [(cv, c, ev) for cv, c, ev in tried if c.kind != best.kind]
+    other = next((o for o in others if o[2].accepted), others[0] if others else None)
     if other is not None:
         told_apart, better = beats(per_test[id(best)], per_test[id(other[1])])
         runner_up = RunnerUp(other[1].kind, scope_label(other[1].setups), round(other[0], 2),
