@@ -29,7 +29,7 @@ DV_MS = {"R16": (13.6, 14.4), "SLED": (14.0, 15.6), "FULL": (14.3, 16.2)}
 # stated exactly, no per-test scatter: times, ranges, and one transducer's calibration
 EXACT = {"pulse_late", "brs_late", "brs_freeze", "cd_dropout", "pulse_rail", "pulse_gain",
          "cr_gain", "cd_knee", "pulse_zero_shift", "cd_spikes", "brs_reversed",
-         "cr_soft_clip"}
+         "cr_soft_clip", "cr_cable_break", "cr_reversed", "cr_progressive"}
 DROPOUT_S = 0.010  # how long cd_dropout's wiper stays off the track
 KNEE_SLOPE = 0.6  # cd_knee: the gain of the CD calibration's second segment
 SHIFT_AT_S = 0.011  # pulse_zero_shift: when the zero shifts (in the crash-box spike)
@@ -37,6 +37,8 @@ SHIFT_AT_S = 0.011  # pulse_zero_shift: when the zero shifts (in the crash-box s
 # (samples of the raw 10 kHz channel, before CFC 600)
 SPIKES_S = ((0.016, 1), (0.029, -1), (0.043, 1), (0.057, -1), (0.068, 1), (0.084, -1))
 SPIKE_SAMPLES = 3
+CABLE_BREAK_G = 0.0  # cr_cable_break: what the open bridge reads, constant (g)
+CR_PROG_G = 25.0  # cr_progressive: the level (g) where CR over-reads by the effect's size
 NOISE = {"pulse_g": 0.6, "cr_g": 0.55, "cd_mm": 0.10}  # white, before the CFC filters
 
 
@@ -127,7 +129,14 @@ def record(d: Drawn, i: int, sim: dict[str, np.ndarray], counts_per_rev: int,
         cr_read = cr_read * (1.0 + e["cr_gain"])
     if e["cr_soft_clip"]:  # a conditioner near its output range: reads low, more so at peaks
         cr_read = e["cr_soft_clip"] * np.tanh(cr_read / e["cr_soft_clip"])
-    cr = ph.cfc(cr_read + NOISE["cr_g"] * rng.standard_normal(t.size), 180)
+    if e["cr_progressive"]:  # a sensing element stiffening less than its calibration says
+        cr_read = cr_read * (1.0 + e["cr_progressive"] * (cr_read / CR_PROG_G) ** 2)
+    cr_raw = cr_read + NOISE["cr_g"] * rng.standard_normal(t.size)
+    if e["cr_cable_break"]:  # the cable parts: the amplifier reads a constant from then on
+        cr_raw[t >= e["cr_cable_break"]] = CABLE_BREAK_G
+    cr = ph.cfc(cr_raw, 180)
+    if e["cr_reversed"]:  # the channel's polarity set wrong in the recorder
+        cr = -cr
     cd_true = sim["cd"][i] * 1e3
     cd = cd_true * (1.0 + e["cd_pot_nonlinear"] * (np.maximum(cd_true, 0) / 25.0) ** 2)
     if e["cd_knee"]:  # two-segment calibration, the second segment's slope entered wrong

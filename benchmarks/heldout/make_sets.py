@@ -2,7 +2,7 @@
 DIR/<case>/truth.json (the case, the expected verdict, the true parameters of every test).
 Deterministic from each case's seed.
 
-    python -m benchmarks.heldout.make_sets --out DIR [--set a|b|c|d] [--case NAME ...]
+    python -m benchmarks.heldout.make_sets --out DIR [--set a|b|c|d|e] [--case NAME ...]
         [--no-effects]
 """
 
@@ -64,8 +64,9 @@ def main(argv: list[str] | None = None) -> int:
                                  description=__doc__.split("\n\n")[0])
     ap.add_argument("--out", required=True, type=Path, help="folder to write the sets into")
     ap.add_argument("--set", dest="case_set", choices=SETS, default="a",
-                    help="set A (cases.py, default), set B (cases_b.py), set C (cases_c.py) or "
-                         "set D (cases_d.py, held out from the loop's engineers)")
+                    help="set A (cases.py, default), set B (cases_b.py), set C (cases_c.py), "
+                         "set D (cases_d.py) or set E (cases_e.py, held out from the loop's "
+                         "engineers)")
     ap.add_argument("--case", action="append", metavar="NAME",
                     help="only this case of the set (repeatable); default all, in set A: "
                          + ", ".join(c.name for c in CASES))

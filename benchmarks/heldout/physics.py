@@ -76,6 +76,10 @@ EFFECTS = {
     "cd_spikes": "",  # broken test: CD connector spikes of this height (mm) at SPIKES_S
     "cr_soft_clip": "",  # transducer: CR amplifier compresses, reads R tanh(cr / R) (R, g)
     "brs_reversed": "",  # broken test: BRS direction set wrong in the recorder (1 = on)
+    # set E's lab-side forms (cases_e.py): recorded channels only, the physics untouched
+    "cr_cable_break": "",  # broken test: CR cable breaks at this time (s), reads a constant
+    "cr_reversed": "",  # broken test: CR recorded at the wrong polarity (1 = on)
+    "cr_progressive": "",  # transducer: CR over-reads by this (relative) at CR_PROG_G, ~cr^2
 }
 POW_B_M = (0.015, 0.025)  # webbing_power: reference stretch, chest side and up to the retractor
 V_HYST = 0.02  # m/s: webbing_hysteresis switches between its paths within this rate

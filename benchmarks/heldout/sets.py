@@ -1,7 +1,8 @@
 """The held-out sets by name: set A (``cases``), set B (``cases_b``, written after set A had
 been looked at by the loop's engineers, kept from them until the loop ran on it), set C
 (``cases_c``, written after set B had been looked at, the same way), set D (``cases_d``,
-written after set C had been looked at, the same way)."""
+written after set C had been looked at, the same way), set E (``cases_e``, written after set D
+had been looked at, the same way)."""
 
 from __future__ import annotations
 
@@ -9,13 +10,14 @@ from .cases import CASES, Case
 from .cases_b import SET_B
 from .cases_c import SET_C
 from .cases_d import SET_D
+from .cases_e import SET_E
 
-SETS = ("a", "b", "c", "d")
+SETS = ("a", "b", "c", "d", "e")
 
 
 def case_set(name: str) -> list[Case]:
-    """Set A (``cases``), B (``cases_b``), C (``cases_c``) or D (``cases_d``); ValueError
-    for another name."""
+    """Set A (``cases``), B (``cases_b``), C (``cases_c``), D (``cases_d``) or E
+    (``cases_e``); ValueError for another name."""
     if name == "a":
         return list(CASES)
     if name == "b":
@@ -24,6 +26,8 @@ def case_set(name: str) -> list[Case]:
         return list(SET_C)
     if name == "d":
         return list(SET_D)
+    if name == "e":
+        return list(SET_E)
     raise ValueError(f"unknown case set {name!r}; known: {', '.join(SETS)}")
 
 
