@@ -291,3 +291,16 @@ def test_the_report_says_the_validation_tests_refused_an_effect_when_nothing_was
     assert line.startswith("No effect was accepted: airbag_contact") and "do not confirm" in line
     step.decision = "no candidate passes the rule (...)"
     assert none_accepted([step], "RULE") == "No effect was accepted: none passed the rule (RULE)."
+
+
+def test_a_fold_starts_from_a_fit_that_drove_a_parameter_to_zero(campaign):
+    # held-out set E: the fit on all tests drove the chest's damping c1 to exp(-800) = 0.0;
+    # each fold then started at log(0) = -inf and the optimiser's SVD met NaN (a traceback)
+    from observer_node.ident import greybox
+    from observer_node.loop.refit import fold_scores
+    data = make_dataset([t for t in campaign if t.name in ("R16_001", "R16_003", "R16_005")])
+    base = {**greybox.fit_greybox(data).params, "c1": 0.0}
+    effects = [{"kind": "pelvis_coupling", "parameters": {"kp": 1.3e3, "cp": 340.0}}]
+    with np.errstate(all="ignore"):
+        got = fold_scores(base, effects, data, [0, 1], [2], max_nfev=3)
+    assert list(got) == ["R16_005"] and np.isfinite(got["R16_005"])

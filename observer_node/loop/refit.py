@@ -81,6 +81,9 @@ def refit(base: dict, effects: list[dict], data: Dataset, max_nfev: int = 60) ->
     return first if first.cost <= second.cost else second
 
 
+_TINY = np.finfo(float).tiny
+
+
 def refit_from(base: dict, effects: list[dict], data: Dataset, max_nfev: int = 60) -> Refit:
     """Least squares over the free base parameters (as logs) and the effect parameters (scaled),
     output-error, weighted as the thesis's fit.
@@ -109,7 +112,9 @@ def refit_from(base: dict, effects: list[dict], data: Dataset, max_nfev: int = 6
         # a trial that ran away scores as a constant large misfit, not as an overflow
         return np.where(np.isfinite(r) & (np.abs(r) < 1e3), r, 1e3)
 
-    theta0 = np.concatenate([np.log([base[n] for n in FREE]),
+    # a fit may have driven a parameter to exp(-800) = 0.0 (no damping): start from the
+    # smallest positive float, not log(0) = -inf, on which the optimiser's SVD meets NaN
+    theta0 = np.concatenate([np.log(np.maximum([base[n] for n in FREE], _TINY)),
                              [_get(effects, i, n) / s for i, n, s, _ in layout]])
     res = optimize.least_squares(residual, theta0, method="trf", max_nfev=max_nfev)
     b, eff = unpack(res.x)
