@@ -8,9 +8,9 @@ verdicts before the loop ran on them. Nothing in the loop is tuned on them.
 
 Per case the loop runs blind at its defaults on 6 estimation + 6 validation tests. Printed:
 
-- what it named (kind@scope, scopes as the simulator's setups; "?" where the runner-up passes the
-  rule too and the data cannot tell the two apart), what passed the rule but the validation
-  tests refused ("refused:"), the tests it flagged, and
+- what it named (kind@scope, scopes as the simulator's setups), what passed the rule but the
+  validation tests refused ("refused:"), the pair that passed the rule but the data cannot
+  tell apart, so neither is named ("tied:"), the tests it flagged, and
   whether that is the expected verdict (for the transducer case: nothing physical named and
   "unexplained" or a sensor effect on CD);
 - the validation fit_TOT before and after;
@@ -20,7 +20,7 @@ Per case the loop runs blind at its defaults on 6 estimation + 6 validation test
   the better of the two, scored on the same validation tests;
 - the gap (reachable - after) and the loop's time;
 - at the end: how many cases are right, and how many named effects are there and not there,
-  how many are marked "?", and how many refused effects are there and not there.
+  and how many refused or tied effects are there and not there.
 
     python -m benchmarks.loop_heldout [--set a|b|c|d|e] [--cases NAME ...] [--sets DIR] [--out DIR]
                                       [--workers N] [--json FILE]
@@ -92,9 +92,9 @@ def run_case(case: Case, sets: Path, work: Path, workers: int | None) -> dict:
                  workers=workers)
     seconds = time.monotonic() - t0
     found = sorted(f"{e.kind}@{_sim_scope(e.setups or [], r)}" for e in r.effects)
-    # named, but its runner-up passes the rule too and the data cannot tell the two apart
-    untold = sorted(f"{e.kind}@{_sim_scope(e.setups or [], r)}" for e in r.effects
-                    if e.evidence.runner_up is not None and e.evidence.runner_up.rival)
+    # passed the rule, not named: a rival of another kind passes too, not told apart
+    tied = sorted(f"{p.kind}@{_sim_scope([] if p.scope == 'all' else p.scope.split('+'), r)}"
+                  for p in r.possible if "cannot tell it from" in p.why_not)
     # passed the rule, refused because the validation tests do not confirm it
     refused = sorted(f"{p.kind}@{_sim_scope([] if p.scope == 'all' else p.scope.split('+'), r)}"
                      for p in r.possible if "do not confirm" in p.why_not)
@@ -107,7 +107,7 @@ def run_case(case: Case, sets: Path, work: Path, workers: int | None) -> dict:
         output = case.expect_note.rsplit(" ", 1)[-1]  # "... on cd"
         right = right and (output in sensor or output in unexpl)
     row = {"case": case.name, "found": found, "expected": expected, "flagged": flagged,
-           "sensor": sensor, "unexplained": unexpl, "right": right, "untold": untold,
+           "sensor": sensor, "unexplained": unexpl, "right": right, "tied": tied,
            "refused": refused,
            "before": r.baseline.fit.total, "after": r.final.fit.total,
            "seconds": seconds, "possible": [f"{p.kind}@{p.scope}" for p in r.possible]}
@@ -168,8 +168,9 @@ def main() -> None:
         row = run_case(case, sets, work, a.workers)
         rows.append(row)
         reach = row.get("reachable", math.nan)
-        named = ", ".join(f + ("?" if f in row["untold"] else "")
-                          for f in row["found"]) or "(none)"
+        named = ", ".join(row["found"]) or "(none)"
+        if row["tied"]:
+            named += f"; tied: {'|'.join(row['tied'])}"
         if row["refused"]:
             named += f"; refused: {','.join(row['refused'])}"
         if row["sensor"]:
@@ -191,13 +192,12 @@ def main() -> None:
     print(f"right: {ok}/{len(rows)}; within 2 points of reach: {close}/{len(rows)}; "
           f"both: {both}/{len(rows)}", flush=True)
     for there in (False, True):
-        named = [f in r["untold"] for r in rows for f in r["found"]
-                 if (f in r["expected"]) == there]
+        named = sum((f in r["expected"]) == there for r in rows for f in r["found"])
         refused = sum((f in r["expected"]) == there for r in rows for f in r["refused"])
-        print(f"named and {'there' if there else 'not there'}: {len(named)}, marked ? (a "
-              f"runner-up that passes too, not told apart): {sum(named)}; refused by the "
-              f"validation tests and {'there' if there else 'not there'}: {refused}",
-              flush=True)
+        tied = sum((f in r["expected"]) == there for r in rows for f in r["tied"])
+        where = "there" if there else "not there"
+        print(f"named and {where}: {named}; refused by the validation tests and {where}: "
+              f"{refused}; tied (not named) and {where}: {tied}", flush=True)
 
 if __name__ == "__main__":
     main()

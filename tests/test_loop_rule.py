@@ -304,3 +304,16 @@ def test_a_fold_starts_from_a_fit_that_drove_a_parameter_to_zero(campaign):
     with np.errstate(all="ignore"):
         got = fold_scores(base, effects, data, [0, 1], [2], max_nfev=3)
     assert list(got) == ["R16_005"] and np.isfinite(got["R16_005"])
+
+
+def test_an_effect_the_data_cannot_tell_from_a_passing_rival_is_not_named():
+    from observer_node.loop.closed_loop import untold
+    from observer_node.loop.report import RunnerUp
+    tie = RunnerUp("input_delay", "all", 90.7, told_apart=False, tests_better=2,
+                   passes_rule=True)
+    why = untold("airbag_contact", tie, 6)
+    assert why is not None and "input_delay on all" in why and "2 of 6" in why
+    # told apart, or a runner-up that fails the rule: the winner is named
+    assert untold("airbag_contact", dataclasses.replace(tie, told_apart=True), 6) is None
+    assert untold("airbag_contact", dataclasses.replace(tie, passes_rule=False), 6) is None
+    assert untold("airbag_contact", None, 6) is None

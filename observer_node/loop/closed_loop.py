@@ -228,6 +228,22 @@ def _run(est_tests: list[CrashTest], val_tests: list[CrashTest], out: Path, rate
             break
         (cv_best, best, ev_best), narrower = _defended_scope(passing, per_test)
         cv_tests_best = per_test[id(best)]
+        runner_up, margin_points, other_scope = _rival(
+            [(cv_best, best, ev_best), *(t for t in tried if t[1] is not best)], per_test)
+        tie = untold(best.kind, runner_up, len(ev_best.test_gain_points))
+        if tie and runner_up is not None:
+            # two explanations the data defend equally are not a finding: both are possible
+            rival = next(t for t in tried if t[1].kind == runner_up.kind
+                         and scope_label(t[1].setups) == runner_up.scope)
+            kinds = [e["kind"] for e in effects]
+            possible += [PossibleEffect(best.kind, scope_label(best.setups), kinds, ev_best, tie),
+                         PossibleEffect(runner_up.kind, runner_up.scope, kinds, rival[2],
+                                        f"the data cannot tell it from {best.kind} on "
+                                        f"{scope_label(best.setups)}, which passes the rule "
+                                        "too")]
+            step.decision = (f"{best.kind} on {scope_label(best.setups)} passes the rule, but "
+                             f"{tie}: neither is named")
+            break
         prog.update(f"refitting with {best.kind} on all estimation tests")
         fit = refit(base, [*effects, best.effect()], est, max_nfev=120)
         resid_old = _residual(base, effects, est)
@@ -257,8 +273,6 @@ def _run(est_tests: list[CrashTest], val_tests: list[CrashTest], out: Path, rate
         base, effects, base_se = fit.base, fit.effects, fit.base_std_err
         cv_now = cv_tests_best
         params, se = effects[-1]["parameters"], fit.effect_std_err[-1]
-        runner_up, margin_points, other_scope = _rival(
-            [(cv_best, best, ev_best), *(t for t in tried if t[1] is not best)], per_test)
         entry = AcceptedEffect(
             kind=best.kind, description=describe(best.kind, params), parameters=params,
             std_err=se, setups=best.setups, applies_to=_applies_to(best.setups, est, val),
@@ -473,6 +487,20 @@ def _rival(tried: list[tuple[float, Candidate, Evidence]],
         other_scope = OtherScope(scope_label(scope[1].setups), round(scope[0], 2),
                                  round(cv_best - scope[0], 2))
     return runner_up, margin, other_scope
+
+
+def untold(kind: str, runner_up: RunnerUp | None, n_tests: int) -> str | None:
+    """Why ``kind`` is not named when its runner-up of another kind passes the rule too and
+    ``kind`` does not beat it test by test above the scatter (None when it does, or the
+    runner-up fails the rule). Named with a "?" until 2026-11-25: of the five such names on
+    held-out sets D and E, three were effects not there (a 3.25 ms pulse delay explained by
+    an airbag that fits better on 2 of 6 tests), two were there: a coin flip, not a
+    finding. No tie arose on the tuned benchmark or campaign-a."""
+    if runner_up is None or not runner_up.rival:
+        return None
+    return (f"the data cannot tell it from {runner_up.kind} on {runner_up.scope}, which passes "
+            f"the rule too ({kind} fits better on {runner_up.tests_better} of {n_tests} "
+            "estimation tests, not above the scatter)")
 
 
 VALIDATION_TOLERANCE = 0.3  # fit points: as SETUP_TOLERANCE, refit noise
