@@ -19,7 +19,17 @@ least 1 point).
 
 What each case cost the grey-box (``python -m benchmarks.heldout.costs --set f``, the plain
 thesis structure through the project's identify/evaluate, validation TOT fit with the effects
--> without, points; 2026-11-25, 2 busy cores): COSTS PENDING.
+-> without, points; 2026-11-25, 2 busy cores): clean48 92.1, clean96 93.2; rib_bottoming
+87.5 -> 89.3, rib_fluid 88.1 -> 90.9, webbing_hysteresis 91.4 -> 94.0, webbing_power 88.3 ->
+93.8, airbag_vented 88.2 -> 90.6, pelvis 89.0 -> 93.6, two_effects 87.7 -> 92.8 (each alone:
+the R16 valve 3.7, the SLED set 1.8), broken_brs_reset 89.6 -> 92.0 and broken_cr_hum 91.8 ->
+91.8 (flagging the test is the verdict asked; the hum is zero-mean and costs the fit nothing),
+cd_compress 86.9 -> 88.8, pulse_late_2p25ms 90.8 -> 92.5, brs_late_4p4ms 87.5 -> 91.7.
+Changed after a first look at these costs, after the verdicts' commit and before any loop run
+(same seeds, verdicts unchanged): two_effects was rib_valve 3000 on R16 with webbing_set 0.55
+on SLED, cost 7.1; cd_compress was 50 mm, cost 0.2 (30 mm 1.1); the BRS reset was at 40 ms,
+where the spool had paid in only 6 counts (cost -0.1, a reviewer could miss it), now at 70 ms
+in the load limiter's pay-out.
 """
 
 from __future__ import annotations
@@ -73,13 +83,14 @@ SET_F: list[Case] = [
          notes="pelvis mass on lap belt and seat, lumbar spine to the thoracic spine, 0.55 x "
                "set A's lumbar and lap stiffness (A 1.0, B 0.6, C 1.5 and 0.8, D 0.45, E 0.7)"),
     Case("hf_two_effects", 15941, M231, M222, 96,
-         (Effect("rib_valve", 3000.0, ("R16",)), Effect("webbing_set", 0.55, ("SLED",))),
+         (Effect("rib_valve", 2000.0, ("R16",)), Effect("webbing_set", 0.4, ("SLED",))),
          (("chest_rate_damping", "R16"), ("belt_unloading", "SLED")),
          notes="R16: the certification rig's dummy, its rib damping resisting compression "
-               "only, F += c d'^2 while compressing (3000; C: 4000, D: 2200, everywhere); "
-               "SLED: the rig's much-used webbing takes a permanent set, unloading to 55 % "
+               "only, F += c d'^2 while compressing (2000; C: 4000, D: 2200, everywhere); "
+               "SLED: the rig's much-used webbing takes a permanent set, unloading to 40 % "
                "of its peak stretch (C: 50 %, E: 65 %, everywhere); 2 R16 and 2-3 SLED tests "
-               "in each part, the FULL tests clean of both"),
+               "in each part, the FULL tests clean of both. Each alone costs 3.7 (R16) and "
+               "1.8 (SLED), together 5.1"),
     Case("hf_broken_brs_reset", 15049, M321, M213, 96,
          (Effect("brs_reset", 0.070, tests=("SLED_003",)),), (),
          expect_broken=("SLED_003",),
@@ -93,11 +104,13 @@ SET_F: list[Case] = [
                "6 g amplitude, from before the crash to the end (CFC 180 passes it): a sine "
                "on the flat pre-crash line; physics clean"),
     Case("hf_cd_compress", 15263, M123, M123, 96,
-         (Effect("cd_compress", 50.0),), (), expect_note=UNEXPLAINED_CD,
-         notes="the chest pot's linkage reads low at large deflection: CD reads "
-               "50 mm tanh(cd / 50 mm), 1.3 % low at 10 mm, 7.6 % at 25 mm, 10.5 % at 30 mm "
-               "(A: CD over-reading, B: a CD knee, D: CR compressing), CR and the inputs "
-               "untouched: a residual in cd only, a static function of cd"),
+         (Effect("cd_compress", 25.0),), (), expect_note=UNEXPLAINED_CD,
+         notes="the chest pot's signal conditioner works near its output range and "
+               "compresses: CD reads 25 mm tanh(cd / 25 mm), 5 % low at 10 mm, 17 % at "
+               "20 mm, 30 % at 30 mm (A: CD over-reading, B: a CD knee, D: CR compressing), "
+               "CR and the inputs untouched: a residual in cd only, a static function of cd. "
+               "At 50 mm (10 % low at 30 mm) it cost 0.2, at 30 mm 1.1: the plain structure "
+               "absorbs a mild one"),
     Case("hf_pulse_late_2p25ms", 15369, M213, M114, 128,
          (Effect("pulse_late", 0.00225),), (("input_delay", "all"),),
          notes="the chest feels the pulse 2.25 ms after it is recorded (A-E: pulse 1.5, 2, "
