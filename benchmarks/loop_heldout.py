@@ -143,9 +143,10 @@ def generate(case_set: str, cases: list[Case], out: Path) -> Path:
 def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__,
                                  formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("--set", dest="case_set", choices=("a", "b", "c", "d", "e"), default="a",
+    ap.add_argument("--set", dest="case_set", choices=("a", "b", "c", "d", "e", "f"),
+                    default="a",
                     help="set A (cases.py, default), set B (cases_b.py), set C (cases_c.py), "
-                         "set D (cases_d.py) or set E (cases_e.py)")
+                         "set D (cases_d.py), set E (cases_e.py) or set F (cases_f.py)")
     ap.add_argument("--cases", nargs="+", metavar="NAME", help="only these cases of the set")
     ap.add_argument("--sets", type=Path, help="the generated sets (default: generate them "
                     "into a temporary folder with benchmarks.heldout.make_sets)")

@@ -745,3 +745,175 @@ def test_set_e_cr_over_reads_cr_only(set_e: Path) -> None:
         small = np.abs(cr0) < 4
         assert np.allclose(cr[small], cr0[small], atol=0.2)
 
+
+
+# ------------------------------------------------------------------ set F (cases_f.py)
+
+SET_F = heldout_sets.case_set("f")
+WATCHED_F = ("hf_broken_brs_reset", "hf_broken_cr_hum", "hf_cd_compress")
+
+
+@pytest.fixture(scope="module")
+def set_f(tmp_path_factory: pytest.TempPathFactory) -> Path:
+    return _generate(tmp_path_factory, "f", WATCHED_F)
+
+
+def test_set_f_is_new(capsys: pytest.CaptureFixture[str]) -> None:
+    before = SET_A + SET_B + SET_C + SET_D + SET_E
+    assert len(SET_F) == 14
+    names = [c.name for c in before + SET_F]
+    assert len(set(names)) == len(names)
+    seeds = [c.seed for c in SET_F]
+    assert len(set(seeds)) == len(seeds) and all(15000 <= s < 16000 for s in seeds)
+    assert not {c.seed for c in before} & set(seeds)
+    pairings = [_pairing(c) for c in SET_F]
+    assert len(set(pairings)) == len(pairings)
+    assert not set(pairings) & {_pairing(c) for c in before}
+    for c in SET_F:
+        assert len(c.est) == len(c.val) == 6
+        assert set(c.est) == set(c.val)  # validation on the setups the estimation saw
+        est, _ = cases.test_names(c)
+        for e in c.effects:
+            assert e.key in physics.EFFECTS and set(e.tests) <= set(est)
+            assert set(e.setups) & set(c.est)  # acts on a setup the case has
+    assert not _pairs(SET_F) & _pairs(before)  # no (key, size) of A-E again
+    assert make_sets.main(["--set", "f", "--out", "x", "--case", "he_clean48"]) == 2
+    assert "unknown case 'he_clean48' in set f" in capsys.readouterr().err
+
+
+def test_set_f_covers_the_issue_list() -> None:
+    lib, before = physics.EFFECTS, SET_A + SET_B + SET_C + SET_D + SET_E
+    clean = [c for c in SET_F if not c.effects and not c.expect and not c.expect_note]
+    assert sorted(c.counts_per_rev for c in clean) == [48, 96]
+    assert not any(c.expect_broken for c in clean)
+    # each physical effect expected in exactly one single-effect case, caused by it alone, in
+    # a (form, size) no earlier set used
+    singles = [c for c in SET_F if len(c.expect) == 1 and len(c.effects) == 1
+               and c.expect[0][0] != "input_delay"]
+    assert sorted(c.expect[0][0] for c in singles) == sorted(PHYSICAL)
+    for c in singles:
+        (kind, scope), (e,) = c.expect[0], c.effects
+        assert lib[e.key] == kind and not e.tests and not c.expect_broken
+        assert scope == "all" if set(e.setups) >= set(c.est) else scope == "+".join(e.setups)
+        if kind == "airbag_contact":  # on the rigs with an interior, beside one without
+            assert set(e.setups) <= INTERIOR and set(c.est) - INTERIOR
+    # two effects on disjoint setups of the case, each caused by an effect on exactly those
+    (two,) = [c for c in SET_F if len(c.expect) == 2]
+    scopes = [set(s.split("+")) for _, s in two.expect]
+    assert not scopes[0] & scopes[1] and all(s <= set(two.est) for s in scopes)
+    for (name, scope), e in zip(two.expect, two.effects, strict=True):
+        assert lib[e.key] == name and set(e.setups) == set(scope.split("+"))
+        if name == "airbag_contact":
+            assert set(e.setups) <= INTERIOR
+    # broken tests of kinds no earlier set used, one test of the 12, named, nothing else
+    broken = [c for c in SET_F if c.expect_broken]
+    assert len(broken) == 2
+    for c in broken:
+        assert not c.expect and not c.expect_note and len(c.expect_broken) == 1
+        assert all(lib[e.key] == "" for e in c.effects)
+        assert {t for e in c.effects for t in e.tests} == set(c.expect_broken)
+    assert not _keys(broken) & _keys(before)
+    # one transducer error on an output, of a kind no earlier set used: nothing physical named
+    (sensor,) = [c for c in SET_F if c.expect_note]
+    assert sensor.expect_note.startswith("unexplained") and not sensor.expect
+    assert not sensor.expect_broken and all(lib[e.key] == "" for e in sensor.effects)
+    assert not _keys([sensor]) & _keys(before)
+    # one input delay on each input, 1..5 ms, at a delay no earlier set used on either input
+    delays_before = {e.size for c in before for e in c.effects if lib[e.key] == "input_delay"}
+    for key in ("pulse_late", "brs_late"):
+        (case,) = [c for c in SET_F if _keys([c]) == {key}]
+        (e,) = case.effects
+        assert case.expect == (("input_delay", "all"),) and set(e.setups) >= set(case.est)
+        assert 0.001 <= e.size <= 0.005 and e.size not in delays_before
+    assert len(clean) + len(singles) + 1 + len(broken) + 1 + 2 == len(SET_F)
+
+
+def test_set_f_scoped_effects_rest_on_two_tests_each_side() -> None:
+    """An effect on some setups only rests on >= 2 estimation and >= 2 validation tests of
+    them, beside a test of a setup it does not act on (else its scope cannot be told)."""
+    scoped = [(c, e) for c in SET_F for e in c.effects
+              if not e.tests and not set(e.setups) >= set(c.est)]
+    assert len(scoped) >= 3  # the airbag case and both effects of the two-effect case
+    for c, e in scoped:
+        for part in (c.est, c.val):
+            assert sum(s in e.setups for s in part) >= 2
+            assert sum(s not in e.setups for s in part) >= 1
+
+
+def test_set_f_generates_and_reads(set_f: Path) -> None:
+    _generated_and_read(SET_F, set_f)
+
+
+def test_set_f_same_seed_same_bytes(set_f: Path, tmp_path: Path) -> None:
+    c = heldout_sets.select(["hf_two_effects", "hf_broken_cr_hum"], "f")
+    make_sets.make(c, tmp_path, log=False)
+    for name in ("hf_two_effects", "hf_broken_cr_hum"):
+        assert _files(tmp_path / name) == _files(set_f / "on" / name)
+
+
+def test_set_f_forms_leave_sets_a_to_e_alone(tmp_path: Path) -> None:
+    """Set F's cases (and its lab-side forms) in the same batch do not move a set A-E test by
+    one bit."""
+    old = (heldout_sets.select(["h_broken_brs"]) + heldout_sets.select(["hb_cr_gain"], "b")
+           + heldout_sets.select(["hc_neck_head"], "c")
+           + heldout_sets.select(["hd_broken_brs_reversed"], "d")
+           + heldout_sets.select(["he_cr_progressive", "he_broken_cr_cable"], "e"))
+    make_sets.make(old, tmp_path / "alone", log=False)
+    make_sets.make(old + [c for c in SET_F if c.effects], tmp_path / "mixed", log=False)
+    for c in old:
+        assert _files(tmp_path / "alone" / c.name) == _files(tmp_path / "mixed" / c.name)
+
+
+def _brs(root: Path, test: str) -> np.ndarray:
+    return np.asarray(read_isomme(next(root.glob(f"*/{test}"))).brs, dtype=float)
+
+
+def test_set_f_brs_counter_resets_to_zero(set_f: Path) -> None:
+    c = heldout_sets.select(["hf_broken_brs_reset"], "f")[0]
+    (broken,), (eff,) = c.expect_broken, c.effects
+    bad, good = _brs(set_f / "on" / c.name, broken), _brs(set_f / "off" / c.name, broken)
+    t = _times(len(bad))
+    after = t >= eff.size
+    k = int(np.argmax(after))
+    assert np.array_equal(bad[~after], good[~after])
+    assert abs(good[k]) >= 15  # the spool had paid in by then: the reset is a visible jump
+    assert np.array_equal(bad[after], good[after] - good[k]) and bad[k] == 0
+    for which in ("cr", "cd", "pulse"):
+        assert np.array_equal(_channel(set_f / "on" / c.name, broken, which),
+                              _channel(set_f / "off" / c.name, broken, which))
+    _others_untouched(set_f, c.name, broken)
+
+
+def test_set_f_cr_hum_is_on_cr_from_the_start(set_f: Path) -> None:
+    c = heldout_sets.select(["hf_broken_cr_hum"], "f")[0]
+    (broken,), (eff,) = c.expect_broken, c.effects
+    bad = _channel(set_f / "on" / c.name, broken, "cr")
+    good = _channel(set_f / "off" / c.name, broken, "cr")
+    t = _times(len(bad))
+    hum = bad - good
+    assert np.abs(hum[t < 0]).max() > 0.8 * eff.size  # before the crash: the flat line hums
+    spectrum = np.abs(np.fft.rfft(hum))
+    assert np.fft.rfftfreq(len(hum), 1e-4)[np.argmax(spectrum)] == pytest.approx(
+        lab.HUM_HZ, abs=5)
+    for which in ("cd", "pulse"):
+        assert np.array_equal(_channel(set_f / "on" / c.name, broken, which),
+                              _channel(set_f / "off" / c.name, broken, which))
+    _others_untouched(set_f, c.name, broken)
+
+
+def test_set_f_cd_compresses_cd_only(set_f: Path) -> None:
+    """The transducer error is a static function of cd, in cd alone: low at the peak by
+    tanh, right at small deflection; CR and the pulse as without it."""
+    c = heldout_sets.select(["hf_cd_compress"], "f")[0]
+    (eff,) = c.effects
+    on, off = set_f / "on" / c.name, set_f / "off" / c.name
+    for folder in sorted(on.glob("*/*")):
+        for which in ("cr", "pulse"):
+            assert np.array_equal(_channel(on, folder.name, which),
+                                  _channel(off, folder.name, which))
+        cd, cd0 = _channel(on, folder.name, "cd"), _channel(off, folder.name, "cd")
+        peak = int(np.argmax(cd0))
+        want = eff.size * np.tanh(cd0[peak] / eff.size)
+        assert cd[peak] < cd0[peak] - 1 and cd[peak] == pytest.approx(want, abs=0.3)
+        small = np.abs(cd0) < 3
+        assert np.allclose(cd[small], cd0[small], atol=0.1)

@@ -11,10 +11,13 @@
   verdicts committed before the loop ran on them (now seen too).  ``cases_c.py``: set C, the
   same again, on two-setup mixes, with a case outside the loop's vocabulary.
   ``cases_d.py``: set D, the same again, on lopsided and single-setup mixes.
+  ``cases_e.py``: set E, on pairings of setup counts no earlier case ran; ``cases_f.py``:
+  set F, the same again, with lab-side faults of new kinds.
   ``make_sets.py``: writes a set (``--no-effects``: the same tests with every effect off).
   ``costs.py``: what each case costs the thesis grey-box (project CLI).
 
-    python -m benchmarks.heldout.make_sets --out /tmp/heldout [--set a|b|c|d] [--case NAME ...]
+    python -m benchmarks.heldout.make_sets --out /tmp/heldout [--set a|b|c|d|e|f]
+        [--case NAME ...]
 
 Never tune the loop on these cases; report them apart from the tuned ones.
 """

@@ -29,7 +29,8 @@ DV_MS = {"R16": (13.6, 14.4), "SLED": (14.0, 15.6), "FULL": (14.3, 16.2)}
 # stated exactly, no per-test scatter: times, ranges, and one transducer's calibration
 EXACT = {"pulse_late", "brs_late", "brs_freeze", "cd_dropout", "pulse_rail", "pulse_gain",
          "cr_gain", "cd_knee", "pulse_zero_shift", "cd_spikes", "brs_reversed",
-         "cr_soft_clip", "cr_cable_break", "cr_reversed", "cr_progressive"}
+         "cr_soft_clip", "cr_cable_break", "cr_reversed", "cr_progressive", "brs_reset",
+         "cr_hum", "cd_compress"}
 DROPOUT_S = 0.010  # how long cd_dropout's wiper stays off the track
 KNEE_SLOPE = 0.6  # cd_knee: the gain of the CD calibration's second segment
 SHIFT_AT_S = 0.011  # pulse_zero_shift: when the zero shifts (in the crash-box spike)
@@ -39,6 +40,7 @@ SPIKES_S = ((0.016, 1), (0.029, -1), (0.043, 1), (0.057, -1), (0.068, 1), (0.084
 SPIKE_SAMPLES = 3
 CABLE_BREAK_G = 0.0  # cr_cable_break: what the open bridge reads, constant (g)
 CR_PROG_G = 25.0  # cr_progressive: the level (g) where CR over-reads by the effect's size
+HUM_HZ = 50.0  # cr_hum: a ground loop picks up the mains (European lab)
 NOISE = {"pulse_g": 0.6, "cr_g": 0.55, "cd_mm": 0.10}  # white, before the CFC filters
 
 
@@ -121,6 +123,9 @@ def record(d: Drawn, i: int, sim: dict[str, np.ndarray], counts_per_rev: int,
     if e["brs_freeze"] > 0:
         k = int(np.searchsorted(t, e["brs_freeze"]))
         counts[k:] = counts[k]
+    if e["brs_reset"]:  # a supply glitch resets the counter: it counts on from zero
+        k = int(np.searchsorted(t, e["brs_reset"]))
+        counts[k:] = counts[k:] - counts[k]
     if e["brs_reversed"]:  # the recorder's count direction set wrong: pay-in reads as pay-out
         counts = -counts
     # CR (CFC 180), CD (CFC 600, maybe a non-linear pot, maybe zeroed off)
@@ -132,6 +137,8 @@ def record(d: Drawn, i: int, sim: dict[str, np.ndarray], counts_per_rev: int,
     if e["cr_progressive"]:  # a sensing element stiffening less than its calibration says
         cr_read = cr_read * (1.0 + e["cr_progressive"] * (cr_read / CR_PROG_G) ** 2)
     cr_raw = cr_read + NOISE["cr_g"] * rng.standard_normal(t.size)
+    if e["cr_hum"]:  # a ground loop: mains hum on the bridge, from before the crash on
+        cr_raw = cr_raw + e["cr_hum"] * np.sin(2 * np.pi * HUM_HZ * t + 2 * np.pi * d.brs_phase)
     if e["cr_cable_break"]:  # the cable parts: the amplifier reads a constant from then on
         cr_raw[t >= e["cr_cable_break"]] = CABLE_BREAK_G
     cr = ph.cfc(cr_raw, 180)
@@ -141,6 +148,8 @@ def record(d: Drawn, i: int, sim: dict[str, np.ndarray], counts_per_rev: int,
     cd = cd_true * (1.0 + e["cd_pot_nonlinear"] * (np.maximum(cd_true, 0) / 25.0) ** 2)
     if e["cd_knee"]:  # two-segment calibration, the second segment's slope entered wrong
         cd = np.where(cd > e["cd_knee"], e["cd_knee"] + KNEE_SLOPE * (cd - e["cd_knee"]), cd)
+    if e["cd_compress"]:  # the pot's linkage reads low at large deflection, smoothly
+        cd = e["cd_compress"] * np.tanh(cd / e["cd_compress"])
     cd = cd + NOISE["cd_mm"] * rng.standard_normal(t.size)
     if e["cd_spikes"]:  # the connector opens and closes: short spikes
         for t_s, sign in SPIKES_S:

@@ -80,6 +80,10 @@ EFFECTS = {
     "cr_cable_break": "",  # broken test: CR cable breaks at this time (s), reads a constant
     "cr_reversed": "",  # broken test: CR recorded at the wrong polarity (1 = on)
     "cr_progressive": "",  # transducer: CR over-reads by this (relative) at CR_PROG_G, ~cr^2
+    # set F's lab-side forms (cases_f.py): recorded channels only, the physics untouched
+    "brs_reset": "",  # broken test: the BRS counter resets to zero at this time (s)
+    "cr_hum": "",  # broken test: mains hum (HUM_HZ) on the CR channel, this amplitude (g)
+    "cd_compress": "",  # transducer: CD reads R tanh(cd / R) (R, mm), CR untouched
 }
 POW_B_M = (0.015, 0.025)  # webbing_power: reference stretch, chest side and up to the retractor
 V_HYST = 0.02  # m/s: webbing_hysteresis switches between its paths within this rate

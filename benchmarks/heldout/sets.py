@@ -2,7 +2,8 @@
 been looked at by the loop's engineers, kept from them until the loop ran on it), set C
 (``cases_c``, written after set B had been looked at, the same way), set D (``cases_d``,
 written after set C had been looked at, the same way), set E (``cases_e``, written after set D
-had been looked at, the same way)."""
+had been looked at, the same way), set F (``cases_f``, written after set E had been looked at,
+the same way)."""
 
 from __future__ import annotations
 
@@ -11,13 +12,14 @@ from .cases_b import SET_B
 from .cases_c import SET_C
 from .cases_d import SET_D
 from .cases_e import SET_E
+from .cases_f import SET_F
 
-SETS = ("a", "b", "c", "d", "e")
+SETS = ("a", "b", "c", "d", "e", "f")
 
 
 def case_set(name: str) -> list[Case]:
-    """Set A (``cases``), B (``cases_b``), C (``cases_c``), D (``cases_d``) or E
-    (``cases_e``); ValueError for another name."""
+    """Set A (``cases``), B (``cases_b``), C (``cases_c``), D (``cases_d``), E (``cases_e``)
+    or F (``cases_f``); ValueError for another name."""
     if name == "a":
         return list(CASES)
     if name == "b":
@@ -28,6 +30,8 @@ def case_set(name: str) -> list[Case]:
         return list(SET_D)
     if name == "e":
         return list(SET_E)
+    if name == "f":
+        return list(SET_F)
     raise ValueError(f"unknown case set {name!r}; known: {', '.join(SETS)}")
 
 
