@@ -99,7 +99,8 @@ def test_a_step_that_raises_is_counted_flagged_invalid_and_survived(model, tmp_p
         k = _feed(h, k, [-20.0] * 8)
         time.sleep(0.5)  # the watchdog ends the event: its criteria fail
         k = _feed(h, k, [0.0] * 50)
-        time.sleep(0.2)
+        assert h.settle()
+        time.sleep(0.2)  # a status period
         assert h.thread.is_alive()
         status = [st.decode(m.data) for m in iter(lambda: h.rx.recv(0), None)
                   if m.arbitration_id == st.frame_id]

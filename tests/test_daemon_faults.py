@@ -56,7 +56,8 @@ def test_killed_writer_restarts_into_a_new_part_and_says_so(model, tmp_path):
             if k == 150:
                 os.kill(rec.proc.pid, signal.SIGKILL)
         _feed(h, range(600), kill_writer)
-        time.sleep(0.3)
+        assert h.settle()
+        time.sleep(0.3)  # a status period, for the frames that say so
         status, health = _status(h)
     assert h.node.counters.ticks == 600  # the estimate never stopped
     assert rec.state == RecorderState.RESTARTED and len(rec.parts) == 2
@@ -103,6 +104,7 @@ def test_disk_full_fails_the_recording_loudly_and_estimates_go_on(model, tmp_pat
                 st, he = _status(h)
                 status += st
                 health += he
+            assert h.settle()
         assert h.node.counters.ticks == fed
         assert rec.state == RecorderState.FAILED and rec.lost_ticks > 0
         assert any("No space left on device" in line for line in logs)

@@ -150,7 +150,8 @@ def test_every_tick_in_exactly_one_part_across_writer_kills(model, tmp_path, mon
         os.kill(rec.proc.pid, signal.SIGKILL)
         _feed(h, range(k, k + 600))
         k += 600
-        time.sleep(0.3)
+        assert h.settle()
+        time.sleep(0.3)  # the writer's restart
     assert len(rec.parts) == 3 and not h.node.recorder.lost_ticks
     per_part = [_part_ticks(p) for p in rec.parts]
     everything = sorted(t for ticks in per_part for t in ticks)

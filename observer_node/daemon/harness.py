@@ -49,6 +49,7 @@ class Harness:
         self.tx = can.Bus(interface="virtual", channel=channel)
         self.rx = can.Bus(interface="virtual", channel=channel)
         self.thread = threading.Thread(target=self.node.run, kwargs={"idle_exit_s": 0.3})
+        self.sent = 0  # frames sent through :meth:`send`
 
     def __enter__(self) -> Harness:
         self.thread.start()
@@ -59,7 +60,16 @@ class Harness:
 
     def send(self, can_id: int, data: bytes) -> bool:
         self.tx.send(can.Message(arbitration_id=can_id, data=data, is_extended_id=False))
+        self.sent += 1
         return True
+
+    def settle(self, timeout_s: float = 10.0) -> bool:
+        """Wait until the node has received every frame sent (a loaded machine runs it
+        late; leaving the harness stops it with frames still queued). False on timeout."""
+        deadline = time.monotonic() + timeout_s
+        while self.node.counters.rx < self.sent and time.monotonic() < deadline:
+            time.sleep(0.005)
+        return self.node.counters.rx >= self.sent
 
     def play(self, schedule: Schedule, rate: float = 1.0) -> TimingReport:
         return play(schedule, bus_sender(self.tx, schedule), rate=rate)
