@@ -112,7 +112,7 @@ def refit_from(base: dict, effects: list[dict], data: Dataset, max_nfev: int = 6
         # a trial that ran away scores as a constant large misfit, not as an overflow
         return np.where(np.isfinite(r) & (np.abs(r) < 1e3), r, 1e3)
 
-    # a fit may have driven a parameter to exp(-800) = 0.0 (no damping): start from the
+    # a fit may have driven a parameter below exp(-745), to 0.0 (no damping): start from the
     # smallest positive float, not log(0) = -inf, on which the optimiser's SVD meets NaN
     theta0 = np.concatenate([np.log(np.maximum([base[n] for n in FREE], _TINY)),
                              [_get(effects, i, n) / s for i, n, s, _ in layout]])
