@@ -593,89 +593,6 @@ def _pairing(c: cases.Case) -> tuple[tuple[int, ...], tuple[int, ...]]:
     return _mix(c.est), _mix(c.val)
 
 
-def test_set_e_is_new(capsys: pytest.CaptureFixture[str]) -> None:
-    before = SET_A + SET_B + SET_C + SET_D
-    assert len(SET_E) == 14
-    names = [c.name for c in before + SET_E]
-    assert len(set(names)) == len(names)
-    seeds = [c.seed for c in SET_E]
-    assert len(set(seeds)) == len(seeds) and all(14000 <= s < 15000 for s in seeds)
-    assert not {c.seed for c in before} & set(seeds)
-    # A-D used every split of six tests over three setups; the (est, val) pairings are new
-    pairings = [_pairing(c) for c in SET_E]
-    assert len(set(pairings)) == len(pairings)
-    assert not set(pairings) & {_pairing(c) for c in before}
-    for c in SET_E:
-        assert len(c.est) == len(c.val) == 6
-        assert set(c.est) == set(c.val)  # validation on the setups the estimation saw
-        est, _ = cases.test_names(c)
-        for e in c.effects:
-            assert e.key in physics.EFFECTS and set(e.tests) <= set(est)
-            assert set(e.setups) & set(c.est)  # acts on a setup the case has
-    assert not _pairs(SET_E) & _pairs(before)  # no (key, size) of A-D again
-    assert make_sets.main(["--set", "e", "--out", "x", "--case", "hd_clean48"]) == 2
-    assert "unknown case 'hd_clean48' in set e" in capsys.readouterr().err
-
-
-def test_set_e_covers_the_issue_list() -> None:
-    lib, before = physics.EFFECTS, SET_A + SET_B + SET_C + SET_D
-    clean = [c for c in SET_E if not c.effects and not c.expect and not c.expect_note]
-    assert sorted(c.counts_per_rev for c in clean) == [48, 96]
-    assert not any(c.expect_broken for c in clean)
-    # each physical effect expected in exactly one single-effect case, caused by it alone, in
-    # a (form, size) no earlier set used
-    singles = [c for c in SET_E if len(c.expect) == 1 and len(c.effects) == 1
-               and c.expect[0][0] != "input_delay"]
-    assert sorted(c.expect[0][0] for c in singles) == sorted(PHYSICAL)
-    for c in singles:
-        (kind, scope), (e,) = c.expect[0], c.effects
-        assert lib[e.key] == kind and not e.tests and not c.expect_broken
-        assert scope == "all" if set(e.setups) >= set(c.est) else scope == "+".join(e.setups)
-        if kind == "airbag_contact":  # on the rigs with an interior, beside one without
-            assert set(e.setups) <= INTERIOR and set(c.est) - INTERIOR
-    # two effects on disjoint setups of the case, each caused by an effect on exactly those
-    (two,) = [c for c in SET_E if len(c.expect) == 2]
-    scopes = [set(s.split("+")) for _, s in two.expect]
-    assert not scopes[0] & scopes[1] and all(s <= set(two.est) for s in scopes)
-    for (name, scope), e in zip(two.expect, two.effects, strict=True):
-        assert lib[e.key] == name and set(e.setups) == set(scope.split("+"))
-        if name == "airbag_contact":
-            assert set(e.setups) <= INTERIOR
-    # broken tests of kinds no earlier set used, one test of the 12, named, nothing else
-    broken = [c for c in SET_E if c.expect_broken]
-    assert broken
-    for c in broken:
-        assert not c.expect and not c.expect_note and len(c.expect_broken) == 1
-        assert all(lib[e.key] == "" for e in c.effects)
-        assert {t for e in c.effects for t in e.tests} == set(c.expect_broken)
-    assert not _keys(broken) & _keys(before)
-    # one transducer error on an output, of a kind no earlier set used: nothing physical named
-    (sensor,) = [c for c in SET_E if c.expect_note]
-    assert sensor.expect_note.startswith("unexplained") and not sensor.expect
-    assert not sensor.expect_broken and all(lib[e.key] == "" for e in sensor.effects)
-    assert not _keys([sensor]) & _keys(before)
-    # one input delay on each input, 1..5 ms, at a delay no earlier set used on either input
-    delays_before = {e.size for c in before for e in c.effects if lib[e.key] == "input_delay"}
-    for key in ("pulse_late", "brs_late"):
-        (case,) = [c for c in SET_E if _keys([c]) == {key}]
-        (e,) = case.effects
-        assert case.expect == (("input_delay", "all"),) and set(e.setups) >= set(case.est)
-        assert 0.001 <= e.size <= 0.005 and e.size not in delays_before
-    assert len(clean) + len(singles) + 1 + len(broken) + 1 + 2 == len(SET_E)
-
-
-def test_set_e_scoped_effects_rest_on_two_tests_each_side() -> None:
-    """An effect on some setups only rests on >= 2 estimation and >= 2 validation tests of
-    them, beside a test of a setup it does not act on (else its scope cannot be told)."""
-    scoped = [(c, e) for c in SET_E for e in c.effects
-              if not e.tests and not set(e.setups) >= set(c.est)]
-    assert len(scoped) >= 3  # the airbag case and both effects of the two-effect case
-    for c, e in scoped:
-        for part in (c.est, c.val):
-            assert sum(s in e.setups for s in part) >= 2
-            assert sum(s not in e.setups for s in part) >= 1
-
-
 def test_set_e_generates_and_reads(set_e: Path) -> None:
     _generated_and_read([c for c in SET_E if c.name != "he_broken_cr_reversed"], set_e)
 
@@ -758,88 +675,6 @@ def set_f(tmp_path_factory: pytest.TempPathFactory) -> Path:
     return _generate(tmp_path_factory, "f", WATCHED_F)
 
 
-def test_set_f_is_new(capsys: pytest.CaptureFixture[str]) -> None:
-    before = SET_A + SET_B + SET_C + SET_D + SET_E
-    assert len(SET_F) == 14
-    names = [c.name for c in before + SET_F]
-    assert len(set(names)) == len(names)
-    seeds = [c.seed for c in SET_F]
-    assert len(set(seeds)) == len(seeds) and all(15000 <= s < 16000 for s in seeds)
-    assert not {c.seed for c in before} & set(seeds)
-    pairings = [_pairing(c) for c in SET_F]
-    assert len(set(pairings)) == len(pairings)
-    assert not set(pairings) & {_pairing(c) for c in before}
-    for c in SET_F:
-        assert len(c.est) == len(c.val) == 6
-        assert set(c.est) == set(c.val)  # validation on the setups the estimation saw
-        est, _ = cases.test_names(c)
-        for e in c.effects:
-            assert e.key in physics.EFFECTS and set(e.tests) <= set(est)
-            assert set(e.setups) & set(c.est)  # acts on a setup the case has
-    assert not _pairs(SET_F) & _pairs(before)  # no (key, size) of A-E again
-    assert make_sets.main(["--set", "f", "--out", "x", "--case", "he_clean48"]) == 2
-    assert "unknown case 'he_clean48' in set f" in capsys.readouterr().err
-
-
-def test_set_f_covers_the_issue_list() -> None:
-    lib, before = physics.EFFECTS, SET_A + SET_B + SET_C + SET_D + SET_E
-    clean = [c for c in SET_F if not c.effects and not c.expect and not c.expect_note]
-    assert sorted(c.counts_per_rev for c in clean) == [48, 96]
-    assert not any(c.expect_broken for c in clean)
-    # each physical effect expected in exactly one single-effect case, caused by it alone, in
-    # a (form, size) no earlier set used
-    singles = [c for c in SET_F if len(c.expect) == 1 and len(c.effects) == 1
-               and c.expect[0][0] != "input_delay"]
-    assert sorted(c.expect[0][0] for c in singles) == sorted(PHYSICAL)
-    for c in singles:
-        (kind, scope), (e,) = c.expect[0], c.effects
-        assert lib[e.key] == kind and not e.tests and not c.expect_broken
-        assert scope == "all" if set(e.setups) >= set(c.est) else scope == "+".join(e.setups)
-        if kind == "airbag_contact":  # on the rigs with an interior, beside one without
-            assert set(e.setups) <= INTERIOR and set(c.est) - INTERIOR
-    # two effects on disjoint setups of the case, each caused by an effect on exactly those
-    (two,) = [c for c in SET_F if len(c.expect) == 2]
-    scopes = [set(s.split("+")) for _, s in two.expect]
-    assert not scopes[0] & scopes[1] and all(s <= set(two.est) for s in scopes)
-    for (name, scope), e in zip(two.expect, two.effects, strict=True):
-        assert lib[e.key] == name and set(e.setups) == set(scope.split("+"))
-        if name == "airbag_contact":
-            assert set(e.setups) <= INTERIOR
-    # broken tests of kinds no earlier set used, one test of the 12, named, nothing else
-    broken = [c for c in SET_F if c.expect_broken]
-    assert len(broken) == 2
-    for c in broken:
-        assert not c.expect and not c.expect_note and len(c.expect_broken) == 1
-        assert all(lib[e.key] == "" for e in c.effects)
-        assert {t for e in c.effects for t in e.tests} == set(c.expect_broken)
-    assert not _keys(broken) & _keys(before)
-    # one transducer error on an output, of a kind no earlier set used: nothing physical named
-    (sensor,) = [c for c in SET_F if c.expect_note]
-    assert sensor.expect_note.startswith("unexplained") and not sensor.expect
-    assert not sensor.expect_broken and all(lib[e.key] == "" for e in sensor.effects)
-    assert not _keys([sensor]) & _keys(before)
-    # one input delay on each input, 1..5 ms, at a delay no earlier set used on either input
-    delays_before = {e.size for c in before for e in c.effects if lib[e.key] == "input_delay"}
-    for key in ("pulse_late", "brs_late"):
-        (case,) = [c for c in SET_F if _keys([c]) == {key}]
-        (e,) = case.effects
-        assert case.expect == (("input_delay", "all"),) and set(e.setups) >= set(case.est)
-        assert 0.001 <= e.size <= 0.005 and e.size not in delays_before
-    assert len(clean) + len(singles) + 1 + len(broken) + 1 + 2 == len(SET_F)
-
-
-def test_set_f_scoped_effects_rest_on_two_tests_each_side() -> None:
-    """An effect on some setups only rests on >= 2 estimation and >= 2 validation tests of
-    them, beside a test of a setup it does not act on (else its scope cannot be told)."""
-    scoped = [(c, e) for c in SET_F for e in c.effects
-              if not e.tests and not set(e.setups) >= set(c.est)]
-    assert len(scoped) >= 3  # the airbag case and both effects of the two-effect case
-    for c, e in scoped:
-        for part in (c.est, c.val):
-            assert sum(s in e.setups for s in part) >= 2
-            assert sum(s not in e.setups for s in part) >= 1
-
-
 def test_set_f_generates_and_reads(set_f: Path) -> None:
     _generated_and_read(SET_F, set_f)
 
@@ -917,3 +752,98 @@ def test_set_f_cd_compresses_cd_only(set_f: Path) -> None:
         assert cd[peak] < cd0[peak] - 1 and cd[peak] == pytest.approx(want, abs=0.3)
         small = np.abs(cd0) < 3
         assert np.allclose(cd[small], cd0[small], atol=0.1)
+
+
+# ------------------------------------------------------ sets E and F: the same checks
+
+# each set: its cases, the sets before it, its seeds' range start, a case of an earlier set
+NEW_SETS = {"e": (SET_E, SET_A + SET_B + SET_C + SET_D, 14000, "hd_clean48"),
+            "f": (SET_F, SET_A + SET_B + SET_C + SET_D + SET_E, 15000, "he_clean48")}
+new_set = pytest.mark.parametrize("case_set", sorted(NEW_SETS))
+
+
+@new_set
+def test_new_set_is_new(capsys: pytest.CaptureFixture[str], case_set: str) -> None:
+    new, before, seed0, earlier_case = NEW_SETS[case_set]
+    assert len(new) == 14
+    names = [c.name for c in before + new]
+    assert len(set(names)) == len(names)
+    seeds = [c.seed for c in new]
+    assert len(set(seeds)) == len(seeds) and all(seed0 <= s < seed0 + 1000 for s in seeds)
+    assert not {c.seed for c in before} & set(seeds)
+    pairings = [_pairing(c) for c in new]
+    assert len(set(pairings)) == len(pairings)
+    assert not set(pairings) & {_pairing(c) for c in before}
+    for c in new:
+        assert len(c.est) == len(c.val) == 6
+        assert set(c.est) == set(c.val)  # validation on the setups the estimation saw
+        est, _ = cases.test_names(c)
+        for e in c.effects:
+            assert e.key in physics.EFFECTS and set(e.tests) <= set(est)
+            assert set(e.setups) & set(c.est)  # acts on a setup the case has
+    assert not _pairs(new) & _pairs(before)  # no (key, size) of an earlier set again
+    assert make_sets.main(["--set", case_set, "--out", "x", "--case", earlier_case]) == 2
+    assert f"unknown case '{earlier_case}' in set {case_set}" in capsys.readouterr().err
+
+
+@new_set
+def test_new_set_covers_the_issue_list(case_set: str) -> None:
+    new, before, _, _ = NEW_SETS[case_set]
+    lib = physics.EFFECTS
+    clean = [c for c in new if not c.effects and not c.expect and not c.expect_note]
+    assert sorted(c.counts_per_rev for c in clean) == [48, 96]
+    assert not any(c.expect_broken for c in clean)
+    # each physical effect expected in exactly one single-effect case, caused by it alone, in
+    # a (form, size) no earlier set used
+    singles = [c for c in new if len(c.expect) == 1 and len(c.effects) == 1
+               and c.expect[0][0] != "input_delay"]
+    assert sorted(c.expect[0][0] for c in singles) == sorted(PHYSICAL)
+    for c in singles:
+        (kind, scope), (e,) = c.expect[0], c.effects
+        assert lib[e.key] == kind and not e.tests and not c.expect_broken
+        assert scope == "all" if set(e.setups) >= set(c.est) else scope == "+".join(e.setups)
+        if kind == "airbag_contact":  # on the rigs with an interior, beside one without
+            assert set(e.setups) <= INTERIOR and set(c.est) - INTERIOR
+    # two effects on disjoint setups of the case, each caused by an effect on exactly those
+    (two,) = [c for c in new if len(c.expect) == 2]
+    scopes = [set(s.split("+")) for _, s in two.expect]
+    assert not scopes[0] & scopes[1] and all(s <= set(two.est) for s in scopes)
+    for (name, scope), e in zip(two.expect, two.effects, strict=True):
+        assert lib[e.key] == name and set(e.setups) == set(scope.split("+"))
+        if name == "airbag_contact":
+            assert set(e.setups) <= INTERIOR
+    # broken tests of kinds no earlier set used, one test of the 12, named, nothing else
+    broken = [c for c in new if c.expect_broken]
+    assert len(broken) == 2
+    for c in broken:
+        assert not c.expect and not c.expect_note and len(c.expect_broken) == 1
+        assert all(lib[e.key] == "" for e in c.effects)
+        assert {t for e in c.effects for t in e.tests} == set(c.expect_broken)
+    assert not _keys(broken) & _keys(before)
+    # one transducer error on an output, of a kind no earlier set used: nothing physical named
+    (sensor,) = [c for c in new if c.expect_note]
+    assert sensor.expect_note.startswith("unexplained") and not sensor.expect
+    assert not sensor.expect_broken and all(lib[e.key] == "" for e in sensor.effects)
+    assert not _keys([sensor]) & _keys(before)
+    # one input delay on each input, 1..5 ms, at a delay no earlier set used on either input
+    delays_before = {e.size for c in before for e in c.effects if lib[e.key] == "input_delay"}
+    for key in ("pulse_late", "brs_late"):
+        (case,) = [c for c in new if _keys([c]) == {key}]
+        (e,) = case.effects
+        assert case.expect == (("input_delay", "all"),) and set(e.setups) >= set(case.est)
+        assert 0.001 <= e.size <= 0.005 and e.size not in delays_before
+    assert len(clean) + len(singles) + 1 + len(broken) + 1 + 2 == len(new)
+
+
+@new_set
+def test_new_set_scoped_effects_rest_on_two_tests_each_side(case_set: str) -> None:
+    """An effect on some setups only rests on >= 2 estimation and >= 2 validation tests of
+    them, beside a test of a setup it does not act on (else its scope cannot be told)."""
+    new = NEW_SETS[case_set][0]
+    scoped = [(c, e) for c in new for e in c.effects
+              if not e.tests and not set(e.setups) >= set(c.est)]
+    assert len(scoped) >= 3  # the airbag case and both effects of the two-effect case
+    for c, e in scoped:
+        for part in (c.est, c.val):
+            assert sum(s in e.setups for s in part) >= 2
+            assert sum(s not in e.setups for s in part) >= 1
