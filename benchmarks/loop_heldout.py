@@ -22,8 +22,8 @@ Per case the loop runs blind at its defaults on 6 estimation + 6 validation test
 - at the end: how many cases are right, and how many named effects are there and not there,
   and how many refused or tied effects are there and not there.
 
-    python -m benchmarks.loop_heldout [--set a|b|c|d|e] [--cases NAME ...] [--sets DIR] [--out DIR]
-                                      [--workers N] [--json FILE]
+    python -m benchmarks.loop_heldout [--set a|b|c|d|e|f] [--cases NAME ...] [--sets DIR]
+                                      [--out DIR] [--workers N] [--json FILE]
 """
 
 from __future__ import annotations
