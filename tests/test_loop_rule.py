@@ -63,7 +63,8 @@ def _broken(test, **arrays):
 
 
 @pytest.mark.parametrize("fault", ["frozen_brs", "nan_cd", "spike_cr", "saturated_cd",
-                                   "frozen_cd", "zero_shift_pulse", "filtered_spikes_cd"])
+                                   "frozen_cd", "zero_shift_pulse", "filtered_spikes_cd",
+                                   "mains_hum_cr", "counter_reset_brs"])
 def test_a_broken_channel_is_named(campaign, fault):
     t = next(x for x in campaign if x.name == "R16_003")
     i = t.index_of(0.030)
@@ -95,6 +96,17 @@ def test_a_broken_channel_is_named(campaign, fault):
         for k, sign in ((i, 1.0), (t.index_of(0.060), -1.0)):
             raw[k:k + round(3e-4 * t.fs_hz)] = 35.0 * sign
         b, channel = _broken(t, cd_mm=t.cd_mm + cfc_filter(raw, t.fs_hz, 600)), "cd"
+    elif fault == "mains_hum_cr":
+        # a ground loop: 3 g of 50 Hz on the spine accelerometer from before the crash on,
+        # through the lab's CFC 180 (zero-mean: it costs the fit little, but the channel is bad)
+        hum = 3.0 * np.sin(2 * np.pi * 50.0 * t.time_s)
+        b, channel = _broken(t, cr_g=t.cr_g + cfc_filter(hum, t.fs_hz, 180)), "cr"
+    elif fault == "counter_reset_brs":
+        # a supply glitch resets the spindle's counter to zero at 70 ms; it counts on from there
+        brs = t.brs.copy()
+        k = t.index_of(0.070)
+        brs[k:] -= brs[k]
+        b, channel = _broken(t, brs=brs), "brs"
     else:
         cd = t.cd_mm.copy()
         cd[i:i + 40] = cd[i]
@@ -120,6 +132,15 @@ def test_a_campaign_that_pays_in_more_than_out_is_not_called_reversed(campaign):
     # (a strong pretensioner, a light load) none of them stands out
     flipped = [_broken(x, brs=2 * x.brs[0] - x.brs) for x in campaign]
     assert polarity_outliers(flipped, 0.15) == []
+
+
+def test_a_pulse_recorded_from_before_contact_is_not_called_zero_shifted(campaign):
+    # a late trigger: the recorded pulse starts 5 ms before the t = 0 the lab wrote, so the
+    # pre-contact window holds the crash's onset; its zero is still right
+    t = next(x for x in campaign if x.name == "FULL_002")
+    k = round(0.005 * t.fs_hz)
+    early = np.concatenate([t.pulse_g[k:], np.full(k, t.pulse_g[-1])])
+    assert screen_channels(_broken(t, pulse_g=early), 0.15) == []
 
 
 def test_a_pulse_still_decelerating_at_rest_needs_a_record_after_the_crash(campaign):
