@@ -1,5 +1,6 @@
 from __future__ import annotations
 
+import dataclasses
 import zipfile
 from pathlib import Path
 
@@ -209,3 +210,12 @@ def test_csv_and_isomme_read_the_same_brs_units(unit, per_rev, tmp_path):
         f.write(head + f"brs[{unit}]" + lines[0] + "\n")
         np.savetxt(f, data, delimiter=",", fmt="%.12g")
     np.testing.assert_array_equal(read_csv(out).brs, test.brs)
+
+
+def test_a_late_trigger_does_not_move_the_pulse_bias(campaign):
+    # the recorded pulse starts 5 ms before the t = 0 the lab wrote: the crash's onset lies in
+    # the pre-contact window the bias is taken from, and must not shift the zero the fits use
+    t = next(x for x in campaign if x.name == "FULL_002")
+    k = round(0.005 * t.fs_hz)
+    early = dataclasses.replace(t, pulse_g=np.concatenate([t.pulse_g[k:], t.pulse_g[-k:]]))
+    assert early.pulse_bias_g() == pytest.approx(t.pulse_bias_g(), abs=0.3)

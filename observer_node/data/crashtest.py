@@ -83,9 +83,11 @@ class CrashTest:
         return min(max(i, 0), self.n)
 
     def pulse_bias_g(self) -> float:
-        """Accelerometer bias: mean pulse before first contact (0 if no pre-trigger data)."""
+        """Accelerometer bias [g]: the median pulse before first contact (0 if no pre-trigger
+        data). The median, not the mean: a trigger that fires late puts the crash's onset into
+        the pre-contact window (5 ms of onset move a 20 ms window's mean by 1-3 g)."""
         pre = self.pulse_g[self.time_s < 0.0]
-        return float(pre.mean()) if len(pre) else 0.0
+        return float(np.median(pre)) if len(pre) else 0.0
 
     def resample(self, fs_hz: float) -> CrashTest:
         """Resample to ``fs_hz`` as the bus would carry it (see :func:`resample_inputs`)."""

@@ -21,9 +21,9 @@ Per channel, on the recorded samples from first contact to the end of the scorin
   the record's last 20 ms, when it ends 20 ms or more after the scoring window, the pulse (its
   pre-crash bias removed) must read under 1.5 g and 5 % of its peak (rolling friction is well
   under 1 g); the post-test zero check of SAE J211 and ISO 6487. Added after held-out set C
-  missed such a test (docs/loop.md). The zero is the median of the pre-contact samples, not
-  their mean: a trigger that fires late puts the crash's onset into that window (the mean of
-  a 20 ms window holding 5 ms of onset is off by 1-3 g; the median stays within 0.3 g);
+  missed such a test (docs/loop.md). The zero is the median of the pre-contact samples
+  (``CrashTest.pulse_bias_g``), which a late trigger's crash onset in that window does not
+  move: 5 ms of onset in a 20 ms window move its mean by 1-3 g, its median by under 0.3 g;
 - **a counter jump** (the BRS): a spindle speeds up and slows down through the webbing's mass,
   so its counts change smoothly from sample to sample. A step of an eighth of a turn or more in
   one sample that is over 4 times every other step of the test is a counter that reset or
@@ -242,8 +242,7 @@ def _zero_shift(test: CrashTest, end_s: float) -> BrokenTest | None:
     t_last_s = test.t0_s + (len(test.pulse_g) - 1) / test.fs_hz
     if t_last_s - end_s < AT_REST_MS / 1000.0:
         return None  # the record ends too soon after the crash to see the car at rest
-    pre = test.pulse_g[test.time_s < 0.0]
-    x = test.pulse_g - (float(np.median(pre)) if len(pre) else 0.0)  # see the docstring
+    x = test.pulse_g - test.pulse_bias_g()
     level, peak = float(np.mean(x[-n:])), float(np.nanmax(np.abs(x[test.index_of(0.0):])))
     if not (np.isfinite(level) and abs(level) > max(ZERO_SHIFT_G, ZERO_SHIFT_SHARE * peak)):
         return None
