@@ -12,6 +12,7 @@ import matplotlib.pyplot as plt
 import numpy as np
 
 from .criteria import EURO_NCAP_CD_LIMITS_MM
+from .data import CrashTest
 from .ident.metrics import FitTable
 
 OUTPUT_LABELS = (("cr", "Chest acceleration CR [g]"), ("cd", "Chest deflection CD [mm]"))
@@ -70,6 +71,38 @@ def residuals(path: Path, names: list[str], t_s: np.ndarray, before: np.ndarray,
         axes[n // 2][k].set_ylabel(label, fontsize=8)
     fig.tight_layout()
     fig.savefig(path, dpi=70)
+    plt.close(fig)
+    return path
+
+
+# a test's channels as the screening names them; a residual outlier is shown on CR
+CHANNELS = {"pulse": ("pulse_g", "pulse [g]"), "brs": ("brs", "BRS [counts]"),
+            "cr": ("cr_g", "CR [g]"), "cd": ("cd_mm", "CD [mm]"), "residual": ("cr_g", "CR [g]")}
+
+
+def broken_tests(path: Path, flagged: list[tuple[str, str, str]], tests: list[CrashTest]
+                 ) -> Path:
+    """One panel per test left out (name, channel, reason): its faulty channel (red) over the
+    same channel of every other test (grey), the reason in the title, so a reviewer sees the
+    fault as the screening did."""
+    n = len(flagged)
+    fig, axes = plt.subplots(n, 1, figsize=(9, 2.4 * n + 0.4), squeeze=False)
+    for ax, (name, channel, reason) in zip(axes[:, 0], flagged, strict=True):
+        attr, label = CHANNELS[channel]
+        for t in tests:
+            x = getattr(t, attr)
+            if x is not None and t.name != name:
+                ax.plot(t.time_s * 1000, x, color="0.75", lw=0.8)
+        bad = next(t for t in tests if t.name == name)
+        ax.plot(bad.time_s * 1000, getattr(bad, attr), "r-", lw=1.1, label=name)
+        ax.set_title(f"{name} {channel}: {reason}", fontsize=8, wrap=True)
+        ax.set_ylabel(label, fontsize=8)
+        ax.grid(alpha=0.3)
+        ax.legend(fontsize=7, loc="upper right")
+    axes[-1][0].set_xlabel("t [ms] (grey: the other tests)")
+    fig.tight_layout()
+    path.parent.mkdir(parents=True, exist_ok=True)
+    fig.savefig(path, dpi=80)
     plt.close(fig)
     return path
 

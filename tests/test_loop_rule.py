@@ -338,3 +338,20 @@ def test_an_effect_the_data_cannot_tell_from_a_passing_rival_is_not_named():
     assert untold("airbag_contact", dataclasses.replace(tie, told_apart=True), 6) is None
     assert untold("airbag_contact", dataclasses.replace(tie, passes_rule=False), 6) is None
     assert untold("airbag_contact", None, 6) is None
+
+
+def test_the_tests_left_out_are_drawn_against_the_others(campaign, tmp_path):
+    # report.md points a reviewer to broken.png: one panel per test left out, its channel
+    from matplotlib.image import imread
+
+    from observer_node.plots import broken_tests
+    t = next(x for x in campaign if x.name == "R16_003")
+    hum = _broken(t, cr_g=t.cr_g + 3.0 * np.sin(2 * np.pi * 50.0 * t.time_s))
+    tests = [hum if x is t else x for x in campaign]
+    found = screen_channels(hum, 0.15)
+    one = broken_tests(tmp_path / "one.png", [(b.test, b.channel, b.reason) for b in found],
+                       tests)
+    two = broken_tests(tmp_path / "two.png", [(b.test, b.channel, b.reason) for b in found]
+                       + [("SLED_002", "residual", "fit_TOT far below the others'")], tests)
+    assert [b.channel for b in found] == ["cr"]
+    assert imread(two).shape[0] > 1.8 * imread(one).shape[0] > 0

@@ -342,6 +342,9 @@ def _run(est_tests: list[CrashTest], val_tests: list[CrashTest], out: Path, rate
     (out / "report.json").write_text(json.dumps(as_json, indent=1, default=float) + "\n")
     if plots:
         _plots(out, base, effects, gb.params, val)
+        if broken:
+            plots.broken_tests(out / "broken.png", [(b.test, b.channel, b.reason)
+                                                    for b in broken], [*est_tests, *val_tests])
     (out / "report.md").write_text(_markdown(report))
     prog.done(f"{len(accepted)} effect(s) accepted; validation fit "
               f"{baseline_val.fit.total:.1f} -> {final_val.fit.total:.1f} %")
@@ -679,7 +682,9 @@ def _markdown(r: LoopReport) -> str:
     lines += ["", "The residual stays far from white (lag-1 autocorrelation near 1: CFC "
               "filtering colours it), so whiteness cannot decide; the cross-validated fit and "
               "the input cross-correlation against Ljung's coloured band do.", "",
-              f"Plots: fit_before_*.png, fit_after_*.png, residuals.png. Model: {r.model}. "
+              "Plots: fit_before_*.png, fit_after_*.png, residuals.png"
+              + (", broken.png (the tests left out)" if r.warnings else "")
+              + f". Model: {r.model}. "
               f"Run time {r.seconds} s.", ""]
     return "\n".join(lines)
 
