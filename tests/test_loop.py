@@ -3,6 +3,7 @@ effect, on clean data, and on a subset of campaign-a."""
 
 from __future__ import annotations
 
+import dataclasses
 import json
 import random
 from pathlib import Path
@@ -168,3 +169,16 @@ def test_a_late_brs_is_named_a_delay_of_a_fraction_of_a_tick(tmp_path):
     p = r.effects[0].parameters
     assert 2.0 <= p["n_brs"] <= 3.5 and p["n_pulse"] < 0.5, p
     assert r.final.fit.total > r.baseline.fit.total + 5
+
+
+def test_a_broken_test_is_left_out_and_drawn_for_the_reviewer(tmp_path):
+    # one estimation test's CR picks up 3 g of mains hum (a ground loop): named, left out,
+    # and drawn in broken.png against the other tests, which report.md points to
+    est = simulate_campaign("R16", 6, seed=21, config=PlantConfig(), prefix="EST")
+    val = simulate_campaign("R16", 6, seed=22, config=PlantConfig(), prefix="VAL")
+    t = est[2]
+    est[2] = dataclasses.replace(t, cr_g=t.cr_g + 3.0 * np.sin(2 * np.pi * 50.0 * t.time_s))
+    r = run_loop(est, val, tmp_path, verbose=False, plots=True, ratings=False)
+    assert [(w.test, w.channel) for w in r.warnings] == [(t.name, "cr")]
+    assert (tmp_path / "broken.png").stat().st_size > 10_000
+    assert "broken.png (the tests left out)" in (tmp_path / "report.md").read_text()

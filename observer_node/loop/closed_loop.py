@@ -341,10 +341,7 @@ def _run(est_tests: list[CrashTest], val_tests: list[CrashTest], out: Path, rate
     as_json = report.as_dict()
     (out / "report.json").write_text(json.dumps(as_json, indent=1, default=float) + "\n")
     if plots:
-        _plots(out, base, effects, gb.params, val)
-        if broken:
-            plots.broken_tests(out / "broken.png", [(b.test, b.channel, b.reason)
-                                                    for b in broken], [*est_tests, *val_tests])
+        _plots(out, base, effects, gb.params, val, broken, [*est_tests, *val_tests])
     (out / "report.md").write_text(_markdown(report))
     prog.done(f"{len(accepted)} effect(s) accepted; validation fit "
               f"{baseline_val.fit.total:.1f} -> {final_val.fit.total:.1f} %")
@@ -614,7 +611,8 @@ def _model_file(base: dict, effects: list[dict], est: Dataset, rate_hz: float,
     )
 
 
-def _plots(out: Path, base: dict, effects: list[dict], base0: dict, val: Dataset) -> None:
+def _plots(out: Path, base: dict, effects: list[dict], base0: dict, val: Dataset,
+           broken: list[BrokenTest], tests: list[CrashTest]) -> None:
     t = np.arange(val.y.shape[1])[val.win] / val.fs_hz
     y = val.y[:, val.win]
     before = model(base0, [], val).simulate(val.pulse_g, val.brs_rad)[:, val.win]
@@ -628,6 +626,9 @@ def _plots(out: Path, base: dict, effects: list[dict], base0: dict, val: Dataset
                                         f"validation, {label} the loop", val.names, t, y, y_hat,
                                         fits, k)
     plots.residuals(out / "residuals.png", val.names, t, y - before, y - after)
+    if broken:
+        plots.broken_tests(out / "broken.png", [(b.test, b.channel, b.reason) for b in broken],
+                           tests)
 
 
 def _markdown(r: LoopReport) -> str:
