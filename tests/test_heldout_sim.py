@@ -754,11 +754,100 @@ def test_set_f_cd_compresses_cd_only(set_f: Path) -> None:
         assert np.allclose(cd[small], cd0[small], atol=0.1)
 
 
-# ------------------------------------------------------ sets E and F: the same checks
+# ------------------------------------------------------------------ set G (cases_g.py)
+
+SET_G = heldout_sets.case_set("g")
+WATCHED_G = ("hg_broken_cd_rail", "hg_broken_pulse_sync", "hg_cd_dead_band")
+
+
+@pytest.fixture(scope="module")
+def set_g(tmp_path_factory: pytest.TempPathFactory) -> Path:
+    return _generate(tmp_path_factory, "g", WATCHED_G)
+
+
+def test_set_g_generates_and_reads(set_g: Path) -> None:
+    _generated_and_read(SET_G, set_g)
+
+
+def test_set_g_same_seed_same_bytes(set_g: Path, tmp_path: Path) -> None:
+    c = heldout_sets.select(["hg_two_effects", "hg_broken_pulse_sync"], "g")
+    make_sets.make(c, tmp_path, log=False)
+    for name in ("hg_two_effects", "hg_broken_pulse_sync"):
+        assert _files(tmp_path / name) == _files(set_g / "on" / name)
+
+
+def test_set_g_forms_leave_sets_a_to_f_alone(tmp_path: Path) -> None:
+    """Set G's cases (and its lab-side forms) in the same batch do not move a set A-F test by
+    one bit."""
+    old = (heldout_sets.select(["h_broken_brs"]) + heldout_sets.select(["hb_cr_gain"], "b")
+           + heldout_sets.select(["hc_neck_head"], "c")
+           + heldout_sets.select(["hd_broken_cd_spikes"], "d")
+           + heldout_sets.select(["he_cr_progressive"], "e")
+           + heldout_sets.select(["hf_cd_compress", "hf_broken_brs_reset"], "f"))
+    make_sets.make(old, tmp_path / "alone", log=False)
+    make_sets.make(old + [c for c in SET_G if c.effects], tmp_path / "mixed", log=False)
+    for c in old:
+        assert _files(tmp_path / "alone" / c.name) == _files(tmp_path / "mixed" / c.name)
+
+
+def test_set_g_cd_saturates_flat_at_its_rail(set_g: Path) -> None:
+    c = heldout_sets.select(["hg_broken_cd_rail"], "g")[0]
+    (broken,), (eff,) = c.expect_broken, c.effects
+    bad = _channel(set_g / "on" / c.name, broken, "cd")
+    good = _channel(set_g / "off" / c.name, broken, "cd")
+    assert good.max() > eff.size + 4  # the chest went well past the rail
+    assert bad.max() < eff.size + 0.3  # the CFC 600 filter barely rounds the corners
+    top = _times(len(bad))[bad > eff.size - 0.5]
+    assert top[-1] - top[0] > 0.015  # a flat top a reviewer sees, >= 15 ms long
+    low = good < eff.size - 3
+    assert np.allclose(bad[low], good[low], atol=0.3)
+    for which in ("cr", "pulse"):
+        assert np.array_equal(_channel(set_g / "on" / c.name, broken, which),
+                              _channel(set_g / "off" / c.name, broken, which))
+    _others_untouched(set_g, c.name, broken)
+
+
+def test_set_g_pulse_rises_before_time_zero(set_g: Path) -> None:
+    """The pulse channel's own time base runs early: the pulse of the twin, shifted earlier by
+    the effect's size (to a sample), rising on the other tests' flat pre-crash line."""
+    c = heldout_sets.select(["hg_broken_pulse_sync"], "g")[0]
+    (broken,), (eff,) = c.expect_broken, c.effects
+    bad = _channel(set_g / "on" / c.name, broken, "pulse")
+    good = _channel(set_g / "off" / c.name, broken, "pulse")
+    t = _times(len(bad))
+    k = round(eff.size * physics.FS_HZ)
+    assert bad[(t > -0.004) & (t < 0)].mean() > 5  # loaded before time zero
+    assert abs(good[(t > -0.004) & (t < 0)].mean()) < 1
+    assert np.abs(bad[:-k - 50] - good[k:-50]).max() < 4  # the noise apart, the same pulse
+    for which in ("cr", "cd"):
+        assert np.array_equal(_channel(set_g / "on" / c.name, broken, which),
+                              _channel(set_g / "off" / c.name, broken, which))
+    _others_untouched(set_g, c.name, broken)
+
+
+def test_set_g_cd_dead_band_cd_only(set_g: Path) -> None:
+    """The transducer error is a static function of cd, in cd alone: the dead band low at
+    every deflection past it, zero at rest; CR and the pulse as without it."""
+    c = heldout_sets.select(["hg_cd_dead_band"], "g")[0]
+    (eff,) = c.effects
+    on, off = set_g / "on" / c.name, set_g / "off" / c.name
+    for folder in sorted(on.glob("*/*")):
+        for which in ("cr", "pulse"):
+            assert np.array_equal(_channel(on, folder.name, which),
+                                  _channel(off, folder.name, which))
+        cd, cd0 = _channel(on, folder.name, "cd"), _channel(off, folder.name, "cd")
+        big = cd0 > eff.size + 5
+        assert big.sum() > 100 and np.allclose(cd[big], cd0[big] - eff.size, atol=0.3)
+        rest = _times(len(cd)) < 0
+        assert np.abs(cd[rest]).max() < 0.5 and np.abs(cd0[rest]).max() < 0.5
+
+
+# ------------------------------------------------- sets E, F and G: the same checks
 
 # each set: its cases, the sets before it, its seeds' range start, a case of an earlier set
 NEW_SETS = {"e": (SET_E, SET_A + SET_B + SET_C + SET_D, 14000, "hd_clean48"),
-            "f": (SET_F, SET_A + SET_B + SET_C + SET_D + SET_E, 15000, "he_clean48")}
+            "f": (SET_F, SET_A + SET_B + SET_C + SET_D + SET_E, 15000, "he_clean48"),
+            "g": (SET_G, SET_A + SET_B + SET_C + SET_D + SET_E + SET_F, 16000, "hf_clean48")}
 new_set = pytest.mark.parametrize("case_set", sorted(NEW_SETS))
 
 

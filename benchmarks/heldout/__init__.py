@@ -12,11 +12,12 @@
   same again, on two-setup mixes, with a case outside the loop's vocabulary.
   ``cases_d.py``: set D, the same again, on lopsided and single-setup mixes.
   ``cases_e.py``: set E, on pairings of setup counts no earlier case ran; ``cases_f.py``:
-  set F, the same again, with lab-side faults of new kinds.
+  set F, the same again, with lab-side faults of new kinds; ``cases_g.py``: set G, the same
+  again (a CD rail, a pulse on its own time base, a CD dead band).
   ``make_sets.py``: writes a set (``--no-effects``: the same tests with every effect off).
   ``costs.py``: what each case costs the thesis grey-box (project CLI).
 
-    python -m benchmarks.heldout.make_sets --out /tmp/heldout [--set a|b|c|d|e|f]
+    python -m benchmarks.heldout.make_sets --out /tmp/heldout [--set a|b|c|d|e|f|g]
         [--case NAME ...]
 
 Never tune the loop on these cases; report them apart from the tuned ones.

@@ -30,7 +30,7 @@ DV_MS = {"R16": (13.6, 14.4), "SLED": (14.0, 15.6), "FULL": (14.3, 16.2)}
 EXACT = {"pulse_late", "brs_late", "brs_freeze", "cd_dropout", "pulse_rail", "pulse_gain",
          "cr_gain", "cd_knee", "pulse_zero_shift", "cd_spikes", "brs_reversed",
          "cr_soft_clip", "cr_cable_break", "cr_reversed", "cr_progressive", "brs_reset",
-         "cr_hum", "cd_compress"}
+         "cr_hum", "cd_compress", "cd_rail", "pulse_sync", "cd_dead_band"}
 DROPOUT_S = 0.010  # how long cd_dropout's wiper stays off the track
 KNEE_SLOPE = 0.6  # cd_knee: the gain of the CD calibration's second segment
 SHIFT_AT_S = 0.011  # pulse_zero_shift: when the zero shifts (in the crash-box spike)
@@ -107,7 +107,8 @@ def record(d: Drawn, i: int, sim: dict[str, np.ndarray], counts_per_rev: int,
     # channel records it (a transport delay, as the loop's input_delay means): the recorded
     # channel leads the pulse the physics ran on. The other way round (a channel recorded
     # after the chest moved) no causal observer can model.
-    pulse = np.interp(t + e["pulse_late"], tg, sim["pulse"][i]) / ph.G
+    # pulse_sync: the pulse's recorder started on its own trigger, its time base this early
+    pulse = np.interp(t + e["pulse_late"] + e["pulse_sync"], tg, sim["pulse"][i]) / ph.G
     if e["pulse_gain"]:  # the accelerometer's sensitivity entered wrong
         pulse = pulse * (1.0 + e["pulse_gain"])
     if e["pulse_zero_shift"]:  # a shock shifts the sensor's zero: it stays shifted
@@ -150,7 +151,12 @@ def record(d: Drawn, i: int, sim: dict[str, np.ndarray], counts_per_rev: int,
         cd = np.where(cd > e["cd_knee"], e["cd_knee"] + KNEE_SLOPE * (cd - e["cd_knee"]), cd)
     if e["cd_compress"]:  # the pot's linkage reads low at large deflection, smoothly
         cd = e["cd_compress"] * np.tanh(cd / e["cd_compress"])
+    if e["cd_dead_band"]:  # slack in the pot's linkage, held one way by its return spring
+        b = e["cd_dead_band"]
+        cd = np.sign(cd) * np.maximum(np.abs(cd) - b, 0.0)
     cd = cd + NOISE["cd_mm"] * rng.standard_normal(t.size)
+    if e["cd_rail"]:  # the conditioner's output saturates: the raw channel flat at its range
+        cd = np.clip(cd, -e["cd_rail"], e["cd_rail"])
     if e["cd_spikes"]:  # the connector opens and closes: short spikes
         for t_s, sign in SPIKES_S:
             k = int(np.searchsorted(t, t_s - 1e-9))

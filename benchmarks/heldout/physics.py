@@ -84,6 +84,10 @@ EFFECTS = {
     "brs_reset": "",  # broken test: the BRS counter resets to zero at this time (s)
     "cr_hum": "",  # broken test: mains hum (HUM_HZ) on the CR channel, this amplitude (g)
     "cd_compress": "",  # transducer: CD reads R tanh(cd / R) (R, mm), CR untouched
+    # set G's lab-side forms (cases_g.py): recorded channels only, the physics untouched
+    "cd_rail": "",  # broken test: CD conditioner's range too small, clips at this (mm)
+    "pulse_sync": "",  # broken test: pulse channel's time base this early (s), own trigger
+    "cd_dead_band": "",  # transducer: CD reads nothing over the linkage's first b mm (b, mm)
 }
 POW_B_M = (0.015, 0.025)  # webbing_power: reference stretch, chest side and up to the retractor
 V_HYST = 0.02  # m/s: webbing_hysteresis switches between its paths within this rate

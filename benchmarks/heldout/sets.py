@@ -3,7 +3,7 @@ been looked at by the loop's engineers, kept from them until the loop ran on it)
 (``cases_c``, written after set B had been looked at, the same way), set D (``cases_d``,
 written after set C had been looked at, the same way), set E (``cases_e``, written after set D
 had been looked at, the same way), set F (``cases_f``, written after set E had been looked at,
-the same way)."""
+the same way), set G (``cases_g``, written after set F had been looked at, the same way)."""
 
 from __future__ import annotations
 
@@ -13,13 +13,14 @@ from .cases_c import SET_C
 from .cases_d import SET_D
 from .cases_e import SET_E
 from .cases_f import SET_F
+from .cases_g import SET_G
 
-SETS = ("a", "b", "c", "d", "e", "f")
+SETS = ("a", "b", "c", "d", "e", "f", "g")
 
 
 def case_set(name: str) -> list[Case]:
-    """Set A (``cases``), B (``cases_b``), C (``cases_c``), D (``cases_d``), E (``cases_e``)
-    or F (``cases_f``); ValueError for another name."""
+    """Set A (``cases``), B (``cases_b``), C (``cases_c``), D (``cases_d``), E (``cases_e``),
+    F (``cases_f``) or G (``cases_g``); ValueError for another name."""
     if name == "a":
         return list(CASES)
     if name == "b":
@@ -32,6 +33,8 @@ def case_set(name: str) -> list[Case]:
         return list(SET_E)
     if name == "f":
         return list(SET_F)
+    if name == "g":
+        return list(SET_G)
     raise ValueError(f"unknown case set {name!r}; known: {', '.join(SETS)}")
 
 
