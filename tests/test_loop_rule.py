@@ -340,6 +340,34 @@ def test_an_effect_the_data_cannot_tell_from_a_passing_rival_is_not_named():
     assert untold("airbag_contact", None, 6) is None
 
 
+def _fits(gains: list[float], base: float = 90.0) -> dict[str, float]:
+    return {n: base + g for n, g in zip(SETUPS, gains, strict=True)}
+
+
+def test_a_tie_is_looked_past_by_judging_each_effect_beside_the_other():
+    from observer_node.loop.analysis import Candidate
+    from observer_node.loop.closed_loop import tie_verdict
+    from observer_node.loop.evidence import past_the_tie
+    a = _fits([2.6, 2.4, 2.9, 2.1, 2.5, 2.7])  # a pulse delay, say
+    b = _fits([1.1, 1.0, 1.3, 0.9, 1.0, 1.4])  # an airbag that mimics part of it
+    # with both, the fit is the delay's: the airbag adds nothing beside it, not the reverse
+    both = _fits([2.7, 2.5, 2.9, 2.2, 2.6, 2.7])
+    past = past_the_tie(a, b, both, SETUPS, None, None, 1.0)
+    assert past.named == "a" and past.a_beside_b.accepted and not past.b_beside_a.accepted
+    assert past_the_tie(b, a, both, SETUPS, None, None, 1.0).named == "b"
+    # each adds beyond the other: both are there
+    both = _fits([4.9, 4.5, 5.3, 4.0, 4.6, 5.1])
+    assert past_the_tie(a, b, both, SETUPS, None, None, 1.0).named == "both"
+    # two explanations of one thing: neither adds beyond the other, a true tie
+    b = _fits([2.8, 2.1, 3.1, 1.9, 2.6, 2.5])
+    past = past_the_tie(a, b, _fits([2.9, 2.5, 3.1, 2.2, 2.7, 2.8]), SETUPS, None, None, 1.0)
+    assert past.named == ""
+    line = tie_verdict(Candidate("input_delay", 0.5, {}), Candidate("airbag_contact", 0.5, {}),
+                       past)
+    assert "beside airbag_contact, input_delay gains +0.20 points (5 of 6 tests), not" in line
+    assert line.endswith("neither adds beyond the other")
+
+
 def test_the_tests_left_out_are_drawn_against_the_others(campaign, tmp_path):
     # report.md points a reviewer to broken.png: one panel per test left out, its channel
     from matplotlib.image import imread

@@ -60,7 +60,16 @@ from .analysis import (
 )
 from .cluster import Runner, cluster
 from .diagnosis import sensor_fold_scores, unexplained
-from .evidence import POSSIBLE_MIN, SETUP_TOLERANCE, SIGN_P, Evidence, beats, judge
+from .evidence import (
+    POSSIBLE_MIN,
+    SETUP_TOLERANCE,
+    SIGN_P,
+    Evidence,
+    PastTheTie,
+    beats,
+    judge,
+    past_the_tie,
+)
 from .refit import MAX_FOLDS, fold_scores, folds, model, refit, score
 from .report import (
     AcceptedEffect,
@@ -168,6 +177,7 @@ def _run(est_tests: list[CrashTest], val_tests: list[CrashTest], out: Path, rate
     first_ranking: list[RankedCandidate] = []
     resid0 = _residual(base, effects, est)
     tests0 = correlation_tests(resid0, est)
+    carry: list[Candidate] = []
     while len(accepted) < max_effects:
         current = model(base, effects, est)
         prog.update(f"residual analysis with {len(effects)} effect(s)")
@@ -182,6 +192,10 @@ def _run(est_tests: list[CrashTest], val_tests: list[CrashTest], out: Path, rate
         # signature linearised around a trajectory that never switches: always try it.
         named += [c for c in ranked if not c.parameters
                   and EFFECTS[c.kind].search.method == "switch" and c not in named]
+        # the other side of a tie both of whose effects the data defend (past_the_tie)
+        named += [c for c in carry if c.kind not in {e["kind"] for e in effects}
+                  and all(n.kind != c.kind for n in named)]
+        carry = []
         other = [c for c in ranked if c.kind == "other" and c.explained > 0.01]
         tried: list[tuple[float, Candidate, Evidence]] = []
         per_test: dict[int, dict[str, float]] = {}
@@ -231,19 +245,39 @@ def _run(est_tests: list[CrashTest], val_tests: list[CrashTest], out: Path, rate
         runner_up, margin_points, other_scope = _rival(
             [(cv_best, best, ev_best), *(t for t in tried if t[1] is not best)], per_test)
         tie = untold(best.kind, runner_up, len(ev_best.test_gain_points))
+        tie_note: str | None = None
         if tie and runner_up is not None:
-            # two explanations the data defend equally are not a finding: both are possible
             rival = next(t for t in tried if t[1].kind == runner_up.kind
                          and scope_label(t[1].setups) == runner_up.scope)
-            kinds = [e["kind"] for e in effects]
-            possible += [PossibleEffect(best.kind, scope_label(best.setups), kinds, ev_best, tie),
-                         PossibleEffect(runner_up.kind, runner_up.scope, kinds, rival[2],
-                                        f"the data cannot tell it from {best.kind} on "
-                                        f"{scope_label(best.setups)}, which passes the rule "
-                                        "too")]
-            step.decision = (f"{best.kind} on {scope_label(best.setups)} passes the rule, but "
-                             f"{tie}: neither is named")
-            break
+            # look past the tie: each judged beside the other, in a model with both
+            prog.update(f"looking past a tie: {best.kind} and {rival[1].kind} together")
+            cv_both = _cv(runner, [(base, [*effects, best.effect(), rival[1].effect()])],
+                          est, folds_)[0]
+            past = past_the_tie(cv_tests_best, per_test[id(rival[1])], cv_both, test_setup,
+                                best.setups, rival[1].setups, margin)
+            tie_note = tie_verdict(best, rival[1], past)
+            if not past.named:
+                # two explanations the data defend equally are not a finding: both possible
+                kinds = [e["kind"] for e in effects]
+                possible += [
+                    PossibleEffect(best.kind, scope_label(best.setups), kinds, ev_best,
+                                   f"{tie}; {tie_note}"),
+                    PossibleEffect(runner_up.kind, runner_up.scope, kinds, rival[2],
+                                   f"the data cannot tell it from {best.kind} on "
+                                   f"{scope_label(best.setups)}, which passes the rule too; "
+                                   f"{tie_note}")]
+                step.decision = (f"{best.kind} on {scope_label(best.setups)} passes the rule, "
+                                 f"but {tie}; {tie_note}: neither is named")
+                break
+            if past.named == "b":  # the runner-up explains the winner's gain, not the reverse
+                (cv_best, best, ev_best), narrower = _defended_scope(
+                    [rival, *(t for t in passing if t[1].kind == rival[1].kind
+                              and t[1] is not rival[1])], per_test)
+                cv_tests_best = per_test[id(best)]
+                runner_up, margin_points, other_scope = _rival(
+                    [rival, *(t for t in tried if t[1] is not best)], per_test)
+            elif past.named == "both":  # the other is tried again in the next round
+                carry.append(rival[1])
         prog.update(f"refitting with {best.kind} on all estimation tests")
         fit = refit(base, [*effects, best.effect()], est, max_nfev=120)
         resid_old = _residual(base, effects, est)
@@ -287,7 +321,7 @@ def _run(est_tests: list[CrashTest], val_tests: list[CrashTest], out: Path, rate
                 input_xcorr_rms_ratio_before=round(xc_before, 2),
                 input_xcorr_rms_ratio_after=round(xc_after, 2),
                 input_xcorr_max_ratio_before=round(ct_old.max_ratio, 2),
-                input_xcorr_max_ratio_after=round(ct_new.max_ratio, 2)),
+                input_xcorr_max_ratio_after=round(ct_new.max_ratio, 2), tie=tie_note),
             fit=Fits(**_fit3(val_fit)))
         accepted.append(entry)
         val_before = val_fit.fit.total
@@ -490,19 +524,34 @@ def _rival(tried: list[tuple[float, Candidate, Evidence]],
 
 
 def untold(kind: str, runner_up: RunnerUp | None, n_tests: int) -> str | None:
-    """Why ``kind`` is not named when its runner-up of another kind passes the rule too and
-    ``kind`` does not beat it test by test above the scatter (None when it does, or the
-    runner-up fails the rule). Named with a "?" until 2026-11-25: of the five such names on
-    held-out sets D and E, three were effects not there (a 3.25 ms pulse delay explained by
-    an airbag that fits better on 2 of 6 tests), two were there: a coin flip, not a
-    finding. No tie arises on the 23 tuned cases or campaign-a; three of the library's 12
-    held-out cases tie, two of them right before this rule (docs/loop.md): the next step is
-    to look past a tie, not to stop at it."""
+    """Why ``kind`` cannot be named on the test-by-test comparison alone: its runner-up of
+    another kind passes the rule too and ``kind`` does not beat it above the scatter (None
+    when it does, or the runner-up fails the rule). Named with a "?" until 2026-11-25 (of
+    five such names on held-out sets D and E, three were effects not there: a coin flip);
+    then not named at all, which cost three right names on set G and two of the library's
+    held-out cases (docs/loop.md). Since then the loop looks past the tie
+    (:func:`~observer_node.loop.evidence.past_the_tie`): each effect beside the other."""
     if runner_up is None or not runner_up.rival:
         return None
     return (f"the data cannot tell it from {runner_up.kind} on {runner_up.scope}, which passes "
             f"the rule too ({kind} fits better on {runner_up.tests_better} of {n_tests} "
             "estimation tests, not above the scatter)")
+
+
+def tie_verdict(a: Candidate, b: Candidate, past: PastTheTie) -> str:
+    """One line on a tie looked past: what each effect adds beside the other, and what
+    the data then defend."""
+    def beside(x: Candidate, y: Candidate, ev: Evidence) -> str:
+        return (f"beside {y.kind}, {x.kind} gains {ev.gain_points:+.2f} points "
+                f"({ev.tests_improved} of {ev.tests} tests)"
+                + ("" if ev.accepted else ", not enough"))
+    a_on, b_on = f"{a.kind} on {scope_label(a.setups)}", f"{b.kind} on {scope_label(b.setups)}"
+    verdict = {"a": f"{a_on} explains what {b.kind} did, not the reverse",
+               "b": f"{b_on} explains what {a.kind} did, not the reverse",
+               "both": "the data defend both",
+               "": "neither adds beyond the other"}[past.named]
+    return (f"looked past the tie: {beside(a, b, past.a_beside_b)}; "
+            f"{beside(b, a, past.b_beside_a)}: {verdict}")
 
 
 VALIDATION_TOLERANCE = 0.3  # fit points: as SETUP_TOLERANCE, refit noise
@@ -716,7 +765,9 @@ def _markdown_effect(e: AcceptedEffect) -> list[str]:
             n = len(ev.rule.test_gain_points)
             rival += (f"; {e.kind} fits better on {ru.tests_better} of {n} estimation tests, "
                       + ("above the scatter" if ru.told_apart else "not above the scatter")
-                      + (f"; **{ru.kind} passes the rule too: the data cannot tell the two "
+                      + (f"; {ru.kind} passes the rule too, and the two were judged "
+                         f"each beside the other: {ev.tie}" if ru.rival and ev.tie else
+                         f"; **{ru.kind} passes the rule too: the data cannot tell the two "
                          "apart**" if ru.rival else
                          "" if ru.passes_rule else f"; {ru.kind} does not pass the rule"))
     if ev.other_scope is not None:

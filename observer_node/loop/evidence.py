@@ -123,3 +123,29 @@ def judge(before: dict[str, float], after: dict[str, float], setups: dict[str, s
         reason = ""
     return Evidence(mean, (mean - half, mean + half), float(np.mean(inside)), gain, improved,
                     len(names), sign_p, per_setup, not reason, reason)
+
+
+@dataclass
+class PastTheTie:
+    """Two effects that both pass the rule and cannot be told apart, each judged beside the
+    other: the model with both against the model with one. ``named``: the kinds the data
+    defend ("a": ``a`` explains what ``b`` did and more; "b": the reverse; "both": each adds
+    beyond the other; "": neither adds beyond the other, a true tie)."""
+
+    named: str
+    a_beside_b: Evidence  # what ``a`` adds to the model that has ``b``
+    b_beside_a: Evidence
+
+
+def past_the_tie(cv_a: dict[str, float], cv_b: dict[str, float], cv_both: dict[str, float],
+                 setups: dict[str, str], scope_a: list[str] | None,
+                 scope_b: list[str] | None, margin: float) -> PastTheTie:
+    """Look past a tie between effects ``a`` and ``b`` (per-test cross-validated fit_TOT [%]
+    with ``a``, with ``b`` and with both): the rule, applied to each beside the other. Where
+    one mimics part of the other, it adds nothing once the other is in the model, while the
+    other still does (an encompassing test: the better model explains its rival's gain)."""
+    a = judge(cv_b, cv_both, setups, scope_a, margin)
+    b = judge(cv_a, cv_both, setups, scope_b, margin)
+    named = ("both" if a.accepted and b.accepted else "a" if a.accepted
+             else "b" if b.accepted else "")
+    return PastTheTie(named, a, b)

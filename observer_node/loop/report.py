@@ -78,6 +78,9 @@ class EffectEvidence:
     input_xcorr_rms_ratio_after: float
     input_xcorr_max_ratio_before: float
     input_xcorr_max_ratio_after: float
+    # how a tie with a runner-up that passes the rule too was resolved (each judged beside
+    # the other); None where there was none (and in reports before 2026-11-25)
+    tie: str | None = None
 
     def as_dict(self) -> dict[str, Any]:
         return {
@@ -94,6 +97,7 @@ class EffectEvidence:
             "input_xcorr_rms_ratio_after": self.input_xcorr_rms_ratio_after,
             "input_xcorr_max_ratio_before": self.input_xcorr_max_ratio_before,
             "input_xcorr_max_ratio_after": self.input_xcorr_max_ratio_after,
+            **({"tie": self.tie} if self.tie is not None else {}),
         }
 
     @classmethod
@@ -105,7 +109,8 @@ class EffectEvidence:
                    RunnerUp(**ru) if ru is not None else None, d.get("margin_points"),
                    OtherScope(**os_) if os_ is not None else None,
                    d["input_xcorr_rms_ratio_before"], d["input_xcorr_rms_ratio_after"],
-                   d["input_xcorr_max_ratio_before"], d["input_xcorr_max_ratio_after"])
+                   d["input_xcorr_max_ratio_before"], d["input_xcorr_max_ratio_after"],
+                   d.get("tie"))
 
 
 @dataclass(frozen=True)
