@@ -371,6 +371,18 @@ def _search_delay(scorer: _Scorer, kind: str, fs_hz: float, scope: list[str] | N
     return ex, p, sig
 
 
+def within_value(within: tuple[float, float], t: float) -> float:
+    """A parameter kept within its range (lo, hi), from the unbounded variable ``t``."""
+    lo, hi = within
+    return float(lo + (hi - lo) * (1.0 + np.tanh(t)) / 2.0)
+
+
+def within_free(within: tuple[float, float], value: float) -> float:
+    """The unbounded variable of ``value`` (clipped just inside the range)."""
+    lo, hi = within
+    return float(np.arctanh(np.clip(2.0 * (value - lo) / (hi - lo) - 1.0, -0.999, 0.999)))
+
+
 class _Scorer:
     """Share of the residual an effect explains when simulated as it is (non-linear, on the
     current model), with the base parameters re-estimated to first order beside it."""
@@ -406,14 +418,18 @@ class _Scorer:
         names = list(start)
         effect = EFFECTS[kind]
         pos = [effect.positive(n) for n in names]
+        rng = [q.within if (q := effect.param(n)) is not None else None for n in names]
         scale = [abs(start[n]) or effect.typical[n] for n in names]
 
         def unpack(th: np.ndarray) -> dict[str, float]:
-            return {n: float(sc * (np.exp(t) if ps else t))
-                    for n, t, ps, sc in zip(names, th, pos, scale, strict=True)}
+            return {n: within_value(r, t) if r is not None else
+                    float(sc * (np.exp(t) if ps else t))
+                    for n, t, ps, sc, r in zip(names, th, pos, scale, rng, strict=True)}
 
-        th0 = np.array([0.0 if ps else np.sign(start[n]) or 1.0
-                        for n, ps in zip(names, pos, strict=True)])
+        # a parameter with a range starts inside it (the regression may overshoot it)
+        th0 = np.array([within_free(r, start[n]) if r is not None
+                        else 0.0 if ps else np.sign(start[n]) or 1.0
+                        for n, ps, r in zip(names, pos, rng, strict=True)])
         res = optimize.least_squares(lambda th: self._rest(kind, unpack(th), scope)[0], th0,
                                      max_nfev=max_nfev, diff_step=1e-3)
         p = unpack(res.x)

@@ -7,6 +7,7 @@ own setup (``Dataset.setups``)."""
 from __future__ import annotations
 
 from dataclasses import dataclass, replace
+from typing import NamedTuple
 
 import numpy as np
 from scipy import optimize
@@ -16,7 +17,7 @@ from ..ident.greybox import FREE, STARTS
 from ..ident.metrics import Fits, FitTable, fit_table
 from ..model.effects import EFFECTS
 from ..model.nonlinear import NonlinearGreyBox
-from .analysis import weights
+from .analysis import weights, within_free, within_value
 
 
 def model(base: dict, effects: list[dict], data: Dataset) -> NonlinearGreyBox:
@@ -35,18 +36,47 @@ class Refit:
     effect_std_err: list[dict[str, float]]
 
 
-def _layout(effects: list[dict]) -> list[tuple[int, str, float, bool]]:
-    """(effect index, parameter, scale, positive) of every fitted effect parameter."""
+class _Slot(NamedTuple):
+    """One fitted effect parameter: its effect's index, name, scale, whether it must be
+    positive, and the range it must stay within (fitted as lo + (hi - lo) (1 + tanh) / 2)."""
+
+    i: int
+    name: str
+    scale: float
+    positive: bool
+    within: tuple[float, float] | None = None
+
+    def value(self, v: float) -> float:
+        if self.within is not None:
+            return within_value(self.within, v)
+        return abs(v * self.scale) if self.positive else v * self.scale
+
+    def free(self, value: float) -> float:
+        """The fitted variable of ``value``."""
+        if self.within is not None:
+            return within_free(self.within, value)
+        return value / self.scale
+
+    def std_err(self, v: float, s: float) -> float:
+        """The value's standard error from the fitted variable's ``s`` at ``v``."""
+        if self.within is not None:
+            lo, hi = self.within
+            return float((hi - lo) / 2 * (1 - np.tanh(v) ** 2) * s)
+        return float(self.scale * s)
+
+
+def _layout(effects: list[dict]) -> list[_Slot]:
+    """Every fitted effect parameter."""
     out = []
     for i, e in enumerate(effects):
         effect = EFFECTS[e["kind"]]
         if effect.search.method == "sparse":  # the formula: its terms' coefficients
             for where in ("rib", "belt"):
                 for term, v in e["parameters"].get(where, {}).items():
-                    out.append((i, f"{where}:{term}", max(abs(v), 1e-12), False))
+                    out.append(_Slot(i, f"{where}:{term}", max(abs(v), 1e-12), False))
             continue
         # every named parameter is fitted (delays too: fractional ticks)
-        out += [(i, p.name, p.typical, p.positive) for p in effect.params]
+        out += [_Slot(i, p.name, p.typical, p.positive, p.within) for p in effect.params]
     return out
 
 
@@ -100,8 +130,8 @@ def refit_from(base: dict, effects: list[dict], data: Dataset, max_nfev: int = 6
     def unpack(theta: np.ndarray) -> tuple[dict, list[dict]]:
         b = dict(zip(FREE, np.exp(theta[:len(FREE)]), strict=False))
         b["m1"] = m1
-        for (i, name, scale, positive), v in zip(layout, theta[len(FREE):], strict=True):
-            _set(effects, i, name, abs(v * scale) if positive else v * scale)
+        for slot, v in zip(layout, theta[len(FREE):], strict=True):
+            _set(effects, slot.i, slot.name, slot.value(v))
         return b, effects
 
     def residual(theta: np.ndarray) -> np.ndarray:
@@ -115,14 +145,14 @@ def refit_from(base: dict, effects: list[dict], data: Dataset, max_nfev: int = 6
     # a fit may have driven a parameter below exp(-745), to 0.0 (no damping): start from the
     # smallest positive float, not log(0) = -inf, on which the optimiser's SVD meets NaN
     theta0 = np.concatenate([np.log(np.maximum([base[n] for n in FREE], _TINY)),
-                             [_get(effects, i, n) / s for i, n, s, _ in layout]])
+                             [sl.free(_get(effects, sl.i, sl.name)) for sl in layout]])
     res = optimize.least_squares(residual, theta0, method="trf", max_nfev=max_nfev)
     b, eff = unpack(res.x)
     se = _std_errors(res.jac, res.fun)
     base_se = {n: float(b[n] * s) for n, s in zip(FREE, se[:len(FREE)], strict=True)}
     eff_se: list[dict[str, float]] = [{} for _ in eff]
-    for (i, name, scale, _), s in zip(layout, se[len(FREE):], strict=True):
-        eff_se[i][name] = float(scale * s)
+    for slot, v, s in zip(layout, res.x[len(FREE):], se[len(FREE):], strict=True):
+        eff_se[slot.i][slot.name] = slot.std_err(v, s)
     return Refit(b, [_copy_effect(e) for e in eff], float(2 * res.cost), base_se, eff_se)
 
 

@@ -75,6 +75,13 @@ class Param:
     positive: bool = False  # must be > 0 to mean what its name says (fitted as a logarithm)
     required: bool = True  # the formula cannot do without it (else it defaults to 0)
     bounds: tuple[float, float] | None = None  # what a model file may hold
+    # the values for which the effect is what its name says: fitted within them (lo +
+    # (hi - lo) (1 + tanh t) / 2), and the model file's bounds
+    within: tuple[float, float] | None = None
+
+    def __post_init__(self) -> None:
+        if self.within is not None and self.bounds is None:
+            object.__setattr__(self, "bounds", self.within)
 
 
 @dataclass(frozen=True)
@@ -244,7 +251,8 @@ register(Effect(
     # is a high power of its stretch, not a cubic (held-out sets C-G: a cubic reached
     # 1.7 of the 4.3 points a bilinear webbing cost the thesis grey-box, n ~ 11 all of them).
     (Param("kb3", "N/m^3", 1e8, positive=True),
-     Param("n", "1", 3.0, positive=True, required=False)),
+     # n > 1: it stiffens (n < 1 softens: not what the name says)
+     Param("n", "1", 3.0, required=False, within=(1.0, 16.0))),
     force=_belt_stiffening,
     c_code=lambda p, num, b: (
         f"    fn += {num(p['kb3'])} * e * e * e;\n" if p.get("n", 3.0) == 3.0 else
@@ -306,10 +314,17 @@ def _input_gain(p: Mapping[str, Any], k: Kinematics, b: Mapping[str, float]
     return k.zero, b["k2"] * dw + b["c2"] * dwd
 
 
+# A spool's radius changes by one webbing thickness (1.0-1.3 mm) per turn: its BRS gain by
+# t / (2 pi r) per radian, 0.02 /rad for a 1.3 mm webbing on a 10 mm spool. Twice that is the
+# most a retractor's spool can do; beyond, a fit is mimicking something else (held-out sets
+# F and G: an airbag and a late pulse, at 0.07-0.20 /rad).
+G_SPOOL_MAX = 0.04
+
 register(Effect(
     "input_gain", "physical",
-    "BRS gain changing with the spindle angle: belt travel R (theta + g theta^2 / 2)",
-    (Param("g", "1/rad", 0.02),),
+    "BRS gain changing with the spindle angle: belt travel R (theta + g theta^2 / 2), "
+    f"|g| <= {G_SPOOL_MAX:g} /rad (a spool's webbing build-up)",
+    (Param("g", "1/rad", 0.02, within=(-G_SPOOL_MAX, G_SPOOL_MAX)),),
     force=_input_gain,
     c_code=lambda p, num, b: (f"    fn += {b['k2']} * ({b['R']} * {num(p['g'])} * theta * "
                               f"theta / 2) + {b['c2']} * ({b['R']} * {num(p['g'])} * theta * "
