@@ -123,7 +123,7 @@ def test_a_parameter_with_a_physical_range_is_fitted_and_filed_within_it(data):
     fake = replace(data, y=y)
     r = refit(BASE, [{"kind": "input_gain", "parameters": {"g": 0.01}}], fake, max_nfev=40)
     g = r.effects[0]["parameters"]["g"]
-    assert 0.03 < g <= 0.04  # pushed to the edge, never past it
+    assert 0.03 < g <= 0.04  # pushed towards the edge, never past it
     r = refit(BASE, [{"kind": "belt_stiffening", "parameters": {"kb3": 1e8, "n": 3.0}}],
               fake, max_nfev=20)
     assert 1.0 <= r.effects[0]["parameters"]["n"] <= 16.0

@@ -378,9 +378,11 @@ def within_value(within: tuple[float, float], t: float) -> float:
 
 
 def within_free(within: tuple[float, float], value: float) -> float:
-    """The unbounded variable of ``value`` (clipped just inside the range)."""
+    """The unbounded variable of ``value``, clipped to the inner 95 % of the range: at its
+    edge tanh is flat, and a fit started there could not leave it (a belt stiffening's
+    ranking drove n to 1, and its refits stayed there)."""
     lo, hi = within
-    return float(np.arctanh(np.clip(2.0 * (value - lo) / (hi - lo) - 1.0, -0.999, 0.999)))
+    return float(np.arctanh(np.clip(2.0 * (value - lo) / (hi - lo) - 1.0, -0.95, 0.95)))
 
 
 class _Scorer:
