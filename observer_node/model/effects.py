@@ -251,8 +251,9 @@ register(Effect(
     # is a high power of its stretch, not a cubic (held-out sets C-G: a cubic reached
     # 1.7 of the 4.3 points a bilinear webbing cost the thesis grey-box, n ~ 11 all of them).
     (Param("kb3", "N/m^3", 1e8, positive=True),
-     # n > 1: it stiffens (n < 1 softens: not what the name says)
-     Param("n", "1", 3.0, required=False, within=(1.0, 16.0))),
+     # n >= 2: it hardens (n < 1 softens, not what the name says; near 1 it is a linear
+     # stiffness, the refit's own k2, or on some setups only a belt stiffer there)
+     Param("n", "1", 3.0, required=False, within=(2.0, 16.0))),
     force=_belt_stiffening,
     c_code=lambda p, num, b: (
         f"    fn += {num(p['kb3'])} * e * e * e;\n" if p.get("n", 3.0) == 3.0 else
