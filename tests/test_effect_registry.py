@@ -127,3 +127,7 @@ def test_a_parameter_with_a_physical_range_is_fitted_and_filed_within_it(data):
     r = refit(BASE, [{"kind": "belt_stiffening", "parameters": {"kb3": 1e8, "n": 3.0}}],
               fake, max_nfev=20)
     assert 2.0 <= r.effects[0]["parameters"]["n"] <= 16.0
+    from observer_node.loop.closed_loop import parameter_warnings
+    edge = parameter_warnings("input_gain", {"g": -0.0399}, {}, 1000.0)
+    assert len(edge) == 1 and "edge of what the effect can be" in edge[0]
+    assert parameter_warnings("input_gain", {"g": 0.02}, {}, 1000.0) == []

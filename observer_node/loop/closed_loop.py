@@ -587,6 +587,11 @@ def parameter_warnings(kind: str, params: dict, std_err: dict[str, float],
                 out.append(f"{name} = {ms:.2f} ms is at the searched bound "
                            f"({1000 * DELAY_MAX_S:g} ms)")
             continue
+        if p is not None and p.within is not None:
+            lo, hi = p.within
+            if min(v - lo, hi - v) < 0.01 * (hi - lo):
+                out.append(f"{name} = {v:.3g} {unit} is at the edge of what the effect can be "
+                           f"({lo:g}..{hi:g}): the data may want something else")
         if name == "gap" and not 0.005 <= v <= 0.4:
             out.append(f"gap = {v:.3g} m is not a plausible airbag distance (5..400 mm)")
         elif spec.positive(name) and typical and abs(v) < 1e-3 * typical:
