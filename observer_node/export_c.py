@@ -10,8 +10,7 @@ it (:mod:`observer_node.daemon.core`: arming, bias, trigger, validity). Numbers 
 with 17 significant digits, so the C model is the model file's.
 
 The arithmetic type is ``co_real``: ``double`` unless compiled with ``-DCO_REAL=float``. No
-heap, no libm beyond ``fabs`` (and ``pow`` for a belt stiffening that is not cubic), no state
-outside the caller's ``co_observer``.
+heap, no libm beyond ``fabs``, no state outside the caller's ``co_observer``.
 
 The frame codec comes from the DBC through cantools' C generator (:func:`export_codec`:
 ``chest_observer_can.c/.h``, a pack and unpack function and a struct per frame), so the C side

@@ -232,34 +232,16 @@ register(Effect(
     search=Search("switch"),
     plant="the belt pulls, it never pushes (force clipped at zero)"))
 
-E_REF_M = 0.02  # belt_stiffening's reference penetration: kb3 E^3 is its force there
-
-
-def _belt_stiffening(p: Mapping[str, Any], k: Kinematics, b: Mapping[str, float]
-                     ) -> tuple[Num, Num]:
-    n = p.get("n", 3.0)
-    if n == 3.0:  # files before 2026-11-25 and the cubic: the exact form, no power
-        return k.zero, p["kb3"] * k.e * k.e * k.e
-    return k.zero, p["kb3"] * E_REF_M ** 3 * np.sign(k.e) * np.abs(k.e / E_REF_M) ** n
-
-
+# A cubic. A free exponent (kb3 E^3 |e/E|^n, n 2..16) was tried on the seen held-out sets
+# (2026-11-25): a bilinear webbing's offline fit rose 1.7 -> 3.9 of its 4.3 points, but no
+# verdict got right, and on set G's two-effect case the loop then named an airbag that was not
+# there (the flexible form, scoped to FULL, failed the setup rule, so the airbag no longer tied).
 register(Effect(
     "belt_stiffening", "physical",
-    "belt/flesh stiffness hardening: F = kb3 E^3 |e/E|^n sign(e) on the sternum (e = w - s, "
-    "belt penetration; E = 20 mm; n = 3: kb3 e^3)",
-    # The exponent is free: a webbing that stiffens steeply past a knee, or with a toe,
-    # is a high power of its stretch, not a cubic (held-out sets C-G: a cubic reached
-    # 1.7 of the 4.3 points a bilinear webbing cost the thesis grey-box, n ~ 11 all of them).
-    (Param("kb3", "N/m^3", 1e8, positive=True),
-     # n >= 2: it hardens (n < 1 softens, not what the name says; near 1 it is a linear
-     # stiffness, the refit's own k2, or on some setups only a belt stiffer there)
-     Param("n", "1", 3.0, required=False, within=(2.0, 16.0))),
-    force=_belt_stiffening,
-    c_code=lambda p, num, b: (
-        f"    fn += {num(p['kb3'])} * e * e * e;\n" if p.get("n", 3.0) == 3.0 else
-        f"    fn += {num(p['kb3'] * E_REF_M ** 3)} * (e < 0 ? -1.0 : 1.0) * "
-        f"pow(fabs(e) / {num(E_REF_M)}, {num(p['n'])});\n"),
-    search=Search("grid", "n", (3.0, 6.0, 10.0)),
+    "belt/flesh stiffness hardening: F = kb3 e^3 on the sternum (e = w - s, belt penetration)",
+    (Param("kb3", "N/m^3", 1e8, positive=True),),
+    force=lambda p, k, b: (k.zero, p["kb3"] * k.e * k.e * k.e),
+    c_code=lambda p, num, b: f"    fn += {num(p['kb3'])} * e * e * e;\n",
     plant="belt/flesh stiffness k2 (1 + (e/20 mm)^2)"))
 
 
