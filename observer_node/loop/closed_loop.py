@@ -249,12 +249,9 @@ def _run(est_tests: list[CrashTest], val_tests: list[CrashTest], out: Path, rate
         if tie and runner_up is not None:
             rival = next(t for t in tried if t[1].kind == runner_up.kind
                          and scope_label(t[1].setups) == runner_up.scope)
-            # look past the tie: each judged beside the other, in a model with both
             prog.update(f"looking past a tie: {best.kind} and {rival[1].kind} together")
-            cv_both = _cv(runner, [(base, [*effects, best.effect(), rival[1].effect()])],
-                          est, folds_)[0]
-            past = past_the_tie(cv_tests_best, per_test[id(rival[1])], cv_both, test_setup,
-                                best.setups, rival[1].setups, margin)
+            past = _look_past(runner, base, effects, est, folds_, best, rival[1], per_test,
+                              test_setup, margin)
             tie_note = tie_verdict(best, rival[1], past)
             if not past.named:
                 # two explanations the data defend equally are not a finding: both possible
@@ -275,7 +272,8 @@ def _run(est_tests: list[CrashTest], val_tests: list[CrashTest], out: Path, rate
                               and t[1] is not rival[1])], per_test)
                 cv_tests_best = per_test[id(best)]
                 runner_up, margin_points, other_scope = _rival(
-                    [rival, *(t for t in tried if t[1] is not best)], per_test)
+                    [(cv_best, best, ev_best), *(t for t in tried if t[1] is not best)],
+                    per_test)
             elif past.named == "both":  # the other is tried again in the next round
                 carry.append(rival[1])
         prog.update(f"refitting with {best.kind} on all estimation tests")
@@ -419,6 +417,17 @@ def _cv(runner: Runner, models: list[tuple[dict, list[dict]]], data: Dataset,
     k = len(folds_)
     return [{n: v for r in res[i * k:(i + 1) * k] for n, v in r.items()}
             for i in range(len(models))]
+
+
+def _look_past(runner: Runner, base: dict, effects: list[dict], data: Dataset,
+               folds_: list[tuple[list[int], list[int]]], a: Candidate, b: Candidate,
+               per_test: dict[int, dict[str, float]], test_setup: dict[str, str],
+               margin: float) -> PastTheTie:
+    """A tie between ``a`` and ``b`` looked past: the model with both cross-validated, and
+    each judged by the rule beside the other."""
+    cv_both = _cv(runner, [(base, [*effects, a.effect(), b.effect()])], data, folds_)[0]
+    return past_the_tie(per_test[id(a)], per_test[id(b)], cv_both, test_setup, a.setups,
+                        b.setups, margin)
 
 
 def _sensor_candidates(runner: Runner, base: dict, effects: list[dict], data: Dataset,
