@@ -895,10 +895,10 @@ def test_set_h_squeeze_film_damps_more_as_the_chest_closes() -> None:
         assert (on - off) * m_sp == pytest.approx(want, rel=1e-9, abs=1e-9)
 
 
-# ------------------------------------------------- sets E, F and G: the same checks
+# ------------------------------------------------- sets E-H: the same checks
 
 # each set: its cases, the sets before it, its seeds' range start, a case of an earlier set
-# ------------------------------------------ sets E, F, G: generated, deterministic, apart
+# ------------------------------------------ sets E-H: generated, deterministic, apart
 
 # per set: its fixture, two cases regenerated alone, a case or two of each earlier set
 LATER_SETS = {
