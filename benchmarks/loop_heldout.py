@@ -22,7 +22,7 @@ Per case the loop runs blind at its defaults on 6 estimation + 6 validation test
 - at the end: how many cases are right, and how many named effects are there and not there,
   and how many refused or tied effects are there and not there.
 
-    python -m benchmarks.loop_heldout [--set a|b|c|d|e|f|g] [--cases NAME ...] [--sets DIR]
+    python -m benchmarks.loop_heldout [--set a|b|c|d|e|f|g|h] [--cases NAME ...] [--sets DIR]
                                       [--out DIR] [--workers N] [--json FILE]
 """
 
@@ -143,7 +143,7 @@ def generate(case_set: str, cases: list[Case], out: Path) -> Path:
 def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__,
                                  formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("--set", dest="case_set", choices=("a", "b", "c", "d", "e", "f", "g"),
+    ap.add_argument("--set", dest="case_set", choices=("a", "b", "c", "d", "e", "f", "g", "h"),
                     default="a",
                     help="set A (cases.py, default), set B (cases_b.py), set C (cases_c.py), "
                          "set D (cases_d.py), set E (cases_e.py), set F (cases_f.py) or set G "

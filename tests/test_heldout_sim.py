@@ -770,10 +770,135 @@ def test_set_g_cd_dead_band_cd_only(set_g: Path) -> None:
         assert np.abs(cd[rest]).max() < 0.5 and np.abs(cd0[rest]).max() < 0.5
 
 
-# ------------------------------------------------- sets E, F and G: the same checks
+# ------------------------------------------------------------------ set H (cases_h.py)
+
+SET_H = heldout_sets.case_set("h")
+WATCHED_H = ("hh_broken_cd_stuck_bit", "hh_broken_brs_quadrature", "hh_cr_ac_coupled",
+             "hh_rib_squeeze", "hh_airbag_fabric", "hh_pelvis_submarine")
+
+
+@pytest.fixture(scope="module")
+def set_h(tmp_path_factory: pytest.TempPathFactory) -> Path:
+    return _generate(tmp_path_factory, "h", WATCHED_H)
+
+
+def test_set_h_cd_stuck_bit_reads_a_bit_high(set_h: Path) -> None:
+    """A data line of the CD digitiser stuck at 1: the recorded channel (J211 sign) reads one
+    bit's weight high wherever that bit should be 0, so CD reads that much less compression
+    in every other band of the bit's weight, and at rest flickers between 0 and minus it."""
+    c = heldout_sets.select(["hh_broken_cd_stuck_bit"], "h")[0]
+    (broken,), (eff,) = c.expect_broken, c.effects
+    weight = 2 * lab.CD_ADC_MM / 2 ** lab.ADC_BITS * 2 ** int(eff.size)
+    assert weight == pytest.approx(6.25)
+    bad = _channel(set_h / "on" / c.name, broken, "cd")
+    good = _channel(set_h / "off" / c.name, broken, "cd")
+    rest = _times(len(bad)) < 0
+    assert -0.75 * weight < bad[rest].mean() < -0.25 * weight  # a flickering pre-crash line
+    assert np.ptp(bad[rest]) > weight / 2 and np.abs(good[rest]).max() < 0.5
+    low = good - bad
+    assert low.min() > -1.0 and low.max() < weight + 1.0
+    loaded = good > 8
+    share = np.mean(low[loaded] > 0.8 * weight)  # bands of the bit's weight, alternately low
+    assert 0.2 < share < 0.8
+    for which in ("cr", "pulse"):
+        assert np.array_equal(_channel(set_h / "on" / c.name, broken, which),
+                              _channel(set_h / "off" / c.name, broken, which))
+    _others_untouched(set_h, c.name, broken)
+
+
+def test_set_h_brs_quadrature_reads_four_times(set_h: Path) -> None:
+    """The decoder in x4 mode under the spindle's own counts per rev: the broken test's BRS
+    reads four times the spool's angle, in single-count steps; the other channels as before."""
+    c = heldout_sets.select(["hh_broken_brs_quadrature"], "h")[0]
+    (broken,), (eff,) = c.expect_broken, c.effects
+    bad, good = _brs(set_h / "on" / c.name, broken), _brs(set_h / "off" / c.name, broken)
+    assert eff.size == 4 and np.ptp(good) > 20
+    assert np.abs(bad - eff.size * good).max() <= eff.size  # 4 x, to a step of the spindle
+    assert np.ptp(bad) > 3.5 * np.ptp(good)
+    assert set(np.abs(np.diff(bad))) <= {0.0, 1.0}  # finer steps, one count each
+    for which in ("cr", "cd", "pulse"):
+        assert np.array_equal(_channel(set_h / "on" / c.name, broken, which),
+                              _channel(set_h / "off" / c.name, broken, which))
+    _others_untouched(set_h, c.name, broken)
+
+
+def test_set_h_cr_ac_coupled_cr_only(set_h: Path) -> None:
+    """The transducer error is a first-order high-pass of time constant tau on cr alone (a
+    piezoelectric element's charge leaking): low at the peak, below zero after the crash, zero
+    at rest; CD and the pulse as without it."""
+    from scipy import signal
+
+    c = heldout_sets.select(["hh_cr_ac_coupled"], "h")[0]
+    (eff,) = c.effects
+    bb, aa = signal.bilinear([eff.size, 0.0], [eff.size, 1.0], fs=physics.FS_HZ)
+    on, off = set_h / "on" / c.name, set_h / "off" / c.name
+    t = None
+    for folder in sorted(on.glob("*/*")):
+        for which in ("cd", "pulse"):
+            assert np.array_equal(_channel(on, folder.name, which),
+                                  _channel(off, folder.name, which))
+        cr, cr0 = _channel(on, folder.name, "cr"), _channel(off, folder.name, "cr")
+        t = _times(len(cr)) if t is None else t
+        assert np.allclose(cr, signal.lfilter(bb, aa, cr0), atol=0.3)  # the high-pass
+        assert cr.max() < cr0.max() - 1  # reads low at the peak
+        late = (t > 0.150) & (t < 0.170)  # the chest at rest again: the charge's undershoot
+        assert cr[late].mean() < cr0[late].mean() - 1
+        rest = t < 0  # nothing to pass at rest: the pre-crash line as without it
+        assert np.allclose(cr[rest], cr0[rest], atol=0.1)
+
+
+@pytest.mark.parametrize("case", ["hh_rib_squeeze", "hh_airbag_fabric", "hh_pelvis_submarine"])
+def test_set_h_new_physical_forms_move_the_chest(set_h: Path, case: str) -> None:
+    """Set H's three new physical forms are physics: each moves CR and CD of every test it
+    acts on and leaves the recorded pulse alone; a test it does not act on is untouched."""
+    c = heldout_sets.select([case], "h")[0]
+    (eff,) = c.effects
+    on, off = set_h / "on" / case, set_h / "off" / case
+    est, val = cases.test_names(c)
+    for name, setup in zip(est + val, c.est + c.val, strict=True):
+        assert np.array_equal(_channel(on, name, "pulse"), _channel(off, name, "pulse"))
+        moved = [np.abs(_channel(on, name, w) - _channel(off, name, w)).max()
+                 for w in ("cr", "cd")]
+        if setup in eff.setups:
+            assert min(moved) > 0.3, (name, moved)
+        else:
+            assert max(moved) == 0.0
+
+
+def _deriv_one(key: str, size: float, **state: float) -> np.ndarray:
+    """The physics' derivative for one nominal test at rest but for ``state`` (names of
+    ``physics._deriv``'s unpacking), with ``key`` at ``size`` (the rest off)."""
+    names = ["x", "vx", "sa", "va", "sb", "vb", "u", "vu", "th", "om", "L", "p", "vp", "q",
+             "pk", "hh", "vh"]
+    p = {k: np.array([[v]]) for k, v in physics.NOMINAL.items()}
+    eff = {k: np.array([[size if k == key else 0.0]]) for k in physics.EFFECTS}
+    m = 8
+    b = physics.Batch(p, eff, np.zeros((1, m)), np.zeros((1, m)))
+    y = np.zeros((physics.N_STATE, 1, 1))
+    y[13] = 1.0
+    for k, v in state.items():
+        y[names.index(k)] = v
+    return physics._deriv(b, 0, y)[:, 0, 0]
+
+
+def test_set_h_squeeze_film_damps_more_as_the_chest_closes() -> None:
+    """rib_squeeze: no force without a rate; with one, the force the film adds grows as
+    1/gap^3 with the deflection (sternum to spine box 60 mm at rest)."""
+    m_sp, c = physics.NOMINAL["m_sp"], 60.0
+    for d in (0.0, 0.015, 0.030):
+        still = _deriv_one("rib_squeeze", c, sa=d, sb=d)[1] - _deriv_one("", 0.0, sa=d, sb=d)[1]
+        assert still == 0.0
+        on = _deriv_one("rib_squeeze", c, sa=d, sb=d, va=2.0, vb=2.0)[1]
+        off = _deriv_one("", 0.0, sa=d, sb=d, va=2.0, vb=2.0)[1]
+        gap = physics.SQUEEZE_GAP_M
+        want = 2 * c * 2.0 * ((gap / (gap - d)) ** 3 - 1.0)  # both ribs
+        assert (on - off) * m_sp == pytest.approx(want, rel=1e-9, abs=1e-9)
+
+
+# ------------------------------------------------- sets E-H: the same checks
 
 # each set: its cases, the sets before it, its seeds' range start, a case of an earlier set
-# ------------------------------------------ sets E, F, G: generated, deterministic, apart
+# ------------------------------------------ sets E-H: generated, deterministic, apart
 
 # per set: its fixture, two cases regenerated alone, a case or two of each earlier set
 LATER_SETS = {
@@ -787,6 +912,10 @@ LATER_SETS = {
           {"a": ["h_broken_brs"], "b": ["hb_cr_gain"], "c": ["hc_neck_head"],
            "d": ["hd_broken_cd_spikes"], "e": ["he_cr_progressive"],
            "f": ["hf_cd_compress", "hf_broken_brs_reset"]}),
+    "h": ("set_h", ("hh_two_effects", "hh_broken_brs_quadrature"),
+          {"a": ["h_airbag", "h_lumbar"], "b": ["hb_airbag_relief"], "c": ["hc_airbag_sealed"],
+           "d": ["hd_broken_brs_reversed"], "e": ["he_rib_visco"], "f": ["hf_broken_cr_hum"],
+           "g": ["hg_pelvis", "hg_broken_cd_rail", "hg_webbing_knee"]}),
 }
 later_set = pytest.mark.parametrize("case_set", sorted(LATER_SETS))
 # a CR recorded at the wrong polarity peaks below zero: left out of the check that CR peaks
@@ -826,7 +955,9 @@ def test_later_set_forms_leave_earlier_sets_alone(case_set: str, tmp_path: Path)
 
 NEW_SETS = {"e": (SET_E, SET_A + SET_B + SET_C + SET_D, 14000, "hd_clean48"),
             "f": (SET_F, SET_A + SET_B + SET_C + SET_D + SET_E, 15000, "he_clean48"),
-            "g": (SET_G, SET_A + SET_B + SET_C + SET_D + SET_E + SET_F, 16000, "hf_clean48")}
+            "g": (SET_G, SET_A + SET_B + SET_C + SET_D + SET_E + SET_F, 16000, "hf_clean48"),
+            "h": (SET_H, SET_A + SET_B + SET_C + SET_D + SET_E + SET_F + SET_G, 17000,
+                  "hg_clean48")}
 new_set = pytest.mark.parametrize("case_set", sorted(NEW_SETS))
 
 

@@ -13,11 +13,13 @@
   ``cases_d.py``: set D, the same again, on lopsided and single-setup mixes.
   ``cases_e.py``: set E, on pairings of setup counts no earlier case ran; ``cases_f.py``:
   set F, the same again, with lab-side faults of new kinds; ``cases_g.py``: set G, the same
-  again (a CD rail, a pulse on its own time base, a CD dead band).
+  again (a CD rail, a pulse on its own time base, a CD dead band); ``cases_h.py``: set H,
+  the same again, with three physical forms no earlier set used (squeeze-film damping in the
+  chest, a bag leaking through its fabric, a pelvis submarining under its lap belt).
   ``make_sets.py``: writes a set (``--no-effects``: the same tests with every effect off).
   ``costs.py``: what each case costs the thesis grey-box (project CLI).
 
-    python -m benchmarks.heldout.make_sets --out /tmp/heldout [--set a|b|c|d|e|f|g]
+    python -m benchmarks.heldout.make_sets --out /tmp/heldout [--set a|b|c|d|e|f|g|h]
         [--case NAME ...]
 
 Never tune the loop on these cases; report them apart from the tuned ones.

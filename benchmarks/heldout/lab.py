@@ -7,6 +7,7 @@ from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
+from scipy import signal
 
 from . import physics as ph
 from .cases import Case, test_names
@@ -30,7 +31,8 @@ DV_MS = {"R16": (13.6, 14.4), "SLED": (14.0, 15.6), "FULL": (14.3, 16.2)}
 EXACT = {"pulse_late", "brs_late", "brs_freeze", "cd_dropout", "pulse_rail", "pulse_gain",
          "cr_gain", "cd_knee", "pulse_zero_shift", "cd_spikes", "brs_reversed",
          "cr_soft_clip", "cr_cable_break", "cr_reversed", "cr_progressive", "brs_reset",
-         "cr_hum", "cd_compress", "cd_rail", "pulse_sync", "cd_dead_band"}
+         "cr_hum", "cd_compress", "cd_rail", "pulse_sync", "cd_dead_band", "cd_stuck_bit",
+         "brs_quadrature", "cr_ac_coupled"}
 DROPOUT_S = 0.010  # how long cd_dropout's wiper stays off the track
 KNEE_SLOPE = 0.6  # cd_knee: the gain of the CD calibration's second segment
 SHIFT_AT_S = 0.011  # pulse_zero_shift: when the zero shifts (in the crash-box spike)
@@ -41,6 +43,8 @@ SPIKE_SAMPLES = 3
 CABLE_BREAK_G = 0.0  # cr_cable_break: what the open bridge reads, constant (g)
 CR_PROG_G = 25.0  # cr_progressive: the level (g) where CR over-reads by the effect's size
 HUM_HZ = 50.0  # cr_hum: a ground loop picks up the mains (European lab)
+# cd_stuck_bit: the CD digitiser's input range (+-, mm) over its 16 bits, offset binary
+CD_ADC_MM, ADC_BITS = 100.0, 16
 NOISE = {"pulse_g": 0.6, "cr_g": 0.55, "cd_mm": 0.10}  # white, before the CFC filters
 
 
@@ -120,7 +124,10 @@ def record(d: Drawn, i: int, sim: dict[str, np.ndarray], counts_per_rev: int,
     # maybe frozen by a cable fault
     th = np.interp(t + e["brs_late"], t, sim["th"][i])
     th = th + e["brs_eccentric"] * np.sin(th + 2 * np.pi * d.brs_phase)
-    counts = ph.quantise_brs(th[None, :], counts_per_rev, np.array([d.brs_phase]))[0]
+    # brs_quadrature: the decoder counts every edge of both tracks (4 a step) while the header
+    # keeps the spindle's own counts per rev: finer steps, the angle read 4 x
+    edges = round(e["brs_quadrature"]) if e["brs_quadrature"] else 1
+    counts = ph.quantise_brs(th[None, :], edges * counts_per_rev, np.array([d.brs_phase]))[0]
     if e["brs_freeze"] > 0:
         k = int(np.searchsorted(t, e["brs_freeze"]))
         counts[k:] = counts[k]
@@ -137,6 +144,10 @@ def record(d: Drawn, i: int, sim: dict[str, np.ndarray], counts_per_rev: int,
         cr_read = e["cr_soft_clip"] * np.tanh(cr_read / e["cr_soft_clip"])
     if e["cr_progressive"]:  # a sensing element stiffening less than its calibration says
         cr_read = cr_read * (1.0 + e["cr_progressive"] * (cr_read / CR_PROG_G) ** 2)
+    if e["cr_ac_coupled"]:  # a piezoelectric sensing element: its charge leaks away through
+        tau = e["cr_ac_coupled"]  # the amplifier's input, a first-order high-pass of time tau
+        bb, aa = signal.bilinear([tau, 0.0], [tau, 1.0], fs=ph.FS_HZ)
+        cr_read = signal.lfilter(bb, aa, cr_read)
     cr_raw = cr_read + NOISE["cr_g"] * rng.standard_normal(t.size)
     if e["cr_hum"]:  # a ground loop: mains hum on the bridge, from before the crash on
         cr_raw = cr_raw + e["cr_hum"] * np.sin(2 * np.pi * HUM_HZ * t + 2 * np.pi * d.brs_phase)
@@ -155,6 +166,12 @@ def record(d: Drawn, i: int, sim: dict[str, np.ndarray], counts_per_rev: int,
         b = e["cd_dead_band"]
         cd = np.sign(cd) * np.maximum(np.abs(cd) - b, 0.0)
     cd = cd + NOISE["cd_mm"] * rng.standard_normal(t.size)
+    if e["cd_stuck_bit"]:  # one data line of the digitiser stuck at 1: the recorded channel
+        raw = -cd  # (J211 sign) reads one bit's weight high wherever that bit should be 0
+        lsb = 2.0 * CD_ADC_MM / 2 ** ADC_BITS
+        weight = lsb * 2 ** round(e["cd_stuck_bit"])
+        bit = np.floor((raw + CD_ADC_MM) / weight) % 2
+        cd = -(raw + (1.0 - bit) * weight)
     if e["cd_rail"]:  # the conditioner's output saturates: the raw channel flat at its range
         cd = np.clip(cd, -e["cd_rail"], e["cd_rail"])
     if e["cd_spikes"]:  # the connector opens and closes: short spikes

@@ -88,6 +88,13 @@ EFFECTS = {
     "cd_rail": "",  # broken test: CD conditioner's range too small, clips at this (mm)
     "pulse_sync": "",  # broken test: pulse channel's time base this early (s), own trigger
     "cd_dead_band": "",  # transducer: CD reads nothing over the linkage's first b mm (b, mm)
+    # set H's forms (cases_h.py): three physical forms no earlier set used, three lab-side
+    "rib_squeeze": "chest_rate_damping",  # squeeze-film damping, ~ 1/gap^3 as the chest closes
+    "airbag_fabric": "airbag_contact",  # ventless bag leaking through its fabric (fill scale)
+    "pelvis_submarine": "pelvis_coupling",  # pelvis path, the lap belt slips at this force (N)
+    "cd_stuck_bit": "",  # broken test: a data line of the CD digitiser stuck at 1 (bit number)
+    "brs_quadrature": "",  # broken test: BRS decoder counts this many edges a step (x4 mode)
+    "cr_ac_coupled": "",  # transducer: piezoelectric CR, charge leaks with this time constant (s)
 }
 POW_B_M = (0.015, 0.025)  # webbing_power: reference stretch, chest side and up to the retractor
 V_HYST = 0.02  # m/s: webbing_hysteresis switches between its paths within this rate
@@ -97,6 +104,12 @@ KNEE_M = (0.022, 0.016)  # webbing_knee: knee stretch, chest side and up to the 
 # neck_head: small-amplitude neck stiffness (N/m; ~5.5 Hz with 5 kg), secant stiffness tripled
 # at NECK_REF_M, damping ratio. Constants, not NOMINAL keys, so sets A and B draw as before.
 NECK_K, NECK_REF_M, NECK_ZETA = 6.0e3, 0.080, 0.25
+# rib_squeeze: the gap between sternum and spine box at rest; the film's force is taken no
+# further than 80 % closed (the ribs' own bottoming is another form)
+SQUEEZE_GAP_M = 0.060
+# airbag_fabric: leak rate through the fabric (1/s at one atmosphere over ambient, the whole
+# fabric free), and the fabric's area (two 0.7 m panels), part of it covered by the occupant
+FABRIC_K, FABRIC_M2 = 15.0, 0.77
 
 # Nominal Hybrid-III-like thorax, belt and retractor (SI), before per-test scatter.
 NOMINAL = {
@@ -175,6 +188,12 @@ def _deriv(b: Batch, j: np.ndarray | int, y: np.ndarray) -> np.ndarray:
     if np.any(cvv):  # resists compression (d' > 0) only
         fa = fa + cvv * np.maximum(dva, 0.0) ** 2
         fb = fb + cvv * np.maximum(dvb, 0.0) ** 2
+    csq = e["rib_squeeze"]  # N s/m: the film's damping at rest, beyond the ribs' own
+    if np.any(csq):  # the chest contents squeezed between sternum and spine: c ~ 1/gap^3
+        ga = np.clip(da, 0.0, 0.8 * SQUEEZE_GAP_M)
+        gb = np.clip(db, 0.0, 0.8 * SQUEEZE_GAP_M)
+        fa = fa + csq * dva * ((SQUEEZE_GAP_M / (SQUEEZE_GAP_M - ga)) ** 3 - 1.0)
+        fb = fb + csq * dvb * ((SQUEEZE_GAP_M / (SQUEEZE_GAP_M - gb)) ** 3 - 1.0)
     fab = p["k_ab"] * (sa - sb) + p["c_ab"] * (va - vb)
 
     # belt, chest side: pushes the contact point of the sternum rearward
@@ -244,6 +263,14 @@ def _deriv(b: Batch, j: np.ndarray | int, y: np.ndarray) -> np.ndarray:
         lap = lum * (p["k_lap"] * (xv - pp) + p["c_lap"] * (vv - vp))
         dvp = (lap - fl) / p["m_p"]
 
+    sub = e["pelvis_submarine"]  # the same path at scale 1, the lap belt slipping at sub (N)
+    if np.any(sub):  # beyond it the belt rides over the iliac wings: the pelvis slides under
+        fs_l = p["k_l"] * (pp - x) + p["c_l"] * (vp - vx)
+        f_slip = np.where(sub > 0, sub, 1.0)
+        lap_s = f_slip * np.tanh((p["k_lap"] * (xv - pp) + p["c_lap"] * (vv - vp)) / f_slip)
+        fl = np.where(sub > 0, fs_l, fl)
+        dvp = np.where(sub > 0, (lap_s - fs_l) / p["m_p"], dvp)
+
     # optional: airbag (vented gas bag), contact once deployed and the torso closes the gap
     fbag = np.zeros_like(x)
     dq = np.zeros_like(x)
@@ -254,6 +281,9 @@ def _deriv(b: Batch, j: np.ndarray | int, y: np.ndarray) -> np.ndarray:
     sealed = e["airbag_sealed"]  # the same, for a bag without vents
     if np.any(sealed):
         bag = bag + sealed
+    fabric = e["airbag_fabric"]  # the same, for a bag without vent holes, of uncoated fabric
+    if np.any(fabric):
+        bag = bag + fabric
     if np.any(bag):
         pen = np.maximum((xv - x) - p["gap_bag"], 0.0)
         deployed = (t > p["t_bag"] + 0.025) & (bag > 0)
@@ -268,6 +298,10 @@ def _deriv(b: Batch, j: np.ndarray | int, y: np.ndarray) -> np.ndarray:
             dq = np.where(deployed & (relief > 0), -RELIEF_PA[2] * q * opening, dq)
         if np.any(sealed):  # no vent: the gas only compresses
             dq = np.where(sealed > 0, 0.0, dq)
+        if np.any(fabric):  # the gas seeps through the free fabric, Darcy: flow ~ pressure
+            free = 1.0 - area / FABRIC_M2
+            leak = -FABRIC_K * q * (p_g / P_ATM) * free * (p["V_bag"] / vol)
+            dq = np.where(deployed & (fabric > 0), leak, dq)
 
     # optional: head and upper neck, tied to the spine only (pulls it forward as it lags)
     fn = np.zeros_like(x)

@@ -3,7 +3,8 @@ been looked at by the loop's engineers, kept from them until the loop ran on it)
 (``cases_c``, written after set B had been looked at, the same way), set D (``cases_d``,
 written after set C had been looked at, the same way), set E (``cases_e``, written after set D
 had been looked at, the same way), set F (``cases_f``, written after set E had been looked at,
-the same way), set G (``cases_g``, written after set F had been looked at, the same way)."""
+the same way), set G (``cases_g``, written after set F had been looked at, the same way), set H
+(``cases_h``, written after set G had been looked at, the same way)."""
 
 from __future__ import annotations
 
@@ -14,13 +15,14 @@ from .cases_d import SET_D
 from .cases_e import SET_E
 from .cases_f import SET_F
 from .cases_g import SET_G
+from .cases_h import SET_H
 
-SETS = ("a", "b", "c", "d", "e", "f", "g")
+SETS = ("a", "b", "c", "d", "e", "f", "g", "h")
 
 
 def case_set(name: str) -> list[Case]:
     """Set A (``cases``), B (``cases_b``), C (``cases_c``), D (``cases_d``), E (``cases_e``),
-    F (``cases_f``) or G (``cases_g``); ValueError for another name."""
+    F (``cases_f``), G (``cases_g``) or H (``cases_h``); ValueError for another name."""
     if name == "a":
         return list(CASES)
     if name == "b":
@@ -35,6 +37,8 @@ def case_set(name: str) -> list[Case]:
         return list(SET_F)
     if name == "g":
         return list(SET_G)
+    if name == "h":
+        return list(SET_H)
     raise ValueError(f"unknown case set {name!r}; known: {', '.join(SETS)}")
 
 
