@@ -123,7 +123,9 @@ def test_a_parameter_with_a_physical_range_is_fitted_and_filed_within_it(data):
     r = refit(BASE, [{"kind": "input_gain", "parameters": {"g": 0.01}}], fake, max_nfev=40)
     g = r.effects[0]["parameters"]["g"]
     assert 0.03 < g <= 0.04  # pushed towards the edge, never past it
-    from observer_node.loop.closed_loop import parameter_warnings
-    edge = parameter_warnings("input_gain", {"g": -0.0399}, {}, 1000.0)
-    assert len(edge) == 1 and "edge of what the effect can be" in edge[0]
-    assert parameter_warnings("input_gain", {"g": 0.02}, {}, 1000.0) == []
+    # a fit held at the edge is refused: the data want more than a spool can do
+    from observer_node.loop.closed_loop import at_the_edge
+    why = at_the_edge("input_gain", {"g": -0.0399})
+    assert why is not None and "held at the edge of what input_gain can be" in why
+    assert at_the_edge("input_gain", {"g": 0.02}) is None
+    assert at_the_edge("chest_stiffening", {"k3": 1e12}) is None  # no range: the warnings'
