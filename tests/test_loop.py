@@ -182,3 +182,21 @@ def test_a_broken_test_is_left_out_and_drawn_for_the_reviewer(tmp_path):
     assert [(w.test, w.channel) for w in r.warnings] == [(t.name, "cr")]
     assert (tmp_path / "broken.png").stat().st_size > 10_000
     assert "broken.png (the tests left out)" in (tmp_path / "report.md").read_text()
+
+
+@pytest.mark.parametrize("where", ["estimation", "validation"])
+def test_a_test_is_judged_by_the_fit_made_without_it(tmp_path, where):
+    # one test's BRS decoder counts four edges per line (x4 mode) while its header says 96
+    # per revolution: its belt angle reads 4x. In-sample, the grey-box bends towards it;
+    # fitted without it (an estimation test left out, or a validation test), it scores far
+    # below the others: flagged by its residual
+    est = simulate_campaign("R16", 6, seed=23, config=PlantConfig(), prefix="EST")
+    val = simulate_campaign("R16", 6, seed=24, config=PlantConfig(), prefix="VAL")
+    tests = est if where == "estimation" else val
+    t = tests[3]
+    tests[3] = dataclasses.replace(t, brs=t.brs * 4)
+    r = run_loop(est, val, tmp_path, verbose=False, plots=False, ratings=False)
+    assert [(w.test, w.channel) for w in r.warnings] == [(t.name, "residual")]
+    assert "by a model fitted without it" in r.warnings[0].reason
+    assert r.effects == []  # clean physics: nothing named once the test is out
+    assert t.name not in (r.estimation + r.validation)
