@@ -32,7 +32,7 @@ EXACT = {"pulse_late", "brs_late", "brs_freeze", "cd_dropout", "pulse_rail", "pu
          "cr_gain", "cd_knee", "pulse_zero_shift", "cd_spikes", "brs_reversed",
          "cr_soft_clip", "cr_cable_break", "cr_reversed", "cr_progressive", "brs_reset",
          "cr_hum", "cd_compress", "cd_rail", "pulse_sync", "cd_dead_band", "cd_stuck_bit",
-         "brs_quadrature", "cr_ac_coupled", "brs_poll", "cr_lost_block", "cd_linkage_lag"}
+         "brs_quadrature", "cr_ac_coupled", "brs_poll", "cr_lost_block", "cd_backlash"}
 DROPOUT_S = 0.010  # how long cd_dropout's wiper stays off the track
 KNEE_SLOPE = 0.6  # cd_knee: the gain of the CD calibration's second segment
 SHIFT_AT_S = 0.011  # pulse_zero_shift: when the zero shifts (in the crash-box spike)
@@ -63,6 +63,18 @@ class Drawn:
     params: dict[str, float]
     effects: dict[str, float]
     brs_phase: float
+
+
+def backlash(x: np.ndarray, width: float) -> np.ndarray:
+    """A play of ``width`` between input and output, starting centred at rest: the output
+    holds until the input has crossed the play, then follows it ``width / 2`` behind."""
+    y = np.empty_like(x)
+    h = 0.5 * width
+    last = 0.0
+    for i, v in enumerate(x):
+        last = min(max(last, v - h), v + h)
+        y[i] = last
+    return y
 
 
 def draw(case: Case, effects_on: bool = True) -> tuple[list[Drawn], np.ndarray]:
@@ -178,10 +190,8 @@ def record(d: Drawn, i: int, sim: dict[str, np.ndarray], counts_per_rev: int,
     if e["cd_dead_band"]:  # slack in the pot's linkage, held one way by its return spring
         b = e["cd_dead_band"]
         cd = np.sign(cd) * np.maximum(np.abs(cd) - b, 0.0)
-    if e["cd_linkage_lag"]:  # the pot's arm follows the sternum through a springy linkage
-        tau = e["cd_linkage_lag"]  # with a viscous (greased) slide: a first-order lag, tau = c/k
-        bb, aa = signal.bilinear([1.0], [tau, 1.0], fs=ph.FS_HZ)
-        cd = signal.lfilter(bb, aa, cd)
+    if e["cd_backlash"]:  # play in the pot arm's worn slot: the arm moves only once the
+        cd = backlash(cd, e["cd_backlash"])  # sternum has taken up the play (a play operator)
     cd = cd + NOISE["cd_mm"] * rng.standard_normal(t.size)
     if e["cd_stuck_bit"]:  # one data line of the digitiser stuck at 1: the recorded channel
         raw = -cd  # (J211 sign) reads one bit's weight high wherever that bit should be 0

@@ -99,7 +99,7 @@ EFFECTS = {
     "rib_lock": "chest_stiffening",  # the chest locks up near this deflection (m): k d^2/(d_l - d)
     "brs_poll": "",  # broken test: the BRS's quadrature tracks polled at this rate (Hz), aliasing
     "cr_lost_block": "",  # broken test: the CR recorder loses a block of this length (s)
-    "cd_linkage_lag": "",  # transducer: the chest pot follows the sternum with this lag (s)
+    "cd_backlash": "",  # transducer: play of this width (mm) in the chest pot arm's slot
 }
 POW_B_M = (0.015, 0.025)  # webbing_power: reference stretch, chest side and up to the retractor
 V_HYST = 0.02  # m/s: webbing_hysteresis switches between its paths within this rate
