@@ -37,8 +37,7 @@ hysteresis 0.65 on R16 with a sealed bag of fill 0.5 on SLED, cost 8.2 (alone 5.
 then 0.35 with 0.3; the transducer case was to be a lag of the chest pot on a springy, greased
 linkage (a first-order low-pass on CD, ``cd_linkage_lag``): it cost 0.1, 0.4 and 0.7 at 3, 6
 and 10 ms (most likely the plain structure takes a lagging CD up in its chest parameters), so
-play in the
-arm's slot instead, 3 mm cost 0.8, 5 mm 1.8.
+play in the arm's slot instead, 3 mm cost 0.8, 5 mm 1.8.
 """
 
 from __future__ import annotations
