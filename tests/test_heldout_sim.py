@@ -895,10 +895,123 @@ def test_set_h_squeeze_film_damps_more_as_the_chest_closes() -> None:
         assert (on - off) * m_sp == pytest.approx(want, rel=1e-9, abs=1e-9)
 
 
-# ------------------------------------------------- sets E-H: the same checks
+# ------------------------------------------------------------------ set I (cases_i.py)
+
+SET_I = heldout_sets.case_set("i")
+WATCHED_I = ("hi_broken_brs_poll", "hi_broken_cr_lost_block", "hi_cd_backlash",
+             "hi_rib_lock")
+
+
+@pytest.fixture(scope="module")
+def set_i(tmp_path_factory: pytest.TempPathFactory) -> Path:
+    return _generate(tmp_path_factory, "i", WATCHED_I)
+
+
+def test_set_i_brs_poll_holds_between_polls_and_loses_counts(set_i: Path) -> None:
+    """The spindle's tracks polled at 1 kHz by a quadrature decoder: the broken test's BRS
+    moves only at the polls, by one count at most, and loses (or reverses) the counts of a
+    spool turning more than a step a poll: it ends far from the spool's true angle; the other
+    channels and tests as without it."""
+    c = heldout_sets.select(["hi_broken_brs_poll"], "i")[0]
+    (broken,), (eff,) = c.expect_broken, c.effects
+    bad, good = _brs(set_i / "on" / c.name, broken), _brs(set_i / "off" / c.name, broken)
+    every = round(physics.FS_HZ / eff.size)
+    assert every == 10
+    step = np.diff(bad)
+    assert not np.any(step[(np.arange(step.size) + 1) % every != 0])  # held between polls
+    assert set(np.abs(step)) <= {0.0, 1.0}  # one count a poll at most
+    assert np.abs(np.diff(good[::every])).max() >= 2  # the spool outran the polling
+    assert bad[0] == good[0] and abs(bad[-1] - good[-1]) >= 10  # counts lost for good
+    for which in ("cr", "cd", "pulse"):
+        assert np.array_equal(_channel(set_i / "on" / c.name, broken, which),
+                              _channel(set_i / "off" / c.name, broken, which))
+    _others_untouched(set_i, c.name, broken)
+
+
+def test_set_i_cr_lost_block_jumps_ahead(set_i: Path) -> None:
+    """The CR recorder lost a block of samples mid-loading: the broken test's CR is as without
+    it before the block, reads the signal the block's length early after it (a jump), and ends
+    on its padded last sample; the other channels and tests as without it."""
+    c = heldout_sets.select(["hi_broken_cr_lost_block"], "i")[0]
+    (broken,), (eff,) = c.expect_broken, c.effects
+    bad = _channel(set_i / "on" / c.name, broken, "cr")
+    good = _channel(set_i / "off" / c.name, broken, "cr")
+    t = _times(len(bad))
+    nb = round(eff.size * physics.FS_HZ)
+    k = int(np.searchsorted(t, lab.LOST_AT_S))
+    before = t < lab.LOST_AT_S - 0.005
+    assert np.allclose(bad[before], good[before], atol=0.05)
+    after = np.arange(k + 50, len(t) - nb - 50)  # 5 ms clear of the jump and of the end
+    assert np.allclose(bad[after], good[after + nb], atol=0.3)
+    assert np.abs(bad[after] - good[after]).max() > 3.0  # the early signal: a visible jump
+    assert np.ptp(bad[-nb + 50:]) < 0.3  # the padded end, flat
+    for which in ("cd", "pulse"):
+        assert np.array_equal(_channel(set_i / "on" / c.name, broken, which),
+                              _channel(set_i / "off" / c.name, broken, which))
+    assert np.array_equal(_brs(set_i / "on" / c.name, broken), _brs(set_i / "off" / c.name,
+                                                                     broken))
+    _others_untouched(set_i, c.name, broken)
+
+
+def test_set_i_cd_backlash_cd_only(set_i: Path) -> None:
+    """The transducer error is play of width w in the chest pot arm's slot: CD reads w/2 low
+    while the chest compresses (the peak w/2 low) and w/2 high once it has come back by w;
+    CR, the pulse and the BRS as without it."""
+    c = heldout_sets.select(["hi_cd_backlash"], "i")[0]
+    (eff,) = c.effects
+    w = eff.size
+    on, off = set_i / "on" / c.name, set_i / "off" / c.name
+    for folder in sorted(on.glob("*/*")):
+        for which in ("cr", "pulse"):
+            assert np.array_equal(_channel(on, folder.name, which),
+                                  _channel(off, folder.name, which))
+        assert np.array_equal(_brs(on, folder.name), _brs(off, folder.name))
+        cd, cd0 = _channel(on, folder.name, "cd"), _channel(off, folder.name, "cd")
+        assert np.allclose(cd, lab.backlash(cd0, w), atol=0.3)  # the play
+        assert cd.max() == pytest.approx(cd0.max() - w / 2, abs=0.3)  # low at the peak
+        back = np.arange(len(cd)) > np.argmax(cd0)
+        assert (cd - cd0)[back].max() == pytest.approx(w / 2, abs=0.3)  # high coming back
+        rest = _times(len(cd)) < 0
+        assert np.abs(cd[rest]).max() < 0.5
+
+
+def test_set_i_backlash_is_a_play() -> None:
+    """lab.backlash: holds inside the play, then follows the input half the play behind."""
+    x = np.array([0.0, 1.0, 3.0, 10.0, 9.0, 7.0, 5.0, 8.0])
+    assert lab.backlash(x, 4.0).tolist() == [0.0, 0.0, 1.0, 8.0, 8.0, 8.0, 7.0, 7.0]
+
+
+def test_set_i_rib_lock_moves_the_chest(set_i: Path) -> None:
+    """The chest locking up is physics: it moves CR and CD of every test and leaves the
+    recorded pulse alone; CD reads less compression with it."""
+    c = heldout_sets.select(["hi_rib_lock"], "i")[0]
+    on, off = set_i / "on" / c.name, set_i / "off" / c.name
+    est, val = cases.test_names(c)
+    for name in est + val:
+        assert np.array_equal(_channel(on, name, "pulse"), _channel(off, name, "pulse"))
+        moved = [np.abs(_channel(on, name, w) - _channel(off, name, w)).max()
+                 for w in ("cr", "cd")]
+        assert min(moved) > 0.3, (name, moved)
+        assert _channel(on, name, "cd").max() < _channel(off, name, "cd").max() - 0.5
+
+
+def test_set_i_rib_lock_is_a_hyperbolic_spring() -> None:
+    """rib_lock: each rib gains k d^2 / (d_l - d) in compression, nothing at rest, in
+    extension or from a rate alone."""
+    m_sp, dl = physics.NOMINAL["m_sp"], 0.065
+    k2 = physics.NOMINAL["k_ra"] + physics.NOMINAL["k_rb"]
+    for d in (0.0, 0.010, 0.030, -0.010):
+        on = _deriv_one("rib_lock", dl, sa=d, sb=d, va=1.0, vb=1.0)[1]
+        off = _deriv_one("", 0.0, sa=d, sb=d, va=1.0, vb=1.0)[1]
+        want = k2 * max(d, 0.0) ** 2 / (dl - max(d, 0.0))
+        assert (on - off) * m_sp == pytest.approx(want, rel=1e-9, abs=1e-9)
+    assert 0.030 ** 2 / (dl - 0.030) / 0.030 == pytest.approx(0.857, abs=1e-3)  # +86 % at 30 mm
+
+
+# ------------------------------------------------- sets E-I: the same checks
 
 # each set: its cases, the sets before it, its seeds' range start, a case of an earlier set
-# ------------------------------------------ sets E-H: generated, deterministic, apart
+# ------------------------------------------ sets E-I: generated, deterministic, apart
 
 # per set: its fixture, two cases regenerated alone, a case or two of each earlier set
 LATER_SETS = {
@@ -916,6 +1029,11 @@ LATER_SETS = {
           {"a": ["h_airbag", "h_lumbar"], "b": ["hb_airbag_relief"], "c": ["hc_airbag_sealed"],
            "d": ["hd_broken_brs_reversed"], "e": ["he_rib_visco"], "f": ["hf_broken_cr_hum"],
            "g": ["hg_pelvis", "hg_broken_cd_rail", "hg_webbing_knee"]}),
+    "i": ("set_i", ("hi_two_effects", "hi_broken_brs_poll"),
+          {"a": ["h_broken_brs", "h_ribs_bottoming"], "b": ["hb_webbing_hysteresis"],
+           "c": ["hc_airbag_sealed"], "d": ["hd_broken_brs_reversed"], "e": ["he_cr_progressive"],
+           "f": ["hf_broken_cr_hum"], "g": ["hg_broken_cd_rail"],
+           "h": ["hh_broken_brs_quadrature", "hh_cr_ac_coupled", "hh_rib_squeeze"]}),
 }
 later_set = pytest.mark.parametrize("case_set", sorted(LATER_SETS))
 # a CR recorded at the wrong polarity peaks below zero: left out of the check that CR peaks
@@ -957,7 +1075,9 @@ NEW_SETS = {"e": (SET_E, SET_A + SET_B + SET_C + SET_D, 14000, "hd_clean48"),
             "f": (SET_F, SET_A + SET_B + SET_C + SET_D + SET_E, 15000, "he_clean48"),
             "g": (SET_G, SET_A + SET_B + SET_C + SET_D + SET_E + SET_F, 16000, "hf_clean48"),
             "h": (SET_H, SET_A + SET_B + SET_C + SET_D + SET_E + SET_F + SET_G, 17000,
-                  "hg_clean48")}
+                  "hg_clean48"),
+            "i": (SET_I, SET_A + SET_B + SET_C + SET_D + SET_E + SET_F + SET_G + SET_H, 18000,
+                  "hh_clean48")}
 new_set = pytest.mark.parametrize("case_set", sorted(NEW_SETS))
 
 

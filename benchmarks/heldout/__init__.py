@@ -15,11 +15,14 @@
   set F, the same again, with lab-side faults of new kinds; ``cases_g.py``: set G, the same
   again (a CD rail, a pulse on its own time base, a CD dead band); ``cases_h.py``: set H,
   the same again, with three physical forms no earlier set used (squeeze-film damping in the
-  chest, a bag leaking through its fabric, a pelvis submarining under its lap belt).
+  chest, a bag leaking through its fabric, a pelvis submarining under its lap belt);
+  ``cases_i.py``: set I, the same again, with a chest locking up as it nears its limit (a
+  hyperbolic spring) and lab-side faults of new kinds (a BRS polled too slowly, a CR recorder
+  losing a block of samples, a chest pot lagging on its linkage).
   ``make_sets.py``: writes a set (``--no-effects``: the same tests with every effect off).
   ``costs.py``: what each case costs the thesis grey-box (project CLI).
 
-    python -m benchmarks.heldout.make_sets --out /tmp/heldout [--set a|b|c|d|e|f|g|h]
+    python -m benchmarks.heldout.make_sets --out /tmp/heldout [--set a|b|c|d|e|f|g|h|i]
         [--case NAME ...]
 
 Never tune the loop on these cases; report them apart from the tuned ones.

@@ -32,7 +32,7 @@ EXACT = {"pulse_late", "brs_late", "brs_freeze", "cd_dropout", "pulse_rail", "pu
          "cr_gain", "cd_knee", "pulse_zero_shift", "cd_spikes", "brs_reversed",
          "cr_soft_clip", "cr_cable_break", "cr_reversed", "cr_progressive", "brs_reset",
          "cr_hum", "cd_compress", "cd_rail", "pulse_sync", "cd_dead_band", "cd_stuck_bit",
-         "brs_quadrature", "cr_ac_coupled"}
+         "brs_quadrature", "cr_ac_coupled", "brs_poll", "cr_lost_block", "cd_backlash"}
 DROPOUT_S = 0.010  # how long cd_dropout's wiper stays off the track
 KNEE_SLOPE = 0.6  # cd_knee: the gain of the CD calibration's second segment
 SHIFT_AT_S = 0.011  # pulse_zero_shift: when the zero shifts (in the crash-box spike)
@@ -45,6 +45,9 @@ CR_PROG_G = 25.0  # cr_progressive: the level (g) where CR over-reads by the eff
 HUM_HZ = 50.0  # cr_hum: a ground loop picks up the mains (European lab)
 # cd_stuck_bit: the CD digitiser's input range (+-, mm) over its 16 bits, offset binary
 CD_ADC_MM, ADC_BITS = 100.0, 16
+# cr_lost_block: when the CR recorder's lost block starts (mid-loading); what follows arrives
+# that much early, the record's end padded with its last sample
+LOST_AT_S = 0.030
 NOISE = {"pulse_g": 0.6, "cr_g": 0.55, "cd_mm": 0.10}  # white, before the CFC filters
 
 
@@ -60,6 +63,18 @@ class Drawn:
     params: dict[str, float]
     effects: dict[str, float]
     brs_phase: float
+
+
+def backlash(x: np.ndarray, width: float) -> np.ndarray:
+    """A play of ``width`` between input and output, starting centred at rest: the output
+    holds until the input has crossed the play, then follows it ``width / 2`` behind."""
+    y = np.empty_like(x)
+    h = 0.5 * width
+    last = 0.0
+    for i, v in enumerate(x):
+        last = min(max(last, v - h), v + h)
+        y[i] = last
+    return y
 
 
 def draw(case: Case, effects_on: bool = True) -> tuple[list[Drawn], np.ndarray]:
@@ -128,6 +143,12 @@ def record(d: Drawn, i: int, sim: dict[str, np.ndarray], counts_per_rev: int,
     # keeps the spindle's own counts per rev: finer steps, the angle read 4 x
     edges = round(e["brs_quadrature"]) if e["brs_quadrature"] else 1
     counts = ph.quantise_brs(th[None, :], edges * counts_per_rev, np.array([d.brs_phase]))[0]
+    if e["brs_poll"]:  # the spindle's electronics poll its two tracks too slowly: a quadrature
+        every = round(ph.FS_HZ / e["brs_poll"])  # decoder sees only the tracks' phase
+        moved = np.diff(counts[::every]) % 4  # (mod 4): 1 step on, 3 back, 2 steps invalid
+        seen = np.select([moved == 1, moved == 3], [1.0, -1.0], 0.0)  # (dropped): it aliases
+        polled = np.concatenate([[counts[0]], counts[0] + np.cumsum(seen)])
+        counts = np.repeat(polled, every)[:counts.size]  # held between polls
     if e["brs_freeze"] > 0:
         k = int(np.searchsorted(t, e["brs_freeze"]))
         counts[k:] = counts[k]
@@ -151,6 +172,10 @@ def record(d: Drawn, i: int, sim: dict[str, np.ndarray], counts_per_rev: int,
     cr_raw = cr_read + NOISE["cr_g"] * rng.standard_normal(t.size)
     if e["cr_hum"]:  # a ground loop: mains hum on the bridge, from before the crash on
         cr_raw = cr_raw + e["cr_hum"] * np.sin(2 * np.pi * HUM_HZ * t + 2 * np.pi * d.brs_phase)
+    if e["cr_lost_block"]:  # the recorder's buffer overruns: a block of samples is lost, the
+        k = int(np.searchsorted(t, LOST_AT_S))  # rest arrives that much early, the end padded
+        nb = round(e["cr_lost_block"] * ph.FS_HZ)
+        cr_raw = np.concatenate([cr_raw[:k], cr_raw[k + nb:], np.full(nb, cr_raw[-1])])
     if e["cr_cable_break"]:  # the cable parts: the amplifier reads a constant from then on
         cr_raw[t >= e["cr_cable_break"]] = CABLE_BREAK_G
     cr = ph.cfc(cr_raw, 180)
@@ -165,6 +190,8 @@ def record(d: Drawn, i: int, sim: dict[str, np.ndarray], counts_per_rev: int,
     if e["cd_dead_band"]:  # slack in the pot's linkage, held one way by its return spring
         b = e["cd_dead_band"]
         cd = np.sign(cd) * np.maximum(np.abs(cd) - b, 0.0)
+    if e["cd_backlash"]:  # play in the pot arm's worn slot: the arm moves only once the
+        cd = backlash(cd, e["cd_backlash"])  # sternum has taken up the play (a play operator)
     cd = cd + NOISE["cd_mm"] * rng.standard_normal(t.size)
     if e["cd_stuck_bit"]:  # one data line of the digitiser stuck at 1: the recorded channel
         raw = -cd  # (J211 sign) reads one bit's weight high wherever that bit should be 0

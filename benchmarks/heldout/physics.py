@@ -95,6 +95,11 @@ EFFECTS = {
     "cd_stuck_bit": "",  # broken test: a data line of the CD digitiser stuck at 1 (bit number)
     "brs_quadrature": "",  # broken test: BRS decoder counts this many edges a step (x4 mode)
     "cr_ac_coupled": "",  # transducer: piezoelectric CR, charge leaks with this time constant (s)
+    # set I's forms (cases_i.py): one physical form no earlier set used, three lab-side
+    "rib_lock": "chest_stiffening",  # the chest locks up near this deflection (m): k d^2/(d_l - d)
+    "brs_poll": "",  # broken test: the BRS's quadrature tracks polled at this rate (Hz), aliasing
+    "cr_lost_block": "",  # broken test: the CR recorder loses a block of this length (s)
+    "cd_backlash": "",  # transducer: play of this width (mm) in the chest pot arm's slot
 }
 POW_B_M = (0.015, 0.025)  # webbing_power: reference stretch, chest side and up to the retractor
 V_HYST = 0.02  # m/s: webbing_hysteresis switches between its paths within this rate
@@ -110,6 +115,8 @@ SQUEEZE_GAP_M = 0.060
 # airbag_fabric: leak rate through the fabric (1/s at one atmosphere over ambient, the whole
 # fabric free), and the fabric's area (two 0.7 m panels), part of it covered by the occupant
 FABRIC_K, FABRIC_M2 = 15.0, 0.77
+# rib_lock: the locking spring is taken no further than this share of its lock deflection
+LOCK_MAX = 0.85
 
 # Nominal Hybrid-III-like thorax, belt and retractor (SI), before per-test scatter.
 NOMINAL = {
@@ -194,6 +201,13 @@ def _deriv(b: Batch, j: np.ndarray | int, y: np.ndarray) -> np.ndarray:
         gb = np.clip(db, 0.0, 0.8 * SQUEEZE_GAP_M)
         fa = fa + csq * dva * ((SQUEEZE_GAP_M / (SQUEEZE_GAP_M - ga)) ** 3 - 1.0)
         fb = fb + csq * dvb * ((SQUEEZE_GAP_M / (SQUEEZE_GAP_M - gb)) ** 3 - 1.0)
+    dl = e["rib_lock"]  # m: the deflection where the chest would lock solid
+    if np.any(dl):  # ribs straightening, the contents incompressible: a hyperbolic spring
+        lock = np.where(dl > 0, dl, 1.0)
+        ca = np.clip(da, 0.0, LOCK_MAX * lock)
+        cb = np.clip(db, 0.0, LOCK_MAX * lock)
+        fa = fa + np.where(dl > 0, p["k_ra"] * ca * ca / (lock - ca), 0.0)
+        fb = fb + np.where(dl > 0, p["k_rb"] * cb * cb / (lock - cb), 0.0)
     fab = p["k_ab"] * (sa - sb) + p["c_ab"] * (va - vb)
 
     # belt, chest side: pushes the contact point of the sternum rearward

@@ -4,7 +4,8 @@ been looked at by the loop's engineers, kept from them until the loop ran on it)
 written after set C had been looked at, the same way), set E (``cases_e``, written after set D
 had been looked at, the same way), set F (``cases_f``, written after set E had been looked at,
 the same way), set G (``cases_g``, written after set F had been looked at, the same way), set H
-(``cases_h``, written after set G had been looked at, the same way)."""
+(``cases_h``, written after set G had been looked at, the same way), set I (``cases_i``,
+written after set H had been looked at, the same way)."""
 
 from __future__ import annotations
 
@@ -16,13 +17,15 @@ from .cases_e import SET_E
 from .cases_f import SET_F
 from .cases_g import SET_G
 from .cases_h import SET_H
+from .cases_i import SET_I
 
-SETS = ("a", "b", "c", "d", "e", "f", "g", "h")
+SETS = ("a", "b", "c", "d", "e", "f", "g", "h", "i")
 
 
 def case_set(name: str) -> list[Case]:
     """Set A (``cases``), B (``cases_b``), C (``cases_c``), D (``cases_d``), E (``cases_e``),
-    F (``cases_f``), G (``cases_g``) or H (``cases_h``); ValueError for another name."""
+    F (``cases_f``), G (``cases_g``), H (``cases_h``) or I (``cases_i``); ValueError for another
+    name."""
     if name == "a":
         return list(CASES)
     if name == "b":
@@ -39,6 +42,8 @@ def case_set(name: str) -> list[Case]:
         return list(SET_G)
     if name == "h":
         return list(SET_H)
+    if name == "i":
+        return list(SET_I)
     raise ValueError(f"unknown case set {name!r}; known: {', '.join(SETS)}")
 
 
