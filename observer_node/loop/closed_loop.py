@@ -564,12 +564,12 @@ def tie_verdict(a: Candidate, b: Candidate, past: PastTheTie) -> str:
     def beside(x: Candidate, y: Candidate, ev: Evidence) -> str:
         return (f"beside {y.kind}, {x.kind} gains {ev.gain_points:+.2f} points "
                 f"({ev.tests_improved} of {ev.tests} tests)"
-                + ("" if ev.accepted else ", not enough"))
+                + (", passing the rule" if ev.accepted else ""))
     a_on, b_on = f"{a.kind} on {scope_label(a.setups)}", f"{b.kind} on {scope_label(b.setups)}"
     verdict = {"a": f"{a_on} explains what {b.kind} did, not the reverse",
                "b": f"{b_on} explains what {a.kind} did, not the reverse",
                "both": "the data defend both",
-               "": "neither adds beyond the other"}[past.named]
+               "": "neither explains the other away"}[past.named]
     return (f"looked past the tie: {beside(a, b, past.a_beside_b)}; "
             f"{beside(b, a, past.b_beside_a)}: {verdict}")
 
