@@ -124,7 +124,7 @@ def test_a_parameter_with_a_physical_range_is_fitted_and_filed_within_it(data):
     g = r.effects[0]["parameters"]["g"]
     assert 0.03 < g <= 0.04  # pushed towards the edge, never past it
     # a fit held at the edge is refused: the data want more than a spool can do
-    from observer_node.loop.closed_loop import at_the_edge
+    from observer_node.loop.verdicts import at_the_edge
     why = at_the_edge("input_gain", {"g": -0.0399})
     assert why is not None and "held at the edge of what input_gain can be" in why
     assert at_the_edge("input_gain", {"g": 0.02}) is None

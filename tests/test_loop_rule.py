@@ -214,7 +214,7 @@ def _passing(*entries: tuple[list[str] | None, list[float]]) -> tuple[list, dict
 
 
 def test_a_narrower_scope_that_fits_no_better_gives_way_to_the_wider():
-    from observer_node.loop.closed_loop import _defended_scope
+    from observer_node.loop.verdicts import defended_scope as _defended_scope
     # "on A and B only" gains a little more on average, but not test by test
     passing, per_test = _passing((["A", "B"], [2.5, 0.4, 2.9, 0.2, 1.2, 1.1]),
                                  (None, [1.1, 1.0, 1.3, 0.9, 1.2, 1.1]))
@@ -223,7 +223,7 @@ def test_a_narrower_scope_that_fits_no_better_gives_way_to_the_wider():
 
 
 def test_a_narrower_scope_that_beats_the_wider_test_by_test_is_kept():
-    from observer_node.loop.closed_loop import _defended_scope
+    from observer_node.loop.verdicts import defended_scope as _defended_scope
     passing, per_test = _passing((["A", "B"], [2.5, 2.4, 2.9, 2.2, 1.2, 1.1]),
                                  (None, [1.1, 1.0, 1.3, 0.9, 1.0, 1.0]))
     (_, chosen, _), given_up = _defended_scope(passing, per_test)
@@ -232,7 +232,7 @@ def test_a_narrower_scope_that_beats_the_wider_test_by_test_is_kept():
 
 def test_a_runner_up_the_data_cannot_tell_from_the_winner_is_said_so():
     from observer_node.loop.analysis import Candidate
-    from observer_node.loop.closed_loop import _rival
+    from observer_node.loop.verdicts import runner_up_of as _rival
     win, rival = Candidate("chest_stiffening", 0.5, {}), Candidate("pelvis_coupling", 0.5, {})
     # the winner is ahead on average, but on 3 of 6 tests only
     per_test = {id(win): _cv([3.4, 3.0, 3.8, 4.1, 2.0, 3.6])[1],
@@ -257,7 +257,7 @@ def test_a_passing_rival_is_not_hidden_behind_a_better_runner_up_that_fails_the_
     # set D's stiffening webbing: input_gain cross-validated higher but lowered one setup
     # (fails), pelvis_coupling passed; the rival to report is the one that passes
     from observer_node.loop.analysis import Candidate
-    from observer_node.loop.closed_loop import _rival
+    from observer_node.loop.verdicts import runner_up_of as _rival
     win = Candidate("chest_stiffening", 0.5, {})
     failing, passing = Candidate("input_gain", 0.5, {}), Candidate("pelvis_coupling", 0.5, {})
     per_test = {id(win): _cv([3.4, 3.0, 3.8, 4.1, 2.0, 3.6])[1],
@@ -272,7 +272,7 @@ def test_a_passing_rival_is_not_hidden_behind_a_better_runner_up_that_fails_the_
 
 
 def test_an_effect_the_validation_tests_do_not_confirm_is_refused():
-    from observer_node.loop.closed_loop import validation_refusal
+    from observer_node.loop.verdicts import validation_refusal
     assert "do not confirm" in (validation_refusal(88.5, 87.5) or "")
     assert "88.5 to 87.5" in (validation_refusal(88.5, 87.5) or "")
     assert validation_refusal(88.5, 88.3) is None  # refit noise
@@ -301,8 +301,8 @@ def test_cross_validation_leaves_one_test_out_and_every_fold_trains_on_every_set
 
 
 def test_the_report_says_the_validation_tests_refused_an_effect_when_nothing_was_named():
-    from observer_node.loop.closed_loop import none_accepted
     from observer_node.loop.report import LoopStep
+    from observer_node.loop.report_md import none_accepted
 
     step = LoopStep([], 88.0, [], [], {})
     step.decision = ("airbag_contact on FULL passes the rule on the estimation tests, but the "
@@ -328,8 +328,8 @@ def test_a_fold_starts_from_a_fit_that_drove_a_parameter_to_zero(campaign):
 
 
 def test_an_effect_the_data_cannot_tell_from_a_passing_rival_is_not_named():
-    from observer_node.loop.closed_loop import untold
     from observer_node.loop.report import RunnerUp
+    from observer_node.loop.verdicts import untold
     tie = RunnerUp("input_delay", "all", 90.7, told_apart=False, tests_better=2,
                    passes_rule=True)
     why = untold("airbag_contact", tie, 6)
@@ -346,8 +346,8 @@ def _fits(gains: list[float], base: float = 90.0) -> dict[str, float]:
 
 def test_a_tie_is_looked_past_by_judging_each_effect_beside_the_other():
     from observer_node.loop.analysis import Candidate
-    from observer_node.loop.closed_loop import tie_verdict
     from observer_node.loop.evidence import past_the_tie
+    from observer_node.loop.verdicts import tie_verdict
     a = _fits([2.6, 2.4, 2.9, 2.1, 2.5, 2.7])  # a pulse delay, say
     b = _fits([1.1, 1.0, 1.3, 0.9, 1.0, 1.4])  # an airbag that mimics part of it
     # with both, the fit is the delay's: the airbag adds nothing beside it, not the reverse

@@ -48,9 +48,8 @@ from ..model.chest import (
 )
 from ..model.effects import EFFECTS, describe
 from ..model.modelfile import ModelFile
-from ..scores import mean_abs_errors, scores
+from ..scores import scores
 from .analysis import (
-    DELAY_MAX_S,
     Candidate,
     candidates,
     correlation_tests,
@@ -66,7 +65,6 @@ from .evidence import (
     SIGN_P,
     Evidence,
     PastTheTie,
-    beats,
     judge,
     past_the_tie,
 )
@@ -79,14 +77,22 @@ from .report import (
     LoopSettings,
     LoopStep,
     ModelFit,
-    OtherScope,
     PossibleEffect,
     RankedCandidate,
-    RunnerUp,
     SensorEffect,
     TriedCandidate,
 )
+from .report_md import markdown
 from .screening import BrokenTest, polarity_outliers, residual_outliers, screen_channels
+from .verdicts import (
+    at_the_edge,
+    defended_scope,
+    parameter_warnings,
+    runner_up_of,
+    tie_verdict,
+    untold,
+    validation_refusal,
+)
 
 
 def _fit3(t: FitTable) -> dict[str, float]:
@@ -254,9 +260,9 @@ def _run(est_tests: list[CrashTest], val_tests: list[CrashTest], out: Path, rate
                              "lowered): " + "; ".join(f"{c.kind} on {scope_label(c.setups)}: "
                                                        f"{ev.reason}" for _, c, ev in tried[:4]))
             break
-        (cv_best, best, ev_best), narrower = _defended_scope(passing, per_test)
+        (cv_best, best, ev_best), narrower = defended_scope(passing, per_test)
         cv_tests_best = per_test[id(best)]
-        runner_up, margin_points, other_scope = _rival(
+        runner_up, margin_points, other_scope = runner_up_of(
             [(cv_best, best, ev_best), *(t for t in tried if t[1] is not best)], per_test)
         tie = untold(best.kind, runner_up, len(ev_best.test_gain_points))
         tie_note: str | None = None
@@ -281,11 +287,11 @@ def _run(est_tests: list[CrashTest], val_tests: list[CrashTest], out: Path, rate
                                  f"but {tie}; {tie_note}: neither is named")
                 break
             if past.named == "b":  # the runner-up explains the winner's gain, not the reverse
-                (cv_best, best, ev_best), narrower = _defended_scope(
+                (cv_best, best, ev_best), narrower = defended_scope(
                     [rival, *(t for t in passing if t[1].kind == rival[1].kind
                               and t[1] is not rival[1])], per_test)
                 cv_tests_best = per_test[id(best)]
-                runner_up, margin_points, other_scope = _rival(
+                runner_up, margin_points, other_scope = runner_up_of(
                     [(cv_best, best, ev_best), *(t for t in tried if t[1] is not best)],
                     per_test)
             elif past.named == "both":  # the other is tried again in the next round
@@ -389,7 +395,7 @@ def _run(est_tests: list[CrashTest], val_tests: list[CrashTest], out: Path, rate
     (out / "report.json").write_text(json.dumps(as_json, indent=1, default=float) + "\n")
     if plots:
         _plots(out, base, effects, gb.params, val, broken, [*est_tests, *val_tests])
-    (out / "report.md").write_text(_markdown(report))
+    (out / "report.md").write_text(markdown(report))
     prog.done(f"{len(accepted)} effect(s) accepted; validation fit "
               f"{baseline_val.fit.total:.1f} -> {final_val.fit.total:.1f} %")
     return report
@@ -484,23 +490,6 @@ def _with_and_without(broken: list[BrokenTest], base: dict, effects: list[dict],
                    scored_with)
 
 
-def _defended_scope(passing: list[tuple[float, Candidate, Evidence]],
-                    per_test: dict[int, dict[str, float]]
-                    ) -> tuple[tuple[float, Candidate, Evidence], str]:
-    """The best passing candidate, or the same effect on a wider scope that passes too when
-    the narrower one does not beat it test by test above the scatter: "on these setups only"
-    is a claim the data must defend like the effect itself. Also the narrower scope given up
-    ("" when none). ``passing``: (cv fit_TOT [%], candidate, evidence), best first;
-    ``per_test``: each candidate's per-test cross-validated fit_TOT [%] by ``id``."""
-    best = passing[0][1]
-    for entry in passing[1:]:
-        c = entry[1]
-        wider = best.setups is not None and (c.setups is None or set(best.setups) < set(c.setups))
-        if c.kind == best.kind and wider and not beats(per_test[id(best)], per_test[id(c)])[0]:
-            return entry, scope_label(best.setups)
-    return passing[0], ""
-
-
 def _with_widest_scope(c: Candidate, options: list[list[str] | None]) -> list[Candidate]:
     """``c`` on the scope the residual chose, and on the widest scope it is allowed."""
     widest = options[0] if None in options else max(options, key=lambda o: len(o or []))
@@ -515,130 +504,6 @@ def _applies_to(scope: list[str] | None, est: Dataset, val: Dataset) -> list[str
     if scope is None:
         return None
     return [n for d in (est, val) for n, s in zip(d.names, d.setups, strict=True) if s in scope]
-
-
-def _rival(tried: list[tuple[float, Candidate, Evidence]],
-           per_test: dict[int, dict[str, float]]
-           ) -> tuple[RunnerUp | None, float | None, OtherScope | None]:
-    """The runner-up (the best of another kind that passes the rule, else the best of another
-    kind: one that fails the rule must not hide a rival that passes), whether the winner beats
-    it test by test above the scatter and whether it passes the rule itself, the margin
-    [points] to it, and the winner on its other scope; ``tried``: (cv fit_TOT [%],
-    candidate, its evidence), the winner first; ``per_test``: each candidate's per-test
-    cross-validated fit_TOT [%] by ``id``."""
-    cv_best, best, _ = tried[0]
-    runner_up, margin, other_scope = None, None, None
-    others = [(cv, c, ev) for cv, c, ev in tried if c.kind != best.kind]
-    other = next((o for o in others if o[2].accepted), others[0] if others else None)
-    if other is not None:
-        told_apart, better = beats(per_test[id(best)], per_test[id(other[1])])
-        runner_up = RunnerUp(other[1].kind, scope_label(other[1].setups), round(other[0], 2),
-                             told_apart, better, other[2].accepted)
-        margin = round(cv_best - other[0], 2)
-    scope = next(((cv, c) for cv, c, _ in tried if c.kind == best.kind and c is not best),
-                 None)
-    if scope is not None:
-        other_scope = OtherScope(scope_label(scope[1].setups), round(scope[0], 2),
-                                 round(cv_best - scope[0], 2))
-    return runner_up, margin, other_scope
-
-
-def untold(kind: str, runner_up: RunnerUp | None, n_tests: int) -> str | None:
-    """Why ``kind`` cannot be named on the test-by-test comparison alone: its runner-up of
-    another kind passes the rule too and ``kind`` does not beat it above the scatter (None
-    when it does, or the runner-up fails the rule). Named with a "?" until 2026-11-25 (of
-    five such names on held-out sets D and E, three were effects not there: a coin flip);
-    then not named at all, which cost three right names on set G and two of the library's
-    held-out cases (docs/loop.md). Since then the loop looks past the tie
-    (:func:`~observer_node.loop.evidence.past_the_tie`): each effect beside the other."""
-    if runner_up is None or not runner_up.rival:
-        return None
-    return (f"the data cannot tell it from {runner_up.kind} on {runner_up.scope}, which passes "
-            f"the rule too ({kind} fits better on {runner_up.tests_better} of {n_tests} "
-            "estimation tests, not above the scatter)")
-
-
-def tie_verdict(a: Candidate, b: Candidate, past: PastTheTie) -> str:
-    """One line on a tie looked past: what each effect adds beside the other, and what
-    the data then defend."""
-    def beside(x: Candidate, y: Candidate, ev: Evidence) -> str:
-        return (f"beside {y.kind}, {x.kind} gains {ev.gain_points:+.2f} points "
-                f"({ev.tests_improved} of {ev.tests} tests)"
-                + (", passing the rule" if ev.accepted else ""))
-    a_on, b_on = f"{a.kind} on {scope_label(a.setups)}", f"{b.kind} on {scope_label(b.setups)}"
-    verdict = {"a": f"{a_on} explains what {b.kind} did, not the reverse",
-               "b": f"{b_on} explains what {a.kind} did, not the reverse",
-               "both": "the data defend both",
-               "": "neither explains the other away"}[past.named]
-    return (f"looked past the tie: {beside(a, b, past.a_beside_b)}; "
-            f"{beside(b, a, past.b_beside_a)}: {verdict}")
-
-
-EDGE = 0.01  # of a parameter's physical range: a fit this near its edge is held there
-
-
-def at_the_edge(kind: str, params: dict) -> str | None:
-    """Why an effect that passed the rule is still not named: a parameter ended at the edge
-    of its physical range (``Param.within``), held there by the fit. The data want more than
-    the effect can be; what it gained there is a mimic's, not the named physics' (held-out
-    set H: a spool's gain at 0.04 /rad stood in for an airbag)."""
-    spec = EFFECTS[kind]
-    for name, v in params.items():
-        p = spec.param(name)
-        if p is None or p.within is None or not isinstance(v, float | int):
-            continue
-        lo, hi = p.within
-        if min(v - lo, hi - v) < EDGE * (hi - lo):
-            return (f"{name} = {v:.3g} {p.unit} is held at the edge of what {kind} can be "
-                    f"({lo:g}..{hi:g}): the data want something else")
-    return None
-
-
-VALIDATION_TOLERANCE = 0.3  # fit points: as SETUP_TOLERANCE, refit noise
-
-
-def validation_refusal(fit_before: float, fit_after: float) -> str | None:
-    """Why an effect that passed the rule on the estimation tests is still not named: the
-    validation tests' fit_TOT [%] falls with it. They never choose an effect, they can only
-    refuse one: a finding about the dummy must hold on the tests it was not fitted to (on
-    every benchmark set before 2026-11-25, only wrong effects lowered it)."""
-    if fit_after >= fit_before - VALIDATION_TOLERANCE:
-        return None
-    return (f"the validation tests do not confirm it: their fit_TOT falls from "
-            f"{fit_before:.1f} to {fit_after:.1f} %")
-
-
-def parameter_warnings(kind: str, params: dict, std_err: dict[str, float],
-                       rate_hz: float) -> list[str]:
-    """Warnings an engineer should read before trusting an accepted effect's parameters: a
-    value at the edge of what was searched, a physically negligible or absurd size, or one the
-    data do not determine (standard error above the value)."""
-    out = []
-    spec = EFFECTS[kind]
-    for name, v in params.items():
-        if not isinstance(v, float | int):
-            continue
-        p = spec.param(name)
-        unit, typical = (p.unit, p.typical) if p is not None else ("", 0.0)
-        se = std_err.get(name)
-        if spec.acts == "input_delay":
-            ms = 1000.0 * v / rate_hz
-            if ms >= 1000.0 * DELAY_MAX_S - 0.05:
-                out.append(f"{name} = {ms:.2f} ms is at the searched bound "
-                           f"({1000 * DELAY_MAX_S:g} ms)")
-            continue
-        if name == "gap" and not 0.005 <= v <= 0.4:
-            out.append(f"gap = {v:.3g} m is not a plausible airbag distance (5..400 mm)")
-        elif spec.positive(name) and typical and abs(v) < 1e-3 * typical:
-            out.append(f"{name} = {v:.3g} {unit} is physically nothing (typical {typical:g})")
-        elif typical and abs(v) > 1e3 * typical:
-            out.append(f"{name} = {v:.3g} {unit} is over 1000 times a typical {typical:g}")
-        if se is not None and np.isfinite(se) and abs(v) > 0 and se > abs(v):
-            out.append(f"{name} is not determined by the data: std err {se:.3g} > |value| "
-                       f"{abs(v):.3g}")
-        elif se is not None and not np.isfinite(se):
-            out.append(f"{name}: the data say nothing about it (singular Jacobian)")
-    return out
 
 
 def _residual(base: dict, effects: list[dict], data: Dataset) -> np.ndarray:
@@ -720,165 +585,3 @@ def _plots(out: Path, base: dict, effects: list[dict], base0: dict, val: Dataset
     if broken:
         plots.broken_tests(out / "broken.png", [(b.test, b.channel, b.reason) for b in broken],
                            tests)
-
-
-def _markdown(r: LoopReport) -> str:
-    b, f = r.baseline.fit, r.final.fit
-    iso = r.iso18571
-    lines = ["# Closed loop: residual, missing effect, refit", "",
-             f"Estimation tests: {', '.join(r.estimation)}  ",
-             f"Validation tests: {', '.join(r.validation)} (fits below are on these)", "",
-             "## Setups", "", "| setup | tests | from | impossible here |", "|---|---|---|---|"]
-    lines += [f"| {s.name} | {', '.join(s.tests)} | {s.how} | "
-              f"{'; '.join(f'{k} ({v})' for k, v in s.impossible.items()) or '-'} |"
-              for s in r.setups]
-    lines += ["", "## Fits", "",
-              "| model | acts on | fit CR | fit CD | fit TOT |", "|---|---|---|---|---|",
-              f"| thesis grey-box | all | {b.cr:.1f} | {b.cd:.1f} | {b.total:.1f} |"]
-    for e in r.effects:
-        lines.append(f"| + {e.kind} | {'+'.join(e.setups or ['all'])} | "
-                     f"{e.fit.cr:.1f} | {e.fit.cd:.1f} | {e.fit.total:.1f} |")
-    lines += [f"| **final** | | **{f.cr:.1f}** | **{f.cd:.1f}** | **{f.total:.1f}** |", ""]
-    if not r.effects:
-        lines += [none_accepted(r.history, r.settings.rule), ""]
-    lines += _markdown_findings(r)
-    lines += ["## Injury criteria on the validation tests", "",
-              "Mean |estimate - measured| over the validation tests (peak chest deflection, "
-              "chest X acceleration 3 ms clip, viscous criterion; per test in report.json)"
-              + (" and the mean ISO/TS 18571 overall rating (0..1):" if iso is not None
-                 else ":"), "",
-              "| model | CD max [mm] | CR 3 ms [g] | VC max [m/s] |"
-              + (" ISO 18571 CR | CD |" if iso is not None else ""),
-              "|---|---|---|---|" + ("---|---|" if iso is not None else "")]
-    for label in ("baseline", "final"):
-        err = mean_abs_errors({n: c.as_dict() for n, c in r.criteria[label].items()})
-        mean = iso[label].mean_overall if iso is not None else None
-        lines.append(f"| {'thesis grey-box' if label == 'baseline' else 'final'} | "
-                     f"{err['cd_max_mm']:.1f} | {err['cr_3ms_g']:.1f} | {err['vc_max_m_s']:.2f} |"
-                     + (f" {mean.cr:.3f} | {mean.cd:.3f} |" if mean else ""))
-    lines.append("")
-    for e in r.effects:
-        lines += _markdown_effect(e)
-    lines += ["## First ranking of candidates (share of the residual explained)", "",
-              "| effect | scope | explained |", "|---|---|---|"]
-    lines += [f"| {c.kind} | {c.scope} | {100 * c.explained_share:.1f} % |"
-              for c in r.first_ranking]
-    rt = r.residual_tests
-    lines += ["", "## Residual tests on the estimation tests", "",
-              "| | lag-1 autocorr CR | CD | input xcorr / band CR | CD |", "|---|---|---|---|---|"]
-    for label in ("baseline", "final"):
-        t = rt[label]
-        lines.append(f"| {label} | {t.cr.lag1_autocorrelation:.3f} | "
-                     f"{t.cd.lag1_autocorrelation:.3f} | "
-                     f"{t.cr.max_ratio:.2f} | {t.cd.max_ratio:.2f} |")
-    lines += ["", "The residual stays far from white (lag-1 autocorrelation near 1: CFC "
-              "filtering colours it), so whiteness cannot decide; the cross-validated fit and "
-              "the input cross-correlation against Ljung's coloured band do.", "",
-              "Plots: fit_before_*.png, fit_after_*.png, residuals.png"
-              + (", broken.png (the tests left out)" if r.warnings else "")
-              + f". Model: {r.model}. "
-              f"Run time {r.seconds} s.", ""]
-    return "\n".join(lines)
-
-
-def none_accepted(history: list[LoopStep], rule: str) -> str:
-    """report.md's line when the model stays the thesis grey-box: why, as the loop decided
-    (no candidate passed, the validation tests refused the one that did, or a sensor)."""
-    why = history[-1].decision if history else ""
-    if not why or why.startswith("no candidate passes"):
-        return f"No effect was accepted: none passed the rule ({rule})."
-    return f"No effect was accepted: {why}."
-
-
-def _markdown_effect(e: AcceptedEffect) -> list[str]:
-    """An accepted effect's section: scope, parameters, confidence, warnings, rivals."""
-    ev, se = e.evidence, e.std_err
-    params = ", ".join((f"{k} = {v:.4g}" + (f" ± {se[k]:.2g}" if k in se else ""))
-                       if isinstance(v, float) else f"{k} = {v}"
-                       for k, v in e.parameters.items())
-    rival = ""
-    if ev.runner_up is not None:
-        ru = ev.runner_up
-        rival = (f"- why this and not that: the runner-up, {ru.kind} on {ru.scope}, "
-                 f"cross-validated {ru.cv_fit:.1f} %, {ev.margin_points:.1f} points lower")
-        if ru.told_apart is not None:
-            n = len(ev.rule.test_gain_points)
-            rival += (f"; {e.kind} fits better on {ru.tests_better} of {n} estimation tests, "
-                      + ("above the scatter" if ru.told_apart else "not above the scatter")
-                      + (f"; {ru.kind} passes the rule too, and the two were judged "
-                         f"each beside the other: {ev.tie}" if ru.rival and ev.tie else
-                         f"; **{ru.kind} passes the rule too: the data cannot tell the two "
-                         "apart**" if ru.rival else
-                         "" if ru.passes_rule else f"; {ru.kind} does not pass the rule"))
-    if ev.other_scope is not None:
-        os_ = ev.other_scope
-        rival += (("\n" if rival else "") + f"- on {os_.scope} instead it "
-                  f"cross-validated {os_.cv_fit:.1f} % ({os_.margin_points:+.1f} "
-                  "points from the accepted scope)")
-    where = (f"acts on setups {', '.join(e.setups)}: {', '.join(e.applies_to or [])}"
-             if e.setups is not None else "acts on every test")
-    return [f"## {e.kind}", "", e.description, "",
-            f"- {where}",
-            f"- parameters (± standard error): {params or '(none)'}",
-            f"- confidence (cross-validated, paired over tests): {e.confidence}",
-            *(f"- **warning**: {w}" for w in e.warnings),
-            *([rival] if rival else []),
-            f"- explained {100 * ev.explained_share_before:.1f} % of the residual before"
-            f" the refit, {100 * ev.explained_share_after:.1f} % after",
-            f"- cross-validated fit_TOT inside the estimation tests: "
-            f"{ev.cv_fit_before:.1f} -> {ev.cv_fit_after:.1f} %",
-            f"- input cross-correlation / coloured 99 % band, RMS over lags: "
-            f"{ev.input_xcorr_rms_ratio_before:.2f} -> "
-            f"{ev.input_xcorr_rms_ratio_after:.2f} (largest: "
-            f"{ev.input_xcorr_max_ratio_before:.2f} -> "
-            f"{ev.input_xcorr_max_ratio_after:.2f})",
-            ""]
-
-
-def _markdown_findings(r: LoopReport) -> list[str]:
-    """Warnings (broken tests), sensor effects, unexplained structure and possible effects."""
-    lines: list[str] = []
-    if r.warnings:
-        lines += ["## Warnings: tests left out of the fits", "",
-                  "| test | channel | why |", "|---|---|---|"]
-        lines += [f"| {w.test} | {w.channel} | {w.reason} |" for w in r.warnings]
-        lo = r.left_out
-        if lo is not None:  # always, with warnings
-            lines += ["", "- validation fit_TOT without them: "
-                      + _pct(lo.validation_fit_without)]
-            if lo.validation_fit_if_fitted_with_them is not None:
-                lines.append("- with the left-out estimation tests fitted too: "
-                             + _pct(lo.validation_fit_if_fitted_with_them))
-            if lo.validation_fit_with_them is not None:
-                lines.append("- scored on the left-out validation tests too: "
-                             + _pct(lo.validation_fit_with_them))
-        lines.append("")
-    for s in r.sensor_effects:
-        lines += ["## Sensor effect (not physics)", "",
-                  f"- **{s.output.upper()}**: {s.looks_like}",
-                  f"- confidence: {s.confidence}",
-                  "- not added to model.json: check the transducer's calibration", ""]
-    for u in r.unexplained:
-        gains = ", ".join(f"{k} {v:+.1f}" for k, v in u.gain_points.items())
-        lines += ["## Unexplained", "",
-                  f"- the residual of **{u.output.upper()}** on {', '.join(u.setups)} "
-                  f"is structured and no effect of the library explains it under the rule; "
-                  f"it looks like {u.looks_like}",
-                  f"- a correction of that shape would add (fit points per setup): {gains}; "
-                  f"the same in the other output: {u.other_output_gain_points:+.1f}", ""]
-    if r.possible:
-        lines += ["## Possible, not accepted", "",
-                  "| effect | scope | after | gain (95 % CI), tests improved | why not |",
-                  "|---|---|---|---|---|"]
-        for p in r.possible:  # the gain as report.json rounds it (to 0.001 points)
-            ev = p.evidence
-            low, high = ev.ci95_points
-            lines.append(f"| {p.kind} | {p.scope} | {'+'.join(p.after) or '-'} | "
-                         f"{round(ev.gain_points, 3):+.2f} ({low:+.2f}..{high:+.2f}), "
-                         f"{ev.tests_improved}/{ev.tests} | {p.why_not} |")
-        lines.append("")
-    return lines
-
-
-def _pct(f: Fits | str) -> str:
-    return f"{f.total:.1f} %" if isinstance(f, Fits) else f

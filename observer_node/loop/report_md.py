@@ -1,0 +1,170 @@
+"""report.md: the loop's report as an engineer reads it, written from :class:`.LoopReport`
+(report.json holds the same, for tools)."""
+
+from __future__ import annotations
+
+from ..ident.metrics import Fits
+from ..scores import mean_abs_errors
+from .report import AcceptedEffect, LoopReport, LoopStep
+
+
+def markdown(r: LoopReport) -> str:
+    b, f = r.baseline.fit, r.final.fit
+    iso = r.iso18571
+    lines = ["# Closed loop: residual, missing effect, refit", "",
+             f"Estimation tests: {', '.join(r.estimation)}  ",
+             f"Validation tests: {', '.join(r.validation)} (fits below are on these)", "",
+             "## Setups", "", "| setup | tests | from | impossible here |", "|---|---|---|---|"]
+    lines += [f"| {s.name} | {', '.join(s.tests)} | {s.how} | "
+              f"{'; '.join(f'{k} ({v})' for k, v in s.impossible.items()) or '-'} |"
+              for s in r.setups]
+    lines += ["", "## Fits", "",
+              "| model | acts on | fit CR | fit CD | fit TOT |", "|---|---|---|---|---|",
+              f"| thesis grey-box | all | {b.cr:.1f} | {b.cd:.1f} | {b.total:.1f} |"]
+    for e in r.effects:
+        lines.append(f"| + {e.kind} | {'+'.join(e.setups or ['all'])} | "
+                     f"{e.fit.cr:.1f} | {e.fit.cd:.1f} | {e.fit.total:.1f} |")
+    lines += [f"| **final** | | **{f.cr:.1f}** | **{f.cd:.1f}** | **{f.total:.1f}** |", ""]
+    if not r.effects:
+        lines += [none_accepted(r.history, r.settings.rule), ""]
+    lines += _markdown_findings(r)
+    lines += ["## Injury criteria on the validation tests", "",
+              "Mean |estimate - measured| over the validation tests (peak chest deflection, "
+              "chest X acceleration 3 ms clip, viscous criterion; per test in report.json)"
+              + (" and the mean ISO/TS 18571 overall rating (0..1):" if iso is not None
+                 else ":"), "",
+              "| model | CD max [mm] | CR 3 ms [g] | VC max [m/s] |"
+              + (" ISO 18571 CR | CD |" if iso is not None else ""),
+              "|---|---|---|---|" + ("---|---|" if iso is not None else "")]
+    for label in ("baseline", "final"):
+        err = mean_abs_errors({n: c.as_dict() for n, c in r.criteria[label].items()})
+        mean = iso[label].mean_overall if iso is not None else None
+        lines.append(f"| {'thesis grey-box' if label == 'baseline' else 'final'} | "
+                     f"{err['cd_max_mm']:.1f} | {err['cr_3ms_g']:.1f} | {err['vc_max_m_s']:.2f} |"
+                     + (f" {mean.cr:.3f} | {mean.cd:.3f} |" if mean else ""))
+    lines.append("")
+    for e in r.effects:
+        lines += _markdown_effect(e)
+    lines += ["## First ranking of candidates (share of the residual explained)", "",
+              "| effect | scope | explained |", "|---|---|---|"]
+    lines += [f"| {c.kind} | {c.scope} | {100 * c.explained_share:.1f} % |"
+              for c in r.first_ranking]
+    rt = r.residual_tests
+    lines += ["", "## Residual tests on the estimation tests", "",
+              "| | lag-1 autocorr CR | CD | input xcorr / band CR | CD |", "|---|---|---|---|---|"]
+    for label in ("baseline", "final"):
+        t = rt[label]
+        lines.append(f"| {label} | {t.cr.lag1_autocorrelation:.3f} | "
+                     f"{t.cd.lag1_autocorrelation:.3f} | "
+                     f"{t.cr.max_ratio:.2f} | {t.cd.max_ratio:.2f} |")
+    lines += ["", "The residual stays far from white (lag-1 autocorrelation near 1: CFC "
+              "filtering colours it), so whiteness cannot decide; the cross-validated fit and "
+              "the input cross-correlation against Ljung's coloured band do.", "",
+              "Plots: fit_before_*.png, fit_after_*.png, residuals.png"
+              + (", broken.png (the tests left out)" if r.warnings else "")
+              + f". Model: {r.model}. "
+              f"Run time {r.seconds} s.", ""]
+    return "\n".join(lines)
+
+
+def none_accepted(history: list[LoopStep], rule: str) -> str:
+    """report.md's line when the model stays the thesis grey-box: why, as the loop decided
+    (no candidate passed, the validation tests refused the one that did, or a sensor)."""
+    why = history[-1].decision if history else ""
+    if not why or why.startswith("no candidate passes"):
+        return f"No effect was accepted: none passed the rule ({rule})."
+    return f"No effect was accepted: {why}."
+
+
+def _markdown_effect(e: AcceptedEffect) -> list[str]:
+    """An accepted effect's section: scope, parameters, confidence, warnings, rivals."""
+    ev, se = e.evidence, e.std_err
+    params = ", ".join((f"{k} = {v:.4g}" + (f" ± {se[k]:.2g}" if k in se else ""))
+                       if isinstance(v, float) else f"{k} = {v}"
+                       for k, v in e.parameters.items())
+    rival = ""
+    if ev.runner_up is not None:
+        ru = ev.runner_up
+        rival = (f"- why this and not that: the runner-up, {ru.kind} on {ru.scope}, "
+                 f"cross-validated {ru.cv_fit:.1f} %, {ev.margin_points:.1f} points lower")
+        if ru.told_apart is not None:
+            n = len(ev.rule.test_gain_points)
+            rival += (f"; {e.kind} fits better on {ru.tests_better} of {n} estimation tests, "
+                      + ("above the scatter" if ru.told_apart else "not above the scatter")
+                      + (f"; {ru.kind} passes the rule too, and the two were judged "
+                         f"each beside the other: {ev.tie}" if ru.rival and ev.tie else
+                         f"; **{ru.kind} passes the rule too: the data cannot tell the two "
+                         "apart**" if ru.rival else
+                         "" if ru.passes_rule else f"; {ru.kind} does not pass the rule"))
+    if ev.other_scope is not None:
+        os_ = ev.other_scope
+        rival += (("\n" if rival else "") + f"- on {os_.scope} instead it "
+                  f"cross-validated {os_.cv_fit:.1f} % ({os_.margin_points:+.1f} "
+                  "points from the accepted scope)")
+    where = (f"acts on setups {', '.join(e.setups)}: {', '.join(e.applies_to or [])}"
+             if e.setups is not None else "acts on every test")
+    return [f"## {e.kind}", "", e.description, "",
+            f"- {where}",
+            f"- parameters (± standard error): {params or '(none)'}",
+            f"- confidence (cross-validated, paired over tests): {e.confidence}",
+            *(f"- **warning**: {w}" for w in e.warnings),
+            *([rival] if rival else []),
+            f"- explained {100 * ev.explained_share_before:.1f} % of the residual before"
+            f" the refit, {100 * ev.explained_share_after:.1f} % after",
+            f"- cross-validated fit_TOT inside the estimation tests: "
+            f"{ev.cv_fit_before:.1f} -> {ev.cv_fit_after:.1f} %",
+            f"- input cross-correlation / coloured 99 % band, RMS over lags: "
+            f"{ev.input_xcorr_rms_ratio_before:.2f} -> "
+            f"{ev.input_xcorr_rms_ratio_after:.2f} (largest: "
+            f"{ev.input_xcorr_max_ratio_before:.2f} -> "
+            f"{ev.input_xcorr_max_ratio_after:.2f})",
+            ""]
+
+
+def _markdown_findings(r: LoopReport) -> list[str]:
+    """Warnings (broken tests), sensor effects, unexplained structure and possible effects."""
+    lines: list[str] = []
+    if r.warnings:
+        lines += ["## Warnings: tests left out of the fits", "",
+                  "| test | channel | why |", "|---|---|---|"]
+        lines += [f"| {w.test} | {w.channel} | {w.reason} |" for w in r.warnings]
+        lo = r.left_out
+        if lo is not None:  # always, with warnings
+            lines += ["", "- validation fit_TOT without them: "
+                      + _pct(lo.validation_fit_without)]
+            if lo.validation_fit_if_fitted_with_them is not None:
+                lines.append("- with the left-out estimation tests fitted too: "
+                             + _pct(lo.validation_fit_if_fitted_with_them))
+            if lo.validation_fit_with_them is not None:
+                lines.append("- scored on the left-out validation tests too: "
+                             + _pct(lo.validation_fit_with_them))
+        lines.append("")
+    for s in r.sensor_effects:
+        lines += ["## Sensor effect (not physics)", "",
+                  f"- **{s.output.upper()}**: {s.looks_like}",
+                  f"- confidence: {s.confidence}",
+                  "- not added to model.json: check the transducer's calibration", ""]
+    for u in r.unexplained:
+        gains = ", ".join(f"{k} {v:+.1f}" for k, v in u.gain_points.items())
+        lines += ["## Unexplained", "",
+                  f"- the residual of **{u.output.upper()}** on {', '.join(u.setups)} "
+                  f"is structured and no effect of the library explains it under the rule; "
+                  f"it looks like {u.looks_like}",
+                  f"- a correction of that shape would add (fit points per setup): {gains}; "
+                  f"the same in the other output: {u.other_output_gain_points:+.1f}", ""]
+    if r.possible:
+        lines += ["## Possible, not accepted", "",
+                  "| effect | scope | after | gain (95 % CI), tests improved | why not |",
+                  "|---|---|---|---|---|"]
+        for p in r.possible:  # the gain as report.json rounds it (to 0.001 points)
+            ev = p.evidence
+            low, high = ev.ci95_points
+            lines.append(f"| {p.kind} | {p.scope} | {'+'.join(p.after) or '-'} | "
+                         f"{round(ev.gain_points, 3):+.2f} ({low:+.2f}..{high:+.2f}), "
+                         f"{ev.tests_improved}/{ev.tests} | {p.why_not} |")
+        lines.append("")
+    return lines
+
+
+def _pct(f: Fits | str) -> str:
+    return f"{f.total:.1f} %" if isinstance(f, Fits) else f
