@@ -5,7 +5,7 @@ The tests are the bundled campaign's (odd numbers estimate, even validate). Targ
 minutes idle. The numbers are wall-clock seconds of one run each; the machine's other load
 is not controlled beyond the spinners, so run it on a quiet machine.
 
-    python benchmarks/loop_time.py [--workers 1 2] [--no-load] [--out DIR]
+    python benchmarks/loop_time.py [--workers 1 2] [--no-load | --loaded-only] [--out DIR]
 """
 
 from __future__ import annotations
@@ -47,13 +47,16 @@ def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__,
                                  formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--workers", type=int, nargs="+", default=[1, 2])
-    ap.add_argument("--no-load", action="store_true", help="idle runs only")
+    when = ap.add_mutually_exclusive_group()
+    when.add_argument("--no-load", action="store_true", help="idle runs only")
+    when.add_argument("--loaded-only", action="store_true",
+                      help="runs with both cores busy only")
     ap.add_argument("--out", type=Path, help="keep the reports in OUT (default: temporary)")
     a = ap.parse_args()
     work = a.out or Path(tempfile.mkdtemp())
     print(f"{'workers':>8}{'cores busy':>12}{'seconds':>9}  effects (final fit_TOT %)",
           flush=True)
-    for loaded in (False,) if a.no_load else (False, True):
+    for loaded in (False,) if a.no_load else (True,) if a.loaded_only else (False, True):
         for n in a.workers:
             s, kinds, fit = one_run(n, loaded, work / f"w{n}-{'load' if loaded else 'idle'}")
             print(f"{n:>8}{'2' if loaded else '0':>12}{s:9.0f}  {', '.join(kinds)} ({fit:.1f})",
