@@ -19,10 +19,14 @@
   ``cases_i.py``: set I, the same again, with a chest locking up as it nears its limit (a
   hyperbolic spring) and lab-side faults of new kinds (a BRS polled too slowly, a CR recorder
   losing a block of samples, a chest pot lagging on its linkage).
+  ``cases_j.py``: set J, the same again, estimated on every rig and mostly validated on two,
+  with a rib cage stiffening by Fung's exponential law and lab-side faults of new kinds (a
+  spine accelerometer loose on its mount, two tests' BRS files crossed, a chest pot arm
+  lifting off the sternum as the chest opens).
   ``make_sets.py``: writes a set (``--no-effects``: the same tests with every effect off).
   ``costs.py``: what each case costs the thesis grey-box (project CLI).
 
-    python -m benchmarks.heldout.make_sets --out /tmp/heldout [--set a|b|c|d|e|f|g|h|i]
+    python -m benchmarks.heldout.make_sets --out /tmp/heldout [--set a|b|c|d|e|f|g|h|i|j]
         [--case NAME ...]
 
 Never tune the loop on these cases; report them apart from the tuned ones.

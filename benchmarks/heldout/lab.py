@@ -32,7 +32,8 @@ EXACT = {"pulse_late", "brs_late", "brs_freeze", "cd_dropout", "pulse_rail", "pu
          "cr_gain", "cd_knee", "pulse_zero_shift", "cd_spikes", "brs_reversed",
          "cr_soft_clip", "cr_cable_break", "cr_reversed", "cr_progressive", "brs_reset",
          "cr_hum", "cd_compress", "cd_rail", "pulse_sync", "cd_dead_band", "cd_stuck_bit",
-         "brs_quadrature", "cr_ac_coupled", "brs_poll", "cr_lost_block", "cd_backlash"}
+         "brs_quadrature", "cr_ac_coupled", "brs_poll", "cr_lost_block", "cd_backlash",
+         "cr_loose_mount", "brs_swap", "cd_arm_lift"}
 DROPOUT_S = 0.010  # how long cd_dropout's wiper stays off the track
 KNEE_SLOPE = 0.6  # cd_knee: the gain of the CD calibration's second segment
 SHIFT_AT_S = 0.011  # pulse_zero_shift: when the zero shifts (in the crash-box spike)
@@ -48,6 +49,9 @@ CD_ADC_MM, ADC_BITS = 100.0, 16
 # cr_lost_block: when the CR recorder's lost block starts (mid-loading); what follows arrives
 # that much early, the record's end padded with its last sample
 LOST_AT_S = 0.030
+# cr_loose_mount: the damping ratio of the loosened accelerometer on its mount (the block's
+# screws backed off: it sits on its cable and a film of grease, little damping)
+LOOSE_ZETA = 0.05
 NOISE = {"pulse_g": 0.6, "cr_g": 0.55, "cd_mm": 0.10}  # white, before the CFC filters
 
 
@@ -75,6 +79,27 @@ def backlash(x: np.ndarray, width: float) -> np.ndarray:
         last = min(max(last, v - h), v + h)
         y[i] = last
     return y
+
+
+def arm_lift(x: np.ndarray, rate: float) -> np.ndarray:
+    """A follower pushed by ``x`` and pulled back by a weak spring: it follows ``x`` up at
+    once, down no faster than ``rate`` per sample (so it may stand off ``x`` while it falls)."""
+    y = np.empty_like(x)
+    last = x[0]
+    for i, v in enumerate(x):
+        last = max(v, last - rate)
+        y[i] = last
+    return y
+
+
+def loose_mount(a: np.ndarray, f_hz: float, zeta: float = LOOSE_ZETA) -> np.ndarray:
+    """What an accelerometer on a loosened mount reads of the acceleration ``a`` of its base:
+    the block rides on the base through a spring (resonance ``f_hz``) and damper and reads its
+    own acceleration, (2 zeta w s + w^2) / (s^2 + 2 zeta w s + w^2); bilinear, pre-warped so
+    the resonance stays where the analog one is."""
+    w = 2 * ph.FS_HZ * np.tan(np.pi * f_hz / ph.FS_HZ)
+    bb, aa = signal.bilinear([2 * zeta * w, w * w], [1.0, 2 * zeta * w, w * w], fs=ph.FS_HZ)
+    return np.asarray(signal.lfilter(bb, aa, a))
 
 
 def draw(case: Case, effects_on: bool = True) -> tuple[list[Drawn], np.ndarray]:
@@ -137,7 +162,10 @@ def record(d: Drawn, i: int, sim: dict[str, np.ndarray], counts_per_rev: int,
         pulse = np.clip(pulse, -e["pulse_rail"], e["pulse_rail"])
     # BRS: the spindle's counts, leading the belt the chest feels by brs_late (as the pulse),
     # maybe frozen by a cable fault
-    th = np.interp(t + e["brs_late"], t, sim["th"][i])
+    # brs_swap: this test's BRS channel is another test's (of the same case, e["brs_swap"]
+    # places on in the batch): the two tests' spindle files crossed in the lab's export
+    src = i + round(e["brs_swap"]) if e["brs_swap"] else i
+    th = np.interp(t + e["brs_late"], t, sim["th"][src])
     th = th + e["brs_eccentric"] * np.sin(th + 2 * np.pi * d.brs_phase)
     # brs_quadrature: the decoder counts every edge of both tracks (4 a step) while the header
     # keeps the spindle's own counts per rev: finer steps, the angle read 4 x
@@ -169,6 +197,8 @@ def record(d: Drawn, i: int, sim: dict[str, np.ndarray], counts_per_rev: int,
         tau = e["cr_ac_coupled"]  # the amplifier's input, a first-order high-pass of time tau
         bb, aa = signal.bilinear([tau, 0.0], [tau, 1.0], fs=ph.FS_HZ)
         cr_read = signal.lfilter(bb, aa, cr_read)
+    if e["cr_loose_mount"]:  # the accelerometer's block loosened on the spine box: it rides
+        cr_read = loose_mount(cr_read, e["cr_loose_mount"])  # on a spring, a resonance
     cr_raw = cr_read + NOISE["cr_g"] * rng.standard_normal(t.size)
     if e["cr_hum"]:  # a ground loop: mains hum on the bridge, from before the crash on
         cr_raw = cr_raw + e["cr_hum"] * np.sin(2 * np.pi * HUM_HZ * t + 2 * np.pi * d.brs_phase)
@@ -192,6 +222,8 @@ def record(d: Drawn, i: int, sim: dict[str, np.ndarray], counts_per_rev: int,
         cd = np.sign(cd) * np.maximum(np.abs(cd) - b, 0.0)
     if e["cd_backlash"]:  # play in the pot arm's worn slot: the arm moves only once the
         cd = backlash(cd, e["cd_backlash"])  # sternum has taken up the play (a play operator)
+    if e["cd_arm_lift"]:  # the pot arm's return spring gone weak: pushed in by the sternum,
+        cd = arm_lift(cd, e["cd_arm_lift"] * 1e3 / ph.FS_HZ)  # it lifts off as the chest opens
     cd = cd + NOISE["cd_mm"] * rng.standard_normal(t.size)
     if e["cd_stuck_bit"]:  # one data line of the digitiser stuck at 1: the recorded channel
         raw = -cd  # (J211 sign) reads one bit's weight high wherever that bit should be 0

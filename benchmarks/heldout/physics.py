@@ -100,6 +100,11 @@ EFFECTS = {
     "brs_poll": "",  # broken test: the BRS's quadrature tracks polled at this rate (Hz), aliasing
     "cr_lost_block": "",  # broken test: the CR recorder loses a block of this length (s)
     "cd_backlash": "",  # transducer: play of this width (mm) in the chest pot arm's slot
+    # set J's forms (cases_j.py): one physical form no earlier set used, three lab-side
+    "rib_fung": "chest_stiffening",  # the rib cage stiffens exponentially (Fung), amount a (-)
+    "cr_loose_mount": "",  # broken test: CR accelerometer's mount loosened, resonance (Hz)
+    "brs_swap": "",  # broken test: BRS channel of another test of the case (its offset, tests)
+    "cd_arm_lift": "",  # transducer: chest pot arm returns no faster than this (mm/ms = m/s)
 }
 POW_B_M = (0.015, 0.025)  # webbing_power: reference stretch, chest side and up to the retractor
 V_HYST = 0.02  # m/s: webbing_hysteresis switches between its paths within this rate
@@ -117,6 +122,10 @@ SQUEEZE_GAP_M = 0.060
 FABRIC_K, FABRIC_M2 = 15.0, 0.77
 # rib_lock: the locking spring is taken no further than this share of its lock deflection
 LOCK_MAX = 0.85
+
+# rib_fung: the exponential's deflection scale (the cage's costal cartilage and soft tissue,
+# Fung's law for soft tissue), and how far it is taken (exp of at most this multiple)
+FUNG_D0_M, FUNG_ZMAX = 0.012, 3.5
 
 # Nominal Hybrid-III-like thorax, belt and retractor (SI), before per-test scatter.
 NOMINAL = {
@@ -208,6 +217,12 @@ def _deriv(b: Batch, j: np.ndarray | int, y: np.ndarray) -> np.ndarray:
         cb = np.clip(db, 0.0, LOCK_MAX * lock)
         fa = fa + np.where(dl > 0, p["k_ra"] * ca * ca / (lock - ca), 0.0)
         fb = fb + np.where(dl > 0, p["k_rb"] * cb * cb / (lock - cb), 0.0)
+    af = e["rib_fung"]  # dimensionless: the amount of the exponential, in units of k d0
+    if np.any(af):  # soft tissue's law (Fung): stiffness grows in proportion to force, so the
+        za = np.clip(da / FUNG_D0_M, 0.0, FUNG_ZMAX)  # force is exponential in deflection;
+        zb = np.clip(db / FUNG_D0_M, 0.0, FUNG_ZMAX)  # in compression only, from zero
+        fa = fa + af * p["k_ra"] * FUNG_D0_M * (np.expm1(za) - za)
+        fb = fb + af * p["k_rb"] * FUNG_D0_M * (np.expm1(zb) - zb)
     fab = p["k_ab"] * (sa - sb) + p["c_ab"] * (va - vb)
 
     # belt, chest side: pushes the contact point of the sternum rearward

@@ -5,7 +5,8 @@ written after set C had been looked at, the same way), set E (``cases_e``, writt
 had been looked at, the same way), set F (``cases_f``, written after set E had been looked at,
 the same way), set G (``cases_g``, written after set F had been looked at, the same way), set H
 (``cases_h``, written after set G had been looked at, the same way), set I (``cases_i``,
-written after set H had been looked at, the same way)."""
+written after set H had been looked at, the same way), set J (``cases_j``, written after set I
+had been looked at, the same way)."""
 
 from __future__ import annotations
 
@@ -18,14 +19,15 @@ from .cases_f import SET_F
 from .cases_g import SET_G
 from .cases_h import SET_H
 from .cases_i import SET_I
+from .cases_j import SET_J
 
-SETS = ("a", "b", "c", "d", "e", "f", "g", "h", "i")
+SETS = ("a", "b", "c", "d", "e", "f", "g", "h", "i", "j")
 
 
 def case_set(name: str) -> list[Case]:
     """Set A (``cases``), B (``cases_b``), C (``cases_c``), D (``cases_d``), E (``cases_e``),
-    F (``cases_f``), G (``cases_g``), H (``cases_h``) or I (``cases_i``); ValueError for another
-    name."""
+    F (``cases_f``), G (``cases_g``), H (``cases_h``), I (``cases_i``) or J (``cases_j``);
+    ValueError for another name."""
     if name == "a":
         return list(CASES)
     if name == "b":
@@ -44,6 +46,8 @@ def case_set(name: str) -> list[Case]:
         return list(SET_H)
     if name == "i":
         return list(SET_I)
+    if name == "j":
+        return list(SET_J)
     raise ValueError(f"unknown case set {name!r}; known: {', '.join(SETS)}")
 
 
