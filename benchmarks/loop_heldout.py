@@ -22,7 +22,7 @@ Per case the loop runs blind at its defaults on 6 estimation + 6 validation test
 - at the end: how many cases are right, and how many named effects are there and not there,
   and how many refused or tied effects are there and not there.
 
-    python -m benchmarks.loop_heldout [--set a|b|c|d|e|f|g|h|i] [--cases NAME ...] [--sets DIR]
+    python -m benchmarks.loop_heldout [--set a|b|...|j] [--cases NAME ...] [--sets DIR]
                                       [--out DIR] [--workers N] [--json FILE]
 """
 
@@ -40,7 +40,7 @@ from pathlib import Path
 import numpy as np
 
 from benchmarks.heldout.cases import Case
-from benchmarks.heldout.sets import select
+from benchmarks.heldout.sets import SETS, select
 from observer_node.data import load_tests
 from observer_node.ident.dataset import make_dataset
 from observer_node.loop.closed_loop import run_loop
@@ -143,12 +143,8 @@ def generate(case_set: str, cases: list[Case], out: Path) -> Path:
 def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__,
                                  formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("--set", dest="case_set", choices=("a", "b", "c", "d", "e", "f", "g", "h",
-                                                        "i"),
-                    default="a",
-                    help="set A (cases.py, default), set B (cases_b.py), set C (cases_c.py), "
-                         "set D (cases_d.py), set E (cases_e.py), set F (cases_f.py), set G "
-                         "(cases_g.py), set H (cases_h.py) or set I (cases_i.py)")
+    ap.add_argument("--set", dest="case_set", choices=SETS, default="a",
+                    help="set A (cases.py, default), or B ... J (cases_b.py ... cases_j.py)")
     ap.add_argument("--cases", nargs="+", metavar="NAME", help="only these cases of the set")
     ap.add_argument("--sets", type=Path, help="the generated sets (default: generate them "
                     "into a temporary folder with benchmarks.heldout.make_sets)")
