@@ -1011,7 +1011,7 @@ def test_set_i_rib_lock_is_a_hyperbolic_spring() -> None:
 # ------------------------------------------------- sets E-I: the same checks
 
 # each set: its cases, the sets before it, its seeds' range start, a case of an earlier set
-# ------------------------------------------ sets E-I: generated, deterministic, apart
+# ------------------------------------------ sets E-J: generated, deterministic, apart
 
 # per set: its fixture, two cases regenerated alone, a case or two of each earlier set
 LATER_SETS = {
@@ -1034,6 +1034,9 @@ LATER_SETS = {
            "c": ["hc_airbag_sealed"], "d": ["hd_broken_brs_reversed"], "e": ["he_cr_progressive"],
            "f": ["hf_broken_cr_hum"], "g": ["hg_broken_cd_rail"],
            "h": ["hh_broken_brs_quadrature", "hh_cr_ac_coupled", "hh_rib_squeeze"]}),
+    "j": ("set_j", ("hj_two_effects_same", "hj_broken_brs_swap"),
+          {"a": ["h_broken_brs"], "e": ["he_cr_progressive"], "h": ["hh_rib_squeeze"],
+           "i": ["hi_broken_cr_lost_block", "hi_cd_backlash", "hi_rib_lock"]}),
 }
 later_set = pytest.mark.parametrize("case_set", sorted(LATER_SETS))
 # a CR recorded at the wrong polarity peaks below zero: left out of the check that CR peaks
@@ -1166,3 +1169,110 @@ def test_new_set_scoped_effects_rest_on_two_tests_each_side(case_set: str) -> No
         for part in (c.est, c.val):
             assert sum(s in e.setups for s in part) >= 2
             assert sum(s not in e.setups for s in part) >= 1
+
+
+# ------------------------------------------------------------------ set J (cases_j.py)
+
+SET_J = heldout_sets.case_set("j")
+WATCHED_J = ("hj_broken_cr_loose_mount", "hj_broken_brs_swap", "hj_cd_arm_lift", "hj_rib_fung")
+
+
+@pytest.fixture(scope="module")
+def set_j(tmp_path_factory: pytest.TempPathFactory) -> Path:
+    return _generate(tmp_path_factory, "j", WATCHED_J)
+
+
+def test_set_j_is_new() -> None:
+    """Set J's seeds, (estimation, validation) pairings, effect sizes and lab-side kinds are
+    none of sets A-I's: its mixes validate on two of the three rigs, which no earlier set did."""
+    before = [c for s in "abcdefghi" for c in heldout_sets.case_set(s)]
+    assert len(SET_J) == 14
+    names = [c.name for c in before + SET_J]
+    assert len(set(names)) == len(names)
+    seeds = [c.seed for c in SET_J]
+    assert len(set(seeds)) == 14 and all(19000 <= s < 20000 for s in seeds)
+    assert not {c.seed for c in before} & set(seeds)
+    pairings = [_pairing(c) for c in SET_J]
+    assert len(set(pairings)) == 14 and not set(pairings) & {_pairing(c) for c in before}
+    assert not _pairs(SET_J) & _pairs(before)
+    for c in SET_J:
+        est, _ = cases.test_names(c)
+        assert all(e.key in physics.EFFECTS and set(e.tests) <= set(est) for e in c.effects)
+    lab_side = [c for c in SET_J if c.expect_broken or c.expect_note]
+    assert len(lab_side) == 3 and not _keys(lab_side) & _keys(before)
+
+
+def test_set_j_rib_fung_is_exponential() -> None:
+    """rib_fung: each rib gains a k d0 (exp(d/d0) - 1 - d/d0) in compression (Fung's law, taken
+    no further than FUNG_ZMAX d0), nothing at rest or in extension."""
+    m_sp, d0, a = physics.NOMINAL["m_sp"], physics.FUNG_D0_M, 0.25
+    k2 = physics.NOMINAL["k_ra"] + physics.NOMINAL["k_rb"]
+    for d in (0.0, 0.010, 0.030, 0.060, -0.010):
+        on = _deriv_one("rib_fung", a, sa=d, sb=d, va=1.0, vb=1.0)[1]
+        off = _deriv_one("", 0.0, sa=d, sb=d, va=1.0, vb=1.0)[1]
+        z = min(max(d, 0.0) / d0, physics.FUNG_ZMAX)
+        assert (on - off) * m_sp == pytest.approx(a * k2 * d0 * (np.expm1(z) - z), abs=1e-9)
+    z = 0.010 / d0
+    assert a * d0 * (np.expm1(z) - z) / 0.010 == pytest.approx(0.14, abs=0.005)  # +14 % at 10 mm
+
+
+def test_set_j_loose_mount_rings_at_its_resonance() -> None:
+    """lab.loose_mount: a step of the base reads 1 in the end, overshoots, and rings at the
+    mount's resonance (5 % damping)."""
+    fs, f = physics.FS_HZ, 150.0
+    y = lab.loose_mount(np.r_[np.zeros(100), np.ones(4000)], f)
+    assert y[-1] == pytest.approx(1.0, abs=0.01) and y.max() > 1.5
+    cross = np.nonzero(np.diff(np.sign(y[100:1500] - 1.0)))[0]
+    half_period = np.diff(cross).mean() / fs
+    assert half_period == pytest.approx(1 / (2 * f * np.sqrt(1 - lab.LOOSE_ZETA ** 2)), rel=0.05)
+
+
+def test_set_j_loose_mount_rings_cr_only(set_j: Path) -> None:
+    c = heldout_sets.select(["hj_broken_cr_loose_mount"], "j")[0]
+    (broken,) = c.expect_broken
+    on, off = set_j / "on" / c.name, set_j / "off" / c.name
+    assert np.abs(_channel(on, broken, "cr") - _channel(off, broken, "cr")).max() > 2.0
+    for which in ("cd", "pulse"):
+        assert np.array_equal(_channel(on, broken, which), _channel(off, broken, which))
+    assert np.array_equal(_brs(on, broken), _brs(off, broken))
+    _others_untouched(set_j, c.name, broken)
+
+
+def test_set_j_brs_swap_crosses_two_tests(set_j: Path) -> None:
+    """The two broken tests' BRS channels are each other's spools (read at their own encoder's
+    phase: a count or two apart), far from their own; every other channel and test untouched."""
+    c = heldout_sets.select(["hj_broken_brs_swap"], "j")[0]
+    a, b = c.expect_broken
+    on, off = set_j / "on" / c.name, set_j / "off" / c.name
+    for mine, other in ((a, b), (b, a)):
+        swapped, own, theirs = _brs(on, mine), _brs(off, mine), _brs(off, other)
+        n = min(len(swapped), len(theirs))
+        assert np.abs(swapped[:n] - theirs[:n]).max() <= 2
+        assert np.abs(swapped - own).max() >= 8
+        for which in ("cr", "cd", "pulse"):
+            assert np.array_equal(_channel(on, mine, which), _channel(off, mine, which))
+    for part in ("est", "val"):
+        for folder in sorted((on / part).iterdir()):
+            if folder.name not in (a, b):
+                assert _files(folder) == _files(off / part / folder.name)
+
+
+def test_set_j_arm_lift_follows_up_and_falls_slowly() -> None:
+    x = np.array([0.0, 1.0, 3.0, 2.0, 0.0, 0.0, 0.5, 0.0])
+    assert lab.arm_lift(x, 1.0).tolist() == [0.0, 1.0, 3.0, 2.0, 1.0, 0.0, 0.5, 0.0]
+
+
+def test_set_j_arm_lift_reads_cd_high_as_the_chest_opens(set_j: Path) -> None:
+    """CD right while the chest closes and at its peak, then high while it opens; CR and the
+    inputs untouched."""
+    c = heldout_sets.select(["hj_cd_arm_lift"], "j")[0]
+    on, off = set_j / "on" / c.name, set_j / "off" / c.name
+    for folder in sorted(on.glob("*/*")):
+        for which in ("cr", "pulse"):
+            assert np.array_equal(_channel(on, folder.name, which),
+                                  _channel(off, folder.name, which))
+        assert np.array_equal(_brs(on, folder.name), _brs(off, folder.name))
+        cd, cd0 = _channel(on, folder.name, "cd"), _channel(off, folder.name, "cd")
+        peak = int(np.argmax(cd0))
+        assert np.abs(cd - cd0)[:peak].max() < 0.3
+        assert (cd - cd0).min() > -0.3 and 2.0 < (cd - cd0)[peak:].max() < 8.0
