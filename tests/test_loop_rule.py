@@ -14,7 +14,12 @@ from observer_node.data.filters import cfc_filter
 from observer_node.ident.dataset import make_dataset
 from observer_node.loop.diagnosis import shape_gains, unexplained
 from observer_node.loop.evidence import judge
-from observer_node.loop.screening import polarity_outliers, residual_outliers, screen_channels
+from observer_node.loop.screening import (
+    judged_fits,
+    polarity_outliers,
+    residual_outliers,
+    screen_channels,
+)
 
 SETUPS = {f"T{i}": s for i, s in enumerate(["A", "A", "B", "B", "C", "C"])}
 
@@ -158,6 +163,22 @@ def test_a_test_far_below_the_others_is_an_outlier():
     fits = {"A": 91.0, "B": 88.5, "C": 93.0, "D": 90.2, "E": 52.0, "F": 89.0}
     assert [b.test for b in residual_outliers(fits)] == ["E"]
     assert residual_outliers({**fits, "E": 84.0}) == []
+
+
+def test_the_only_test_of_its_setup_is_judged_in_sample():
+    # left out, the only R16 test is predicted by a model that never saw the R16 rig (set J:
+    # 65.8 % against 87.7): judged by the fit made with it; a test whose rig the others share
+    # is still judged left out
+    setups = {"R1": "R16", "S1": "SLED", "S2": "SLED", "F1": "FULL", "F2": "FULL", "F3": "FULL"}
+    left_out = {"R1": 65.8, "S1": 88.0, "S2": 87.5, "F1": 87.7, "F2": 86.9, "F3": 88.4}
+    fitted = {**{n: f + 1.0 for n, f in left_out.items()}, "R1": 80.2}
+    fits, lone = judged_fits(left_out, fitted, setups)
+    assert lone == {"R1"} and fits["R1"] == 80.2 and fits["S1"] == 88.0
+    # a broken R16 test is still caught in-sample, and says how it was judged
+    (b,) = residual_outliers(*judged_fits({**left_out, "R1": 20.0}, {**fitted, "R1": 30.0},
+                                          setups))
+    assert b.test == "R1" and "in-sample (the only test of its setup)" in b.reason
+    assert residual_outliers(fits, lone) == [] != residual_outliers(left_out)
 
 
 def test_a_transducer_non_linearity_is_a_static_function_of_one_output(campaign):
