@@ -61,7 +61,8 @@ class _Slot(NamedTuple):
         """The value's standard error from the fitted variable's ``s`` at ``v``."""
         if self.within is not None:
             lo, hi = self.within
-            return float((hi - lo) / 2 * (1 - np.tanh(v) ** 2) * s)
+            slope = (hi - lo) / 2 * (1 - np.tanh(v) ** 2)  # 0 at the edge, where s may be inf
+            return float(slope * s) if slope > 0 or np.isfinite(s) else float("nan")
         return float(self.scale * s)
 
 
