@@ -5,6 +5,7 @@ and the broken test really broken."""
 from __future__ import annotations
 
 import json
+from collections.abc import Iterator
 from pathlib import Path
 
 import numpy as np
@@ -656,6 +657,17 @@ def _brs(root: Path, test: str) -> np.ndarray:
     return np.asarray(read_isomme(next(root.glob(f"*/{test}"))).brs, dtype=float)
 
 
+def _cd_only(on: Path, off: Path) -> Iterator[tuple[np.ndarray, np.ndarray]]:
+    """Each test's CD with and without a CD transducer error (case folders ``on``, ``off``),
+    once its CR, pulse and BRS are checked untouched."""
+    for folder in sorted(on.glob("*/*")):
+        for which in ("cr", "pulse"):
+            assert np.array_equal(_channel(on, folder.name, which),
+                                  _channel(off, folder.name, which))
+        assert np.array_equal(_brs(on, folder.name), _brs(off, folder.name))
+        yield _channel(on, folder.name, "cd"), _channel(off, folder.name, "cd")
+
+
 def test_set_f_brs_counter_resets_to_zero(set_f: Path) -> None:
     c = heldout_sets.select(["hf_broken_brs_reset"], "f")[0]
     (broken,), (eff,) = c.expect_broken, c.effects
@@ -960,13 +972,7 @@ def test_set_i_cd_backlash_cd_only(set_i: Path) -> None:
     c = heldout_sets.select(["hi_cd_backlash"], "i")[0]
     (eff,) = c.effects
     w = eff.size
-    on, off = set_i / "on" / c.name, set_i / "off" / c.name
-    for folder in sorted(on.glob("*/*")):
-        for which in ("cr", "pulse"):
-            assert np.array_equal(_channel(on, folder.name, which),
-                                  _channel(off, folder.name, which))
-        assert np.array_equal(_brs(on, folder.name), _brs(off, folder.name))
-        cd, cd0 = _channel(on, folder.name, "cd"), _channel(off, folder.name, "cd")
+    for cd, cd0 in _cd_only(set_i / "on" / c.name, set_i / "off" / c.name):
         assert np.allclose(cd, lab.backlash(cd0, w), atol=0.3)  # the play
         assert cd.max() == pytest.approx(cd0.max() - w / 2, abs=0.3)  # low at the peak
         back = np.arange(len(cd)) > np.argmax(cd0)
@@ -1266,13 +1272,7 @@ def test_set_j_arm_lift_reads_cd_high_as_the_chest_opens(set_j: Path) -> None:
     """CD right while the chest closes and at its peak, then high while it opens; CR and the
     inputs untouched."""
     c = heldout_sets.select(["hj_cd_arm_lift"], "j")[0]
-    on, off = set_j / "on" / c.name, set_j / "off" / c.name
-    for folder in sorted(on.glob("*/*")):
-        for which in ("cr", "pulse"):
-            assert np.array_equal(_channel(on, folder.name, which),
-                                  _channel(off, folder.name, which))
-        assert np.array_equal(_brs(on, folder.name), _brs(off, folder.name))
-        cd, cd0 = _channel(on, folder.name, "cd"), _channel(off, folder.name, "cd")
+    for cd, cd0 in _cd_only(set_j / "on" / c.name, set_j / "off" / c.name):
         peak = int(np.argmax(cd0))
         assert np.abs(cd - cd0)[:peak].max() < 0.3
         assert (cd - cd0).min() > -0.3 and 2.0 < (cd - cd0)[peak:].max() < 8.0
