@@ -66,6 +66,7 @@ was flagged; nothing was wrong with it).
 
 from __future__ import annotations
 
+from collections import Counter
 from collections.abc import Collection
 from dataclasses import dataclass
 
@@ -266,7 +267,8 @@ def judged_fits(left_out: dict[str, float], in_sample: dict[str, float],
     """The fit_TOT [%] each estimation test is judged by: the left-out fit, but the in-sample
     one for a test that is the only one of its setup (the model fitted without it never saw
     that rig). Returns the fits and the names judged in-sample."""
-    lone = {n for n, s in setups.items() if list(setups.values()).count(s) == 1}
+    count = Counter(setups.values())
+    lone = {n for n, s in setups.items() if count[s] == 1}
     return {n: in_sample[n] if n in lone else f for n, f in left_out.items()}, lone
 
 
