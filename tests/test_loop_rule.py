@@ -11,11 +11,13 @@ import numpy as np
 import pytest
 
 from observer_node.data.filters import cfc_filter
+from observer_node.data.setups import assign_setups
 from observer_node.ident.dataset import make_dataset
 from observer_node.loop.diagnosis import shape_gains, unexplained
 from observer_node.loop.evidence import judge
 from observer_node.loop.screening import (
     judged_fits,
+    payout_outliers,
     polarity_outliers,
     residual_outliers,
     screen_channels,
@@ -130,6 +132,21 @@ def test_a_brs_recorded_at_the_wrong_polarity_is_named(campaign):
     found = polarity_outliers(flipped, 0.15)
     assert [(f.test, f.channel) for f in found] == [("SLED_002", "brs")], found
     assert "pay" in found[0].reason
+
+
+def test_crossed_brs_files_are_found_by_the_pay_out_against_the_pulse(campaign):
+    # the lab's export crossed two tests' spindle files: the R16 test's BRS is a full-scale
+    # car's spool, which pays out 20 ms later after the same free flight than any R16 spool
+    tests = [dataclasses.replace(t) for t in campaign]
+    assign_setups(tests)
+    assert payout_outliers(tests, 0.15) == []
+    r16 = next(t for t in tests if t.name == "R16_002")
+    full = next(t for t in tests if t.name == "FULL_002")
+    crossed = [_broken(t, brs=full.brs) if t is r16 else _broken(t, brs=r16.brs) if t is full
+               else t for t in tests]
+    found = payout_outliers(crossed, 0.15)
+    assert [(f.test, f.channel) for f in found] == [("R16_002", "brs")], found
+    assert "R16 tests" in found[0].reason
 
 
 def test_a_campaign_that_pays_in_more_than_out_is_not_called_reversed(campaign):

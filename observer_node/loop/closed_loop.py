@@ -86,6 +86,7 @@ from .report_md import markdown
 from .screening import (
     BrokenTest,
     judged_fits,
+    payout_outliers,
     polarity_outliers,
     residual_outliers,
     screen_channels,
@@ -151,8 +152,10 @@ def _run(est_tests: list[CrashTest], val_tests: list[CrashTest], out: Path, rate
     # Broken channels are found on the recorded data, before anything is fitted on them.
     broken = [b for t in (*est_tests, *val_tests) for b in screen_channels(t, window_s[1])]
     flagged = {b.test for b in broken}
-    broken += [b for b in polarity_outliers([*est_tests, *val_tests], window_s[1])
-               if b.test not in flagged]
+    for check in (polarity_outliers, payout_outliers):
+        broken += [b for b in check([*est_tests, *val_tests], window_s[1])
+                   if b.test not in flagged]
+        flagged = {b.test for b in broken}
     left_out = {b.test for b in broken}
     est_kept = [t for t in est_tests if t.name not in left_out]
     val_kept = [t for t in val_tests if t.name not in left_out]
