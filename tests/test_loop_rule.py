@@ -428,3 +428,14 @@ def test_the_tests_left_out_are_drawn_against_the_others(campaign, tmp_path):
                        + [("SLED_002", "residual", "fit_TOT far below the others'")], tests)
     assert [b.channel for b in found] == ["cr"]
     assert imread(two).shape[0] > 1.8 * imread(one).shape[0] > 0
+
+
+def test_a_delay_held_at_the_largest_searched_is_not_named():
+    # set J's crossed BRS file, left in, fitted as a BRS 10.5 ms late on its rig: the data
+    # wanted more delay than was searched, a mimic's gain
+    from observer_node.loop.verdicts import at_the_edge
+
+    why = at_the_edge("input_delay", {"n_pulse": 0.0, "n_brs": 10.54}, 1000.0)
+    assert why is not None and "n_brs = 10.54 ms" in why and "largest delay searched" in why
+    assert at_the_edge("input_delay", {"n_pulse": 0.0, "n_brs": 4.5}, 1000.0) is None
+    assert at_the_edge("input_delay", {"n_pulse": 45.0, "n_brs": 0.0}, 10_000.0) is None

@@ -327,7 +327,7 @@ def _run(est_tests: list[CrashTest], val_tests: list[CrashTest], out: Path, rate
                              f"({share_before:.3f} -> {share_after:.3f}): not accepted")
             break
         val_fit = score(fit.base, fit.effects, val)
-        refused = (at_the_edge(best.kind, fit.effects[-1]["parameters"])
+        refused = (at_the_edge(best.kind, fit.effects[-1]["parameters"], rate_hz)
                    or validation_refusal(val_before, val_fit.fit.total))
         if refused:
             possible.append(PossibleEffect(best.kind, scope_label(best.setups),

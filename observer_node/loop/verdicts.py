@@ -91,12 +91,20 @@ def tie_verdict(a: Candidate, b: Candidate, past: PastTheTie) -> str:
 EDGE = 0.01  # of a parameter's physical range: a fit this near its edge is held there
 
 
-def at_the_edge(kind: str, params: dict) -> str | None:
+def at_the_edge(kind: str, params: dict, rate_hz: float = 1000.0) -> str | None:
     """Why an effect that passed the rule is still not named: a parameter ended at the edge
-    of its physical range (``Param.within``), held there by the fit. The data want more than
-    the effect can be; what it gained there is a mimic's, not the named physics' (held-out
-    set H: a spool's gain at 0.04 /rad stood in for an airbag)."""
+    of its physical range (``Param.within``), or a delay [ticks at ``rate_hz``] at the largest
+    searched, held there by the fit. The data want more than the effect can be; what it
+    gained there is a mimic's, not the named physics' (held-out set H: a spool's gain at 0.04
+    /rad stood in for an airbag; set J: a BRS 10.5 ms late for another test's spool)."""
     spec = EFFECTS[kind]
+    if spec.acts == "input_delay":
+        for name, v in params.items():
+            ms = 1000.0 * float(v) / rate_hz
+            if ms >= 1000.0 * DELAY_MAX_S - 0.05:
+                return (f"{name} = {ms:.2f} ms is held at the largest delay searched "
+                        f"({1000 * DELAY_MAX_S:g} ms): the data want something else")
+        return None
     for name, v in params.items():
         p = spec.param(name)
         if p is None or p.within is None or not isinstance(v, float | int):
