@@ -23,10 +23,14 @@
   with a rib cage stiffening by Fung's exponential law and lab-side faults of new kinds (a
   spine accelerometer loose on its mount, two tests' BRS files crossed, a chest pot arm
   lifting off the sternum as the chest opens).
+  ``cases_k.py``: set K, the same again, on pairings no earlier case ran, with a driver bag on
+  a two-stage inflator and lab-side faults of new kinds (a pulse channel copied from another
+  run, the only estimation test of its rig; a spine accelerometer's zero shifting under the
+  shock).
   ``make_sets.py``: writes a set (``--no-effects``: the same tests with every effect off).
   ``costs.py``: what each case costs the thesis grey-box (project CLI).
 
-    python -m benchmarks.heldout.make_sets --out /tmp/heldout [--set a|b|c|d|e|f|g|h|i|j]
+    python -m benchmarks.heldout.make_sets --out /tmp/heldout [--set a|b|c|d|e|f|g|h|i|j|k]
         [--case NAME ...]
 
 Never tune the loop on these cases; report them apart from the tuned ones.

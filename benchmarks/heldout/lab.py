@@ -33,7 +33,7 @@ EXACT = {"pulse_late", "brs_late", "brs_freeze", "cd_dropout", "pulse_rail", "pu
          "cr_soft_clip", "cr_cable_break", "cr_reversed", "cr_progressive", "brs_reset",
          "cr_hum", "cd_compress", "cd_rail", "pulse_sync", "cd_dead_band", "cd_stuck_bit",
          "brs_quadrature", "cr_ac_coupled", "brs_poll", "cr_lost_block", "cd_backlash",
-         "cr_loose_mount", "brs_swap", "cd_arm_lift"}
+         "cr_loose_mount", "brs_swap", "cd_arm_lift", "pulse_from", "cr_zero_shift"}
 DROPOUT_S = 0.010  # how long cd_dropout's wiper stays off the track
 KNEE_SLOPE = 0.6  # cd_knee: the gain of the CD calibration's second segment
 SHIFT_AT_S = 0.011  # pulse_zero_shift: when the zero shifts (in the crash-box spike)
@@ -52,6 +52,10 @@ LOST_AT_S = 0.030
 # cr_loose_mount: the damping ratio of the loosened accelerometer on its mount (the block's
 # screws backed off: it sits on its cable and a film of grease, little damping)
 LOOSE_ZETA = 0.05
+# cr_zero_shift: the shock level (g) at which the spine accelerometer's zero shifts (its
+# sensing element's bond yields a little under the loading's first hard rise), and how long
+# the shift takes to settle (s)
+CR_SHIFT_G, CR_SHIFT_RISE_S = 20.0, 0.004
 NOISE = {"pulse_g": 0.6, "cr_g": 0.55, "cd_mm": 0.10}  # white, before the CFC filters
 
 
@@ -152,7 +156,10 @@ def record(d: Drawn, i: int, sim: dict[str, np.ndarray], counts_per_rev: int,
     # channel leads the pulse the physics ran on. The other way round (a channel recorded
     # after the chest moved) no causal observer can model.
     # pulse_sync: the pulse's recorder started on its own trigger, its time base this early
-    pulse = np.interp(t + e["pulse_late"] + e["pulse_sync"], tg, sim["pulse"][i]) / ph.G
+    # pulse_from: this test's pulse channel is another test's (of the same case, e["pulse_from"]
+    # places on in the batch): the carriage file of another run written into this test's folder
+    src_p = i + round(e["pulse_from"]) if e["pulse_from"] else i
+    pulse = np.interp(t + e["pulse_late"] + e["pulse_sync"], tg, sim["pulse"][src_p]) / ph.G
     if e["pulse_gain"]:  # the accelerometer's sensitivity entered wrong
         pulse = pulse * (1.0 + e["pulse_gain"])
     if e["pulse_zero_shift"]:  # a shock shifts the sensor's zero: it stays shifted
@@ -199,6 +206,11 @@ def record(d: Drawn, i: int, sim: dict[str, np.ndarray], counts_per_rev: int,
         cr_read = signal.lfilter(bb, aa, cr_read)
     if e["cr_loose_mount"]:  # the accelerometer's block loosened on the spine box: it rides
         cr_read = loose_mount(cr_read, e["cr_loose_mount"])  # on a spring, a resonance
+    if e["cr_zero_shift"]:  # the sensing element's zero shifts under the shock: once the
+        k = int(np.argmax(cr_read >= CR_SHIFT_G))  # reading first passes CR_SHIFT_G it moves
+        if cr_read[k] >= CR_SHIFT_G:  # by the size (g) over CR_SHIFT_RISE_S and stays there
+            ramp = np.clip((t - t[k]) / CR_SHIFT_RISE_S, 0.0, 1.0)
+            cr_read = cr_read + e["cr_zero_shift"] * ramp
     cr_raw = cr_read + NOISE["cr_g"] * rng.standard_normal(t.size)
     if e["cr_hum"]:  # a ground loop: mains hum on the bridge, from before the crash on
         cr_raw = cr_raw + e["cr_hum"] * np.sin(2 * np.pi * HUM_HZ * t + 2 * np.pi * d.brs_phase)

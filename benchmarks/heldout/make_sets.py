@@ -2,7 +2,7 @@
 DIR/<case>/truth.json (the case, the expected verdict, the true parameters of every test).
 Deterministic from each case's seed.
 
-    python -m benchmarks.heldout.make_sets --out DIR [--set a|b|c|d|e|f|g|h|i|j] [--case NAME ...]
+    python -m benchmarks.heldout.make_sets --out DIR [--set a|b|c|d|e|f|g|h|i|j|k] [--case NAME ...]
         [--no-effects]
 """
 
@@ -66,8 +66,9 @@ def main(argv: list[str] | None = None) -> int:
     ap.add_argument("--set", dest="case_set", choices=SETS, default="a",
                     help="set A (cases.py, default), set B (cases_b.py), set C (cases_c.py), "
                          "set D (cases_d.py), set E (cases_e.py), set F (cases_f.py), set G "
-                         "(cases_g.py), set H (cases_h.py), set I (cases_i.py) or set J "
-                         "(cases_j.py, held out from the loop's engineers)")
+                         "(cases_g.py), set H (cases_h.py), set I (cases_i.py), set J "
+                         "(cases_j.py) or set K (cases_k.py, held out from the loop's "
+                         "engineers)")
     ap.add_argument("--case", action="append", metavar="NAME",
                     help="only this case of the set (repeatable); default all, in set A: "
                          + ", ".join(c.name for c in CASES))

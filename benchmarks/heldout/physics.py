@@ -105,6 +105,10 @@ EFFECTS = {
     "cr_loose_mount": "",  # broken test: CR accelerometer's mount loosened, resonance (Hz)
     "brs_swap": "",  # broken test: BRS channel of another test of the case (its offset, tests)
     "cd_arm_lift": "",  # transducer: chest pot arm returns no faster than this (mm/ms = m/s)
+    # set K's forms (cases_k.py): one physical form no earlier set used, two lab-side
+    "airbag_dual": "airbag_contact",  # vented bag, two-stage inflator (fill scale of each)
+    "pulse_from": "",  # broken test: pulse channel of another test of the case (its offset)
+    "cr_zero_shift": "",  # transducer: CR zero shifts by this (g) once it first reads CR_SHIFT_G
 }
 POW_B_M = (0.015, 0.025)  # webbing_power: reference stretch, chest side and up to the retractor
 V_HYST = 0.02  # m/s: webbing_hysteresis switches between its paths within this rate
@@ -126,6 +130,12 @@ LOCK_MAX = 0.85
 # rib_fung: the exponential's deflection scale (the cage's costal cartilage and soft tissue,
 # Fung's law for soft tissue), and how far it is taken (exp of at most this multiple)
 FUNG_D0_M, FUNG_ZMAX = 0.012, 3.5
+
+# airbag_dual: a driver bag (set A's vented form) on a two-stage inflator. The first stage fills
+# it as set A's does; the second fires DUAL_DT_S after the first (the controller's delay for a
+# severe, belted crash) and burns for DUAL_BURN_S, adding DUAL_GAS of the first stage's gas at
+# a constant rate while the vents go on venting
+DUAL_DT_S, DUAL_BURN_S, DUAL_GAS = 0.030, 0.008, 0.3
 
 # Nominal Hybrid-III-like thorax, belt and retractor (SI), before per-test scatter.
 NOMINAL = {
@@ -313,6 +323,9 @@ def _deriv(b: Batch, j: np.ndarray | int, y: np.ndarray) -> np.ndarray:
     fabric = e["airbag_fabric"]  # the same, for a bag without vent holes, of uncoated fabric
     if np.any(fabric):
         bag = bag + fabric
+    dual = e["airbag_dual"]  # the same, for a vented bag on a two-stage inflator
+    if np.any(dual):
+        bag = bag + dual
     if np.any(bag):
         pen = np.maximum((xv - x) - p["gap_bag"], 0.0)
         deployed = (t > p["t_bag"] + 0.025) & (bag > 0)
@@ -331,6 +344,9 @@ def _deriv(b: Batch, j: np.ndarray | int, y: np.ndarray) -> np.ndarray:
             free = 1.0 - area / FABRIC_M2
             leak = -FABRIC_K * q * (p_g / P_ATM) * free * (p["V_bag"] / vol)
             dq = np.where(deployed & (fabric > 0), leak, dq)
+        if np.any(dual):  # the second stage's gas, into the bag as it vents
+            burn = (t >= p["t_bag"] + DUAL_DT_S) & (t < p["t_bag"] + DUAL_DT_S + DUAL_BURN_S)
+            dq = dq + np.where(burn & (dual > 0), DUAL_GAS / DUAL_BURN_S, 0.0)
 
     # optional: head and upper neck, tied to the spine only (pulls it forward as it lags)
     fn = np.zeros_like(x)

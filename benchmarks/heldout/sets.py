@@ -6,7 +6,8 @@ had been looked at, the same way), set F (``cases_f``, written after set E had b
 the same way), set G (``cases_g``, written after set F had been looked at, the same way), set H
 (``cases_h``, written after set G had been looked at, the same way), set I (``cases_i``,
 written after set H had been looked at, the same way), set J (``cases_j``, written after set I
-had been looked at, the same way)."""
+had been looked at, the same way), set K (``cases_k``, written after set J had been looked at,
+the same way)."""
 
 from __future__ import annotations
 
@@ -20,14 +21,15 @@ from .cases_g import SET_G
 from .cases_h import SET_H
 from .cases_i import SET_I
 from .cases_j import SET_J
+from .cases_k import SET_K
 
-SETS = ("a", "b", "c", "d", "e", "f", "g", "h", "i", "j")
+SETS = ("a", "b", "c", "d", "e", "f", "g", "h", "i", "j", "k")
 
 
 def case_set(name: str) -> list[Case]:
     """Set A (``cases``), B (``cases_b``), C (``cases_c``), D (``cases_d``), E (``cases_e``),
-    F (``cases_f``), G (``cases_g``), H (``cases_h``), I (``cases_i``) or J (``cases_j``);
-    ValueError for another name."""
+    F (``cases_f``), G (``cases_g``), H (``cases_h``), I (``cases_i``), J (``cases_j``) or K
+    (``cases_k``); ValueError for another name."""
     if name == "a":
         return list(CASES)
     if name == "b":
@@ -48,6 +50,8 @@ def case_set(name: str) -> list[Case]:
         return list(SET_I)
     if name == "j":
         return list(SET_J)
+    if name == "k":
+        return list(SET_K)
     raise ValueError(f"unknown case set {name!r}; known: {', '.join(SETS)}")
 
 
