@@ -1043,6 +1043,9 @@ LATER_SETS = {
     "j": ("set_j", ("hj_two_effects_same", "hj_broken_brs_swap"),
           {"a": ["h_broken_brs"], "e": ["he_cr_progressive"], "h": ["hh_rib_squeeze"],
            "i": ["hi_broken_cr_lost_block", "hi_cd_backlash", "hi_rib_lock"]}),
+    "k": ("set_k", ("hk_two_effects_same", "hk_broken_pulse_from"),
+          {"a": ["h_airbag"], "g": ["hg_broken_pulse_sync"], "h": ["hh_airbag_fabric"],
+           "j": ["hj_broken_brs_swap", "hj_broken_cr_loose_mount", "hj_rib_fung"]}),
 }
 later_set = pytest.mark.parametrize("case_set", sorted(LATER_SETS))
 # a CR recorded at the wrong polarity peaks below zero: left out of the check that CR peaks
@@ -1276,3 +1279,80 @@ def test_set_j_arm_lift_reads_cd_high_as_the_chest_opens(set_j: Path) -> None:
         peak = int(np.argmax(cd0))
         assert np.abs(cd - cd0)[:peak].max() < 0.3
         assert (cd - cd0).min() > -0.3 and 2.0 < (cd - cd0)[peak:].max() < 8.0
+
+
+# ------------------------------------------------------------------ set K (cases_k.py)
+
+SET_K = heldout_sets.case_set("k")
+WATCHED_K = ("hk_broken_pulse_from", "hk_cr_zero_shift", "hk_airbag_dual")
+
+
+@pytest.fixture(scope="module")
+def set_k(tmp_path_factory: pytest.TempPathFactory) -> Path:
+    return _generate(tmp_path_factory, "k", WATCHED_K)
+
+
+def test_set_k_is_new() -> None:
+    """Set K's seeds, (estimation, validation) pairings, effect sizes and lab-side kinds are
+    none of sets A-J's."""
+    before = [c for s in "abcdefghij" for c in heldout_sets.case_set(s)]
+    assert len(SET_K) == 14
+    names = [c.name for c in before + SET_K]
+    assert len(set(names)) == len(names)
+    seeds = [c.seed for c in SET_K]
+    assert len(set(seeds)) == 14 and all(20000 <= s < 21000 for s in seeds)
+    assert not {c.seed for c in before} & set(seeds)
+    pairings = [_pairing(c) for c in SET_K]
+    assert len(set(pairings)) == 14 and not set(pairings) & {_pairing(c) for c in before}
+    assert not _pairs(SET_K) & _pairs(before)
+    for c in SET_K:
+        est, _ = cases.test_names(c)
+        assert all(e.key in physics.EFFECTS and set(e.tests) <= set(est) for e in c.effects)
+    lab_side = [c for c in SET_K if c.expect_broken or c.expect_note]
+    assert len(lab_side) == 2 and not _keys(lab_side) & _keys(before)
+
+
+def test_set_k_pulse_from_is_the_other_tests_pulse(set_k: Path) -> None:
+    """The broken test's pulse is the next test's crash (its own lab noise on it), far from its
+    own; its other channels and every other test untouched."""
+    c = heldout_sets.select(["hk_broken_pulse_from"], "k")[0]
+    (broken,) = c.expect_broken
+    on, off = set_k / "on" / c.name, set_k / "off" / c.name
+    bad, own, donor = (_channel(on, broken, "pulse"), _channel(off, broken, "pulse"),
+                       _channel(off, "SLED_001", "pulse"))
+    assert np.corrcoef(bad, donor)[0, 1] > 0.99
+    assert np.abs(bad - donor).max() < 5.0 < np.abs(bad - own).max()
+    for which in ("cr", "cd"):
+        assert np.array_equal(_channel(on, broken, which), _channel(off, broken, which))
+    assert np.array_equal(_brs(on, broken), _brs(off, broken))
+    _others_untouched(set_k, c.name, broken)
+
+
+def test_set_k_cr_zero_shift_steps_cr_only(set_k: Path) -> None:
+    """CR reads right until it first passes 20 g, then its size (g) high to the end; CD and
+    the inputs untouched."""
+    c = heldout_sets.select(["hk_cr_zero_shift"], "k")[0]
+    (e,) = c.effects
+    on, off = set_k / "on" / c.name, set_k / "off" / c.name
+    for folder in sorted(on.glob("*/*")):
+        name = folder.name
+        cr, cr0 = _channel(on, name, "cr"), _channel(off, name, "cr")
+        for which in ("cd", "pulse"):
+            assert np.array_equal(_channel(on, name, which), _channel(off, name, which))
+        assert np.array_equal(_brs(on, name), _brs(off, name))
+        k = int(np.argmax(cr0 >= 20.0))
+        assert np.abs(cr - cr0)[: max(k - 20, 0)].max() < 0.3  # CFC 180 spreads the onset
+        assert (cr - cr0)[-50:].mean() == pytest.approx(e.size, abs=0.2)
+
+
+def test_set_k_airbag_dual_moves_the_chest_where_the_bag_is(set_k: Path) -> None:
+    c = heldout_sets.select(["hk_airbag_dual"], "k")[0]
+    (e,) = c.effects
+    on, off = set_k / "on" / c.name, set_k / "off" / c.name
+    for folder in sorted(on.glob("*/*")):
+        name = folder.name
+        moved = np.abs(_channel(on, name, "cr") - _channel(off, name, "cr")).max()
+        if name.split("_")[0] in e.setups:
+            assert moved > 1.0, (name, moved)
+        else:
+            assert _files(folder) == _files(off / folder.parent.name / name)
