@@ -1191,24 +1191,29 @@ def set_j(tmp_path_factory: pytest.TempPathFactory) -> Path:
     return _generate(tmp_path_factory, "j", WATCHED_J)
 
 
-def test_set_j_is_new() -> None:
-    """Set J's seeds, (estimation, validation) pairings, effect sizes and lab-side kinds are
-    none of sets A-I's: its mixes validate on two of the three rigs, which no earlier set did."""
-    before = [c for s in "abcdefghi" for c in heldout_sets.case_set(s)]
-    assert len(SET_J) == 14
-    names = [c.name for c in before + SET_J]
+def _is_new(new: list[cases.Case], before: list[cases.Case], seed0: int, lab_side: int) -> None:
+    """A set's names, seeds (seed0..seed0+999), (estimation, validation) pairings, effect
+    sizes and lab-side kinds are none of the earlier sets'."""
+    assert len(new) == 14
+    names = [c.name for c in before + new]
     assert len(set(names)) == len(names)
-    seeds = [c.seed for c in SET_J]
-    assert len(set(seeds)) == 14 and all(19000 <= s < 20000 for s in seeds)
+    seeds = [c.seed for c in new]
+    assert len(set(seeds)) == 14 and all(seed0 <= s < seed0 + 1000 for s in seeds)
     assert not {c.seed for c in before} & set(seeds)
-    pairings = [_pairing(c) for c in SET_J]
+    pairings = [_pairing(c) for c in new]
     assert len(set(pairings)) == 14 and not set(pairings) & {_pairing(c) for c in before}
-    assert not _pairs(SET_J) & _pairs(before)
-    for c in SET_J:
+    assert not _pairs(new) & _pairs(before)
+    for c in new:
         est, _ = cases.test_names(c)
         assert all(e.key in physics.EFFECTS and set(e.tests) <= set(est) for e in c.effects)
-    lab_side = [c for c in SET_J if c.expect_broken or c.expect_note]
-    assert len(lab_side) == 3 and not _keys(lab_side) & _keys(before)
+    broken_or_sensor = [c for c in new if c.expect_broken or c.expect_note]
+    assert len(broken_or_sensor) == lab_side and not _keys(broken_or_sensor) & _keys(before)
+
+
+def test_set_j_is_new() -> None:
+    """Set J's are none of sets A-I's: its mixes validate on two of the three rigs, which no
+    earlier set did."""
+    _is_new(SET_J, [c for s in "abcdefghi" for c in heldout_sets.case_set(s)], 19000, 3)
 
 
 def test_set_j_rib_fung_is_exponential() -> None:
@@ -1293,23 +1298,7 @@ def set_k(tmp_path_factory: pytest.TempPathFactory) -> Path:
 
 
 def test_set_k_is_new() -> None:
-    """Set K's seeds, (estimation, validation) pairings, effect sizes and lab-side kinds are
-    none of sets A-J's."""
-    before = [c for s in "abcdefghij" for c in heldout_sets.case_set(s)]
-    assert len(SET_K) == 14
-    names = [c.name for c in before + SET_K]
-    assert len(set(names)) == len(names)
-    seeds = [c.seed for c in SET_K]
-    assert len(set(seeds)) == 14 and all(20000 <= s < 21000 for s in seeds)
-    assert not {c.seed for c in before} & set(seeds)
-    pairings = [_pairing(c) for c in SET_K]
-    assert len(set(pairings)) == 14 and not set(pairings) & {_pairing(c) for c in before}
-    assert not _pairs(SET_K) & _pairs(before)
-    for c in SET_K:
-        est, _ = cases.test_names(c)
-        assert all(e.key in physics.EFFECTS and set(e.tests) <= set(est) for e in c.effects)
-    lab_side = [c for c in SET_K if c.expect_broken or c.expect_note]
-    assert len(lab_side) == 2 and not _keys(lab_side) & _keys(before)
+    _is_new(SET_K, [c for s in "abcdefghij" for c in heldout_sets.case_set(s)], 20000, 2)
 
 
 def test_set_k_pulse_from_is_the_other_tests_pulse(set_k: Path) -> None:
