@@ -54,7 +54,9 @@ Per test, against the other tests of the set:
   flight of 50 mm (the pulse integrated twice from first contact) to half the spool's pay-out
   (counted from its most wound-in point, after any pretensioner) varies by the dummy's scatter
   only. A test whose lag lies more than 8 ms from that of every one of three or more other
-  tests of its setup, and further than those lie apart, recorded another spool or lost counts.
+  tests of its setup, and further than those lie apart, holds a BRS and a pulse of two
+  different crashes (either may be another test's file: the check sees the pair; set K's
+  pulse copied from another test was found as such), or a decoder that lost counts.
   Real rigs scatter more than the simulated ones: on the bundled campaign the FULL tests' lags
   span 28-44 ms, and no test lies more than 5.4 ms from its nearest neighbour; on the 1764
   tests of held-out sets A-J the clean ones lie within 5.8 ms of theirs. Set J's BRS files
@@ -305,7 +307,8 @@ def payout_outliers(tests: list[CrashTest], end_s: float) -> list[BrokenTest]:
                 x.name, "brs", f"reaches half its pay-out {own:+.1f} ms after the car's "
                 f"{1000 * FREE_FLIGHT_M:.0f} mm free flight, {gap:.1f} ms from the nearest of "
                 f"the {len(rest)} other {setup} tests (which lie within {spread:.1f} ms of each "
-                "other): another test's spool, or a decoder that lost counts"))
+                "other): its BRS and its pulse are not of one crash (one of them is another "
+                "test's file), or the decoder lost counts"))
             out += _crossed_with(x, rest, tests, lag, end_s)
     first: dict[str, BrokenTest] = {}
     for b in out:  # a test out of step on its own may be another's partner too: once, first why
