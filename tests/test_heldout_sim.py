@@ -1017,7 +1017,7 @@ def test_set_i_rib_lock_is_a_hyperbolic_spring() -> None:
 # ------------------------------------------------- sets E-I: the same checks
 
 # each set: its cases, the sets before it, its seeds' range start, a case of an earlier set
-# ------------------------------------------ sets E-J: generated, deterministic, apart
+# ------------------------------------------ sets E-L: generated, deterministic, apart
 
 # per set: its fixture, two cases regenerated alone, a case or two of each earlier set
 LATER_SETS = {
@@ -1046,6 +1046,10 @@ LATER_SETS = {
     "k": ("set_k", ("hk_two_effects_same", "hk_broken_pulse_from"),
           {"a": ["h_airbag"], "g": ["hg_broken_pulse_sync"], "h": ["hh_airbag_fabric"],
            "j": ["hj_broken_brs_swap", "hj_broken_cr_loose_mount", "hj_rib_fung"]}),
+    "l": ("set_l", ("hl_two_effects_same_b", "hl_broken_pulse_rate"),
+          {"a": ["h_lumbar"], "f": ["hf_cd_compress"], "g": ["hg_pelvis", "hg_broken_pulse_sync"],
+           "h": ["hh_pelvis_submarine"], "j": ["hj_cd_arm_lift"],
+           "k": ["hk_broken_pulse_from", "hk_cr_zero_shift", "hk_airbag_dual"]}),
 }
 later_set = pytest.mark.parametrize("case_set", sorted(LATER_SETS))
 # a CR recorded at the wrong polarity peaks below zero: left out of the check that CR peaks
@@ -1342,6 +1346,91 @@ def test_set_k_airbag_dual_moves_the_chest_where_the_bag_is(set_k: Path) -> None
         name = folder.name
         moved = np.abs(_channel(on, name, "cr") - _channel(off, name, "cr")).max()
         if name.split("_")[0] in e.setups:
+            assert moved > 1.0, (name, moved)
+        else:
+            assert _files(folder) == _files(off / folder.parent.name / name)
+
+
+# ------------------------------------------------------------------ set L (cases_l.py)
+
+SET_L = heldout_sets.case_set("l")
+WATCHED_L = ("hl_broken_pulse_rate", "hl_cd_aa_filter", "hl_knee_bolster")
+
+
+@pytest.fixture(scope="module")
+def set_l(tmp_path_factory: pytest.TempPathFactory) -> Path:
+    return _generate(tmp_path_factory, "l", WATCHED_L)
+
+
+def test_set_l_is_new() -> None:
+    _is_new(SET_L, [c for s in "abcdefghijk" for c in heldout_sets.case_set(s)], 21000, 2)
+
+
+def test_set_l_pulse_rate_stretches_the_pulse_in_time(set_l: Path) -> None:
+    """The broken test's pulse is its own crash read at t / rate: its speed change and the
+    time of its peak grow by the rate; its other channels and every other test untouched."""
+    c = heldout_sets.select(["hl_broken_pulse_rate"], "l")[0]
+    (broken,), (e,) = c.expect_broken, c.effects
+    on, off = set_l / "on" / c.name, set_l / "off" / c.name
+    bad, own = _channel(on, broken, "pulse"), _channel(off, broken, "pulse")
+    t = _times(len(bad))
+    assert np.sum(bad) / np.sum(own) == pytest.approx(e.size, rel=0.02)
+    assert t[np.argmax(bad)] / t[np.argmax(own)] == pytest.approx(e.size, rel=0.1)
+    stretched = np.interp(t / e.size, t, own)
+    assert np.corrcoef(bad, stretched)[0, 1] > 0.99 > np.corrcoef(bad, own)[0, 1]
+    for which in ("cr", "cd"):
+        assert np.array_equal(_channel(on, broken, which), _channel(off, broken, which))
+    assert np.array_equal(_brs(on, broken), _brs(off, broken))
+    _others_untouched(set_l, c.name, broken)
+
+
+def test_set_l_aa_filter_is_a_causal_butterworth() -> None:
+    """lab.aa_filter: a step reads 1 in the end, a slow ramp comes out late by the 4-pole
+    Butterworth's group delay at low frequency, 2.613 / (2 pi f)."""
+    fs, f = physics.FS_HZ, 150.0
+    y = lab.aa_filter(np.r_[np.zeros(100), np.ones(2000)], f)
+    assert y[:100].max() == 0.0 and y[-1] == pytest.approx(1.0, abs=1e-3)
+    ramp = np.arange(3000) / fs
+    lag = (ramp - lab.aa_filter(ramp, f))[-500:].mean()
+    assert lag == pytest.approx(2.613 / (2 * np.pi * f), rel=0.03)
+
+
+def test_set_l_aa_filter_delays_cd_only(set_l: Path) -> None:
+    """CD reads as its effect-free self through the causal filter (late by its group delay,
+    smoothed); CR and the inputs untouched."""
+    c = heldout_sets.select(["hl_cd_aa_filter"], "l")[0]
+    (e,) = c.effects
+    for cd, cd0 in _cd_only(set_l / "on" / c.name, set_l / "off" / c.name):
+        assert np.abs(cd - lab.aa_filter(cd0, e.size)).max() < 0.3
+        late = (int(np.argmax(cd)) - int(np.argmax(cd0))) / physics.FS_HZ
+        delay = 2.613 / (2 * np.pi * e.size)  # the group delay at low frequency
+        assert 0.5 * delay <= late <= 1.5 * delay, (late, delay)
+        assert np.abs(cd - cd0).max() > 2.0
+
+
+def test_set_l_knee_bolster_pushes_the_pelvis_past_its_gap() -> None:
+    """pelvis_knee: lumbar_path's pelvis path at the same scale until the pelvis has moved
+    BOLSTER_GAP_M forward in the car; beyond it the knees push it rearward by
+    BOLSTER_F tanh(BOLSTER_K pen / BOLSTER_F)."""
+    m_p, gap = physics.NOMINAL["m_p"], physics.BOLSTER_GAP_M
+    for fwd in (0.0, 0.030, gap + 0.005, gap + 0.040):
+        knee = _deriv_one("pelvis_knee", 0.6, p=-fwd, vp=-0.5)
+        lum = _deriv_one("lumbar_path", 0.6, p=-fwd, vp=-0.5)
+        pen = max(fwd - gap, 0.0)
+        want = physics.BOLSTER_F * np.tanh(physics.BOLSTER_K * pen / physics.BOLSTER_F)
+        assert (knee[12] - lum[12]) * m_p == pytest.approx(want, rel=1e-9, abs=1e-9)
+        assert np.allclose(knee[[1, 3, 5, 7, 9]], lum[[1, 3, 5, 7, 9]])
+
+
+def test_set_l_knee_bolster_moves_the_chest_where_the_interior_is(set_l: Path) -> None:
+    c = heldout_sets.select(["hl_knee_bolster"], "l")[0]
+    (e,) = c.effects
+    on, off = set_l / "on" / c.name, set_l / "off" / c.name
+    for folder in sorted(on.glob("*/*")):
+        name = folder.name
+        if name.split("_")[0] in e.setups:
+            assert np.array_equal(_channel(on, name, "pulse"), _channel(off, name, "pulse"))
+            moved = np.abs(_channel(on, name, "cr") - _channel(off, name, "cr")).max()
             assert moved > 1.0, (name, moved)
         else:
             assert _files(folder) == _files(off / folder.parent.name / name)

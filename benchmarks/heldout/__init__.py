@@ -27,10 +27,13 @@
   a two-stage inflator and lab-side faults of new kinds (a pulse channel copied from another
   run, the only estimation test of its rig; a spine accelerometer's zero shifting under the
   shock).
+  ``cases_l.py``: set L, the same again, on pairings no earlier case ran, with a knee bolster
+  on the pelvis path and lab-side faults of new kinds (a pulse module sampling at another rate
+  than its file states; a chest pot's anti-alias filter set far too low, delaying CD).
   ``make_sets.py``: writes a set (``--no-effects``: the same tests with every effect off).
   ``costs.py``: what each case costs the thesis grey-box (project CLI).
 
-    python -m benchmarks.heldout.make_sets --out /tmp/heldout [--set a|b|c|d|e|f|g|h|i|j|k]
+    python -m benchmarks.heldout.make_sets --out /tmp/heldout [--set a|b|c|d|e|f|g|h|i|j|k|l]
         [--case NAME ...]
 
 Never tune the loop on these cases; report them apart from the tuned ones.

@@ -33,7 +33,8 @@ EXACT = {"pulse_late", "brs_late", "brs_freeze", "cd_dropout", "pulse_rail", "pu
          "cr_soft_clip", "cr_cable_break", "cr_reversed", "cr_progressive", "brs_reset",
          "cr_hum", "cd_compress", "cd_rail", "pulse_sync", "cd_dead_band", "cd_stuck_bit",
          "brs_quadrature", "cr_ac_coupled", "brs_poll", "cr_lost_block", "cd_backlash",
-         "cr_loose_mount", "brs_swap", "cd_arm_lift", "pulse_from", "cr_zero_shift"}
+         "cr_loose_mount", "brs_swap", "cd_arm_lift", "pulse_from", "cr_zero_shift",
+         "pulse_rate", "cd_aa_filter"}
 DROPOUT_S = 0.010  # how long cd_dropout's wiper stays off the track
 KNEE_SLOPE = 0.6  # cd_knee: the gain of the CD calibration's second segment
 SHIFT_AT_S = 0.011  # pulse_zero_shift: when the zero shifts (in the crash-box spike)
@@ -106,6 +107,14 @@ def loose_mount(a: np.ndarray, f_hz: float, zeta: float = LOOSE_ZETA) -> np.ndar
     return np.asarray(signal.lfilter(bb, aa, a))
 
 
+def aa_filter(x: np.ndarray, f_hz: float) -> np.ndarray:
+    """An analog anti-alias filter ahead of the digitiser: a 4-pole Butterworth low-pass at
+    ``f_hz``, causal (one pass: it delays as well as smooths, unlike the phaseless CFC filters
+    run on the recorded file), from rest."""
+    bb, aa = signal.butter(4, f_hz, fs=ph.FS_HZ)
+    return np.asarray(signal.lfilter(bb, aa, x))
+
+
 def draw(case: Case, effects_on: bool = True) -> tuple[list[Drawn], np.ndarray]:
     """Every test of ``case`` and its crash pulses (deceleration, m/s^2, stage grid).
     ``effects_on=False``: the same tests (same dummies, pulses, noise) with every effect off,
@@ -159,7 +168,10 @@ def record(d: Drawn, i: int, sim: dict[str, np.ndarray], counts_per_rev: int,
     # pulse_from: this test's pulse channel is another test's (of the same case, e["pulse_from"]
     # places on in the batch): the carriage file of another run written into this test's folder
     src_p = i + round(e["pulse_from"]) if e["pulse_from"] else i
-    pulse = np.interp(t + e["pulse_late"] + e["pulse_sync"], tg, sim["pulse"][src_p]) / ph.G
+    # pulse_rate: the carriage module sampled at e["pulse_rate"] x the rate the file states
+    # (its samples counted from the trigger): the file's time t is the crash's t / rate
+    tp = t / e["pulse_rate"] if e["pulse_rate"] else t
+    pulse = np.interp(tp + e["pulse_late"] + e["pulse_sync"], tg, sim["pulse"][src_p]) / ph.G
     if e["pulse_gain"]:  # the accelerometer's sensitivity entered wrong
         pulse = pulse * (1.0 + e["pulse_gain"])
     if e["pulse_zero_shift"]:  # a shock shifts the sensor's zero: it stays shifted
@@ -236,6 +248,8 @@ def record(d: Drawn, i: int, sim: dict[str, np.ndarray], counts_per_rev: int,
         cd = backlash(cd, e["cd_backlash"])  # sternum has taken up the play (a play operator)
     if e["cd_arm_lift"]:  # the pot arm's return spring gone weak: pushed in by the sternum,
         cd = arm_lift(cd, e["cd_arm_lift"] * 1e3 / ph.FS_HZ)  # it lifts off as the chest opens
+    if e["cd_aa_filter"]:  # the CD module's analog anti-alias filter set for a slow channel:
+        cd = aa_filter(cd, e["cd_aa_filter"])  # a causal low-pass ahead of the digitiser
     cd = cd + NOISE["cd_mm"] * rng.standard_normal(t.size)
     if e["cd_stuck_bit"]:  # one data line of the digitiser stuck at 1: the recorded channel
         raw = -cd  # (J211 sign) reads one bit's weight high wherever that bit should be 0

@@ -109,6 +109,10 @@ EFFECTS = {
     "airbag_dual": "airbag_contact",  # vented bag, two-stage inflator (fill scale of each)
     "pulse_from": "",  # broken test: pulse channel of another test of the case (its offset)
     "cr_zero_shift": "",  # transducer: CR zero shifts by this (g) once it first reads CR_SHIFT_G
+    # set L's forms (cases_l.py): one physical form no earlier set used, two lab-side
+    "pelvis_knee": "pelvis_coupling",  # pelvis path (lumbar_path's, this scale) + knee bolster
+    "pulse_rate": "",  # broken test: pulse module sampled at this x the stated rate (ratio)
+    "cd_aa_filter": "",  # transducer: CD through a causal 4-pole anti-alias filter at this (Hz)
 }
 POW_B_M = (0.015, 0.025)  # webbing_power: reference stretch, chest side and up to the retractor
 V_HYST = 0.02  # m/s: webbing_hysteresis switches between its paths within this rate
@@ -136,6 +140,13 @@ FUNG_D0_M, FUNG_ZMAX = 0.012, 3.5
 # severe, belted crash) and burns for DUAL_BURN_S, adding DUAL_GAS of the first stage's gas at
 # a constant rate while the vents go on venting
 DUAL_DT_S, DUAL_BURN_S, DUAL_GAS = 0.030, 0.008, 0.3
+
+# pelvis_knee: the knees meet the knee bolster (an interior's lower instrument panel) once the
+# pelvis has moved this far forward in the car; the bolster's foam and the femurs in series
+# load it at BOLSTER_K (N/m, both knees) up to the foam's crush plateau BOLSTER_F (N), reached
+# smoothly (tanh); its unloading taken on the loading curve (the foam's crush hysteresis left
+# out). Constants, not NOMINAL keys, so earlier sets draw as before.
+BOLSTER_GAP_M, BOLSTER_K, BOLSTER_F = 0.045, 250e3, 5000.0
 
 # Nominal Hybrid-III-like thorax, belt and retractor (SI), before per-test scatter.
 NOMINAL = {
@@ -309,6 +320,15 @@ def _deriv(b: Batch, j: np.ndarray | int, y: np.ndarray) -> np.ndarray:
         lap_s = f_slip * np.tanh((p["k_lap"] * (xv - pp) + p["c_lap"] * (vv - vp)) / f_slip)
         fl = np.where(sub > 0, fs_l, fl)
         dvp = np.where(sub > 0, (lap_s - fs_l) / p["m_p"], dvp)
+
+    kne = e["pelvis_knee"]  # lumbar_path's pelvis path at this scale, and the knee bolster:
+    if np.any(kne):  # the knees (femurs) push the pelvis rearward once it closes BOLSTER_GAP_M
+        fl_k = kne * (p["k_l"] * (pp - x) + p["c_l"] * (vp - vx))
+        lap_k = kne * (p["k_lap"] * (xv - pp) + p["c_lap"] * (vv - vp))
+        pen_k = np.maximum((xv - pp) - BOLSTER_GAP_M, 0.0)
+        knee = BOLSTER_F * np.tanh(BOLSTER_K * pen_k / BOLSTER_F)
+        fl = np.where(kne > 0, fl_k, fl)
+        dvp = np.where(kne > 0, (lap_k + knee - fl_k) / p["m_p"], dvp)
 
     # optional: airbag (vented gas bag), contact once deployed and the torso closes the gap
     fbag = np.zeros_like(x)
