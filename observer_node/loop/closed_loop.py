@@ -156,7 +156,7 @@ def _run(est_tests: list[CrashTest], val_tests: list[CrashTest], out: Path, rate
         broken += [b for b in check([*est_tests, *val_tests], window_s[1])
                    if b.test not in flagged]
         flagged = {b.test for b in broken}
-    left_out = {b.test for b in broken}
+    left_out = flagged
     est_kept = [t for t in est_tests if t.name not in left_out]
     val_kept = [t for t in val_tests if t.name not in left_out]
     if len(est_kept) < 2 or not val_kept:

@@ -91,6 +91,11 @@ def tie_verdict(a: Candidate, b: Candidate, past: PastTheTie) -> str:
 EDGE = 0.01  # of a parameter's physical range: a fit this near its edge is held there
 
 
+def at_delay_bound(ms: float) -> bool:
+    """A delay [ms] at the largest searched (within the refinement's 0.05 ms)."""
+    return ms >= 1000.0 * DELAY_MAX_S - 0.05
+
+
 def at_the_edge(kind: str, params: dict, rate_hz: float = 1000.0) -> str | None:
     """Why an effect that passed the rule is still not named: a parameter ended at the edge
     of its physical range (``Param.within``), or a delay [ticks at ``rate_hz``] at the largest
@@ -101,7 +106,7 @@ def at_the_edge(kind: str, params: dict, rate_hz: float = 1000.0) -> str | None:
     if spec.acts == "input_delay":
         for name, v in params.items():
             ms = 1000.0 * float(v) / rate_hz
-            if ms >= 1000.0 * DELAY_MAX_S - 0.05:
+            if at_delay_bound(ms):
                 return (f"{name} = {ms:.2f} ms is held at the largest delay searched "
                         f"({1000 * DELAY_MAX_S:g} ms): the data want something else")
         return None
@@ -145,7 +150,7 @@ def parameter_warnings(kind: str, params: dict, std_err: dict[str, float],
         se = std_err.get(name)
         if spec.acts == "input_delay":
             ms = 1000.0 * v / rate_hz
-            if ms >= 1000.0 * DELAY_MAX_S - 0.05:
+            if at_delay_bound(ms):
                 out.append(f"{name} = {ms:.2f} ms is at the searched bound "
                            f"({1000 * DELAY_MAX_S:g} ms)")
             continue
