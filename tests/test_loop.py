@@ -162,6 +162,25 @@ def test_an_airbag_on_some_setups_is_found_with_its_scope(tmp_path):
     assert "why this and not that" in md and "acts on setups" in md
 
 
+def test_a_rig_with_one_estimation_test_is_not_judged(tmp_path):
+    # the belt unloads on every rig, FULL holding one estimation test: FULL is reported as not
+    # judged, no scope rests on it alone, and the effect is still named (its best guess acts
+    # on FULL's validation tests too: left off, their fit would fall by tens of points)
+    cfg = PlantConfig(effects={"belt_unloading": 1.0})
+    configs = dict.fromkeys(("R16", "SLED", "FULL"), cfg)
+    est = simulate_mixed({"R16": 2, "SLED": 2, "FULL": 1}, 63, configs, "E")
+    val = simulate_mixed({"R16": 2, "SLED": 2, "FULL": 2}, 64, configs, "V")
+    r = run_loop(est, val, tmp_path, verbose=False, plots=False, ratings=False)
+    assert [(n.setup, n.estimation_tests, n.validation_tests) for n in r.not_judged] == [
+        ("FULL-FRONTAL", 1, 2)]
+    assert [e.kind for e in r.effects][:1] == ["belt_unloading"], r.history
+    assert all(c.scope != "FULL-FRONTAL" for s in r.history for c in s.tried)
+    assert r.final.fit.total > r.baseline.fit.total + 5
+    report = json.loads((tmp_path / "report.json").read_text())
+    assert report["not_judged"][0]["why"] == "1 estimation test, 2 validation test(s)"
+    assert "**Not judged**" in (tmp_path / "report.md").read_text()
+
+
 def test_a_late_brs_is_named_a_delay_of_a_fraction_of_a_tick(tmp_path):
     late = PlantConfig(brs_delay_ms=3.0)
     r = _mixed(dict.fromkeys(("R16", "SLED", "FULL"), late), tmp_path)

@@ -37,6 +37,10 @@ def test_campaign_a_setups_come_from_its_metadata():
     # unless the user says otherwise
     assert None in scope_options("airbag_contact", setups, ["R16", "SLED", "FULL"],
                                  anywhere=True)
+    # no scope rests on rigs too thinly estimated to judge (FULL) alone
+    assert scope_options("belt_unloading", setups, ["R16", "SLED", "FULL"],
+                         judged=["R16", "SLED"]) == [
+        None, ["R16"], ["SLED"], ["R16", "SLED"], ["R16", "FULL"], ["SLED", "FULL"]]
 
 
 def test_names_without_a_separator_are_grouped_by_metadata_and_overridden_by_group():

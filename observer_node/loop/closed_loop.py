@@ -77,6 +77,7 @@ from .report import (
     LoopSettings,
     LoopStep,
     ModelFit,
+    NotJudged,
     PossibleEffect,
     RankedCandidate,
     SensorEffect,
@@ -106,11 +107,29 @@ def _fit3(t: FitTable) -> dict[str, float]:
     return {k: round(float(v), 2) for k, v in t.fit.as_dict().items()}
 
 
+# A rig with fewer estimation tests than this is not judged: with one test, an effect there
+# cannot be told from that test's scatter, and no fold both fits and scores the rig (set L: a
+# chest stiffening on R16 and SLED was named on all three rigs, FULL holding one estimation
+# test; sets K and L: on rigs with validation tests only).
+MIN_JUDGED = 2
+
+
+def judged_setups(est: Dataset, val: Dataset) -> tuple[list[str], list[NotJudged]]:
+    """The setups an effect can be named on (at least ``MIN_JUDGED`` estimation tests) and
+    those that are not, with their counts."""
+    every = list(dict.fromkeys([*est.setups, *val.setups]))
+    n_est = {s: est.setups.count(s) for s in every}
+    return ([s for s in every if n_est[s] >= MIN_JUDGED],
+            [NotJudged(s, n_est[s], val.setups.count(s)) for s in every if n_est[s] < MIN_JUDGED])
+
+
 def scope_options(kind: str, setups: list[Setup], est_setups: list[str],
-                  anywhere: bool = False) -> list[list[str] | None]:
+                  anywhere: bool = False, judged: list[str] | None = None
+                  ) -> list[list[str] | None]:
     """The scopes effect ``kind`` is tried on: every test (None) when every setup could have
     it, and the groups of setups that could (all of them for up to four setups, else each
-    alone); never a setup where it is physically impossible."""
+    alone) and hold a ``judged`` one (default: all do); never a setup where it is physically
+    impossible."""
     possible = set(allowed_setups(kind, setups, anywhere))
     allowed = [s for s in est_setups if s in possible]
     out: list[list[str] | None] = [None] if allowed == est_setups else []
@@ -118,7 +137,8 @@ def scope_options(kind: str, setups: list[Setup], est_setups: list[str],
         subsets = ([list(c) for n in range(1, len(allowed) + 1)
                     for c in itertools.combinations(allowed, n)] if len(allowed) <= 4
                    else [[s] for s in allowed] + [allowed])
-        out += [c for c in subsets if c != est_setups]
+        out += [c for c in subsets if c != est_setups
+                and (judged is None or any(s in judged for s in c))]
     elif allowed and not out:
         out = [allowed]
     return out
@@ -184,7 +204,11 @@ def _run(est_tests: list[CrashTest], val_tests: list[CrashTest], out: Path, rate
         gb = greybox.fit_greybox(est)
         folds_, cv0 = folds(est), None
     est_setups = list(dict.fromkeys(est.setups))
-    scopes = {k: scope_options(k, setups, est_setups, anywhere) for k in EFFECTS}
+    rigs_judged, not_judged = judged_setups(est, val)
+    thin = {n.setup for n in not_judged}
+    scopes = {k: scope_options(k, setups, est_setups, anywhere, rigs_judged) for k in EFFECTS}
+    if not_judged:
+        prog.update("not judged: " + "; ".join(f"{n.setup} ({n.why})" for n in not_judged))
     test_setup = dict(zip(est.names, est.setups, strict=True))
     base = dict(gb.params)
     base_se: dict[str, float] = dict(gb.std_err)
@@ -272,7 +296,8 @@ def _run(est_tests: list[CrashTest], val_tests: list[CrashTest], out: Path, rate
                              "lowered): " + "; ".join(f"{c.kind} on {scope_label(c.setups)}: "
                                                        f"{ev.reason}" for _, c, ev in tried[:4]))
             break
-        (cv_best, best, ev_best), narrower = defended_scope(passing, per_test)
+        (cv_best, best, ev_best), narrower = defended_scope(passing, per_test, thin,
+                                                            est_setups)
         cv_tests_best = per_test[id(best)]
         runner_up, margin_points, other_scope = runner_up_of(
             [(cv_best, best, ev_best), *(t for t in tried if t[1] is not best)], per_test)
@@ -301,7 +326,7 @@ def _run(est_tests: list[CrashTest], val_tests: list[CrashTest], out: Path, rate
             if past.named == "b":  # the runner-up explains the winner's gain, not the reverse
                 (cv_best, best, ev_best), narrower = defended_scope(
                     [rival, *(t for t in passing if t[1].kind == rival[1].kind
-                              and t[1] is not rival[1])], per_test)
+                              and t[1] is not rival[1])], per_test, thin, est_setups)
                 cv_tests_best = per_test[id(best)]
                 runner_up, margin_points, other_scope = runner_up_of(
                     [(cv_best, best, ev_best), *(t for t in tried if t[1] is not best)],
@@ -381,7 +406,7 @@ def _run(est_tests: list[CrashTest], val_tests: list[CrashTest], out: Path, rate
         left_out=_with_and_without(broken, base, effects, est_tests, val_tests, est_kept,
                                    val, rate_hz, window_s),
         final=ModelFit(Fits(**_fit3(final_val)), base, base_se),
-        setups=setups,
+        setups=setups, not_judged=not_judged,
         model="model.json", baseline_model="baseline-model.json",
         software_version=__version__,
         estimation=est.names, validation=val.names,

@@ -264,6 +264,29 @@ class LoopStep:
 
 
 @dataclass(frozen=True)
+class NotJudged:
+    """A setup the data cannot judge an effect on: fewer than ``MIN_JUDGED`` (in
+    :mod:`.closed_loop`) of its tests estimate the model, so an effect there cannot be told
+    from one test's scatter. Nothing is claimed about it: an effect named on every setup
+    ("all") acts there too, as the model's best guess; one named on some setups does not, and
+    no scope is tried on such setups alone."""
+
+    setup: str
+    estimation_tests: int
+    validation_tests: int
+
+    @property
+    def why(self) -> str:
+        n = self.estimation_tests
+        return ("no estimation test" if n == 0 else f"{n} estimation test") + (
+            f", {self.validation_tests} validation test(s)")
+
+    def as_dict(self) -> dict[str, Any]:
+        return {"setup": self.setup, "estimation_tests": self.estimation_tests,
+                "validation_tests": self.validation_tests, "why": self.why}
+
+
+@dataclass(frozen=True)
 class LeftOut:
     """The validation fits [%] (rounded to 0.01) with the tests left out and without them:
     the final model as fitted; its structure refitted with the left-out estimation tests back
@@ -333,6 +356,7 @@ class LoopReport:
     left_out: LeftOut | None  # the fits with and without them (None: none left out)
     final: ModelFit
     setups: list[Setup]
+    not_judged: list[NotJudged]  # setups too thinly estimated to name an effect on
     model: str  # file names in the output folder
     baseline_model: str
     software_version: str
@@ -356,7 +380,8 @@ class LoopReport:
             "warnings": [w.as_dict() for w in self.warnings],
             "left_out": self.left_out.as_dict() if self.left_out is not None else {},
             "final": self.final.as_dict(),
-            "setups": [s.as_dict() for s in self.setups], "model": self.model,
+            "setups": [s.as_dict() for s in self.setups],
+            "not_judged": [n.as_dict() for n in self.not_judged], "model": self.model,
             "baseline_model": self.baseline_model, "software_version": self.software_version,
             "estimation": self.estimation, "validation": self.validation,
             "residual_tests": {k: t.as_dict() for k, t in self.residual_tests.items()},

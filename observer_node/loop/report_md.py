@@ -18,6 +18,11 @@ def markdown(r: LoopReport) -> str:
     lines += [f"| {s.name} | {', '.join(s.tests)} | {s.how} | "
               f"{'; '.join(f'{k} ({v})' for k, v in s.impossible.items()) or '-'} |"
               for s in r.setups]
+    if r.not_judged:
+        lines += ["", "**Not judged** (too few estimation tests to tell an effect there from "
+                  "one test's scatter; nothing is claimed about them, and an effect named on "
+                  "\"all\" acts there as the model's best guess): "
+                  + "; ".join(f"{n.setup}, {n.why}" for n in r.not_judged) + "."]
     lines += ["", "## Fits", "",
               "| model | acts on | fit CR | fit CD | fit TOT |", "|---|---|---|---|---|",
               f"| thesis grey-box | all | {b.cr:.1f} | {b.cd:.1f} | {b.total:.1f} |"]

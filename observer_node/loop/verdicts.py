@@ -15,18 +15,29 @@ from .report import OtherScope, RunnerUp
 
 
 def defended_scope(passing: list[tuple[float, Candidate, Evidence]],
-                    per_test: dict[int, dict[str, float]]
-                    ) -> tuple[tuple[float, Candidate, Evidence], str]:
+                   per_test: dict[int, dict[str, float]], thin: set[str] | frozenset[str]
+                   = frozenset(), est_setups: list[str] | None = None
+                   ) -> tuple[tuple[float, Candidate, Evidence], str]:
     """The best passing candidate, or the same effect on a wider scope that passes too when
     the narrower one does not beat it test by test above the scatter: "on these setups only"
     is a claim the data must defend like the effect itself. Also the narrower scope given up
     ("" when none). ``passing``: (cv fit_TOT [%], candidate, evidence), best first;
-    ``per_test``: each candidate's per-test cross-validated fit_TOT [%] by ``id``."""
+    ``per_test``: each candidate's per-test cross-validated fit_TOT [%] by ``id``.
+
+    Where the two scopes differ only on ``thin`` setups (too few estimation tests to judge,
+    ``est_setups`` being every setup of them), neither claims anything the data can defend
+    there: the better cross-validated fit keeps its scope (set L: the scatter test over one
+    test of a rig kept a chest stiffening on it that the test's fit refused by 12 points)."""
     best = passing[0][1]
     for entry in passing[1:]:
         c = entry[1]
         wider = best.setups is not None and (c.setups is None or set(best.setups) < set(c.setups))
-        if c.kind == best.kind and wider and not beats(per_test[id(best)], per_test[id(c)])[0]:
+        if not wider or c.kind != best.kind:
+            continue
+        extra = set(est_setups or [] if c.setups is None else c.setups) - set(best.setups or [])
+        if extra and extra <= thin:
+            continue
+        if not beats(per_test[id(best)], per_test[id(c)])[0]:
             return entry, scope_label(best.setups)
     return passing[0], ""
 
