@@ -269,6 +269,20 @@ def test_a_narrower_scope_that_beats_the_wider_test_by_test_is_kept():
     assert chosen.setups == ["A", "B"] and given_up == ""
 
 
+def test_scopes_that_differ_only_on_a_rig_not_judged_keep_the_better_fit():
+    from observer_node.loop.verdicts import defended_scope as _defended_scope
+    # the same tests as above, where the wider scope wins; but here the wider scope adds only
+    # C, held by too few estimation tests to judge (set L, hl_two_effects_same_a): no claim
+    # is at stake there, so the better cross-validated fit keeps its scope
+    passing, per_test = _passing((["A", "B"], [2.5, 0.4, 2.9, 0.2, 1.2, 1.1]),
+                                 (None, [1.1, 1.0, 1.3, 0.9, 1.2, 1.1]))
+    (_, chosen, _), given_up = _defended_scope(passing, per_test, {"C"}, ["A", "B", "C"])
+    assert chosen.setups == ["A", "B"] and given_up == ""
+    # a wider scope that adds a judged rig too is still preferred unless beaten
+    (_, chosen, _), _ = _defended_scope(passing, per_test, {"B"}, ["A", "B", "C"])
+    assert chosen.setups is None
+
+
 def test_a_runner_up_the_data_cannot_tell_from_the_winner_is_said_so():
     from observer_node.loop.analysis import Candidate
     from observer_node.loop.verdicts import runner_up_of as _rival
@@ -439,3 +453,18 @@ def test_a_delay_held_at_the_largest_searched_is_not_named():
     assert why is not None and "n_brs = 10.54 ms" in why and "largest delay searched" in why
     assert at_the_edge("input_delay", {"n_pulse": 0.0, "n_brs": 4.5}, 1000.0) is None
     assert at_the_edge("input_delay", {"n_pulse": 45.0, "n_brs": 0.0}, 10_000.0) is None
+
+
+def test_the_held_out_benchmark_scores_scopes_on_the_rigs_held_twice():
+    from benchmarks.loop_heldout import _as_judged
+
+    every = ["FULL", "R16", "SLED"]
+    # FULL holds one estimation test: an effect "everywhere" is asked on R16 and SLED only
+    assert _as_judged("belt_unloading@all", ["R16", "SLED"], every) == \
+        "belt_unloading@R16+SLED"
+    assert _as_judged("airbag_contact@FULL+SLED", ["R16", "SLED"], every) == \
+        "airbag_contact@SLED"
+    assert _as_judged("airbag_contact@FULL", ["R16", "SLED"], every) is None
+    # every rig judged: the scope is unchanged, "all" when it covers them
+    assert _as_judged("chest_stiffening@FULL+R16+SLED", every, every) == "chest_stiffening@all"
+    assert _as_judged("chest_stiffening@R16", every, every) == "chest_stiffening@R16"
