@@ -34,7 +34,7 @@ EXACT = {"pulse_late", "brs_late", "brs_freeze", "cd_dropout", "pulse_rail", "pu
          "cr_hum", "cd_compress", "cd_rail", "pulse_sync", "cd_dead_band", "cd_stuck_bit",
          "brs_quadrature", "cr_ac_coupled", "brs_poll", "cr_lost_block", "cd_backlash",
          "cr_loose_mount", "brs_swap", "cd_arm_lift", "pulse_from", "cr_zero_shift",
-         "pulse_rate", "cd_aa_filter", "dummy_scale", "cr_cfc"}
+         "pulse_rate", "cd_aa_filter", "dummy_scale", "cr_crosstalk"}
 DROPOUT_S = 0.010  # how long cd_dropout's wiper stays off the track
 KNEE_SLOPE = 0.6  # cd_knee: the gain of the CD calibration's second segment
 SHIFT_AT_S = 0.011  # pulse_zero_shift: when the zero shifts (in the crash-box spike)
@@ -239,6 +239,10 @@ def record(d: Drawn, i: int, sim: dict[str, np.ndarray], counts_per_rev: int,
         if cr_read[k] >= CR_SHIFT_G:  # by the size (g) over CR_SHIFT_RISE_S and stays there
             ramp = np.clip((t - t[k]) / CR_SHIFT_RISE_S, 0.0, 1.0)
             cr_read = cr_read + e["cr_zero_shift"] * ramp
+    if e["cr_crosstalk"]:  # the recorder's multiplexed digitiser samples CR right after CD and
+        # its sample-and-hold has too little time to settle: CR keeps a share of CD's voltage,
+        # read in CR's units (g per mm of CD); CD itself reads right
+        cr_read = cr_read + e["cr_crosstalk"] * sim["cd"][i] * 1e3
     cr_raw = cr_read + NOISE["cr_g"] * rng.standard_normal(t.size)
     if e["cr_hum"]:  # a ground loop: mains hum on the bridge, from before the crash on
         cr_raw = cr_raw + e["cr_hum"] * np.sin(2 * np.pi * HUM_HZ * t + 2 * np.pi * d.brs_phase)
@@ -248,8 +252,7 @@ def record(d: Drawn, i: int, sim: dict[str, np.ndarray], counts_per_rev: int,
         cr_raw = np.concatenate([cr_raw[:k], cr_raw[k + nb:], np.full(nb, cr_raw[-1])])
     if e["cr_cable_break"]:  # the cable parts: the amplifier reads a constant from then on
         cr_raw[t >= e["cr_cable_break"]] = CABLE_BREAK_G
-    # cr_cfc: the lab's processing filtered CR at another class than the CFC 180 its file states
-    cr = ph.cfc(cr_raw, round(e["cr_cfc"]) if e["cr_cfc"] else 180)
+    cr = ph.cfc(cr_raw, 180)
     if e["cr_reversed"]:  # the channel's polarity set wrong in the recorder
         cr = -cr
     cd_true = sim["cd"][i] * 1e3

@@ -116,8 +116,8 @@ EFFECTS = {
     # set M's forms (cases_m.py): two physical forms no earlier set used, two lab-side
     "rib_maxwell": "chest_rate_damping",  # viscoelastic rib material: a Maxwell branch, k x k_r
     "dring_capstan": "belt_unloading",  # D-ring friction as a capstan, exponent mu theta (-)
-    "dummy_scale": "",  # broken test: run with a larger dummy of this length scale (-)
-    "cr_cfc": "",  # transducer: CR filtered at this CFC class while its file states CFC 180
+    "dummy_scale": "",  # broken test: run with another dummy, of this length scale (-)
+    "cr_crosstalk": "",  # transducer: CR picks up CD's signal, this many g per mm of CD
 }
 POW_B_M = (0.015, 0.025)  # webbing_power: reference stretch, chest side and up to the retractor
 V_HYST = 0.02  # m/s: webbing_hysteresis switches between its paths within this rate
