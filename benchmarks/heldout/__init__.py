@@ -30,10 +30,14 @@
   ``cases_l.py``: set L, the same again, on pairings no earlier case ran, with a knee bolster
   on the pelvis path and lab-side faults of new kinds (a pulse module sampling at another rate
   than its file states; a chest pot's anti-alias filter set far too low, delaying CD).
+  ``cases_m.py``: set M, the same again, on pairings no earlier case ran, judging scope (rigs
+  held by few estimation tests or none), with viscoelastic rib material (a Maxwell branch) and
+  a capstan at the D-ring, and lab-side faults of new kinds (a test run with another dummy
+  than its file names; CR picking up CD on a multiplexed digitiser).
   ``make_sets.py``: writes a set (``--no-effects``: the same tests with every effect off).
   ``costs.py``: what each case costs the thesis grey-box (project CLI).
 
-    python -m benchmarks.heldout.make_sets --out /tmp/heldout [--set a|b|c|d|e|f|g|h|i|j|k|l]
+    python -m benchmarks.heldout.make_sets --out /tmp/heldout [--set a|b|c|d|e|f|g|h|i|j|k|l|m]
         [--case NAME ...]
 
 Never tune the loop on these cases; report them apart from the tuned ones.

@@ -34,7 +34,7 @@ EXACT = {"pulse_late", "brs_late", "brs_freeze", "cd_dropout", "pulse_rail", "pu
          "cr_hum", "cd_compress", "cd_rail", "pulse_sync", "cd_dead_band", "cd_stuck_bit",
          "brs_quadrature", "cr_ac_coupled", "brs_poll", "cr_lost_block", "cd_backlash",
          "cr_loose_mount", "brs_swap", "cd_arm_lift", "pulse_from", "cr_zero_shift",
-         "pulse_rate", "cd_aa_filter"}
+         "pulse_rate", "cd_aa_filter", "dummy_scale", "cr_crosstalk"}
 DROPOUT_S = 0.010  # how long cd_dropout's wiper stays off the track
 KNEE_SLOPE = 0.6  # cd_knee: the gain of the CD calibration's second segment
 SHIFT_AT_S = 0.011  # pulse_zero_shift: when the zero shifts (in the crash-box spike)
@@ -57,6 +57,12 @@ LOOSE_ZETA = 0.05
 # sensing element's bond yields a little under the loading's first hard rise), and how long
 # the shift takes to settle (s)
 CR_SHIFT_G, CR_SHIFT_RISE_S = 20.0, 0.004
+# dummy_scale: the dummy's own parameters, scaled by geometric similitude for a dummy of length
+# scale s (same materials): masses by s^3, stiffnesses by s, dampings by s^2 (so times by s);
+# the belt, retractor and airbag are the rig's and stay
+DUMMY_MASS = ("m_sp", "m_a", "m_b", "m_p")
+DUMMY_STIFF = ("k_ra", "k_rb", "k_ab", "k_l")
+DUMMY_DAMP = ("c_ra", "c_rb", "c_ab", "c_l")
 NOISE = {"pulse_g": 0.6, "cr_g": 0.55, "cd_mm": 0.10}  # white, before the CFC filters
 
 
@@ -115,6 +121,14 @@ def aa_filter(x: np.ndarray, f_hz: float) -> np.ndarray:
     return np.asarray(signal.lfilter(bb, aa, x))
 
 
+def scale_dummy(params: dict[str, float], s: float) -> dict[str, float]:
+    """``params`` of a dummy ``s`` times the size (length scale, same materials: geometric
+    similitude): masses x s^3, stiffnesses x s, dampings x s^2, the rest as it was."""
+    power = {**dict.fromkeys(DUMMY_MASS, 3), **dict.fromkeys(DUMMY_STIFF, 1),
+             **dict.fromkeys(DUMMY_DAMP, 2)}
+    return {k: v * s ** power.get(k, 0) for k, v in params.items()}
+
+
 def draw(case: Case, effects_on: bool = True) -> tuple[list[Drawn], np.ndarray]:
     """Every test of ``case`` and its crash pulses (deceleration, m/s^2, stage grid).
     ``effects_on=False``: the same tests (same dummies, pulses, noise) with every effect off,
@@ -135,6 +149,8 @@ def draw(case: Case, effects_on: bool = True) -> tuple[list[Drawn], np.ndarray]:
                 z = float(np.clip(rng.normal(), -2, 2))  # drawn always: the twin keeps its dummy
                 if effects_on and setup in e.setups and (not e.tests or name in e.tests):
                     effects[e.key] = e.size * (1.0 + (0.0 if e.key in EXACT else 0.04 * z))
+            if effects["dummy_scale"]:  # another dummy in the seat than the file names
+                params = scale_dummy(params, effects["dummy_scale"])
             dv = float(rng.uniform(*DV_MS[setup]))
             pulses.append(ph.pulse_shape(setup, rng, t, dv))
             out.append(Drawn(case.name, part, name, setup, dv, params, effects,
@@ -223,6 +239,10 @@ def record(d: Drawn, i: int, sim: dict[str, np.ndarray], counts_per_rev: int,
         if cr_read[k] >= CR_SHIFT_G:  # by the size (g) over CR_SHIFT_RISE_S and stays there
             ramp = np.clip((t - t[k]) / CR_SHIFT_RISE_S, 0.0, 1.0)
             cr_read = cr_read + e["cr_zero_shift"] * ramp
+    if e["cr_crosstalk"]:  # the recorder's multiplexed digitiser samples CR right after CD and
+        # its sample-and-hold has too little time to settle: CR keeps a share of CD's voltage,
+        # read in CR's units (g per mm of CD); CD itself reads right
+        cr_read = cr_read + e["cr_crosstalk"] * sim["cd"][i] * 1e3
     cr_raw = cr_read + NOISE["cr_g"] * rng.standard_normal(t.size)
     if e["cr_hum"]:  # a ground loop: mains hum on the bridge, from before the crash on
         cr_raw = cr_raw + e["cr_hum"] * np.sin(2 * np.pi * HUM_HZ * t + 2 * np.pi * d.brs_phase)

@@ -113,6 +113,11 @@ EFFECTS = {
     "pelvis_knee": "pelvis_coupling",  # pelvis path (lumbar_path's, this scale) + knee bolster
     "pulse_rate": "",  # broken test: pulse module sampled at this x the stated rate (ratio)
     "cd_aa_filter": "",  # transducer: CD through a causal 4-pole anti-alias filter at this (Hz)
+    # set M's forms (cases_m.py): two physical forms no earlier set used, two lab-side
+    "rib_maxwell": "chest_rate_damping",  # viscoelastic rib material: a Maxwell branch, k x k_r
+    "dring_capstan": "belt_unloading",  # D-ring friction as a capstan, exponent mu theta (-)
+    "dummy_scale": "",  # broken test: run with another dummy, of this length scale (-)
+    "cr_crosstalk": "",  # transducer: CR picks up CD's signal, this many g per mm of CD
 }
 POW_B_M = (0.015, 0.025)  # webbing_power: reference stretch, chest side and up to the retractor
 V_HYST = 0.02  # m/s: webbing_hysteresis switches between its paths within this rate
@@ -147,6 +152,18 @@ DUAL_DT_S, DUAL_BURN_S, DUAL_GAS = 0.030, 0.008, 0.3
 # smoothly (tanh); its unloading taken on the loading curve (the foam's crush hysteresis left
 # out). Constants, not NOMINAL keys, so earlier sets draw as before.
 BOLSTER_GAP_M, BOLSTER_K, BOLSTER_F = 0.045, 250e3, 5000.0
+
+# rib_maxwell: the rib cage's damping material as a viscoelastic solid (a standard linear solid):
+# beside each rib's spring and damper a spring of effect-size x the rib's stiffness in series
+# with a dashpot, relaxing with this time constant (s): stiff to a fast load, giving way to a
+# slow one. Its force is a state of its own (two: one per sternum mass)
+MAXWELL_TAU_S = 0.010
+# dring_capstan: the shoulder webbing wraps the D-ring (a capstan): sliding, the tension on the
+# chest side is the retractor side's times exp(+a) while the chest draws the webbing out and
+# exp(-a) while the retractor takes it back (a = mu theta, friction coefficient times wrap
+# angle), in place of the nominal small, linear D-ring friction; it sticks below this slip
+# speed (m/s), smoothly (tanh)
+CAPSTAN_V_S = 0.15
 
 # Nominal Hybrid-III-like thorax, belt and retractor (SI), before per-test scatter.
 NOMINAL = {
@@ -183,13 +200,14 @@ class Batch:
     vv: np.ndarray  # vehicle velocity change, m/s
 
 
-N_STATE = 17  # x vx sa va sb vb u vu th om L p vp q, chest-side peak stretch, head, its speed
+N_STATE = 19  # x vx sa va sb vb u vu th om L p vp q, chest-side peak stretch, head, its speed,
+# the two Maxwell branches' forces (N)
 
 
 def _deriv(b: Batch, j: np.ndarray | int, y: np.ndarray) -> np.ndarray:
     p, e = b.p, b.eff
     t = _stage_time(j)
-    x, vx, sa, va, sb, vb, u, vu, th, om, lk, pp, vp, q, pk, hh, vh = y
+    x, vx, sa, va, sb, vb, u, vu, th, om, lk, pp, vp, q, pk, hh, vh, ma, mb = y
     if np.ndim(j) == 0:
         xv, vv = b.xv[:, [int(j)]], b.vv[:, [int(j)]]  # (n, 1)
     else:
@@ -244,6 +262,14 @@ def _deriv(b: Batch, j: np.ndarray | int, y: np.ndarray) -> np.ndarray:
         zb = np.clip(db / FUNG_D0_M, 0.0, FUNG_ZMAX)  # in compression only, from zero
         fa = fa + af * p["k_ra"] * FUNG_D0_M * (np.expm1(za) - za)
         fb = fb + af * p["k_rb"] * FUNG_D0_M * (np.expm1(zb) - zb)
+    kmx = e["rib_maxwell"]  # the branch's spring, as a share of the rib's own stiffness
+    dma = np.zeros_like(x)
+    dmb = np.zeros_like(x)
+    if np.any(kmx):  # each branch's force F: F' = k_m d' - F / tau, added to its rib's force
+        fa = fa + ma
+        fb = fb + mb
+        dma = kmx * p["k_ra"] * dva - ma / MAXWELL_TAU_S
+        dmb = kmx * p["k_rb"] * dvb - mb / MAXWELL_TAU_S
     fab = p["k_ab"] * (sa - sb) + p["c_ab"] * (va - vb)
 
     # belt, chest side: pushes the contact point of the sternum rearward
@@ -296,6 +322,11 @@ def _deriv(b: Batch, j: np.ndarray | int, y: np.ndarray) -> np.ndarray:
         tr = np.where(slack, np.maximum(tr, 0.0), tr)
     # D-ring friction opposes the webbing sliding relative to the car, grows with tension
     fr = p["mu_d"] * np.abs(tr) * np.tanh((vu - vv) / p["v_slip"])
+    cap = e["dring_capstan"]  # mu theta of the webbing on its D-ring
+    if np.any(cap):  # capstan: chest side = retractor side x exp(a) drawn out, exp(-a) back
+        gain = np.where(vu - vv > 0, -np.expm1(-cap), np.expm1(cap))
+        fr_cap = np.abs(tr) * gain * np.tanh((vu - vv) / CAPSTAN_V_S)
+        fr = np.where(cap > 0, fr_cap, fr)
 
     # retractor: pretensioner pulse, ratchet + torsion bar once locked
     tpt = (t - p["t_pt"]) / p["d_pt"]
@@ -388,7 +419,7 @@ def _deriv(b: Batch, j: np.ndarray | int, y: np.ndarray) -> np.ndarray:
     dvu = (tr - fc - fr) / p["m_u"]
     dom = (tau_pt - r * np.maximum(tr, 0.0) + tau_tb - p["c_spool"] * om) / p["J"]
     return np.stack([vx, dvx, va, dva, vb, dvb, vu, dvu, om, dom, dlk, vp, dvp, dq,
-                     np.zeros_like(x), vh, dvh])
+                     np.zeros_like(x), vh, dvh, dma, dmb])
 
 
 def simulate(b: Batch) -> dict[str, np.ndarray]:
