@@ -50,6 +50,20 @@ def test_a_gain_that_lowers_one_setup_is_refused():
     assert not ev.accepted and "setup C" in ev.reason
 
 
+def test_only_the_tests_of_judged_setups_are_judged():
+    # C held by one estimation test (T5 only, not judged): its loss does not lower "a setup",
+    # and its swing does not widen the interval (set M: one test of a rig not judged blocked
+    # a rib stiffening that gained on 5 of 5 others)
+    gains = [3.0, 3.2, 2.9, 3.1, -9.0]
+    tests = {n: s for n, s in list(SETUPS.items())[:5]}
+    before = dict.fromkeys(tests, 90.0)
+    after = {n: 90.0 + g for n, g in zip(tests, gains, strict=True)}
+    assert not judge(before, after, tests, None, 1.0).accepted
+    judged = {n: s for n, s in tests.items() if s != "C"}
+    ev = judge(before, after, judged, None, 1.0)
+    assert ev.accepted and ev.tests == 4 and set(ev.setup_gain_points) == {"A", "B"}
+
+
 def test_a_small_gain_is_refused():
     ev = judge(*_cv([0.5, 0.6, 0.4, 0.5, 0.6, 0.5]), SETUPS, None, 1.0)
     assert not ev.accepted and "< 1" in ev.reason

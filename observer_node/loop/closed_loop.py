@@ -209,7 +209,10 @@ def _run(est_tests: list[CrashTest], val_tests: list[CrashTest], out: Path, rate
     scopes = {k: scope_options(k, setups, est_setups, anywhere, rigs_judged) for k in EFFECTS}
     if not_judged:
         prog.update("not judged: " + "; ".join(f"{n.setup} ({n.why})" for n in not_judged))
-    test_setup = dict(zip(est.names, est.setups, strict=True))
+    # The rule reads the judged setups' tests only: one test of a setup cannot say whether an
+    # effect helps there, nor may its scatter block one (no setup judged: every test).
+    test_setup = ({n: s for n, s in zip(est.names, est.setups, strict=True) if s not in thin}
+                  or dict(zip(est.names, est.setups, strict=True)))
     base = dict(gb.params)
     base_se: dict[str, float] = dict(gb.std_err)
     effects: list[dict] = []
@@ -296,11 +299,13 @@ def _run(est_tests: list[CrashTest], val_tests: list[CrashTest], out: Path, rate
                              "lowered): " + "; ".join(f"{c.kind} on {scope_label(c.setups)}: "
                                                        f"{ev.reason}" for _, c, ev in tried[:4]))
             break
-        (cv_best, best, ev_best), narrower = defended_scope(passing, per_test, thin,
+        on_judged = {k: {n: v for n, v in cv.items() if n in test_setup}
+                     for k, cv in per_test.items()}  # scopes and rivals compared on these
+        (cv_best, best, ev_best), narrower = defended_scope(passing, on_judged, thin,
                                                             est_setups)
         cv_tests_best = per_test[id(best)]
         runner_up, margin_points, other_scope = runner_up_of(
-            [(cv_best, best, ev_best), *(t for t in tried if t[1] is not best)], per_test)
+            [(cv_best, best, ev_best), *(t for t in tried if t[1] is not best)], on_judged)
         tie = untold(best.kind, runner_up, len(ev_best.test_gain_points))
         tie_note: str | None = None
         if tie and runner_up is not None:
@@ -326,11 +331,11 @@ def _run(est_tests: list[CrashTest], val_tests: list[CrashTest], out: Path, rate
             if past.named == "b":  # the runner-up explains the winner's gain, not the reverse
                 (cv_best, best, ev_best), narrower = defended_scope(
                     [rival, *(t for t in passing if t[1].kind == rival[1].kind
-                              and t[1] is not rival[1])], per_test, thin, est_setups)
+                              and t[1] is not rival[1])], on_judged, thin, est_setups)
                 cv_tests_best = per_test[id(best)]
                 runner_up, margin_points, other_scope = runner_up_of(
                     [(cv_best, best, ev_best), *(t for t in tried if t[1] is not best)],
-                    per_test)
+                    on_judged)
             elif past.named == "both":  # the other is tried again in the next round
                 carry.append(rival[1])
         prog.update(f"refitting with {best.kind} on all estimation tests")

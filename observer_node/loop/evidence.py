@@ -102,8 +102,8 @@ def judge(before: dict[str, float], after: dict[str, float], setups: dict[str, s
           scope: list[str] | None, margin: float) -> Evidence:
     """Judge a candidate from the per-test cross-validated fit_TOT [%] without it (``before``)
     and with it (``after``); ``setups`` maps each test to its setup, ``scope`` is the setups
-    the effect acts on (None: every test)."""
-    names = [n for n in before if n in after]
+    the effect acts on (None: every test). Only the tests in ``setups`` are judged."""
+    names = [n for n in before if n in after and n in setups]
     gain = {n: after[n] - before[n] for n in names}
     inside = [gain[n] for n in names if scope is None or setups[n] in scope] or [0.0]
     above, mean, half, improved, sign_p = above_scatter(
