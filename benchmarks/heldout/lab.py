@@ -67,13 +67,14 @@ DUMMY_DAMP = ("c_ra", "c_rb", "c_ab", "c_l")
 # ribs' damping material is a viscoelastic polymer, so a thorax run colder answers stiffer and
 # far more damped. Per kelvin below the band: the ribs' dampings x exp(SOAK_DAMP_PER_K), their
 # stiffnesses x exp(SOAK_STIFF_PER_K) (the steel of the ribs is unchanged, the bonded damping
-# layer carries part of the stiffness); masses, spine, pelvis, belt and bag as they were
+# layer carries part of the stiffness); a thorax run warmer (negative kelvin) the other way,
+# softer and far less damped; masses, spine, pelvis, belt and bag as they were
 SOAK_DAMP_PER_K, SOAK_STIFF_PER_K = 0.05, 0.015
 SOAK_DAMP, SOAK_STIFF = ("c_ra", "c_rb", "c_ab"), ("k_ra", "k_rb", "k_ab")
 # cd_sag: the chest pot's excitation is not read back by its conditioner (not ratiometric);
 # when the on-board recorder starts writing at the trigger its battery sags, and the pot's
 # excitation with it, settling with this time constant (s): CD reads d (1 - s (1 - e^(-t/tau)))
-CD_SAG_TAU_S = 0.020
+CD_SAG_TAU_S = 0.060
 NOISE = {"pulse_g": 0.6, "cr_g": 0.55, "cd_mm": 0.10}  # white, before the CFC filters
 
 
@@ -141,8 +142,9 @@ def scale_dummy(params: dict[str, float], s: float) -> dict[str, float]:
 
 
 def soak_dummy(params: dict[str, float], kelvin: float) -> dict[str, float]:
-    """``params`` of a dummy whose thorax was run ``kelvin`` K below its certification band:
-    the ribs' dampings x exp(SOAK_DAMP_PER_K K), stiffnesses x exp(SOAK_STIFF_PER_K K)."""
+    """``params`` of a dummy whose thorax was run ``kelvin`` K below its certification band
+    (negative: above it): the ribs' dampings x exp(SOAK_DAMP_PER_K K), stiffnesses x
+    exp(SOAK_STIFF_PER_K K)."""
     gain = {**dict.fromkeys(SOAK_DAMP, np.exp(SOAK_DAMP_PER_K * kelvin)),
             **dict.fromkeys(SOAK_STIFF, np.exp(SOAK_STIFF_PER_K * kelvin))}
     return {k: v * float(gain.get(k, 1.0)) for k, v in params.items()}
@@ -170,7 +172,7 @@ def draw(case: Case, effects_on: bool = True) -> tuple[list[Drawn], np.ndarray]:
                     effects[e.key] = e.size * (1.0 + (0.0 if e.key in EXACT else 0.04 * z))
             if effects["dummy_scale"]:  # another dummy in the seat than the file names
                 params = scale_dummy(params, effects["dummy_scale"])
-            if effects["dummy_soak"]:  # the dummy run cold, its file silent about it
+            if effects["dummy_soak"]:  # the dummy run off its temperature band, unsaid
                 params = soak_dummy(params, effects["dummy_soak"])
             dv = float(rng.uniform(*DV_MS[setup]))
             pulses.append(ph.pulse_shape(setup, rng, t, dv))
