@@ -1054,6 +1054,9 @@ LATER_SETS = {
           {"a": ["h_airbag"], "b": ["hb_webbing_hysteresis"], "h": ["hh_rib_squeeze"],
            "j": ["hj_rib_fung"], "k": ["hk_airbag_dual"],
            "l": ["hl_knee_bolster", "hl_cd_aa_filter", "hl_broken_pulse_rate"]}),
+    "n": ("set_n", ("hn_two_effects_full_once", "hn_broken_warm_dummy"),
+          {"a": ["h_cd_transducer"], "b": ["hb_airbag_relief"], "l": ["hl_cd_aa_filter"],
+           "m": ["hm_broken_dummy", "hm_cr_crosstalk", "hm_rib_maxwell"]}),
 }
 later_set = pytest.mark.parametrize("case_set", sorted(LATER_SETS))
 # a CR recorded at the wrong polarity peaks below zero: left out of the check that CR peaks
@@ -1199,17 +1202,18 @@ def set_j(tmp_path_factory: pytest.TempPathFactory) -> Path:
     return _generate(tmp_path_factory, "j", WATCHED_J)
 
 
-def _is_new(new: list[cases.Case], before: list[cases.Case], seed0: int, lab_side: int) -> None:
+def _is_new(new: list[cases.Case], before: list[cases.Case], seed0: int, lab_side: int,
+            size: int = 14) -> None:
     """A set's names, seeds (seed0..seed0+999), (estimation, validation) pairings, effect
     sizes and lab-side kinds are none of the earlier sets'."""
-    assert len(new) == 14
+    assert len(new) == size
     names = [c.name for c in before + new]
     assert len(set(names)) == len(names)
     seeds = [c.seed for c in new]
-    assert len(set(seeds)) == 14 and all(seed0 <= s < seed0 + 1000 for s in seeds)
+    assert len(set(seeds)) == size and all(seed0 <= s < seed0 + 1000 for s in seeds)
     assert not {c.seed for c in before} & set(seeds)
     pairings = [_pairing(c) for c in new]
-    assert len(set(pairings)) == 14 and not set(pairings) & {_pairing(c) for c in before}
+    assert len(set(pairings)) == size and not set(pairings) & {_pairing(c) for c in before}
     assert not _pairs(new) & _pairs(before)
     for c in new:
         est, _ = cases.test_names(c)
@@ -1592,3 +1596,138 @@ def test_set_m_new_physical_forms_move_the_chest(set_m: Path, case: str) -> None
             assert min(moved) > 0.3, (name, moved)
         else:
             assert _files(folder) == _files(off / folder.parent.name / name)
+
+
+# ------------------------------------------------------------------ set N (cases_n.py)
+
+SET_N = heldout_sets.case_set("n")
+WATCHED_N = ("hn_broken_warm_dummy", "hn_cd_sag")
+
+
+@pytest.fixture(scope="module")
+def set_n(tmp_path_factory: pytest.TempPathFactory) -> Path:
+    return _generate(tmp_path_factory, "n", WATCHED_N)
+
+
+def test_set_n_is_new() -> None:
+    _is_new(SET_N, [c for s in "abcdefghijklm" for c in heldout_sets.case_set(s)], 23000, 2,
+            size=12)
+
+
+def _thin(c: cases.Case, rigs: set[str]) -> set[str]:
+    """The rigs of ``rigs`` held by exactly one estimation test of ``c``."""
+    return {r for r in rigs if c.est.count(r) == 1}
+
+
+def test_set_n_judges_scope_on_thinly_held_rigs() -> None:
+    """Set N's mixes hold a rig by a single estimation test (or none) beside the rigs an effect
+    is (or is not) on, as its brief asks; every verdict names the rigs the effect truly is on
+    ("all" for all three), whatever the estimation tests hold."""
+    lib = physics.EFFECTS
+    every = set(cases.ALL)
+    for c in (c for c in SET_N if c.expect):
+        for (kind, scope), e in zip(c.expect, c.effects, strict=True):
+            assert lib[e.key] == kind and not e.tests
+            assert scope == ("all" if set(e.setups) == every else "+".join(e.setups))
+    # 1. one clean case (48 or 96 counts), a rig held by a single estimation test
+    (clean,) = [c for c in SET_N if not c.effects]
+    assert clean.counts_per_rev in (48, 96) and _thin(clean, every)
+    assert not clean.expect and not clean.expect_broken and not clean.expect_note
+    physical = [c for c in SET_N if c.expect and c.expect[0][0] != "input_delay"]
+    singles = [c for c in physical if len(c.effects) == 1]
+    # 2. an effect on one or two rigs, a clean rig held by exactly one estimation test: three
+    # cases of three kinds (one a bag on the rigs with an interior)
+    beside_one = [c for c in singles if 1 <= len(_scope(c)) <= 2 and _thin(c, every - _scope(c))]
+    assert len(beside_one) >= 3 and len({c.expect[0][0] for c in beside_one}) >= 3
+    for c in singles:
+        if c.expect[0][0] == "airbag_contact":
+            assert _scope(c) == {"SLED", "FULL"}
+    # 3. an effect on every rig, one rig held by exactly one estimation test: two cases of two
+    # kinds, neither the pelvis path (set M's)
+    on_all = [c for c in singles if _scope(c) == every and _thin(c, every)]
+    kinds = {c.expect[0][0] for c in on_all}
+    assert len(on_all) >= 2 and len(kinds) >= 2 and "pelvis_coupling" not in kinds
+    # 4. an effect on two rigs, the third estimated by none and validated twice or more
+    unheld = [c for c in singles if len(_scope(c)) == 2
+              for r in every - _scope(c) if c.est.count(r) == 0 and c.val.count(r) >= 2]
+    assert unheld
+    # 5. two effects of two kinds on two rigs apart, a rig thinly held
+    (two,) = [c for c in SET_N if len(c.expect) == 2]
+    a, b = two.effects
+    assert lib[a.key] != lib[b.key] and not set(a.setups) & set(b.setups)
+    assert _thin(two, every)
+    # 8. an input delay of 2-4 ms, a rig held once
+    delays = [c for c in SET_N if c.expect == (("input_delay", "all"),)]
+    assert delays and all(0.002 <= c.effects[0].size <= 0.004 for c in delays)
+    assert all(_thin(c, every) for c in delays)
+
+
+def test_set_n_lab_side_is_new_and_unnamed() -> None:
+    """6. one broken estimation test, of a form no earlier set used, the only thing expected;
+    7. one transducer error on CD, of a form no earlier set used, nothing physical named."""
+    before = [c for s in "abcdefghijklm" for c in heldout_sets.case_set(s)]
+    lib = physics.EFFECTS
+    (broken,) = [c for c in SET_N if c.expect_broken]
+    (e,) = broken.effects
+    est, _ = cases.test_names(broken)
+    assert set(broken.expect_broken) == set(e.tests) and set(e.tests) <= set(est)
+    assert lib[e.key] == "" and not broken.expect and not broken.expect_note
+    (sensor,) = [c for c in SET_N if c.expect_note]
+    assert sensor.expect_note == "unexplained (or a sensor effect) on cd"
+    assert not sensor.expect and not sensor.expect_broken
+    assert all(lib[e.key] == "" and not e.tests for e in sensor.effects)
+    assert not _keys([broken, sensor]) & _keys(before)
+
+
+@pytest.mark.parametrize(("kelvin", "damp", "stiff"), [(12.0, 1.822, 1.197),
+                                                       (-12.0, 0.549, 0.835)])
+def test_set_n_soak_damps_and_stiffens_the_ribs_only(kelvin: float, damp: float,
+                                                     stiff: float) -> None:
+    """lab.soak_dummy: the ribs' dampings x exp(0.05 K), stiffnesses x exp(0.015 K) per kelvin
+    below the band (above it: the other way); masses, pelvis, belt and bag as they were."""
+    p = dict(physics.NOMINAL)
+    q = lab.soak_dummy(p, kelvin)
+    for k in lab.SOAK_DAMP:
+        assert q[k] / p[k] == pytest.approx(np.exp(0.05 * kelvin))
+        assert q[k] / p[k] == pytest.approx(damp, abs=1e-3)
+    for k in lab.SOAK_STIFF:
+        assert q[k] / p[k] == pytest.approx(np.exp(0.015 * kelvin))
+        assert q[k] / p[k] == pytest.approx(stiff, abs=1e-3)
+    assert all(q[k] == p[k] for k in p if k not in lab.SOAK_DAMP + lab.SOAK_STIFF)
+    assert lab.soak_dummy(p, 0.0) == p
+
+
+def test_set_n_broken_warm_dummy_moves_one_test_not_its_pulse(set_n: Path) -> None:
+    """The warm test's chest answers softer and less damped (CR and CD moved, deeper, its
+    truth's rib damping scaled, its masses not); its pulse untouched; every other test
+    untouched."""
+    c = heldout_sets.select(["hn_broken_warm_dummy"], "n")[0]
+    (broken,), (e,) = c.expect_broken, c.effects
+    on, off = set_n / "on" / c.name, set_n / "off" / c.name
+    assert np.array_equal(_channel(on, broken, "pulse"), _channel(off, broken, "pulse"))
+    for which in ("cr", "cd"):
+        moved = np.abs(_channel(on, broken, which) - _channel(off, broken, which)).max()
+        assert moved > 1.0, (which, moved)
+    assert e.size < 0 and _channel(on, broken, "cd").max() > _channel(off, broken, "cd").max()
+    truth = {t["name"]: t for t in json.loads((on / "truth.json").read_text())["tests"]}
+    twin = {t["name"]: t for t in json.loads((off / "truth.json").read_text())["tests"]}
+    assert truth[broken]["params"]["c_ra"] == pytest.approx(
+        np.exp(lab.SOAK_DAMP_PER_K * e.size) * twin[broken]["params"]["c_ra"], rel=1e-5)
+    assert truth[broken]["params"]["m_sp"] == twin[broken]["params"]["m_sp"]
+    _others_untouched(set_n, c.name, broken)
+
+
+def test_set_n_cd_sag_lowers_cd_with_time_only(set_n: Path) -> None:
+    """CD reads its own signal x (1 - s (1 - e^(-t/tau))) from the trigger on (within the CFC
+    600 filter and the noise), nothing before it; CR, pulse and BRS untouched."""
+    c = heldout_sets.select(["hn_cd_sag"], "n")[0]
+    (e,) = c.effects
+    seen = 0
+    for cd, cd0 in _cd_only(set_n / "on" / c.name, set_n / "off" / c.name):
+        t = _times(len(cd))
+        gain = 1.0 - e.size * (1.0 - np.exp(-np.maximum(t, 0.0) / lab.CD_SAG_TAU_S))
+        assert np.abs(cd - gain * cd0).max() < 0.2
+        assert np.abs(cd - cd0)[t < -0.002].max() < 0.05
+        assert (cd0 - cd).max() > 2.0
+        seen += 1
+    assert seen == 12

@@ -34,10 +34,14 @@
   held by few estimation tests or none), with viscoelastic rib material (a Maxwell branch) and
   a capstan at the D-ring, and lab-side faults of new kinds (a test run with another dummy
   than its file names; CR picking up CD on a multiplexed digitiser).
+  ``cases_n.py``: set N, the same again, on pairings no earlier case ran, judging scope again
+  (a rig held by a single estimation test or none beside the rigs an effect is on), with
+  lab-side faults of new kinds (an estimation test run with a cold-soaked dummy; a chest pot
+  whose excitation sags after the trigger).
   ``make_sets.py``: writes a set (``--no-effects``: the same tests with every effect off).
   ``costs.py``: what each case costs the thesis grey-box (project CLI).
 
-    python -m benchmarks.heldout.make_sets --out /tmp/heldout [--set a|b|c|d|e|f|g|h|i|j|k|l|m]
+    python -m benchmarks.heldout.make_sets --out /tmp/heldout [--set a|b|c|d|e|f|g|h|i|j|k|l|m|n]
         [--case NAME ...]
 
 Never tune the loop on these cases; report them apart from the tuned ones.

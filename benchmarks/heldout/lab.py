@@ -34,7 +34,7 @@ EXACT = {"pulse_late", "brs_late", "brs_freeze", "cd_dropout", "pulse_rail", "pu
          "cr_hum", "cd_compress", "cd_rail", "pulse_sync", "cd_dead_band", "cd_stuck_bit",
          "brs_quadrature", "cr_ac_coupled", "brs_poll", "cr_lost_block", "cd_backlash",
          "cr_loose_mount", "brs_swap", "cd_arm_lift", "pulse_from", "cr_zero_shift",
-         "pulse_rate", "cd_aa_filter", "dummy_scale", "cr_crosstalk"}
+         "pulse_rate", "cd_aa_filter", "dummy_scale", "cr_crosstalk", "dummy_soak", "cd_sag"}
 DROPOUT_S = 0.010  # how long cd_dropout's wiper stays off the track
 KNEE_SLOPE = 0.6  # cd_knee: the gain of the CD calibration's second segment
 SHIFT_AT_S = 0.011  # pulse_zero_shift: when the zero shifts (in the crash-box spike)
@@ -63,6 +63,18 @@ CR_SHIFT_G, CR_SHIFT_RISE_S = 20.0, 0.004
 DUMMY_MASS = ("m_sp", "m_a", "m_b", "m_p")
 DUMMY_STIFF = ("k_ra", "k_rb", "k_ab", "k_l")
 DUMMY_DAMP = ("c_ra", "c_rb", "c_ab", "c_l")
+# dummy_soak: a Hybrid III's thorax is certified (and must be run) soaked at 20.6-22.2 C; its
+# ribs' damping material is a viscoelastic polymer, so a thorax run colder answers stiffer and
+# far more damped. Per kelvin below the band: the ribs' dampings x exp(SOAK_DAMP_PER_K), their
+# stiffnesses x exp(SOAK_STIFF_PER_K) (the steel of the ribs is unchanged, the bonded damping
+# layer carries part of the stiffness); a thorax run warmer (negative kelvin) the other way,
+# softer and far less damped; masses, spine, pelvis, belt and bag as they were
+SOAK_DAMP_PER_K, SOAK_STIFF_PER_K = 0.05, 0.015
+SOAK_DAMP, SOAK_STIFF = ("c_ra", "c_rb", "c_ab"), ("k_ra", "k_rb", "k_ab")
+# cd_sag: the chest pot's excitation is not read back by its conditioner (not ratiometric);
+# when the on-board recorder starts writing at the trigger its battery sags, and the pot's
+# excitation with it, settling with this time constant (s): CD reads d (1 - s (1 - e^(-t/tau)))
+CD_SAG_TAU_S = 0.060
 NOISE = {"pulse_g": 0.6, "cr_g": 0.55, "cd_mm": 0.10}  # white, before the CFC filters
 
 
@@ -129,6 +141,15 @@ def scale_dummy(params: dict[str, float], s: float) -> dict[str, float]:
     return {k: v * s ** power.get(k, 0) for k, v in params.items()}
 
 
+def soak_dummy(params: dict[str, float], kelvin: float) -> dict[str, float]:
+    """``params`` of a dummy whose thorax was run ``kelvin`` K below its certification band
+    (negative: above it): the ribs' dampings x exp(SOAK_DAMP_PER_K K), stiffnesses x
+    exp(SOAK_STIFF_PER_K K)."""
+    gain = {**dict.fromkeys(SOAK_DAMP, np.exp(SOAK_DAMP_PER_K * kelvin)),
+            **dict.fromkeys(SOAK_STIFF, np.exp(SOAK_STIFF_PER_K * kelvin))}
+    return {k: v * float(gain.get(k, 1.0)) for k, v in params.items()}
+
+
 def draw(case: Case, effects_on: bool = True) -> tuple[list[Drawn], np.ndarray]:
     """Every test of ``case`` and its crash pulses (deceleration, m/s^2, stage grid).
     ``effects_on=False``: the same tests (same dummies, pulses, noise) with every effect off,
@@ -151,6 +172,8 @@ def draw(case: Case, effects_on: bool = True) -> tuple[list[Drawn], np.ndarray]:
                     effects[e.key] = e.size * (1.0 + (0.0 if e.key in EXACT else 0.04 * z))
             if effects["dummy_scale"]:  # another dummy in the seat than the file names
                 params = scale_dummy(params, effects["dummy_scale"])
+            if effects["dummy_soak"]:  # the dummy run off its temperature band, unsaid
+                params = soak_dummy(params, effects["dummy_soak"])
             dv = float(rng.uniform(*DV_MS[setup]))
             pulses.append(ph.pulse_shape(setup, rng, t, dv))
             out.append(Drawn(case.name, part, name, setup, dv, params, effects,
@@ -268,6 +291,8 @@ def record(d: Drawn, i: int, sim: dict[str, np.ndarray], counts_per_rev: int,
         cd = backlash(cd, e["cd_backlash"])  # sternum has taken up the play (a play operator)
     if e["cd_arm_lift"]:  # the pot arm's return spring gone weak: pushed in by the sternum,
         cd = arm_lift(cd, e["cd_arm_lift"] * 1e3 / ph.FS_HZ)  # it lifts off as the chest opens
+    if e["cd_sag"]:  # the pot's excitation sags from the trigger on, its gain with it
+        cd = cd * (1.0 - e["cd_sag"] * (1.0 - np.exp(-np.maximum(t, 0.0) / CD_SAG_TAU_S)))
     if e["cd_aa_filter"]:  # the CD module's analog anti-alias filter set for a slow channel:
         cd = aa_filter(cd, e["cd_aa_filter"])  # a causal low-pass ahead of the digitiser
     cd = cd + NOISE["cd_mm"] * rng.standard_normal(t.size)

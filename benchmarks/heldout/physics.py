@@ -118,6 +118,9 @@ EFFECTS = {
     "dring_capstan": "belt_unloading",  # D-ring friction as a capstan, exponent mu theta (-)
     "dummy_scale": "",  # broken test: run with another dummy, of this length scale (-)
     "cr_crosstalk": "",  # transducer: CR picks up CD's signal, this many g per mm of CD
+    # set N's forms (cases_n.py): two lab-side
+    "dummy_soak": "",  # broken test: thorax soaked this many K below its band (K; < 0: above)
+    "cd_sag": "",  # transducer: the CD pot's excitation sags after trigger, gain lost (relative)
 }
 POW_B_M = (0.015, 0.025)  # webbing_power: reference stretch, chest side and up to the retractor
 V_HYST = 0.02  # m/s: webbing_hysteresis switches between its paths within this rate
