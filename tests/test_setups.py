@@ -37,6 +37,12 @@ def test_campaign_a_setups_come_from_its_metadata():
     # unless the user says otherwise
     assert None in scope_options("airbag_contact", setups, ["R16", "SLED", "FULL"],
                                  anywhere=True)
+    # R16 (a hard seat) with validation tests only: an airbag on both estimation setups is
+    # named on them, not on every test, which would put it on R16's
+    assert scope_options("airbag_contact", setups, ["SLED", "FULL"]) == [
+        ["SLED"], ["FULL"], ["SLED", "FULL"]]
+    assert scope_options("belt_unloading", setups, ["SLED", "FULL"]) == [
+        None, ["SLED"], ["FULL"]]
     # no scope rests on rigs too thinly estimated to judge (FULL) alone
     assert scope_options("belt_unloading", setups, ["R16", "SLED", "FULL"],
                          judged=["R16", "SLED"]) == [

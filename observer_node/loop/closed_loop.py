@@ -129,15 +129,17 @@ def scope_options(kind: str, setups: list[Setup], est_setups: list[str],
     """The scopes effect ``kind`` is tried on: every test (None) when every setup could have
     it, and the groups of setups that could (all of them for up to four setups, else each
     alone) and hold a ``judged`` one (default: all do); never a setup where it is physically
-    impossible."""
+    impossible, those with validation tests only included (set N: an airbag named on every
+    estimation setup acted on the hard-seat R16's validation tests)."""
     possible = set(allowed_setups(kind, setups, anywhere))
     allowed = [s for s in est_setups if s in possible]
-    out: list[list[str] | None] = [None] if allowed == est_setups else []
+    everywhere = allowed == est_setups and all(s.name in possible for s in setups)
+    out: list[list[str] | None] = [None] if everywhere else []
     if len(est_setups) > 1:
         subsets = ([list(c) for n in range(1, len(allowed) + 1)
                     for c in itertools.combinations(allowed, n)] if len(allowed) <= 4
                    else [[s] for s in allowed] + [allowed])
-        out += [c for c in subsets if c != est_setups
+        out += [c for c in subsets if (c != est_setups or not everywhere)
                 and (judged is None or any(s in judged for s in c))]
     elif allowed and not out:
         out = [allowed]
