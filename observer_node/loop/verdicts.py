@@ -6,6 +6,8 @@ effect's parameters carry. Plain functions over the rule's evidence: the loop
 
 from __future__ import annotations
 
+from collections.abc import Set as AbstractSet
+
 import numpy as np
 
 from ..model.effects import EFFECTS
@@ -15,8 +17,8 @@ from .report import OtherScope, RunnerUp
 
 
 def defended_scope(passing: list[tuple[float, Candidate, Evidence]],
-                   per_test: dict[int, dict[str, float]], thin: set[str] | frozenset[str]
-                   = frozenset(), est_setups: list[str] | None = None
+                   per_test: dict[int, dict[str, float]], thin: AbstractSet[str] = frozenset(),
+                   est_setups: list[str] | None = None
                    ) -> tuple[tuple[float, Candidate, Evidence], str]:
     """The best passing candidate, or the same effect on a wider scope that passes too when
     the narrower one does not beat it test by test above the scatter: "on these setups only"
@@ -34,7 +36,8 @@ def defended_scope(passing: list[tuple[float, Candidate, Evidence]],
         wider = best.setups is not None and (c.setups is None or set(best.setups) < set(c.setups))
         if not wider or c.kind != best.kind:
             continue
-        extra = set(est_setups or [] if c.setups is None else c.setups) - set(best.setups or [])
+        wide = (est_setups or []) if c.setups is None else c.setups
+        extra = set(wide) - set(best.setups or [])
         if extra and extra <= thin:
             continue
         if not beats(per_test[id(best)], per_test[id(c)])[0]:
