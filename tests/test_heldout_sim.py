@@ -14,6 +14,7 @@ import pytest
 from benchmarks.heldout import cases, lab, make_sets, physics
 from benchmarks.heldout import sets as heldout_sets
 from benchmarks.heldout.cases import BY_NAME
+from benchmarks.heldout.cases_p import BY_NAME_P
 from observer_node.data import load_tests
 from observer_node.data.isomme import read_isomme
 from observer_node.data.setups import assign_setups
@@ -1057,6 +1058,9 @@ LATER_SETS = {
     "n": ("set_n", ("hn_two_effects_full_once", "hn_broken_warm_dummy"),
           {"a": ["h_cd_transducer"], "b": ["hb_airbag_relief"], "l": ["hl_cd_aa_filter"],
            "m": ["hm_broken_dummy", "hm_cr_crosstalk", "hm_rib_maxwell"]}),
+    "p": ("set_p", ("hp_capstan_full", "hp_clean48"),
+          {"c": ["hc_webbing_set"], "m": ["hm_dring_capstan"],
+           "n": ["hn_webbing_hysteresis_r16_once", "hn_cd_sag"]}),
 }
 later_set = pytest.mark.parametrize("case_set", sorted(LATER_SETS))
 # a CR recorded at the wrong polarity peaks below zero: left out of the check that CR peaks
@@ -1731,3 +1735,129 @@ def test_set_n_cd_sag_lowers_cd_with_time_only(set_n: Path) -> None:
         assert (cd0 - cd).max() > 2.0
         seen += 1
     assert seen == 12
+
+
+# ------------------------------------------------------------------ set P (cases_p.py)
+
+SET_P = heldout_sets.case_set("p")
+# the belt-unloading forms on one or two rigs: moved there, nowhere else
+WATCHED_P = ("hp_hysteresis_labs", "hp_capstan_full", "hp_webbing_set_full")
+UNLOADING = {k for k, v in physics.EFFECTS.items() if v == "belt_unloading"}
+
+
+@pytest.fixture(scope="module")
+def set_p(tmp_path_factory: pytest.TempPathFactory) -> Path:
+    return _generate(tmp_path_factory, "p", WATCHED_P)
+
+
+def test_set_p_is_new() -> None:
+    _is_new(SET_P, [c for s in "abcdefghijklmn" for c in heldout_sets.case_set(s)], 25000, 0,
+            size=8)
+
+
+def test_set_p_judges_the_belts_unloading_path() -> None:
+    """Set P as its brief asks: four belt-unloading cases of at least two physical kinds (one on
+    every rig, one on one or two rigs), two clean cases (48 counts; 96 or 128), two cases of
+    another effect each where no belt unloading is expected; 6 + 6 tests, every rig that
+    holds estimation tests holding two or more; every verdict names the rigs the effect is on."""
+    lib = physics.EFFECTS
+    every = set(cases.ALL)
+    for c in SET_P:
+        assert len(c.est) == len(c.val) == 6
+        assert all(c.est.count(r) >= 2 for r in set(c.est))
+        assert not c.expect_broken and not c.expect_note
+        for (kind, scope), e in zip(c.expect, c.effects, strict=True):
+            assert lib[e.key] == kind and not e.tests and set(e.setups) & set(c.est)
+            assert scope == ("all" if set(e.setups) == every else "+".join(e.setups))
+    unloading = [c for c in SET_P if [k for k, _ in c.expect] == ["belt_unloading"]]
+    assert len(unloading) == 4 and all(len(c.effects) == 1 for c in unloading)
+    assert len({c.effects[0].key for c in unloading}) >= 2
+    assert any(_scope(c) == every for c in unloading)
+    assert any(1 <= len(_scope(c)) <= 2 for c in unloading)
+    clean = sorted(c.counts_per_rev for c in SET_P if not c.effects and not c.expect)
+    assert len(clean) == 2 and clean[0] == 48 and clean[1] in (96, 128)
+    others = [c for c in SET_P if c.effects and c not in unloading]
+    assert len(others) == 2 and len({c.expect for c in others}) == 2
+    for c in others:
+        assert len(c.effects) == 1 and c.effects[0].key not in UNLOADING
+        assert all(kind != "belt_unloading" for kind, _ in c.expect)
+
+
+def _chest_belt(key: str, size: float, ext: float, rate: float, peak: float = 0.0) -> float:
+    """The chest-side belt force (N) of one nominal test, the webbing ``ext`` (m) past the
+    sternum, lengthening at ``rate`` (m/s; < 0: shortening, the chest unloading), its peak
+    stretch so far ``peak``: read off the upper sternum's acceleration (the rest at rest)."""
+    d = _deriv_one(key, size, u=ext, vu=rate, pk=peak)
+    return float(d[3] * physics.NOMINAL["m_a"] / physics.NOMINAL["beta"])
+
+
+@pytest.mark.parametrize("case", ["hp_webbing_set_all", "hp_webbing_set_full"])
+def test_set_p_webbing_set_gives_back_to_its_set_only(case: str) -> None:
+    """webbing_set: loading, the webbing's own line; from a peak, a line down to its set (s x
+    the peak), nothing below it: less given back than taken at every stretch below the peak."""
+    (e,) = BY_NAME_P[case].effects
+    k, peak = physics.NOMINAL["k_b"], 0.020
+    for ext in (0.005, 0.010, 0.015, 0.019):
+        up = _chest_belt(e.key, e.size, ext, 0.0)
+        assert up == pytest.approx(k * ext, rel=1e-9)
+        back = _chest_belt(e.key, e.size, ext, 0.0, peak=peak)
+        s0 = e.size * peak
+        assert back == pytest.approx(k * peak * max(ext - s0, 0.0) / (peak - s0), abs=1e-6)
+        assert back < up
+    assert _chest_belt(e.key, e.size, peak, 0.0, peak=peak) == pytest.approx(k * peak)
+
+
+def test_set_p_hysteresis_and_knee_paths() -> None:
+    """webbing_hysteresis at set P's size: shortening, the elastic force is (1 - h) of the
+    lengthening one (the damping as it was); webbing_knee: loading and unloading on one path
+    (the damping aside), stiffer past its knee; rib_valve leaves the belt's force alone."""
+    (hy,) = BY_NAME_P["hp_hysteresis_labs"].effects
+    (kn,) = BY_NAME_P["hp_webbing_knee_all"].effects
+    (va,) = BY_NAME_P["hp_rib_valve_all"].effects
+    k, c, v = physics.NOMINAL["k_b"], physics.NOMINAL["c_b"], 0.5
+    for ext in (0.010, 0.030):
+        up = _chest_belt(hy.key, hy.size, ext, v) - c * v
+        back = _chest_belt(hy.key, hy.size, ext, -v) + c * v
+        assert up == pytest.approx(k * ext, rel=1e-6)
+        assert back == pytest.approx((1.0 - hy.size) * k * ext, rel=1e-6)
+        up = _chest_belt(kn.key, kn.size, ext, v) - c * v
+        back = _chest_belt(kn.key, kn.size, ext, -v) + c * v
+        assert up == pytest.approx(back, rel=1e-9)
+        assert up == pytest.approx(k * ext + kn.size * k * max(ext - physics.KNEE_M[0], 0.0))
+        for rate in (v, -v):
+            assert _chest_belt(va.key, va.size, ext, rate) == _chest_belt("", 0.0, ext, rate)
+
+
+def test_set_p_capstan_gives_back_less_than_it_takes() -> None:
+    """dring_capstan at set P's size: sliding, the D-ring passes the chest the retractor side's
+    tension x exp(+a) while the chest draws the webbing out, x exp(-a) while the retractor
+    takes it back."""
+    (e,) = BY_NAME_P["hp_capstan_full"].effects
+    k_up, c_up, m_u = (physics.NOMINAL[n] for n in ("k_up", "c_up", "m_u"))
+    c_b, r0, th = physics.NOMINAL["c_b"], physics.NOMINAL["r0"], 2.0
+    for vu, want in ((-2.0, np.exp(e.size)), (2.0, np.exp(-e.size))):
+        d = _deriv_one(e.key, e.size, th=th, vu=vu)
+        tr = k_up * r0 * th - c_up * vu
+        passed = d[7] * m_u + c_b * vu  # tension minus friction, the chest side's share
+        assert passed / tr == pytest.approx(want, rel=1e-4)
+
+
+@pytest.mark.parametrize("case", WATCHED_P)
+def test_set_p_scoped_unloading_moves_its_rigs_only(set_p: Path, case: str) -> None:
+    """A belt unloading on one or two rigs moves CR and CD of every test of those rigs and
+    leaves the recorded pulse alone; a test of another rig is untouched, to the bit."""
+    c = heldout_sets.select([case], "p")[0]
+    (e,) = c.effects
+    on, off = set_p / "on" / case, set_p / "off" / case
+    seen = set()
+    for folder in sorted(on.glob("*/*")):
+        name = folder.name
+        if name.split("_")[0] in e.setups:
+            assert np.array_equal(_channel(on, name, "pulse"), _channel(off, name, "pulse"))
+            moved = [np.abs(_channel(on, name, w) - _channel(off, name, w)).max()
+                     for w in ("cr", "cd")]
+            assert min(moved) > 0.3, (name, moved)
+            seen.add(name.split("_")[0])
+        else:
+            assert _files(folder) == _files(off / folder.parent.name / name)
+    assert seen == set(e.setups)
