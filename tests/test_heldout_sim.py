@@ -1058,6 +1058,9 @@ LATER_SETS = {
     "n": ("set_n", ("hn_two_effects_full_once", "hn_broken_warm_dummy"),
           {"a": ["h_cd_transducer"], "b": ["hb_airbag_relief"], "l": ["hl_cd_aa_filter"],
            "m": ["hm_broken_dummy", "hm_cr_crosstalk", "hm_rib_maxwell"]}),
+    "o": ("set_o", ("ho_two_fung_r16_set_full", "ho_broken_brs_counts"),
+          {"a": ["h_broken_brs"], "j": ["hj_broken_cr_loose_mount"],
+           "n": ["hn_cd_sag", "hn_broken_warm_dummy"]}),
     "p": ("set_p", ("hp_capstan_full", "hp_clean48"),
           {"c": ["hc_webbing_set"], "m": ["hm_dring_capstan"],
            "n": ["hn_webbing_hysteresis_r16_once", "hn_cd_sag"]}),
@@ -1737,6 +1740,117 @@ def test_set_n_cd_sag_lowers_cd_with_time_only(set_n: Path) -> None:
     assert seen == 12
 
 
+# ------------------------------------------------------------------ set O (cases_o.py)
+
+SET_O = heldout_sets.case_set("o")
+WATCHED_O = ("ho_broken_brs_counts", "ho_cr_damped", "ho_rib_friction_sled")
+
+
+@pytest.fixture(scope="module")
+def set_o(tmp_path_factory: pytest.TempPathFactory) -> Path:
+    return _generate(tmp_path_factory, "o", WATCHED_O)
+
+
+def test_set_o_is_new() -> None:
+    _is_new(SET_O, [c for s in "abcdefghijklmn" for c in heldout_sets.case_set(s)], 24000, 2,
+            size=13)
+
+
+def _held(part: tuple[str, ...]) -> set[str]:
+    """The rigs a part (estimation or validation) holds at all."""
+    return set(part)
+
+
+def test_set_o_judges_two_effects_apart_and_none_invented() -> None:
+    """Set O's mixes, as its brief asks: every rig an estimation part holds, it holds by two
+    tests or more; two effects of two kinds on two rigs apart (four cases); one effect beside a
+    clean rig (three cases); every verdict names the rigs the effect truly is on."""
+    lib = physics.EFFECTS
+    every = set(cases.ALL)
+    for c in SET_O:
+        assert all(c.est.count(r) >= 2 for r in _held(c.est)), c.name
+        if not c.expect:
+            continue
+        for (kind, scope), e in zip(c.expect, c.effects, strict=True):
+            assert lib[e.key] == kind and not e.tests
+            assert scope == ("all" if set(e.setups) == every else "+".join(e.setups))
+            if kind == "airbag_contact":
+                assert set(e.setups) <= INTERIOR
+    # 1. two clean cases, 48 and 96 counts, nothing expected
+    clean = [c for c in SET_O if not c.effects]
+    assert sorted(c.counts_per_rev for c in clean) == [48, 96]
+    assert all(not c.expect and not c.expect_broken and not c.expect_note for c in clean)
+    # 2. two effects of two kinds on two rigs apart, each rig of each held by >= 2 estimation
+    # and >= 2 validation tests; one case with a clean third rig held, one with no third rig
+    twos = [c for c in SET_O if len(c.expect) == 2]
+    assert len(twos) == 4
+    for c in twos:
+        a, b = c.effects
+        assert lib[a.key] != lib[b.key] and not set(a.setups) & set(b.setups)
+        for e in (a, b):
+            assert all(c.est.count(r) >= 2 and c.val.count(r) >= 2 for r in e.setups)
+    thirds = [_held(c.est) - _scope(c) for c in twos]
+    assert any(thirds) and not all(thirds)
+    assert len({lib[e.key] for c in twos for e in c.effects}) >= 5
+    assert len({frozenset(e.setups) for c in twos for e in c.effects}) == 3
+    # 3. one effect on one or two rigs beside a clean rig held by >= 2 estimation tests, of
+    # three kinds: a second effect must not be named
+    singles = [c for c in SET_O if len(c.expect) == 1 and c.expect[0][0] != "input_delay"]
+    assert len(singles) == 3 and len({c.expect[0][0] for c in singles}) == 3
+    for c in singles:
+        (e,) = c.effects
+        assert 1 <= len(e.setups) <= 2
+        assert any(c.est.count(r) >= 2 for r in _held(c.est) - set(e.setups))
+    # 4. both delays, on every rig, 1-5 ms, at sizes no earlier set used on either input
+    before = [c for s in "abcdefghijklmn" for c in heldout_sets.case_set(s)]
+    used = {e.size for c in before for e in c.effects if lib[e.key] == "input_delay"}
+    delays = [c for c in SET_O if c.expect == (("input_delay", "all"),)]
+    assert sorted(c.effects[0].key for c in delays) == ["brs_late", "pulse_late"]
+    for c in delays:
+        (e,) = c.effects
+        assert e.setups == cases.ALL and 0.001 <= e.size <= 0.005 and e.size not in used
+    assert len(clean) + len(twos) + len(singles) + 2 + len(delays) == len(SET_O)
+
+
+def test_set_o_lab_side_is_new_and_unnamed() -> None:
+    """One broken estimation test, of a form no earlier set used, the only thing expected; one
+    transducer error on CR, of a form no earlier set used, nothing physical named."""
+    before = [c for s in "abcdefghijklmn" for c in heldout_sets.case_set(s)]
+    lib = physics.EFFECTS
+    (broken,) = [c for c in SET_O if c.expect_broken]
+    (e,) = broken.effects
+    est, _ = cases.test_names(broken)
+    assert set(broken.expect_broken) == set(e.tests) and set(e.tests) <= set(est)
+    assert lib[e.key] == "" and not broken.expect and not broken.expect_note
+    (sensor,) = [c for c in SET_O if c.expect_note]
+    assert sensor.expect_note == "unexplained (or a sensor effect) on cr"
+    assert not sensor.expect and not sensor.expect_broken
+    assert all(lib[e.key] == "" and not e.tests for e in sensor.effects)
+    assert not _keys([broken, sensor]) & _keys(before)
+
+
+def test_set_o_rib_friction_is_coulomb_in_the_ribs() -> None:
+    """rib_friction: no force at rest; sliding, each sternum mass's rib pulls the spine with the
+    size (N) in the rate's direction whatever the rate (beyond the smoothing) and the
+    deflection; the sternum masses feel its reaction; nothing else moves."""
+    m_sp, m_a, f = physics.NOMINAL["m_sp"], physics.NOMINAL["m_a"], 300.0
+    assert np.array_equal(_deriv_one("rib_friction", f, sa=0.02, sb=0.02),
+                          _deriv_one("", 0.0, sa=0.02, sb=0.02))
+    for v in (0.5, 3.0, -1.0):
+        for d in (0.0, 0.03):
+            on = _deriv_one("rib_friction", f, sa=d, sb=d, va=v, vb=v)
+            off = _deriv_one("", 0.0, sa=d, sb=d, va=v, vb=v)
+            assert (on[1] - off[1]) * m_sp == pytest.approx(2 * f * np.sign(v), rel=1e-6)
+            assert (on[3] - off[3]) * m_a == pytest.approx(-f * np.sign(v), rel=1e-6)
+            assert np.array_equal(np.delete(on - off, [1, 3, 5]), np.zeros(physics.N_STATE - 3))
+
+
+def test_set_o_rib_friction_moves_the_chest_where_it_is(set_o: Path) -> None:
+    """The sled lab's dummy's rib friction moves CR and CD of its rig's tests and leaves their
+    pulse alone; the other rig's tests are untouched."""
+    c = heldout_sets.select(["ho_rib_friction_sled"], "o")[0]
+    (e,) = c.effects
+    on, off = set_o / "on" / c.name, set_o / "off" / c.name
 # ------------------------------------------------------------------ set P (cases_p.py)
 
 SET_P = heldout_sets.case_set("p")
@@ -1857,6 +1971,62 @@ def test_set_p_scoped_unloading_moves_its_rigs_only(set_p: Path, case: str) -> N
             moved = [np.abs(_channel(on, name, w) - _channel(off, name, w)).max()
                      for w in ("cr", "cd")]
             assert min(moved) > 0.3, (name, moved)
+        else:
+            assert _files(folder) == _files(off / folder.parent.name / name)
+
+
+def test_set_o_brs_counts_reads_the_turn_n_over_360_times(set_o: Path) -> None:
+    """The broken test's BRS file holds the spindle's counts under its degrees: it reads its
+    twin's x n / 360 (n counts per rev; the reader's steps of 360 / n degrees round it to within
+    a step); its CR, CD and pulse untouched; every other test untouched."""
+    c = heldout_sets.select(["ho_broken_brs_counts"], "o")[0]
+    (broken,) = c.expect_broken
+    on, off = set_o / "on" / c.name, set_o / "off" / c.name
+    for which in ("cr", "cd", "pulse"):
+        assert np.array_equal(_channel(on, broken, which), _channel(off, broken, which))
+    bad, good = _brs(on, broken), _brs(off, broken)
+    assert np.abs(bad - good * c.counts_per_rev / 360.0).max() <= 1.0
+    assert np.abs(good - bad).max() > 0.8 * np.abs(good).max() > 0  # the spool turned
+    _others_untouched(set_o, c.name, broken)
+
+
+def test_set_o_damped_element_is_a_second_order_low_pass() -> None:
+    """lab.damped_element: unit gain at rest, the 0.7-damped element's step overshoot (4.6 %),
+    and a lag of about 2 zeta / w at low frequency."""
+    f = 150.0
+    step = lab.damped_element(np.ones(2000), f)
+    assert step[-1] == pytest.approx(1.0, abs=1e-6)
+    zeta = lab.CR_DAMPED_ZETA
+    assert step.max() - 1.0 == pytest.approx(np.exp(-np.pi * zeta / np.sqrt(1 - zeta ** 2)),
+                                             abs=0.005)
+    t = np.arange(4000) / physics.FS_HZ
+    slow = lab.damped_element(np.sin(2 * np.pi * 20.0 * t), f)
+    lag = 2 * zeta / (2 * np.pi * f)
+    late = t > 0.1
+    assert np.abs(slow[late] - np.sin(2 * np.pi * 20.0 * (t[late] - lag))).max() < 0.02
+
+
+def test_set_o_cr_damped_lags_cr_only(set_o: Path) -> None:
+    """CR reads its own signal through the damped element (within the CFC 180 filter and the
+    noise, which the element filters too), later at its peak; CD, pulse and BRS untouched."""
+    c = heldout_sets.select(["ho_cr_damped"], "o")[0]
+    (e,) = c.effects
+    on, off = set_o / "on" / c.name, set_o / "off" / c.name
+    seen = 0
+    for folder in sorted(on.glob("*/*")):
+        name = folder.name
+        for which in ("cd", "pulse"):
+            assert np.array_equal(_channel(on, name, which), _channel(off, name, which))
+        assert np.array_equal(_brs(on, name), _brs(off, name))
+        cr, cr0 = _channel(on, name, "cr"), _channel(off, name, "cr")
+        t = _times(len(cr))
+        inner = (t > 0.0) & (t < 0.17)
+        miss = np.abs(cr - lab.damped_element(cr0, e.size))[inner].max()
+        moved = np.abs(cr - cr0).max()
+        assert miss < 1.0 and miss < 0.2 * moved, (name, miss, moved)
+        assert np.argmax(cr) > np.argmax(cr0) and moved > 2.0
+        seen += 1
+    assert seen == 12
             seen.add(name.split("_")[0])
         else:
             assert _files(folder) == _files(off / folder.parent.name / name)

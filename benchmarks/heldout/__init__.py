@@ -38,13 +38,18 @@
   (a rig held by a single estimation test or none beside the rigs an effect is on), with
   lab-side faults of new kinds (an estimation test run with a cold-soaked dummy; a chest pot
   whose excitation sags after the trigger).
+  ``cases_o.py``: set O, the same again, on pairings no earlier case ran, judging two effects
+  of different kinds on different rigs and whether a second effect is invented beside one,
+  with dry friction in the rib cage and lab-side faults of new kinds (a BRS file holding the
+  spindle's raw counts where its header says degrees; an oil-damped spine accelerometer too
+  slow for a crash).
   ``cases_p.py``: set P, the same again, on pairings no earlier case ran, judging the belt's
   unloading path (a webbing's permanent set, its hysteresis, a capstan at the car's D-ring, at
   new sizes and scopes) against clean cases and two effects that must not be named as one.
   ``make_sets.py``: writes a set (``--no-effects``: the same tests with every effect off).
   ``costs.py``: what each case costs the thesis grey-box (project CLI).
 
-    python -m benchmarks.heldout.make_sets --out /tmp/heldout [--set a|b|c|d|e|f|g|h|i|j|k|l|m|n|p]
+    python -m benchmarks.heldout.make_sets --out /tmp/heldout [--set a|b|c|d|e|f|g|h|i|j|k|l|m|n|o|p]
         [--case NAME ...]
 
 Never tune the loop on these cases; report them apart from the tuned ones.

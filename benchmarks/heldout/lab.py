@@ -34,7 +34,8 @@ EXACT = {"pulse_late", "brs_late", "brs_freeze", "cd_dropout", "pulse_rail", "pu
          "cr_hum", "cd_compress", "cd_rail", "pulse_sync", "cd_dead_band", "cd_stuck_bit",
          "brs_quadrature", "cr_ac_coupled", "brs_poll", "cr_lost_block", "cd_backlash",
          "cr_loose_mount", "brs_swap", "cd_arm_lift", "pulse_from", "cr_zero_shift",
-         "pulse_rate", "cd_aa_filter", "dummy_scale", "cr_crosstalk", "dummy_soak", "cd_sag"}
+         "pulse_rate", "cd_aa_filter", "dummy_scale", "cr_crosstalk", "dummy_soak", "cd_sag",
+         "brs_counts", "cr_damped"}
 DROPOUT_S = 0.010  # how long cd_dropout's wiper stays off the track
 KNEE_SLOPE = 0.6  # cd_knee: the gain of the CD calibration's second segment
 SHIFT_AT_S = 0.011  # pulse_zero_shift: when the zero shifts (in the crash-box spike)
@@ -75,6 +76,11 @@ SOAK_DAMP, SOAK_STIFF = ("c_ra", "c_rb", "c_ab"), ("k_ra", "k_rb", "k_ab")
 # when the on-board recorder starts writing at the trigger its battery sags, and the pot's
 # excitation with it, settling with this time constant (s): CD reads d (1 - s (1 - e^(-t/tau)))
 CD_SAG_TAU_S = 0.060
+# cr_damped: the spine accelerometer is an oil-damped sensing element (a seismic mass on a
+# spring in silicone oil) of too low a natural frequency for a crash: it reads its base's
+# acceleration through a 2-pole low-pass of this damping ratio at its natural frequency (the
+# effect's size, Hz), causal: it lags and rounds CR; the oil's damping is its design's (0.7)
+CR_DAMPED_ZETA = 0.7
 NOISE = {"pulse_g": 0.6, "cr_g": 0.55, "cd_mm": 0.10}  # white, before the CFC filters
 
 
@@ -131,6 +137,16 @@ def aa_filter(x: np.ndarray, f_hz: float) -> np.ndarray:
     run on the recorded file), from rest."""
     bb, aa = signal.butter(4, f_hz, fs=ph.FS_HZ)
     return np.asarray(signal.lfilter(bb, aa, x))
+
+
+def damped_element(a: np.ndarray, f_hz: float, zeta: float = CR_DAMPED_ZETA) -> np.ndarray:
+    """What a damped seismic sensing element of natural frequency ``f_hz`` and damping ratio
+    ``zeta`` reads of its base's acceleration ``a``: w^2 / (s^2 + 2 zeta w s + w^2) from rest,
+    bilinear, pre-warped at ``f_hz`` (unlike ``loose_mount``, no base feed-through: the element
+    itself is the low-pass)."""
+    w = 2 * ph.FS_HZ * np.tan(np.pi * f_hz / ph.FS_HZ)
+    bb, aa = signal.bilinear([w * w], [1.0, 2 * zeta * w, w * w], fs=ph.FS_HZ)
+    return np.asarray(signal.lfilter(bb, aa, a))
 
 
 def scale_dummy(params: dict[str, float], s: float) -> dict[str, float]:
@@ -257,6 +273,8 @@ def record(d: Drawn, i: int, sim: dict[str, np.ndarray], counts_per_rev: int,
         cr_read = signal.lfilter(bb, aa, cr_read)
     if e["cr_loose_mount"]:  # the accelerometer's block loosened on the spine box: it rides
         cr_read = loose_mount(cr_read, e["cr_loose_mount"])  # on a spring, a resonance
+    if e["cr_damped"]:  # an oil-damped sensing element, its natural frequency too low
+        cr_read = damped_element(cr_read, e["cr_damped"])
     if e["cr_zero_shift"]:  # the sensing element's zero shifts under the shock: once the
         k = int(np.argmax(cr_read >= CR_SHIFT_G))  # reading first passes CR_SHIFT_G it moves
         if cr_read[k] >= CR_SHIFT_G:  # by the size (g) over CR_SHIFT_RISE_S and stays there
@@ -314,10 +332,13 @@ def record(d: Drawn, i: int, sim: dict[str, np.ndarray], counts_per_rev: int,
     rig = RIGS[d.setup]
     code, text = PULSE_CHANNEL[d.setup]
     n = counts_per_rev
+    # brs_counts: the export wrote the spindle's raw counts where its header (and every other
+    # test's file) has degrees: the channel reads n / 360 of the spool's turn
+    brs = counts if e["brs_counts"] else counts * 360.0 / n
     chans = [
         Channel(code, text, "g", "AC", "X", "NOVALUE", -pulse),
         Channel("11RETR0000B1AN0P", f"Retractor spindle angle, + = pay-in ({n} counts/rev)",
-                "deg", "AN", "0", "NOVALUE", counts * 360.0 / n),
+                "deg", "AN", "0", "NOVALUE", brs),
         Channel("11CHST0000H3ACXC", "Thorax spine accel X", "g", "AC", "X", "180", -cr),
         Channel("11CHST0000H3DSXB", "Sternum deflection X", "mm", "DS", "X", "600", -cd),
     ]

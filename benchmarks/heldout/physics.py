@@ -121,6 +121,10 @@ EFFECTS = {
     # set N's forms (cases_n.py): two lab-side
     "dummy_soak": "",  # broken test: thorax soaked this many K below its band (K; < 0: above)
     "cd_sag": "",  # transducer: the CD pot's excitation sags after trigger, gain lost (relative)
+    # set O's forms (cases_o.py): one physical form no earlier set used, two lab-side
+    "rib_friction": "chest_rate_damping",  # dry (Coulomb) friction in the rib cage, this force (N)
+    "brs_counts": "",  # broken test: the BRS file holds raw counts under its degrees (1 = on)
+    "cr_damped": "",  # transducer: CR through an oil-damped sensing element of this f_n (Hz)
 }
 POW_B_M = (0.015, 0.025)  # webbing_power: reference stretch, chest side and up to the retractor
 V_HYST = 0.02  # m/s: webbing_hysteresis switches between its paths within this rate
@@ -167,6 +171,11 @@ MAXWELL_TAU_S = 0.010
 # angle), in place of the nominal small, linear D-ring friction; it sticks below this slip
 # speed (m/s), smoothly (tanh)
 CAPSTAN_V_S = 0.15
+
+# rib_friction: the rib cage's dry friction (the ribs' bib and the sternum's guide rubbing on the
+# spine box): a force of the effect's size (N) per sternum mass against the chest's rate,
+# Coulomb's, smoothed (tanh) within this rate (m/s) so it sticks softly about zero rate
+RIB_FRICTION_V_S = 0.02
 
 # Nominal Hybrid-III-like thorax, belt and retractor (SI), before per-test scatter.
 NOMINAL = {
@@ -273,6 +282,10 @@ def _deriv(b: Batch, j: np.ndarray | int, y: np.ndarray) -> np.ndarray:
         fb = fb + mb
         dma = kmx * p["k_ra"] * dva - ma / MAXWELL_TAU_S
         dmb = kmx * p["k_rb"] * dvb - mb / MAXWELL_TAU_S
+    ffr = e["rib_friction"]  # N: Coulomb friction, rate-independent once sliding
+    if np.any(ffr):
+        fa = fa + ffr * np.tanh(dva / RIB_FRICTION_V_S)
+        fb = fb + ffr * np.tanh(dvb / RIB_FRICTION_V_S)
     fab = p["k_ab"] * (sa - sb) + p["c_ab"] * (va - vb)
 
     # belt, chest side: pushes the contact point of the sternum rearward

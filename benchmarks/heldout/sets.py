@@ -9,8 +9,9 @@ written after set H had been looked at, the same way), set J (``cases_j``, writt
 had been looked at, the same way), set K (``cases_k``, written after set J had been looked at,
 the same way), set L (``cases_l``, written after set K had been looked at, the same way), set
 M (``cases_m``, written after set L had been looked at, the same way), set N (``cases_n``,
-written after set M had been looked at, the same way), set P (``cases_p``, written after set N
-had been looked at, the same way)."""
+written after set M had been looked at, the same way), set O (``cases_o``, written after set N
+had been looked at, the same way), set P (``cases_p``, written beside set O by another engineer,
+the same way)."""
 
 from __future__ import annotations
 
@@ -28,16 +29,17 @@ from .cases_k import SET_K
 from .cases_l import SET_L
 from .cases_m import SET_M
 from .cases_n import SET_N
+from .cases_o import SET_O
 from .cases_p import SET_P
 
-SETS = ("a", "b", "c", "d", "e", "f", "g", "h", "i", "j", "k", "l", "m", "n", "p")
+SETS = ("a", "b", "c", "d", "e", "f", "g", "h", "i", "j", "k", "l", "m", "n", "o", "p")
 
 
 def case_set(name: str) -> list[Case]:
     """Set A (``cases``), B (``cases_b``), C (``cases_c``), D (``cases_d``), E (``cases_e``),
     F (``cases_f``), G (``cases_g``), H (``cases_h``), I (``cases_i``), J (``cases_j``), K
-    (``cases_k``), L (``cases_l``), M (``cases_m``), N (``cases_n``) or P (``cases_p``); ValueError
-    for another name."""
+    (``cases_k``), L (``cases_l``), M (``cases_m``), N (``cases_n``), O (``cases_o``) or P
+    (``cases_p``); ValueError for another name."""
     if name == "a":
         return list(CASES)
     if name == "b":
@@ -66,6 +68,8 @@ def case_set(name: str) -> list[Case]:
         return list(SET_M)
     if name == "n":
         return list(SET_N)
+    if name == "o":
+        return list(SET_O)
     if name == "p":
         return list(SET_P)
     raise ValueError(f"unknown case set {name!r}; known: {', '.join(SETS)}")
