@@ -1851,6 +1851,71 @@ def test_set_o_rib_friction_moves_the_chest_where_it_is(set_o: Path) -> None:
     c = heldout_sets.select(["ho_rib_friction_sled"], "o")[0]
     (e,) = c.effects
     on, off = set_o / "on" / c.name, set_o / "off" / c.name
+    for folder in sorted(on.glob("*/*")):
+        name = folder.name
+        if name.split("_")[0] in e.setups:
+            assert np.array_equal(_channel(on, name, "pulse"), _channel(off, name, "pulse"))
+            moved = [np.abs(_channel(on, name, w) - _channel(off, name, w)).max()
+                     for w in ("cr", "cd")]
+            assert min(moved) > 0.3, (name, moved)
+        else:
+            assert _files(folder) == _files(off / folder.parent.name / name)
+
+
+def test_set_o_brs_counts_reads_the_turn_n_over_360_times(set_o: Path) -> None:
+    """The broken test's BRS file holds the spindle's counts under its degrees: it reads its
+    twin's x n / 360 (n counts per rev; the reader's steps of 360 / n degrees round it to within
+    a step); its CR, CD and pulse untouched; every other test untouched."""
+    c = heldout_sets.select(["ho_broken_brs_counts"], "o")[0]
+    (broken,) = c.expect_broken
+    on, off = set_o / "on" / c.name, set_o / "off" / c.name
+    for which in ("cr", "cd", "pulse"):
+        assert np.array_equal(_channel(on, broken, which), _channel(off, broken, which))
+    bad, good = _brs(on, broken), _brs(off, broken)
+    assert np.abs(bad - good * c.counts_per_rev / 360.0).max() <= 1.0
+    assert np.abs(good - bad).max() > 0.8 * np.abs(good).max() > 0  # the spool turned
+    _others_untouched(set_o, c.name, broken)
+
+
+def test_set_o_damped_element_is_a_second_order_low_pass() -> None:
+    """lab.damped_element: unit gain at rest, the 0.7-damped element's step overshoot (4.6 %),
+    and a lag of about 2 zeta / w at low frequency."""
+    f = 150.0
+    step = lab.damped_element(np.ones(2000), f)
+    assert step[-1] == pytest.approx(1.0, abs=1e-6)
+    zeta = lab.CR_DAMPED_ZETA
+    assert step.max() - 1.0 == pytest.approx(np.exp(-np.pi * zeta / np.sqrt(1 - zeta ** 2)),
+                                             abs=0.005)
+    t = np.arange(4000) / physics.FS_HZ
+    slow = lab.damped_element(np.sin(2 * np.pi * 20.0 * t), f)
+    lag = 2 * zeta / (2 * np.pi * f)
+    late = t > 0.1
+    assert np.abs(slow[late] - np.sin(2 * np.pi * 20.0 * (t[late] - lag))).max() < 0.02
+
+
+def test_set_o_cr_damped_lags_cr_only(set_o: Path) -> None:
+    """CR reads its own signal through the damped element (within the CFC 180 filter and the
+    noise, which the element filters too), later at its peak; CD, pulse and BRS untouched."""
+    c = heldout_sets.select(["ho_cr_damped"], "o")[0]
+    (e,) = c.effects
+    on, off = set_o / "on" / c.name, set_o / "off" / c.name
+    seen = 0
+    for folder in sorted(on.glob("*/*")):
+        name = folder.name
+        for which in ("cd", "pulse"):
+            assert np.array_equal(_channel(on, name, which), _channel(off, name, which))
+        assert np.array_equal(_brs(on, name), _brs(off, name))
+        cr, cr0 = _channel(on, name, "cr"), _channel(off, name, "cr")
+        t = _times(len(cr))
+        inner = (t > 0.0) & (t < 0.17)
+        miss = np.abs(cr - lab.damped_element(cr0, e.size))[inner].max()
+        moved = np.abs(cr - cr0).max()
+        assert miss < 1.0 and miss < 0.2 * moved, (name, miss, moved)
+        assert np.argmax(cr) > np.argmax(cr0) and moved > 2.0
+        seen += 1
+    assert seen == 12
+
+
 # ------------------------------------------------------------------ set P (cases_p.py)
 
 SET_P = heldout_sets.case_set("p")
@@ -1971,62 +2036,6 @@ def test_set_p_scoped_unloading_moves_its_rigs_only(set_p: Path, case: str) -> N
             moved = [np.abs(_channel(on, name, w) - _channel(off, name, w)).max()
                      for w in ("cr", "cd")]
             assert min(moved) > 0.3, (name, moved)
-        else:
-            assert _files(folder) == _files(off / folder.parent.name / name)
-
-
-def test_set_o_brs_counts_reads_the_turn_n_over_360_times(set_o: Path) -> None:
-    """The broken test's BRS file holds the spindle's counts under its degrees: it reads its
-    twin's x n / 360 (n counts per rev; the reader's steps of 360 / n degrees round it to within
-    a step); its CR, CD and pulse untouched; every other test untouched."""
-    c = heldout_sets.select(["ho_broken_brs_counts"], "o")[0]
-    (broken,) = c.expect_broken
-    on, off = set_o / "on" / c.name, set_o / "off" / c.name
-    for which in ("cr", "cd", "pulse"):
-        assert np.array_equal(_channel(on, broken, which), _channel(off, broken, which))
-    bad, good = _brs(on, broken), _brs(off, broken)
-    assert np.abs(bad - good * c.counts_per_rev / 360.0).max() <= 1.0
-    assert np.abs(good - bad).max() > 0.8 * np.abs(good).max() > 0  # the spool turned
-    _others_untouched(set_o, c.name, broken)
-
-
-def test_set_o_damped_element_is_a_second_order_low_pass() -> None:
-    """lab.damped_element: unit gain at rest, the 0.7-damped element's step overshoot (4.6 %),
-    and a lag of about 2 zeta / w at low frequency."""
-    f = 150.0
-    step = lab.damped_element(np.ones(2000), f)
-    assert step[-1] == pytest.approx(1.0, abs=1e-6)
-    zeta = lab.CR_DAMPED_ZETA
-    assert step.max() - 1.0 == pytest.approx(np.exp(-np.pi * zeta / np.sqrt(1 - zeta ** 2)),
-                                             abs=0.005)
-    t = np.arange(4000) / physics.FS_HZ
-    slow = lab.damped_element(np.sin(2 * np.pi * 20.0 * t), f)
-    lag = 2 * zeta / (2 * np.pi * f)
-    late = t > 0.1
-    assert np.abs(slow[late] - np.sin(2 * np.pi * 20.0 * (t[late] - lag))).max() < 0.02
-
-
-def test_set_o_cr_damped_lags_cr_only(set_o: Path) -> None:
-    """CR reads its own signal through the damped element (within the CFC 180 filter and the
-    noise, which the element filters too), later at its peak; CD, pulse and BRS untouched."""
-    c = heldout_sets.select(["ho_cr_damped"], "o")[0]
-    (e,) = c.effects
-    on, off = set_o / "on" / c.name, set_o / "off" / c.name
-    seen = 0
-    for folder in sorted(on.glob("*/*")):
-        name = folder.name
-        for which in ("cd", "pulse"):
-            assert np.array_equal(_channel(on, name, which), _channel(off, name, which))
-        assert np.array_equal(_brs(on, name), _brs(off, name))
-        cr, cr0 = _channel(on, name, "cr"), _channel(off, name, "cr")
-        t = _times(len(cr))
-        inner = (t > 0.0) & (t < 0.17)
-        miss = np.abs(cr - lab.damped_element(cr0, e.size))[inner].max()
-        moved = np.abs(cr - cr0).max()
-        assert miss < 1.0 and miss < 0.2 * moved, (name, miss, moved)
-        assert np.argmax(cr) > np.argmax(cr0) and moved > 2.0
-        seen += 1
-    assert seen == 12
             seen.add(name.split("_")[0])
         else:
             assert _files(folder) == _files(off / folder.parent.name / name)

@@ -49,8 +49,8 @@
   ``make_sets.py``: writes a set (``--no-effects``: the same tests with every effect off).
   ``costs.py``: what each case costs the thesis grey-box (project CLI).
 
-    python -m benchmarks.heldout.make_sets --out /tmp/heldout [--set a|b|c|d|e|f|g|h|i|j|k|l|m|n|o|p]
-        [--case NAME ...]
+    python -m benchmarks.heldout.make_sets --out /tmp/heldout
+        [--set a|b|c|d|e|f|g|h|i|j|k|l|m|n|o|p] [--case NAME ...]
 
 Never tune the loop on these cases; report them apart from the tuned ones.
 """
