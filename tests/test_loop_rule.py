@@ -491,3 +491,18 @@ def test_the_held_out_benchmark_scores_a_webbing_set_as_the_sets_belt_unloading(
     # the sets' verdicts were written when the one-sided belt was the library's only word
     assert SAME_FINDING == {"belt_set": "belt_unloading"}
     assert set(SAME_FINDING) | set(SAME_FINDING.values()) <= set(EFFECTS)
+
+
+def test_an_input_delay_of_both_inputs_alike_that_helps_one_output_is_that_outputs_lag():
+    from observer_node.loop.verdicts import output_lag
+
+    # set O's oil-damped spine accelerometer: both inputs 2.7 and 2.4 ticks late, CR +3.2
+    assert output_lag("input_delay", {"n_pulse": 2.7, "n_brs": 2.4}, 3.2, 0.5) == "cr"
+    assert output_lag("input_delay", {"n_pulse": 2.0, "n_brs": 2.2}, 0.1, 2.0) == "cd"
+    # a late pulse or BRS: one input (the other's fitted delay stays small)
+    assert output_lag("input_delay", {"n_pulse": 3.9, "n_brs": 0.2}, 3.7, 0.4) is None
+    assert output_lag("input_delay", {"n_pulse": 0.0, "n_brs": 2.7}, 4.0, 0.1) is None
+    # both inputs alike and both outputs gain: the outputs' common timing, not one transducer
+    assert output_lag("input_delay", {"n_pulse": 3.0, "n_brs": 3.1}, 3.0, 1.5) is None
+    assert output_lag("input_delay", {"n_pulse": 3.0, "n_brs": 4.0}, 3.0, 0.1) is None  # apart
+    assert output_lag("chest_stiffening", {"k3": 1e8}, 3.0, 0.1) is None

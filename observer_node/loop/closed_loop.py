@@ -95,6 +95,7 @@ from .screening import (
 from .verdicts import (
     at_the_edge,
     defended_scope,
+    output_lag,
     parameter_warnings,
     runner_up_of,
     tie_verdict,
@@ -342,6 +343,24 @@ def _run(est_tests: list[CrashTest], val_tests: list[CrashTest], out: Path, rate
                 carry.append(rival[1])
         prog.update(f"refitting with {best.kind} on all estimation tests")
         fit = refit(base, [*effects, best.effect()], est, max_nfev=120)
+        # per output, in-sample: an input delay that helps one output alone is its lag
+        was, now = score(base, effects, est).fit, score(fit.base, fit.effects, est).fit
+        gains = {"cr": now.cr - was.cr, "cd": now.cd - was.cd}
+        lag = output_lag(best.kind, fit.effects[-1]["parameters"], gains["cr"], gains["cd"])
+        if lag is not None:
+            ms = 1000.0 * float(np.mean([fit.effects[-1]["parameters"][n]
+                                         for n in ("n_pulse", "n_brs")])) / rate_hz
+            rest = "cd" if lag == "cr" else "cr"
+            sensor = SensorEffect(
+                lag, [e["kind"] for e in effects],
+                f"a lag of about {ms:.1f} ms on {lag.upper()} alone: both inputs delayed alike "
+                f"is the outputs' timing, and {lag.upper()} gained {gains[lag]:+.1f} points "
+                f"where {rest.upper()} gained {gains[rest]:+.1f}: the {lag.upper()} "
+                "transducer or its filter, not the inputs", ev_best)
+            step.decision = (f"input_delay on {scope_label(best.setups)} passes the rule, but "
+                             f"it delays both inputs alike and helps {lag} alone: reported as "
+                             f"a lag of the {lag} transducer, not added to the model")
+            break
         resid_old = _residual(base, effects, est)
         resid_new = _residual(fit.base, fit.effects, est)
         share_before, share_after = _signature_shares(best, effects, base, fit.effects,

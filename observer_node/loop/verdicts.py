@@ -102,6 +102,30 @@ def tie_verdict(a: Candidate, b: Candidate, past: PastTheTie) -> str:
             f"{beside(b, a, past.b_beside_a)}: {verdict}")
 
 
+# An input delay with both inputs late alike is the same, to the model, as both outputs early:
+# the dummy's own timing, not the car's sensors. When only one output gains from it, that
+# output's transducer (or its filter) lags (set O: an oil-damped spine accelerometer, CR 4 ms
+# late, fitted as both inputs 2.7 and 2.4 ticks late; CR gained 2.4 points in-sample, CD 0.4).
+# A real input delay is on one input: on sets G-O the other input's fitted delay stayed under
+# 0.4 ticks, and CD gained 0.24-0.72 of CR's gain (half, typically); a lone output's lag
+# leaves the other nothing but the refit's spill-over.
+COMMON_TICKS = 0.5  # both inputs delayed within this of each other: alike
+ONE_OUTPUT = 0.25  # the other output gains less than this share of the first's: one output
+
+
+def output_lag(kind: str, params: dict, gain_cr: float, gain_cd: float) -> str | None:
+    """The output ("cr" or "cd") whose transducer lags, when the effect that passed is an input
+    delay of both inputs alike (at least one tick each) whose fit gained [points] in that output
+    only; None otherwise."""
+    if kind != "input_delay":
+        return None
+    n_pulse, n_brs = (float(params.get(n, 0.0)) for n in ("n_pulse", "n_brs"))
+    if min(n_pulse, n_brs) < 1.0 or abs(n_pulse - n_brs) > COMMON_TICKS:
+        return None
+    out, hi, lo = ("cr", gain_cr, gain_cd) if gain_cr >= gain_cd else ("cd", gain_cd, gain_cr)
+    return out if hi > 0 and lo < ONE_OUTPUT * hi else None
+
+
 EDGE = 0.01  # of a parameter's physical range: a fit this near its edge is held there
 
 
