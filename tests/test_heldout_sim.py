@@ -15,6 +15,7 @@ from benchmarks.heldout import cases, lab, make_sets, physics
 from benchmarks.heldout import sets as heldout_sets
 from benchmarks.heldout.cases import BY_NAME
 from benchmarks.heldout.cases_p import BY_NAME_P
+from benchmarks.heldout.cases_q import BY_NAME_Q
 from observer_node.data import load_tests
 from observer_node.data.isomme import read_isomme
 from observer_node.data.setups import assign_setups
@@ -1064,6 +1065,9 @@ LATER_SETS = {
     "p": ("set_p", ("hp_capstan_full", "hp_clean48"),
           {"c": ["hc_webbing_set"], "m": ["hm_dring_capstan"],
            "n": ["hn_webbing_hysteresis_r16_once", "hn_cd_sag"]}),
+    "q": ("set_q", ("hq_dummy_late", "hq_clean128"),
+          {"l": ["hl_cd_aa_filter"], "o": ["ho_cr_damped", "ho_pulse_late_4p3ms"],
+           "p": ["hp_capstan_full"]}),
 }
 later_set = pytest.mark.parametrize("case_set", sorted(LATER_SETS))
 # a CR recorded at the wrong polarity peaks below zero: left out of the check that CR peaks
@@ -2040,3 +2044,143 @@ def test_set_p_scoped_unloading_moves_its_rigs_only(set_p: Path, case: str) -> N
         else:
             assert _files(folder) == _files(off / folder.parent.name / name)
     assert seen == set(e.setups)
+
+
+# ------------------------------------------------------------------ set Q (cases_q.py)
+
+SET_Q = heldout_sets.case_set("q")
+# the lagging outputs: CR alone, CD alone, both on the dummy's recorder
+WATCHED_Q = ("hq_cr_late", "hq_cd_rc_filter", "hq_dummy_late")
+BEFORE_Q = [c for s in "abcdefghijklmnop" for c in heldout_sets.case_set(s)]
+
+
+@pytest.fixture(scope="module")
+def set_q(tmp_path_factory: pytest.TempPathFactory) -> Path:
+    return _generate(tmp_path_factory, "q", WATCHED_Q)
+
+
+def test_set_q_is_new() -> None:
+    _is_new(SET_Q, BEFORE_Q, 26000, 2, size=6)
+
+
+def test_set_q_judges_timing() -> None:
+    """Set Q as its brief asks: a lagging CR alone and a lagging CD alone (transducers, nothing
+    physical named), a late pulse and a late BRS at delays no earlier set used on either input,
+    both outputs late alike by 2-4 ms (an input delay on every rig), one clean case; 6 + 6
+    tests, every rig an estimation part holds held twice or more, every effect on every rig and
+    test."""
+    lib = physics.EFFECTS
+    for c in SET_Q:
+        assert len(c.est) == len(c.val) == 6
+        assert all(c.est.count(r) >= 2 for r in set(c.est)), c.name
+        assert all(e.setups == cases.ALL and not e.tests for e in c.effects)
+        assert len(c.effects) <= 1 and not c.expect_broken
+    (clean,) = [c for c in SET_Q if not c.effects]
+    assert not clean.expect and not clean.expect_note
+    sensors = {c.expect_note: c for c in SET_Q if c.expect_note}
+    assert sorted(sensors) == ["unexplained (or a sensor effect) on cd",
+                               "unexplained (or a sensor effect) on cr"]
+    for c in sensors.values():
+        assert not c.expect and lib[c.effects[0].key] == ""
+    assert {sensors[n].effects[0].key for n in sensors} == {"cr_late", "cd_rc_filter"}
+    used = {e.size for c in BEFORE_Q for e in c.effects if lib[e.key] == "input_delay"}
+    delays = [c for c in SET_Q if c.expect == (("input_delay", "all"),)]
+    assert sorted(c.effects[0].key for c in delays) == ["brs_late", "dummy_late", "pulse_late"]
+    for c in delays:
+        (e,) = c.effects
+        assert lib[e.key] == "input_delay" and not c.expect_note
+        assert 0.001 <= e.size <= 0.005
+        assert e.key == "dummy_late" or e.size not in used  # the inputs' delays: new sizes
+    both = BY_NAME_Q["hq_dummy_late"]
+    assert both in delays and both.effects[0].key == "dummy_late"
+    assert 0.002 <= both.effects[0].size <= 0.004
+    assert 1 + len(sensors) + len(delays) == len(SET_Q)
+
+
+def test_set_q_late_is_a_transport_lag() -> None:
+    """lab.late: the signal written that many samples on, its first sample held before."""
+    x = np.r_[np.zeros(5), np.arange(1.0, 11.0)]
+    y = lab.late(x, 3 / physics.FS_HZ)
+    assert y.tolist() == [0.0] * 8 + list(np.arange(1.0, 8.0))
+    assert np.array_equal(lab.late(x, 0.0), x)
+
+
+def test_set_q_rc_filter_is_a_one_pole_low_pass() -> None:
+    """lab.rc_filter: unit gain at rest, a step reaching 1 - 1/e after one time constant
+    1 / (2 pi f), no overshoot, and a lag of about that time constant at low frequency."""
+    f = 50.0
+    tau = 1 / (2 * np.pi * f)
+    step = lab.rc_filter(np.ones(3000), f)
+    assert step[-1] == pytest.approx(1.0, abs=1e-6) and step.max() <= 1.0 + 1e-9
+    k = round(tau * physics.FS_HZ)
+    assert step[k] == pytest.approx(1 - np.exp(-1), abs=0.02)
+    t = np.arange(6000) / physics.FS_HZ
+    slow = lab.rc_filter(np.sin(2 * np.pi * 10.0 * t), f)
+    late = t > 0.1
+    assert np.abs(slow[late] - np.sin(2 * np.pi * 10.0 * (t[late] - tau))).max() < 0.02
+
+
+def _twelve(on: Path, off: Path) -> Iterator[tuple[str, Path, Path]]:
+    """Each test's name in a case's folders with its effects on and off (all twelve)."""
+    names = [folder.name for folder in sorted(on.glob("*/*"))]
+    assert len(names) == 12
+    for name in names:
+        yield name, on, off
+
+
+def _best_lag(y: np.ndarray, y0: np.ndarray) -> int:
+    """The whole samples (0-80) ``y0`` written late reads most like ``y``, over the crash."""
+    inner = (_times(len(y)) > 0.0) & (_times(len(y)) < 0.17)
+    miss = [np.sqrt(np.mean((y - lab.late(y0, k / physics.FS_HZ))[inner] ** 2))
+            for k in range(81)]
+    return int(np.argmin(miss))
+
+
+def test_set_q_cr_late_moves_cr_only(set_q: Path) -> None:
+    """CR is its own twin's written late (within the CFC 180 filter's noise), every test; CD,
+    pulse and BRS untouched."""
+    c = heldout_sets.select(["hq_cr_late"], "q")[0]
+    (e,) = c.effects
+    for name, on, off in _twelve(set_q / "on" / c.name, set_q / "off" / c.name):
+        for which in ("cd", "pulse"):
+            assert np.array_equal(_channel(on, name, which), _channel(off, name, which))
+        assert np.array_equal(_brs(on, name), _brs(off, name))
+        cr, cr0 = _channel(on, name, "cr"), _channel(off, name, "cr")
+        inner = (_times(len(cr)) > 0.0) & (_times(len(cr)) < 0.17)
+        miss = np.abs(cr - lab.late(cr0, e.size))[inner].max()
+        moved = np.abs(cr - cr0).max()
+        assert miss < 1.0 and miss < 0.2 * moved and moved > 2.0, (name, miss, moved)
+        assert _best_lag(cr, cr0) == round(e.size * physics.FS_HZ)
+
+
+def test_set_q_cd_rc_filter_lags_cd_only(set_q: Path) -> None:
+    """CD is its own twin's through the RC low-pass (within the noise), later at its peak and
+    no higher, every test; CR, pulse and BRS untouched."""
+    c = heldout_sets.select(["hq_cd_rc_filter"], "q")[0]
+    (e,) = c.effects
+    seen = 0
+    for cd, cd0 in _cd_only(set_q / "on" / c.name, set_q / "off" / c.name):
+        inner = (_times(len(cd)) > 0.0) & (_times(len(cd)) < 0.17)
+        miss = np.abs(cd - lab.rc_filter(cd0, e.size))[inner].max()
+        moved = np.abs(cd - cd0).max()
+        assert miss < 0.3 and miss < 0.2 * moved and moved > 1.0, (miss, moved)
+        assert np.argmax(cd) > np.argmax(cd0) and cd.max() <= cd0.max() + 0.1
+        seen += 1
+    assert seen == 12
+
+
+def test_set_q_dummy_late_moves_both_outputs_alike(set_q: Path) -> None:
+    """The dummy's recorder late: CR and CD each their twin's written the same time late
+    (within the noise), every test; the pulse and BRS, the car's, untouched."""
+    c = heldout_sets.select(["hq_dummy_late"], "q")[0]
+    (e,) = c.effects
+    for name, on, off in _twelve(set_q / "on" / c.name, set_q / "off" / c.name):
+        assert np.array_equal(_channel(on, name, "pulse"), _channel(off, name, "pulse"))
+        assert np.array_equal(_brs(on, name), _brs(off, name))
+        for which, noise in (("cr", 1.0), ("cd", 0.3)):
+            y, y0 = _channel(on, name, which), _channel(off, name, which)
+            inner = (_times(len(y)) > 0.0) & (_times(len(y)) < 0.17)
+            miss = np.abs(y - lab.late(y0, e.size))[inner].max()
+            moved = np.abs(y - y0).max()
+            assert miss < noise and miss < 0.2 * moved, (name, which, miss, moved)
+            assert _best_lag(y, y0) == round(e.size * physics.FS_HZ)

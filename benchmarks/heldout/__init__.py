@@ -46,11 +46,14 @@
   ``cases_p.py``: set P, the same again, on pairings no earlier case ran, judging the belt's
   unloading path (a webbing's permanent set, its hysteresis, a capstan at the car's D-ring, at
   new sizes and scopes) against clean cases and two effects that must not be named as one.
+  ``cases_q.py``: set Q, the same again, on pairings no earlier case ran, judging timing: a
+  late input (the pulse; the BRS) against a late or lagging output (CR written late by its
+  digitiser; CD through a one-pole RC low-pass; both outputs late on the dummy's recorder).
   ``make_sets.py``: writes a set (``--no-effects``: the same tests with every effect off).
   ``costs.py``: what each case costs the thesis grey-box (project CLI).
 
     python -m benchmarks.heldout.make_sets --out /tmp/heldout
-        [--set a|b|c|d|e|f|g|h|i|j|k|l|m|n|o|p] [--case NAME ...]
+        [--set a|b|c|d|e|f|g|h|i|j|k|l|m|n|o|p|q] [--case NAME ...]
 
 Never tune the loop on these cases; report them apart from the tuned ones.
 """

@@ -35,7 +35,7 @@ EXACT = {"pulse_late", "brs_late", "brs_freeze", "cd_dropout", "pulse_rail", "pu
          "brs_quadrature", "cr_ac_coupled", "brs_poll", "cr_lost_block", "cd_backlash",
          "cr_loose_mount", "brs_swap", "cd_arm_lift", "pulse_from", "cr_zero_shift",
          "pulse_rate", "cd_aa_filter", "dummy_scale", "cr_crosstalk", "dummy_soak", "cd_sag",
-         "brs_counts", "cr_damped"}
+         "brs_counts", "cr_damped", "cr_late", "cd_rc_filter", "dummy_late"}
 DROPOUT_S = 0.010  # how long cd_dropout's wiper stays off the track
 KNEE_SLOPE = 0.6  # cd_knee: the gain of the CD calibration's second segment
 SHIFT_AT_S = 0.011  # pulse_zero_shift: when the zero shifts (in the crash-box spike)
@@ -81,6 +81,17 @@ CD_SAG_TAU_S = 0.060
 # acceleration through a 2-pole low-pass of this damping ratio at its natural frequency (the
 # effect's size, Hz), causal: it lags and rounds CR; the oil's damping is its design's (0.7)
 CR_DAMPED_ZETA = 0.7
+# cr_late: the CR channel goes through a digitiser module of another make (a delta-sigma
+# converter and its decimation filter) whose pipeline delay the recorder does not take off its
+# time stamps: CR is written this late (s) against every other channel; CR's values are right
+# cd_rc_filter: the CD conditioner's output stage is a one-pole RC low-pass (its corner, the
+# effect's size in Hz, set for a slow channel): causal, it lags CD by about 1 / (2 pi f) and
+# rounds its peak; CD's static reading is right
+# dummy_late: the dummy's own recorder (in the spine box: CR and CD) runs its time base this
+# late (s) against the car's (pulse and BRS): what the chest did at t it writes at t + late,
+# both channels alike. (The recorder's trigger, as it stamps it, comes that long before the
+# car's: a recorder that took its trigger late would write the chest early instead, which no
+# causal model can follow.) To the chest's model it is the same as both inputs leading by it
 NOISE = {"pulse_g": 0.6, "cr_g": 0.55, "cd_mm": 0.10}  # white, before the CFC filters
 
 
@@ -147,6 +158,20 @@ def damped_element(a: np.ndarray, f_hz: float, zeta: float = CR_DAMPED_ZETA) -> 
     w = 2 * ph.FS_HZ * np.tan(np.pi * f_hz / ph.FS_HZ)
     bb, aa = signal.bilinear([w * w], [1.0, 2 * zeta * w, w * w], fs=ph.FS_HZ)
     return np.asarray(signal.lfilter(bb, aa, a))
+
+
+def late(x: np.ndarray, seconds: float) -> np.ndarray:
+    """``x`` (sampled at ``physics.FS_HZ``) written ``seconds`` late: what it was at t is read
+    at t + seconds, its first sample held before (a transport lag)."""
+    n = np.arange(x.size, dtype=float)
+    return np.interp(n - seconds * ph.FS_HZ, n, x)
+
+
+def rc_filter(x: np.ndarray, f_hz: float) -> np.ndarray:
+    """A one-pole RC low-pass at ``f_hz``, causal, from rest (bilinear, pre-warped): unit
+    gain at rest, a lag of about 1 / (2 pi f_hz) at low frequency."""
+    bb, aa = signal.butter(1, f_hz, fs=ph.FS_HZ)
+    return np.asarray(signal.lfilter(bb, aa, x))
 
 
 def scale_dummy(params: dict[str, float], s: float) -> dict[str, float]:
@@ -261,6 +286,8 @@ def record(d: Drawn, i: int, sim: dict[str, np.ndarray], counts_per_rev: int,
         counts = -counts
     # CR (CFC 180), CD (CFC 600, maybe a non-linear pot, maybe zeroed off)
     cr_read = sim["cr"][i] / ph.G
+    if e["dummy_late"]:  # the dummy's recorder's time base late against the car's
+        cr_read = late(cr_read, e["dummy_late"])
     if e["cr_gain"]:  # the accelerometer's sensitivity error
         cr_read = cr_read * (1.0 + e["cr_gain"])
     if e["cr_soft_clip"]:  # a conditioner near its output range: reads low, more so at peaks
@@ -275,6 +302,8 @@ def record(d: Drawn, i: int, sim: dict[str, np.ndarray], counts_per_rev: int,
         cr_read = loose_mount(cr_read, e["cr_loose_mount"])  # on a spring, a resonance
     if e["cr_damped"]:  # an oil-damped sensing element, its natural frequency too low
         cr_read = damped_element(cr_read, e["cr_damped"])
+    if e["cr_late"]:  # the CR digitiser's pipeline delay, not taken off its time stamps
+        cr_read = late(cr_read, e["cr_late"])
     if e["cr_zero_shift"]:  # the sensing element's zero shifts under the shock: once the
         k = int(np.argmax(cr_read >= CR_SHIFT_G))  # reading first passes CR_SHIFT_G it moves
         if cr_read[k] >= CR_SHIFT_G:  # by the size (g) over CR_SHIFT_RISE_S and stays there
@@ -297,6 +326,8 @@ def record(d: Drawn, i: int, sim: dict[str, np.ndarray], counts_per_rev: int,
     if e["cr_reversed"]:  # the channel's polarity set wrong in the recorder
         cr = -cr
     cd_true = sim["cd"][i] * 1e3
+    if e["dummy_late"]:  # as CR: the same recorder
+        cd_true = late(cd_true, e["dummy_late"])
     cd = cd_true * (1.0 + e["cd_pot_nonlinear"] * (np.maximum(cd_true, 0) / 25.0) ** 2)
     if e["cd_knee"]:  # two-segment calibration, the second segment's slope entered wrong
         cd = np.where(cd > e["cd_knee"], e["cd_knee"] + KNEE_SLOPE * (cd - e["cd_knee"]), cd)
@@ -313,6 +344,8 @@ def record(d: Drawn, i: int, sim: dict[str, np.ndarray], counts_per_rev: int,
         cd = cd * (1.0 - e["cd_sag"] * (1.0 - np.exp(-np.maximum(t, 0.0) / CD_SAG_TAU_S)))
     if e["cd_aa_filter"]:  # the CD module's analog anti-alias filter set for a slow channel:
         cd = aa_filter(cd, e["cd_aa_filter"])  # a causal low-pass ahead of the digitiser
+    if e["cd_rc_filter"]:  # the conditioner's one-pole RC output stage, set for a slow channel
+        cd = rc_filter(cd, e["cd_rc_filter"])
     cd = cd + NOISE["cd_mm"] * rng.standard_normal(t.size)
     if e["cd_stuck_bit"]:  # one data line of the digitiser stuck at 1: the recorded channel
         raw = -cd  # (J211 sign) reads one bit's weight high wherever that bit should be 0

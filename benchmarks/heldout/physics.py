@@ -125,6 +125,10 @@ EFFECTS = {
     "rib_friction": "chest_rate_damping",  # dry (Coulomb) friction in the rib cage, this force (N)
     "brs_counts": "",  # broken test: the BRS file holds raw counts under its degrees (1 = on)
     "cr_damped": "",  # transducer: CR through an oil-damped sensing element of this f_n (Hz)
+    # set Q's forms (cases_q.py): two lab-side, one timing error of the dummy's recorder
+    "cr_late": "",  # transducer: the CR digitiser channel writes its samples this late (s)
+    "cd_rc_filter": "",  # transducer: CD through a one-pole RC low-pass at this corner (Hz)
+    "dummy_late": "input_delay",  # the dummy's recorder writes CR and CD this late (s)
 }
 POW_B_M = (0.015, 0.025)  # webbing_power: reference stretch, chest side and up to the retractor
 V_HYST = 0.02  # m/s: webbing_hysteresis switches between its paths within this rate

@@ -11,7 +11,7 @@ the same way), set L (``cases_l``, written after set K had been looked at, the s
 M (``cases_m``, written after set L had been looked at, the same way), set N (``cases_n``,
 written after set M had been looked at, the same way), set O (``cases_o``, written after set N
 had been looked at, the same way), set P (``cases_p``, written beside set O by another engineer,
-the same way)."""
+the same way), set Q (``cases_q``, written after sets O and P, the same way)."""
 
 from __future__ import annotations
 
@@ -31,15 +31,16 @@ from .cases_m import SET_M
 from .cases_n import SET_N
 from .cases_o import SET_O
 from .cases_p import SET_P
+from .cases_q import SET_Q
 
-SETS = ("a", "b", "c", "d", "e", "f", "g", "h", "i", "j", "k", "l", "m", "n", "o", "p")
+SETS = ("a", "b", "c", "d", "e", "f", "g", "h", "i", "j", "k", "l", "m", "n", "o", "p", "q")
 
 
 def case_set(name: str) -> list[Case]:
     """Set A (``cases``), B (``cases_b``), C (``cases_c``), D (``cases_d``), E (``cases_e``),
     F (``cases_f``), G (``cases_g``), H (``cases_h``), I (``cases_i``), J (``cases_j``), K
-    (``cases_k``), L (``cases_l``), M (``cases_m``), N (``cases_n``), O (``cases_o``) or P
-    (``cases_p``); ValueError for another name."""
+    (``cases_k``), L (``cases_l``), M (``cases_m``), N (``cases_n``), O (``cases_o``), P
+    (``cases_p``) or Q (``cases_q``); ValueError for another name."""
     if name == "a":
         return list(CASES)
     if name == "b":
@@ -72,6 +73,8 @@ def case_set(name: str) -> list[Case]:
         return list(SET_O)
     if name == "p":
         return list(SET_P)
+    if name == "q":
+        return list(SET_Q)
     raise ValueError(f"unknown case set {name!r}; known: {', '.join(SETS)}")
 
 
