@@ -22,12 +22,6 @@ Per case the loop runs blind at its defaults on 6 estimation + 6 validation test
 - at the end: how many cases are right, and how many named effects are there and not there,
   and how many refused or tied effects are there and not there.
 
-The sets' verdicts name a belt that gives back less than it took (slack webbing, a webbing's
-permanent set, its hysteresis, D-ring friction) ``belt_unloading``: when they were written the
-library had no other word for it. Since the library has ``belt_set`` (2026-11-26), a verdict
-``belt_set`` is scored as ``belt_unloading`` (:data:`SAME_FINDING`); the exact names are kept
-in each row's ``named``.
-
     python -m benchmarks.loop_heldout [--set a|b|...|j] [--cases NAME ...] [--sets DIR]
                                       [--out DIR] [--workers N] [--json FILE]
 """
@@ -53,9 +47,6 @@ from observer_node.loop.closed_loop import run_loop
 from observer_node.loop.refit import refit, score
 from observer_node.loop.report import LoopReport
 from observer_node.model.effects import EFFECTS
-
-# Library kinds scored as the sets' older word for the same finding (see the docstring).
-SAME_FINDING = {"belt_set": "belt_unloading"}
 
 
 def _sim_scope(setups: list[str], report: LoopReport) -> str:
@@ -117,16 +108,12 @@ def run_case(case: Case, sets: Path, work: Path, workers: int | None) -> dict:
     r = run_loop(est, val, work / case.name, verbose=False, plots=False, ratings=False,
                  workers=workers)
     seconds = time.monotonic() - t0
-    named = sorted(f"{e.kind}@{_sim_scope(e.setups or [], r)}" for e in r.effects)
-    found = sorted(f"{SAME_FINDING.get(e.kind, e.kind)}@{_sim_scope(e.setups or [], r)}"
-                   for e in r.effects)
+    found = sorted(f"{e.kind}@{_sim_scope(e.setups or [], r)}" for e in r.effects)
     # passed the rule, not named: a rival of another kind passes too, not told apart
-    tied = sorted(f"{SAME_FINDING.get(p.kind, p.kind)}@"
-                  f"{_sim_scope([] if p.scope == 'all' else p.scope.split('+'), r)}"
+    tied = sorted(f"{p.kind}@{_sim_scope([] if p.scope == 'all' else p.scope.split('+'), r)}"
                   for p in r.possible if "cannot tell it from" in p.why_not)
     # passed the rule, refused because the validation tests do not confirm it
-    refused = sorted(f"{SAME_FINDING.get(p.kind, p.kind)}@"
-                     f"{_sim_scope([] if p.scope == 'all' else p.scope.split('+'), r)}"
+    refused = sorted(f"{p.kind}@{_sim_scope([] if p.scope == 'all' else p.scope.split('+'), r)}"
                      for p in r.possible if "do not confirm" in p.why_not)
     expected = sorted(f"{k}@{'+'.join(sorted(s.split('+')))}" for k, s in case.expect)
     flagged = sorted({w.test for w in r.warnings})
@@ -148,8 +135,7 @@ def run_case(case: Case, sets: Path, work: Path, workers: int | None) -> dict:
         output = case.expect_note.rsplit(" ", 1)[-1]  # "... on cd"
         right = right and (output in sensor or output in unexpl)
         right_judged = right_judged and (output in sensor or output in unexpl)
-    row = {"case": case.name, "found": found, "named": named, "expected": expected,
-           "flagged": flagged,
+    row = {"case": case.name, "found": found, "expected": expected, "flagged": flagged,
            "rigs": every, "judged_rigs": judged, "expected_judged": as_judged,
            "right_judged": right_judged,
            "sensor": sensor, "unexplained": unexpl, "right": right, "tied": tied,
@@ -213,7 +199,7 @@ def main() -> None:
         row = run_case(case, sets, work, a.workers)
         rows.append(row)
         reach = row.get("reachable", math.nan)
-        named = ", ".join(row["named"]) or "(none)"  # the library's names, as reported
+        named = ", ".join(row["found"]) or "(none)"
         if row["tied"]:
             named += f"; tied: {'|'.join(row['tied'])}"
         if row["refused"]:

@@ -328,7 +328,6 @@ typedef struct {{
     co_real pulse_ring[{np1}]; /* input delay of the pulse (whole ticks + 2) */
     co_real brs_ring[{nb1}];   /* input delay of the BRS */
     co_real brs_first;         /* first BRS sample: the delayed BRS before it exists */
-    co_real e_peak;            /* largest belt penetration so far, m (the webbing's set) */
 }} co_observer;
 
 void co_reset(co_observer *obs);
@@ -420,7 +419,6 @@ RESET = """void co_reset(co_observer *obs)
     obs->has_prev = 0;
     obs->k = 0;
     obs->brs_first = 0;
-    obs->e_peak = 0;
     for (i = 0; i < (int)(sizeof obs->pulse_ring / sizeof obs->pulse_ring[0]); i++)
         obs->pulse_ring[i] = 0;
     for (i = 0; i < (int)(sizeof obs->brs_ring / sizeof obs->brs_ring[0]); i++)
@@ -486,20 +484,15 @@ def _nonlinear(obs: NonlinearGreyBox) -> tuple[str, int, int, int]:
                   f"      {sig} = a + {_num(f)} * (b - a); }}\n")
     # the effects' forces at a state (and whether the belt is slack there), used for the
     # update and, with the output after the tick's inputs, again at the new state
-    # (every state passes through it in order, so it keeps the belt penetration's peak too)
     forces_fn = ("static int co_forces(const co_real *z, const co_real u[2], co_real theta, "
-                 "co_real *peak, co_real f[2])\n{\n"
+                 "co_real f[2])\n{\n"
                  "    co_real d = z[3] - z[1];       /* chest compression s - x */\n"
                  "    co_real dd = z[2] - z[0];\n"
                  "    co_real e = z[4] - z[3];       /* belt penetration w - s */\n"
                  "    co_real pos = z[5];            /* vehicle displacement */\n"
                  f"    co_real ed = u[0] + {R} * u[1] - z[2];\n"
-                 "    co_real e_peak;\n"
                  "    co_real fs = 0, fn = 0;\n"
-                 "    if (e > *peak) *peak = e;\n"
-                 "    e_peak = *peak;\n"
-                 "    (void)d; (void)dd; (void)e; (void)pos; (void)ed; (void)theta; "
-                 "(void)e_peak;\n"
+                 "    (void)d; (void)dd; (void)e; (void)pos; (void)ed; (void)theta;\n"
                  + forces + "    f[0] = fs;\n    f[1] = fn;\n"
                  + (f"    return {k2} * e + {c2} * ed < 0;\n}}\n\n" if slack is not None
                     else "    return 0;\n}\n\n"))
@@ -514,7 +507,7 @@ def _nonlinear(obs: NonlinearGreyBox) -> tuple[str, int, int, int]:
             "    const co_real *z = obs->x;\n"
             "    int i, slack;\n"
             + delay + _inputs("velocity_brs_rate", obs.fs_hz)
-            + "    slack = co_forces(z, u, brs_rad, &obs->e_peak, f);\n"
+            + "    slack = co_forces(z, u, brs_rad, f);\n"
             + ("" if obs.after_input else output("z"))
             + ("    if (slack) {\n" + _matvec("xn", "Ad_slack", nx, nx, "z", False) + "\n"
                + _matvec("xn", "Bd_slack", nx, 2, "u", True) + "\n"
@@ -526,7 +519,7 @@ def _nonlinear(obs: NonlinearGreyBox) -> tuple[str, int, int, int]:
             + "    (void)slack;\n"
             "    for (i = 0; i < CO_STATES; i++) obs->x[i] = xn[i];\n    obs->k++;\n"
             + ("    /* the output of the state after this tick's inputs */\n"
-               "    (void)co_forces(obs->x, u, brs_rad, &obs->e_peak, f);\n" + output("obs->x")
+               "    (void)co_forces(obs->x, u, brs_rad, f);\n" + output("obs->x")
                if obs.after_input else "")
             + "}\n")
     return (tables + "\n" + RESET + forces_fn + step, nx, int(obs.n_pulse) + 1,

@@ -93,7 +93,6 @@ def test_every_exportable_effect_with_delays_and_offsets(models, tmp_path):
         {"kind": "chest_stiffening", "parameters": {"k3": 3e7}},
         {"kind": "chest_rate_damping", "parameters": {"c3": 50.0}},
         {"kind": "belt_unloading", "parameters": {}},
-        {"kind": "belt_set", "parameters": {"set": 0.5}},
         {"kind": "belt_stiffening", "parameters": {"kb3": 5e6}},
         {"kind": "airbag_contact", "parameters": {"kab": 3e4, "gap": 0.05, "cab": 300.0}},
         {"kind": "pelvis_coupling", "parameters": {"kp": 1e4, "cp": 300.0}},

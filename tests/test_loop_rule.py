@@ -484,15 +484,6 @@ def test_the_held_out_benchmark_scores_scopes_on_the_rigs_held_twice():
     assert _as_judged("chest_stiffening@R16", every, every) == "chest_stiffening@R16"
 
 
-def test_the_held_out_benchmark_scores_a_webbing_set_as_the_sets_belt_unloading():
-    from benchmarks.loop_heldout import SAME_FINDING
-    from observer_node.model.effects import EFFECTS
-
-    # the sets' verdicts were written when the one-sided belt was the library's only word
-    assert SAME_FINDING == {"belt_set": "belt_unloading"}
-    assert set(SAME_FINDING) | set(SAME_FINDING.values()) <= set(EFFECTS)
-
-
 def test_an_input_delay_of_both_inputs_alike_that_helps_one_output_is_that_outputs_lag():
     from observer_node.loop.verdicts import output_lag
 

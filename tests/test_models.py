@@ -169,39 +169,3 @@ def test_the_output_is_the_state_after_the_ticks_input_and_old_files_keep_theirs
     before = NonlinearGreyBox(p, effects, 1000.0, after_input=False).simulate(data.pulse_g,
                                                                               data.brs_rad)
     np.testing.assert_allclose(after[:, :-1], before[:, 1:], atol=1e-9)
-
-
-def test_a_webbing_set_unloads_below_its_loading_path_and_the_daemon_remembers_the_peak(
-        clean_r16):
-    """``belt_set``: nothing while the belt loads (each state its own peak); after the peak the
-    sternum is pushed less, by k2 set / (1 - set) (E - e); the per-tick observer keeps the
-    peak as the vectorised simulation does; set = 0 is the grey-box itself."""
-    from observer_node.loop.analysis import trajectory
-    from observer_node.model.effects import effect_forces
-    from observer_node.model.nonlinear import NonlinearGreyBox
-
-    p = TRUTH.as_dict()
-    z = np.array([0.0, 0.0, 0.0, 0.010, 0.030, 0.0])  # e = w - s = 20 mm
-    kw = {"u1": 0.0, "u2": 0.0, "theta": 0.0, "base": p}
-    assert effect_forces("belt_set", {"set": 0.5}, z, **kw)[1] == 0.0  # at its peak
-    fn = effect_forces("belt_set", {"set": 0.5}, z, **kw, e_peak=0.050)[1]  # 30 mm below it
-    assert fn == pytest.approx(-p["k2"] * 0.5 / 0.5 * 0.030)
-    data = make_dataset(clean_r16[:2], 1000.0)
-    plain = greybox.simulate(p, data)
-    zero = NonlinearGreyBox(p, [{"kind": "belt_set", "parameters": {"set": 0.0}}], 1000.0)
-    np.testing.assert_allclose(zero.simulate(data.pulse_g, data.brs_rad), plain, atol=1e-9)
-    m = NonlinearGreyBox(p, [{"kind": "belt_set", "parameters": {"set": 0.5}}], 1000.0)
-    y = m.simulate(data.pulse_g, data.brs_rad)
-    tr = trajectory(m, data)
-    e = tr.z[4] - tr.z[3]
-    k_peak = int(np.argmax(e[0]))
-    assert 0 < k_peak < e.shape[1] - 10 and e[0, -1] < e[0, k_peak] - 0.005  # it unloads
-    # the grey-box until the belt first gives back (the output at tick k is state k + 1's)
-    first = int(np.argmax(e[0] < tr.e_peak[0] - 1e-12))
-    assert first > 5
-    np.testing.assert_allclose(y[0, :first - 1], plain[0, :first - 1], atol=1e-9)
-    assert np.max(plain[0, k_peak:, 1] - y[0, k_peak:, 1]) > 0.5  # springs back less: CD, mm
-    m.reset()
-    stepped = np.array([m.step(a, b).copy() for a, b in zip(data.pulse_g[0], data.brs_rad[0],
-                                                            strict=True)])
-    np.testing.assert_allclose(stepped, y[0], atol=1e-9)

@@ -140,11 +140,6 @@ class Trajectory:
     u2: np.ndarray
     theta: np.ndarray
 
-    @property
-    def e_peak(self) -> np.ndarray:
-        """The largest belt penetration w - s so far at each tick (tests, n) [m]."""
-        return np.maximum.accumulate(self.z[4] - self.z[3], axis=-1)
-
 
 def trajectory(model: NonlinearGreyBox, data: Dataset) -> Trajectory:
     """States of ``model`` on ``data`` (re-running its simulation and keeping the states)."""
@@ -176,8 +171,7 @@ def force_signature(model: NonlinearGreyBox, data: Dataset, kind: str, p: dict) 
     """Output change (tests, n, 2) that a force effect with parameters ``p`` would cause,
     evaluated along ``model``'s own trajectory and propagated through its linear part."""
     tr = trajectory(model, data)
-    fs, fn = effect_forces(kind, p, tuple(tr.z), tr.u1, tr.u2, tr.theta, model.base,
-                           tr.e_peak)
+    fs, fn = effect_forces(kind, p, tuple(tr.z), tr.u1, tr.u2, tr.theta, model.base)
     return propagate(model, np.asarray(np.broadcast_to(fs, tr.u1.shape), float),
                      np.asarray(np.broadcast_to(fn, tr.u1.shape), float))
 
@@ -261,7 +255,7 @@ def candidates(model: NonlinearGreyBox, data: Dataset, present: set[str],
         return coef[:len(sigs)], ex
 
     def force_sig(kind: str, p: dict) -> np.ndarray:
-        fs, fn = effect_forces(kind, p, zt, tr.u1, tr.u2, tr.theta, model.base, tr.e_peak)
+        fs, fn = effect_forces(kind, p, zt, tr.u1, tr.u2, tr.theta, model.base)
         fs = np.broadcast_to(fs, tr.u1.shape)
         fn = np.broadcast_to(fn, tr.u1.shape)
         return propagate(model, np.asarray(fs, float), np.asarray(fn, float))

@@ -11,9 +11,8 @@ more ``register(Effect(...))`` below.
 Forces act on the spine (m1) and/or the sternum (m2), computed from the state
 z = (xdot, x, sdot, s, w, p) [SI; p = vehicle displacement, the double integral of the pulse],
 the transformed inputs u1 = vehicle velocity change [m/s], u2 = BRS rate [rad/s], the BRS angle
-theta [rad], the base parameters (k2, c2, R) and the largest belt penetration so far (the
-model's one memory, for the webbing's set). The formulas work on floats (the daemon, per tick)
-and on numpy arrays (identification, vectorised over tests).
+theta [rad], and the base parameters (k2, c2, R). The formulas work on floats (the daemon, per
+tick) and on numpy arrays (identification, vectorised over tests).
 
 Knows nothing about how an effect is fitted: ``search`` names a method the loop implements.
 """
@@ -48,18 +47,14 @@ class Kinematics(NamedTuple):
     u2: Num  # BRS rate [rad/s]
     theta: Num  # BRS angle [rad]
     zero: Num  # 0 shaped like d (NaN where d is: a trial that ran away stays visible)
-    e_peak: Num  # the largest belt penetration so far, this state's included [m]
 
 
 def kinematics(z: np.ndarray | Sequence[Num], u1: Num, u2: Num, theta: Num,
-               base: Mapping[str, float], e_peak: Num = None) -> Kinematics:
-    """What a force formula reads at state ``z``; ``e_peak``: the largest belt penetration
-    of the states before it (the model's one memory; None: none, this state is the peak)."""
+               base: Mapping[str, float]) -> Kinematics:
     xd, x, sd, s, w, p = z
     d = s - x
-    e = w - s
-    return Kinematics(xd, x, p, d, sd - xd, e, u1 + base["R"] * u2 - sd, u1, u2, theta,
-                      0.0 * d, e if e_peak is None else np.maximum(e_peak, e))
+    return Kinematics(xd, x, p, d, sd - xd, w - s, u1 + base["R"] * u2 - sd, u1, u2, theta,
+                      0.0 * d)
 
 
 # (parameters, kinematics, base parameters) -> (force on the spine, on the sternum) [N],
@@ -190,11 +185,10 @@ def registry_version() -> int:
 
 
 def effect_forces(kind: str, p: Mapping[str, Any], z: np.ndarray | Sequence[Num], u1: Num,
-                  u2: Num, theta: Num, base: Mapping[str, float], e_peak: Num = None
-                  ) -> tuple[Num, Num]:
+                  u2: Num, theta: Num, base: Mapping[str, float]) -> tuple[Num, Num]:
     """(force on the spine, force on the sternum) [N] of one effect, + = rearward; zero for
-    effects that are not forces. ``e_peak``: as :func:`kinematics` takes it."""
-    k = kinematics(z, u1, u2, theta, base, e_peak)
+    effects that are not forces."""
+    k = kinematics(z, u1, u2, theta, base)
     force = EFFECTS[kind].force
     return (k.zero, k.zero) if force is None else force(p, k, base)
 
@@ -237,28 +231,6 @@ register(Effect(
     force=lambda p, k, b: (k.zero, -np.minimum(b["k2"] * k.e + b["c2"] * k.ed, 0.0)),
     search=Search("switch"),
     plant="the belt pulls, it never pushes (force clipped at zero)"))
-
-def _belt_set(p: Mapping[str, Any], k: Kinematics, b: Mapping[str, float]) -> tuple[Num, Num]:
-    return k.zero, b["k2"] * p["set"] / (1.0 - p["set"]) * np.minimum(k.e - k.e_peak, 0.0)
-
-
-# A webbing that keeps part of its stretch: polyester webbing unloads along a steeper path
-# than it loaded and does not spring back to its length (a permanent set). The one-sided belt
-# above cannot take that: clipping the belt force at zero lost 6-14 points of validation fit
-# on every webbing set and hysteresis of held-out sets B-N (2026-11-26), where this, fitted
-# offline, gained 0.9-2.4 points on the six webbing sets and nothing on the hysteresis.
-# The model's one memory is the peak penetration (``Kinematics.e_peak``).
-SET_MAX = 0.8  # beyond, the unloading slope k2 / (1 - set) is a stiff spring held over a tick
-
-register(Effect(
-    "belt_set", "physical",
-    "webbing set: after its peak penetration E the belt unloads along k2 (e - set E) / "
-    "(1 - set), reaching zero force at set x E (a permanent elongation): F = k2 set / (1 - set) "
-    f"min(e - E, 0) on the sternum, 0 <= set <= {SET_MAX:g}",
-    (Param("set", "1", 0.3, within=(0.0, SET_MAX)),),
-    force=_belt_set,
-    c_code=lambda p, num, b: (f"    if (e < e_peak) fn += {b['k2']} * "
-                              f"{num(p['set'] / (1.0 - p['set']))} * (e - e_peak);\n")))
 
 # A cubic. A free exponent (kb3 E^3 |e/E|^n, n 2..16) was tried on the seen held-out sets
 # (2026-11-25): a bilinear webbing's offline fit rose 1.7 -> 3.9 of its 4.3 points, but no

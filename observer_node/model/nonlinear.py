@@ -126,7 +126,6 @@ class NonlinearGreyBox:
         self._brs_ring[:] = math.nan
         self._brs_first = 0.0
         self._k = 0
-        self._e_peak = 0.0  # the largest belt penetration so far [m] (the webbing's set)
 
     @staticmethod
     def _delayed(ring: np.ndarray, k: int, i: int, f: float, before: float) -> float:
@@ -188,11 +187,7 @@ class NonlinearGreyBox:
         f[0] = f[1] = 0.0
         if not self._force_fns:
             return
-        # every state passes here in order (before the tick, then after it): the peak so far
-        e = z[4] - z[3]
-        if e > self._e_peak:
-            self._e_peak = e
-        k = kinematics(z, u1, u2, theta, self.base, self._e_peak)
+        k = kinematics(z, u1, u2, theta, self.base)
         for force, p, _ in self._force_fns:
             fs, fn = force(p, k, self.base)
             f[0] += fs
@@ -223,14 +218,12 @@ class NonlinearGreyBox:
         ntest, n = u1.shape
         z = np.zeros((6, ntest))
         y = np.empty((ntest, n, 2))
-        peak = np.zeros(ntest)  # the largest belt penetration so far, per test [m]
         Ad, Bd, Gd, C, Df = self.Ad, self.Bd, self.Gd, self.C, self.Df
         for k in range(n):
             if states is not None:
                 states[:, :, k] = z
             a, b, th = u1[:, k], u2[:, k], theta[:, k]
-            peak = np.maximum(peak, z[4] - z[3])
-            f = self._forces_all(z, a, b, th, peak)
+            f = self._forces_all(z, a, b, th)
             ab = np.vstack([a, b])
             if not self.after_input:
                 y[:, k] = (C @ z + Df @ f).T
@@ -244,21 +237,19 @@ class NonlinearGreyBox:
                     zn = np.where(slack, z_slack, zn)
             z = zn
             if self.after_input:
-                peak = np.maximum(peak, z[4] - z[3])
-                y[:, k] = (C @ z + Df @ self._forces_all(z, a, b, th, peak)).T
+                y[:, k] = (C @ z + Df @ self._forces_all(z, a, b, th)).T
         if self.offset_mask is not None:
             return y + self.offset_mask[:, None, None] * self.offset
         return y + self.offset
 
-    def _forces_all(self, z: np.ndarray, a: np.ndarray, b: np.ndarray, th: np.ndarray,
-                    e_peak: np.ndarray) -> np.ndarray:
-        """Forces (2, tests) of the effects at states z (6, tests), scoped by their masks;
-        ``e_peak``: each test's largest belt penetration so far, this state's included."""
+    def _forces_all(self, z: np.ndarray, a: np.ndarray, b: np.ndarray,
+                    th: np.ndarray) -> np.ndarray:
+        """Forces (2, tests) of the effects at states z (6, tests), scoped by their masks."""
         fs = np.zeros(a.shape[0])
         fn = np.zeros(a.shape[0])
         if not self._force_fns:
             return np.vstack([fs, fn])
-        k = kinematics(z, a, b, th, self.base, e_peak)
+        k = kinematics(z, a, b, th, self.base)
         for force, p, mask in self._force_fns:
             s1, s2 = force(p, k, self.base)
             if mask is not None:
