@@ -1673,21 +1673,27 @@ def test_set_n_judges_scope_on_thinly_held_rigs() -> None:
     assert all(_thin(c, every) for c in delays)
 
 
-def test_set_n_lab_side_is_new_and_unnamed() -> None:
-    """6. one broken estimation test, of a form no earlier set used, the only thing expected;
-    7. one transducer error on CD, of a form no earlier set used, nothing physical named."""
-    before = [c for s in "abcdefghijklm" for c in heldout_sets.case_set(s)]
+def _lab_side_is_new_and_unnamed(new: list[cases.Case], before_sets: str, output: str) -> None:
+    """One broken estimation test, of a form no earlier set used, the only thing expected; one
+    transducer error on ``output``, of a form no earlier set used, nothing physical named."""
+    before = [c for s in before_sets for c in heldout_sets.case_set(s)]
     lib = physics.EFFECTS
-    (broken,) = [c for c in SET_N if c.expect_broken]
+    (broken,) = [c for c in new if c.expect_broken]
     (e,) = broken.effects
     est, _ = cases.test_names(broken)
     assert set(broken.expect_broken) == set(e.tests) and set(e.tests) <= set(est)
     assert lib[e.key] == "" and not broken.expect and not broken.expect_note
-    (sensor,) = [c for c in SET_N if c.expect_note]
-    assert sensor.expect_note == "unexplained (or a sensor effect) on cd"
+    (sensor,) = [c for c in new if c.expect_note]
+    assert sensor.expect_note == f"unexplained (or a sensor effect) on {output}"
     assert not sensor.expect and not sensor.expect_broken
     assert all(lib[e.key] == "" and not e.tests for e in sensor.effects)
     assert not _keys([broken, sensor]) & _keys(before)
+
+
+def test_set_n_lab_side_is_new_and_unnamed() -> None:
+    """6. one broken estimation test, of a form no earlier set used, the only thing expected;
+    7. one transducer error on CD, of a form no earlier set used, nothing physical named."""
+    _lab_side_is_new_and_unnamed(SET_N, "abcdefghijklm", "cd")
 
 
 @pytest.mark.parametrize(("kelvin", "damp", "stiff"), [(12.0, 1.822, 1.197),
@@ -1819,18 +1825,7 @@ def test_set_o_judges_two_effects_apart_and_none_invented() -> None:
 def test_set_o_lab_side_is_new_and_unnamed() -> None:
     """One broken estimation test, of a form no earlier set used, the only thing expected; one
     transducer error on CR, of a form no earlier set used, nothing physical named."""
-    before = [c for s in "abcdefghijklmn" for c in heldout_sets.case_set(s)]
-    lib = physics.EFFECTS
-    (broken,) = [c for c in SET_O if c.expect_broken]
-    (e,) = broken.effects
-    est, _ = cases.test_names(broken)
-    assert set(broken.expect_broken) == set(e.tests) and set(e.tests) <= set(est)
-    assert lib[e.key] == "" and not broken.expect and not broken.expect_note
-    (sensor,) = [c for c in SET_O if c.expect_note]
-    assert sensor.expect_note == "unexplained (or a sensor effect) on cr"
-    assert not sensor.expect and not sensor.expect_broken
-    assert all(lib[e.key] == "" and not e.tests for e in sensor.effects)
-    assert not _keys([broken, sensor]) & _keys(before)
+    _lab_side_is_new_and_unnamed(SET_O, "abcdefghijklmn", "cr")
 
 
 def test_set_o_rib_friction_is_coulomb_in_the_ribs() -> None:
