@@ -13,6 +13,11 @@ from dataclasses import asdict, dataclass
 ALL = ("R16", "SLED", "FULL")
 
 
+def mix(r16: int, sled: int, full: int) -> tuple[str, ...]:
+    """A test mix: so many tests of each rig, in the order R16, SLED, FULL."""
+    return ("R16",) * r16 + ("SLED",) * sled + ("FULL",) * full
+
+
 @dataclass(frozen=True)
 class Effect:
     key: str  # physics.EFFECTS key

@@ -63,13 +63,10 @@ before any verdict.
 from __future__ import annotations
 
 from .cases import Case, Effect
+from .cases import mix as _mix
 
 # (R16, SLED, FULL) counts, estimation / validation: every (estimation, validation) pairing
 # below is one no case of A-K ran
-
-
-def _mix(r16: int, sled: int, full: int) -> tuple[str, ...]:
-    return ("R16",) * r16 + ("SLED",) * sled + ("FULL",) * full
 
 
 UNEXPLAINED_CD = "unexplained (or a sensor effect) on cd"

@@ -85,11 +85,7 @@ lumbar_one_sled, webbing_set_sleds and pulse_late_4p6ms are as first written.
 from __future__ import annotations
 
 from .cases import Case, Effect
-
-
-def _mix(r16: int, sled: int, full: int) -> tuple[str, ...]:
-    return ("R16",) * r16 + ("SLED",) * sled + ("FULL",) * full
-
+from .cases import mix as _mix
 
 UNEXPLAINED_CR = "unexplained (or a sensor effect) on cr"
 

@@ -71,11 +71,7 @@ delays are as first written.
 from __future__ import annotations
 
 from .cases import Case, Effect
-
-
-def _mix(r16: int, sled: int, full: int) -> tuple[str, ...]:
-    return ("R16",) * r16 + ("SLED",) * sled + ("FULL",) * full
-
+from .cases import mix as _mix
 
 UNEXPLAINED_CD = "unexplained (or a sensor effect) on cd"
 

@@ -47,11 +47,7 @@ webbing_set_full, rib_valve_all, webbing_knee_all and both clean cases are as fi
 from __future__ import annotations
 
 from .cases import Case, Effect
-
-
-def _mix(r16: int, sled: int, full: int) -> tuple[str, ...]:
-    return ("R16",) * r16 + ("SLED",) * sled + ("FULL",) * full
-
+from .cases import mix as _mix
 
 SET_P: list[Case] = [
     Case("hp_clean48", 25107, _mix(2, 4, 0), _mix(3, 2, 1), 48,

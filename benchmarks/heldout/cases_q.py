@@ -51,13 +51,10 @@ takes a one-pole lag of CD far more easily than L's 4-pole filter of about the s
 from __future__ import annotations
 
 from .cases import Case, Effect
+from .cases import mix as _mix
 
 UNEXPLAINED_CR = "unexplained (or a sensor effect) on cr"
 UNEXPLAINED_CD = "unexplained (or a sensor effect) on cd"
-
-
-def _mix(r16: int, sled: int, full: int) -> tuple[str, ...]:
-    return ("R16",) * r16 + ("SLED",) * sled + ("FULL",) * full
 
 
 SET_Q: list[Case] = [
