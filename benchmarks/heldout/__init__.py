@@ -49,11 +49,14 @@
   ``cases_q.py``: set Q, the same again, on pairings no earlier case ran, judging timing: a
   late input (the pulse; the BRS) against a late or lagging output (CR written late by its
   digitiser; CD through a one-pole RC low-pass; both outputs late on the dummy's recorder).
+  ``cases_r.py``: set R, the same again, on pairings no earlier case ran: the general list
+  (clean cases, each kind of the library as physics, two effects on two rigs, a broken test, a
+  transducer error on CD, a late pulse and a late BRS) at new seeds, sizes and scopes.
   ``make_sets.py``: writes a set (``--no-effects``: the same tests with every effect off).
   ``costs.py``: what each case costs the thesis grey-box (project CLI).
 
     python -m benchmarks.heldout.make_sets --out /tmp/heldout
-        [--set a|b|c|d|e|f|g|h|i|j|k|l|m|n|o|p|q] [--case NAME ...]
+        [--set a|b|c|d|e|f|g|h|i|j|k|l|m|n|o|p|q|r] [--case NAME ...]
 
 Never tune the loop on these cases; report them apart from the tuned ones.
 """

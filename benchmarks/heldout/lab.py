@@ -35,7 +35,8 @@ EXACT = {"pulse_late", "brs_late", "brs_freeze", "cd_dropout", "pulse_rail", "pu
          "brs_quadrature", "cr_ac_coupled", "brs_poll", "cr_lost_block", "cd_backlash",
          "cr_loose_mount", "brs_swap", "cd_arm_lift", "pulse_from", "cr_zero_shift",
          "pulse_rate", "cd_aa_filter", "dummy_scale", "cr_crosstalk", "dummy_soak", "cd_sag",
-         "brs_counts", "cr_damped", "cr_late", "cd_rc_filter", "dummy_late"}
+         "brs_counts", "cr_damped", "cr_late", "cd_rc_filter", "dummy_late",
+         "cd_reversed", "cd_slew"}
 DROPOUT_S = 0.010  # how long cd_dropout's wiper stays off the track
 KNEE_SLOPE = 0.6  # cd_knee: the gain of the CD calibration's second segment
 SHIFT_AT_S = 0.011  # pulse_zero_shift: when the zero shifts (in the crash-box spike)
@@ -84,6 +85,9 @@ CR_DAMPED_ZETA = 0.7
 # cr_late: the CR channel goes through a digitiser module of another make (a delta-sigma
 # converter and its decimation filter) whose pipeline delay the recorder does not take off its
 # time stamps: CR is written this late (s) against every other channel; CR's values are right
+# cd_slew: the CD conditioner's output amplifier (an op-amp of too low a slew rate for the
+# channel's range and gain) moves no faster than the effect's size (mm/ms, i.e. m/s) either
+# way: slower compression and opening read right, faster ones lag at that rate
 # cd_rc_filter: the CD conditioner's output stage is a one-pole RC low-pass (its corner, the
 # effect's size in Hz, set for a slow channel): causal, it lags CD by about 1 / (2 pi f) and
 # rounds its peak; CD's static reading is right
@@ -128,6 +132,17 @@ def arm_lift(x: np.ndarray, rate: float) -> np.ndarray:
     last = x[0]
     for i, v in enumerate(x):
         last = max(v, last - rate)
+        y[i] = last
+    return y
+
+
+def slew(x: np.ndarray, rate: float) -> np.ndarray:
+    """An amplifier whose output moves no faster than ``rate`` per sample, either way: it
+    follows ``x`` where ``x`` is slower, and runs at ``rate`` towards it where it is faster."""
+    y = np.empty_like(x)
+    last = x[0]
+    for i, v in enumerate(x):
+        last = last + min(max(v - last, -rate), rate)
         y[i] = last
     return y
 
@@ -346,6 +361,8 @@ def record(d: Drawn, i: int, sim: dict[str, np.ndarray], counts_per_rev: int,
         cd = aa_filter(cd, e["cd_aa_filter"])  # a causal low-pass ahead of the digitiser
     if e["cd_rc_filter"]:  # the conditioner's one-pole RC output stage, set for a slow channel
         cd = rc_filter(cd, e["cd_rc_filter"])
+    if e["cd_slew"]:  # the conditioner's output amplifier slew-limited (a slow op-amp): CD
+        cd = slew(cd, e["cd_slew"] * 1e3 / ph.FS_HZ)  # follows no faster, either way
     cd = cd + NOISE["cd_mm"] * rng.standard_normal(t.size)
     if e["cd_stuck_bit"]:  # one data line of the digitiser stuck at 1: the recorded channel
         raw = -cd  # (J211 sign) reads one bit's weight high wherever that bit should be 0
@@ -362,6 +379,8 @@ def record(d: Drawn, i: int, sim: dict[str, np.ndarray], counts_per_rev: int,
     if e["cd_dropout"]:  # the wiper lifts off its track: the raw channel reads zero
         cd[(t >= e["cd_dropout"]) & (t < e["cd_dropout"] + DROPOUT_S)] = 0.0
     cd = ph.cfc(cd, 600) + e["zero_offset"]
+    if e["cd_reversed"]:  # the channel's polarity set wrong in the recorder (as cr_reversed)
+        cd = -cd
     rig = RIGS[d.setup]
     code, text = PULSE_CHANNEL[d.setup]
     n = counts_per_rev

@@ -129,6 +129,10 @@ EFFECTS = {
     "cr_late": "",  # transducer: the CR digitiser channel writes its samples this late (s)
     "cd_rc_filter": "",  # transducer: CD through a one-pole RC low-pass at this corner (Hz)
     "dummy_late": "input_delay",  # the dummy's recorder writes CR and CD this late (s)
+    # set R's forms (cases_r.py): one physical form no earlier set used, two lab-side
+    "rib_foam": "chest_rate_damping",  # damping pad engaging with compression, c at FOAM_D_M
+    "cd_reversed": "",  # broken test: CD recorded at the wrong polarity (1 = on)
+    "cd_slew": "",  # transducer: CD's amplifier follows no faster than this (mm/ms = m/s)
 }
 POW_B_M = (0.015, 0.025)  # webbing_power: reference stretch, chest side and up to the retractor
 V_HYST = 0.02  # m/s: webbing_hysteresis switches between its paths within this rate
@@ -180,6 +184,12 @@ CAPSTAN_V_S = 0.15
 # spine box): a force of the effect's size (N) per sternum mass against the chest's rate,
 # Coulomb's, smoothed (tanh) within this rate (m/s) so it sticks softly about zero rate
 RIB_FRICTION_V_S = 0.02
+
+# rib_foam: the sternum's damping pad (a viscoelastic foam between the bib and the spine box)
+# is met over a contact area that grows as the chest closes: its damping grows in proportion to
+# the compression, F += c (d / FOAM_D_M) d' (c, the effect's size, N s/m at FOAM_D_M), in
+# compression only, from zero at rest, the contact taken no further than FOAM_MAX_M
+FOAM_D_M, FOAM_MAX_M = 0.030, 0.060
 
 # Nominal Hybrid-III-like thorax, belt and retractor (SI), before per-test scatter.
 NOMINAL = {
@@ -290,6 +300,10 @@ def _deriv(b: Batch, j: np.ndarray | int, y: np.ndarray) -> np.ndarray:
     if np.any(ffr):
         fa = fa + ffr * np.tanh(dva / RIB_FRICTION_V_S)
         fb = fb + ffr * np.tanh(dvb / RIB_FRICTION_V_S)
+    cfo = e["rib_foam"]  # N s/m at FOAM_D_M: a damper whose rate grows with the compression
+    if np.any(cfo):
+        fa = fa + cfo * np.clip(da, 0.0, FOAM_MAX_M) / FOAM_D_M * dva
+        fb = fb + cfo * np.clip(db, 0.0, FOAM_MAX_M) / FOAM_D_M * dvb
     fab = p["k_ab"] * (sa - sb) + p["c_ab"] * (va - vb)
 
     # belt, chest side: pushes the contact point of the sternum rearward

@@ -11,7 +11,8 @@ the same way), set L (``cases_l``, written after set K had been looked at, the s
 M (``cases_m``, written after set L had been looked at, the same way), set N (``cases_n``,
 written after set M had been looked at, the same way), set O (``cases_o``, written after set N
 had been looked at, the same way), set P (``cases_p``, written beside set O by another engineer,
-the same way), set Q (``cases_q``, written after sets O and P, the same way)."""
+the same way), set Q (``cases_q``, written after sets O and P, the same way), set R
+(``cases_r``, written after set Q, the same way)."""
 
 from __future__ import annotations
 
@@ -32,15 +33,17 @@ from .cases_n import SET_N
 from .cases_o import SET_O
 from .cases_p import SET_P
 from .cases_q import SET_Q
+from .cases_r import SET_R
 
-SETS = ("a", "b", "c", "d", "e", "f", "g", "h", "i", "j", "k", "l", "m", "n", "o", "p", "q")
+SETS = ("a", "b", "c", "d", "e", "f", "g", "h", "i", "j", "k", "l", "m", "n", "o", "p", "q",
+        "r")
 
 
 def case_set(name: str) -> list[Case]:
     """Set A (``cases``), B (``cases_b``), C (``cases_c``), D (``cases_d``), E (``cases_e``),
     F (``cases_f``), G (``cases_g``), H (``cases_h``), I (``cases_i``), J (``cases_j``), K
     (``cases_k``), L (``cases_l``), M (``cases_m``), N (``cases_n``), O (``cases_o``), P
-    (``cases_p``) or Q (``cases_q``); ValueError for another name."""
+    (``cases_p``), Q (``cases_q``) or R (``cases_r``); ValueError for another name."""
     if name == "a":
         return list(CASES)
     if name == "b":
@@ -75,6 +78,8 @@ def case_set(name: str) -> list[Case]:
         return list(SET_P)
     if name == "q":
         return list(SET_Q)
+    if name == "r":
+        return list(SET_R)
     raise ValueError(f"unknown case set {name!r}; known: {', '.join(SETS)}")
 
 
