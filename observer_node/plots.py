@@ -124,3 +124,51 @@ def order_scan(path: Path, title: str, xlabel: str, rows: list[dict], x_key: str
     fig.savefig(path, dpi=80)
     plt.close(fig)
     return path
+
+
+#: (label, per-test gains [fit points], mean gain, its 95 % interval, passes the rule)
+EvidenceRow = tuple[str, dict[str, float], float, tuple[float, float], bool]
+
+
+def loop_evidence(path: Path, rounds: list[tuple[str, list[EvidenceRow]]],
+                  setup_of: dict[str, str], margin_points: float) -> Path:
+    """The loop's evidence, one panel per round: each candidate's paired cross-validated gain
+    per estimation test [fit points] (dots, coloured by setup), their mean (diamond) and its
+    95 % interval (bar), against zero and the rule's margin. A candidate that passes the rule
+    is drawn in black, one that does not in grey: a tie is two black rows, and a "possible"
+    one is a grey row whose bar reaches past zero or whose mean falls short of the margin."""
+    rounds = rounds or [("the loop ran no round", [])]
+    setups = list(dict.fromkeys(setup_of.values()))
+    colours = {s: plt.get_cmap("tab10")(i % 10) for i, s in enumerate(setups)}
+    heights = [max(len(rows), 1) * 0.42 + 0.75 + 0.18 * title.count("\n")
+               for title, rows in rounds] or [1.0]
+    fig, axes = plt.subplots(len(heights), 1, figsize=(8.5, sum(heights) + 0.4),
+                             gridspec_kw={"height_ratios": heights}, squeeze=False)
+    for ax, (title, rows) in zip(axes[:, 0], rounds, strict=True):
+        for y, (_label, per_test, mean, (lo, hi), passes) in enumerate(reversed(rows)):
+            ink = "black" if passes else "0.6"
+            for test, g in per_test.items():
+                ax.plot(g, y, "o", ms=4, alpha=0.8, mec="none",
+                        color=colours.get(setup_of.get(test, ""), "0.4"))
+            ax.plot([lo, hi], [y, y], "-", color=ink, lw=2)
+            ax.plot(mean, y, "D", color=ink, ms=6)
+        ax.set_yticks(range(len(rows)), [r[0] for r in reversed(rows)], fontsize=8)
+        for r, tick in zip(reversed(rows), ax.get_yticklabels(), strict=True):
+            tick.set_color("black" if r[4] else "0.45")
+        ax.axvline(0.0, color="0.3", lw=0.8)
+        ax.axvline(margin_points, color="tab:red", ls="--", lw=0.9)
+        ax.set_ylim(-0.7, max(len(rows), 1) - 0.3)
+        ax.set_title(title, fontsize=9, loc="left")
+        ax.grid(axis="x", alpha=0.3)
+    axes[-1][0].set_xlabel("paired cross-validated gain per estimation test [fit points, eq. "
+                           f"3.15]; dashed: the rule's margin ({margin_points:g})")
+    handles = [plt.Line2D([], [], ls="", marker="o", color=c, label=s)
+               for s, c in colours.items()]
+    if handles:
+        axes[0][0].legend(handles=handles, fontsize=7, loc="lower right", title="setup",
+                          title_fontsize=7)
+    fig.tight_layout()
+    path.parent.mkdir(parents=True, exist_ok=True)
+    fig.savefig(path, dpi=80)
+    plt.close(fig)
+    return path

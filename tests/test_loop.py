@@ -12,7 +12,7 @@ import numpy as np
 import pytest
 
 from observer_node.daemon.core import ObserverCore
-from observer_node.loop.closed_loop import run_loop
+from observer_node.loop.closed_loop import EVIDENCE_ROWS, _evidence_rounds, run_loop
 from observer_node.loop.report import LoopReport
 from observer_node.model import ModelFile
 from observer_node.simulator import PlantConfig, simulate_campaign, simulate_mixed
@@ -73,8 +73,18 @@ def test_augmented_model_runs_in_the_daemon(tmp_path):
 def test_loop_improves_campaign_validation_fit(r16_loop):
     tmp_path, r = r16_loop
     assert r.effects, r.history
-    for name in ("fit_before_cr", "fit_after_cd", "residuals"):
+    for name in ("fit_before_cr", "fit_after_cd", "residuals", "evidence"):
         assert (tmp_path / f"{name}.png").stat().st_size > 10_000
+    # evidence.png: a panel per round, its rows the candidates tried (best first) then the
+    # sensor candidates, each with its per-test gains
+    rounds = _evidence_rounds(r.history)
+    assert len(rounds) == len(r.history)
+    for (_, rows), step in zip(rounds, r.history, strict=True):
+        assert [row[0] for row in rows] == (
+            [f"{t.kind} on {t.scope}" for t in step.tried[:EVIDENCE_ROWS]]
+            + [f"sensor: {o.upper()} static" for o in step.sensor])
+        assert all(row[1] for row in rows)
+    assert "evidence.png" in (tmp_path / "report.md").read_text()
     # the criteria a restraint engineer reads, per validation test, before and after
     for label in ("baseline", "final"):
         assert set(r.criteria[label]) == set(r.validation)

@@ -25,6 +25,7 @@ from __future__ import annotations
 
 import itertools
 import json
+import textwrap
 import time
 from pathlib import Path
 
@@ -458,6 +459,7 @@ def _run(est_tests: list[CrashTest], val_tests: list[CrashTest], out: Path, rate
     (out / "report.json").write_text(json.dumps(as_json, indent=1, default=float) + "\n")
     if plots:
         _plots(out, base, effects, gb.params, val, broken, [*est_tests, *val_tests])
+        _evidence_plot(out, history, est, margin)
     (out / "report.md").write_text(markdown(report))
     prog.done(f"{len(accepted)} effect(s) accepted; validation fit "
               f"{baseline_val.fit.total:.1f} -> {final_val.fit.total:.1f} %")
@@ -628,6 +630,30 @@ def _model_file(base: dict, effects: list[dict], est: Dataset, rate_hz: float,
                    "window_s": list(est.window_s), "simulation_start_s": 0.0},
         fits=score(base, effects, est).as_dict(), effects=effects, output_timing="after_input",
     )
+
+
+#: candidates per round drawn in evidence.png (the best by cross-validated fit)
+EVIDENCE_ROWS = 6
+
+
+def _evidence_rounds(history: list[LoopStep]) -> list[tuple[str, list[plots.EvidenceRow]]]:
+    """Each round's candidates and sensor candidates, as evidence.png draws them."""
+    rounds = []
+    for i, step in enumerate(history):
+        rows: list[plots.EvidenceRow] = [
+            (f"{t.kind} on {t.scope}", t.evidence.test_gain_points, t.evidence.gain_points,
+             t.evidence.ci95_points, t.evidence.accepted) for t in step.tried[:EVIDENCE_ROWS]]
+        rows += [(f"sensor: {o.upper()} static", ev.test_gain_points, ev.gain_points,
+                  ev.ci95_points, ev.accepted) for o, ev in step.sensor.items()]
+        had = ", ".join(step.effects_before) or "no effect"
+        title = textwrap.shorten(f"round {i + 1} (model with {had}): {step.decision}", 230)
+        rounds.append((textwrap.fill(title, 115), rows))
+    return rounds
+
+
+def _evidence_plot(out: Path, history: list[LoopStep], est: Dataset, margin: float) -> None:
+    plots.loop_evidence(out / "evidence.png", _evidence_rounds(history),
+                        dict(zip(est.names, est.setups, strict=True)), margin)
 
 
 def _plots(out: Path, base: dict, effects: list[dict], base0: dict, val: Dataset,

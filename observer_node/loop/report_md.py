@@ -65,7 +65,9 @@ def markdown(r: LoopReport) -> str:
     lines += ["", "The residual stays far from white (lag-1 autocorrelation near 1: CFC "
               "filtering colours it), so whiteness cannot decide; the cross-validated fit and "
               "the input cross-correlation against Ljung's coloured band do.", "",
-              "Plots: fit_before_*.png, fit_after_*.png, residuals.png"
+              "Plots: fit_before_*.png, fit_after_*.png, residuals.png, evidence.png (each "
+              "round's candidates: the gain per test, its mean and interval, against the "
+              "margin)"
               + (", broken.png (the tests left out)" if r.warnings else "")
               + f". Model: {r.model}. "
               f"Run time {r.seconds} s.", ""]
