@@ -10,10 +10,21 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 import numpy as np
+from matplotlib.figure import Figure
 
 from .criteria import EURO_NCAP_CD_LIMITS_MM
 from .data import CrashTest
 from .ident.metrics import FitTable
+
+
+def _save(fig: Figure, path: Path, dpi: int = 80) -> Path:
+    """Lay out, write (making its folder) and close ``fig``."""
+    fig.tight_layout()
+    path.parent.mkdir(parents=True, exist_ok=True)
+    fig.savefig(path, dpi=dpi)
+    plt.close(fig)
+    return path
+
 
 OUTPUT_LABELS = (("cr", "Chest acceleration CR [g]"), ("cd", "Chest deflection CD [mm]"))
 
@@ -45,11 +56,7 @@ def measured_vs_simulated(path: Path, title: str, names: list[str], t_s: np.ndar
               f"{EURO_NCAP_CD_LIMITS_MM[1]:g} mm" if key == "cd" else "")
     fig.suptitle(f"{title} — {label.split(' [')[0]}, fit {getattr(fits.fit, key):.1f} %{limits}",
                  fontsize=10)
-    fig.tight_layout()
-    path.parent.mkdir(parents=True, exist_ok=True)
-    fig.savefig(path, dpi=80)
-    plt.close(fig)
-    return path
+    return _save(fig, path)
 
 
 def residuals(path: Path, names: list[str], t_s: np.ndarray, before: np.ndarray,
@@ -69,10 +76,7 @@ def residuals(path: Path, names: list[str], t_s: np.ndarray, before: np.ndarray,
     for k, (_, label) in enumerate(OUTPUT_LABELS):
         axes[-1][k].set_xlabel("t [ms]")
         axes[n // 2][k].set_ylabel(label, fontsize=8)
-    fig.tight_layout()
-    fig.savefig(path, dpi=70)
-    plt.close(fig)
-    return path
+    return _save(fig, path, dpi=70)
 
 
 # a test's channels as the screening names them; a residual outlier is shown on CR
@@ -100,11 +104,7 @@ def broken_tests(path: Path, flagged: list[tuple[str, str, str]], tests: list[Cr
         ax.grid(alpha=0.3)
         ax.legend(fontsize=7, loc="upper right")
     axes[-1][0].set_xlabel("t [ms] (grey: the other tests)")
-    fig.tight_layout()
-    path.parent.mkdir(parents=True, exist_ok=True)
-    fig.savefig(path, dpi=80)
-    plt.close(fig)
-    return path
+    return _save(fig, path)
 
 
 def order_scan(path: Path, title: str, xlabel: str, rows: list[dict], x_key: str) -> Path:
@@ -120,10 +120,7 @@ def order_scan(path: Path, title: str, xlabel: str, rows: list[dict], x_key: str
     ax.set_title(title)
     ax.grid(alpha=0.3)
     ax.legend()
-    fig.tight_layout()
-    fig.savefig(path, dpi=80)
-    plt.close(fig)
-    return path
+    return _save(fig, path)
 
 
 #: (label, per-test gains [fit points], mean gain, its 95 % interval, passes the rule)
@@ -160,15 +157,11 @@ def loop_evidence(path: Path, rounds: list[tuple[str, list[EvidenceRow]]],
         ax.set_ylim(-0.7, max(len(rows), 1) - 0.3)
         ax.set_title(title, fontsize=9, loc="left")
         ax.grid(axis="x", alpha=0.3)
-    axes[-1][0].set_xlabel("paired cross-validated gain per estimation test [fit points, eq. "
-                           f"3.15]; dashed: the rule's margin ({margin_points:g})")
+    axes[-1][0].set_xlabel("paired cross-validated gain per estimation test [fit points]; "
+                           f"dashed: the margin ({margin_points:g})")
     handles = [plt.Line2D([], [], ls="", marker="o", color=c, label=s)
                for s, c in colours.items()]
     if handles:
         axes[0][0].legend(handles=handles, fontsize=7, loc="lower right", title="setup",
                           title_fontsize=7)
-    fig.tight_layout()
-    path.parent.mkdir(parents=True, exist_ok=True)
-    fig.savefig(path, dpi=80)
-    plt.close(fig)
-    return path
+    return _save(fig, path)

@@ -8,8 +8,10 @@ from pathlib import Path
 
 import pytest
 
+from observer_node import plots
 from observer_node.ident.metrics import Fits
 from observer_node.loop.analysis import CorrelationTests, OutputCorrelation
+from observer_node.loop.closed_loop import _evidence_rounds
 from observer_node.loop.diagnosis import Unexplained
 from observer_node.loop.evidence import judge
 from observer_node.loop.report import (
@@ -169,3 +171,28 @@ def test_the_bundled_report_json_reads_back_to_the_same_text():
             tests, indent=1), label
     assert json.dumps(LoopSettings.from_dict(report["settings"]).as_dict(), indent=1) == (
         json.dumps(report["settings"], indent=1))
+
+
+def test_evidence_png_draws_each_round_as_the_rule_reads_it(tmp_path: Path) -> None:
+    # a tie: two candidates pass the rule; a third does not; the sensor candidates follow
+    rule, weak = _rule(), judge({"A": 80.0, "B": 82.0}, {"A": 80.2, "B": 81.9},
+                                {"A": "R16", "B": "SLED"}, None, 1.0)
+    step = LoopStep([], 86.0, [], [TriedCandidate("airbag_contact", "SLED", 94.0, rule),
+                                   TriedCandidate("belt_stiffening", "SLED", 93.9, rule),
+                                   TriedCandidate("pelvis_coupling", "all", 86.1, weak)],
+                    {"cr": weak})
+    step.decision = "airbag_contact on SLED passes the rule, but the data cannot tell it " * 4
+    (title, rows), = _evidence_rounds([step])
+    assert [(r[0], r[4]) for r in rows] == [("airbag_contact on SLED", True),
+                                            ("belt_stiffening on SLED", True),
+                                            ("pelvis_coupling on all", False),
+                                            ("sensor: CR static", False)]
+    assert rows[0][1] == rule.test_gain_points and rows[0][3] == rule.ci95_points
+    # a long decision is shortened and wrapped, not run off the figure
+    assert title.startswith("round 1 (model with no effect): airbag_contact")
+    assert all(len(line) <= 115 for line in title.splitlines()) and len(title) <= 235
+    png = plots.loop_evidence(tmp_path / "evidence.png", [(title, rows)],
+                              {"A": "R16", "B": "R16", "C": "SLED", "D": "SLED"}, 1.0)
+    assert png.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+    # a loop that ran no round still gets its figure
+    assert plots.loop_evidence(tmp_path / "none.png", [], {}, 1.0).stat().st_size > 0
