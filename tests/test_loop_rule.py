@@ -441,6 +441,31 @@ def test_a_tie_is_looked_past_by_judging_each_effect_beside_the_other():
     assert line.endswith("neither explains the other away")
 
 
+def test_of_two_effects_tied_on_setups_apart_the_one_that_passes_beside_the_other_is_named():
+    from observer_node.loop.analysis import Candidate
+    from observer_node.loop.evidence import past_the_tie
+    from observer_node.loop.verdicts import tie_verdict
+    a = _fits([3.6, 3.4, 3.9, 3.1, 3.5, 3.7])  # rib damping on setup A, say
+    b = _fits([2.4, 2.6, 2.7, 2.2, 2.6, 2.5])  # an airbag on setup B
+    # beside b, a passes; beside a, b still adds half a point on every test (set R)
+    both = _fits([4.0, 4.1, 4.4, 3.5, 4.2, 4.0])
+    one_thing = past_the_tie(a, b, both, SETUPS, ["A", "B"], ["B"], 1.0)
+    assert one_thing.a_beside_b.accepted and 0.25 < one_thing.b_beside_a.gain_points < 1.0
+    assert one_thing.named == "" and not one_thing.apart  # scopes share B: a true tie
+    past = past_the_tie(a, b, both, SETUPS, ["A"], ["B"], 1.0)
+    assert past.apart and past.named == "a"
+    assert past_the_tie(b, a, both, SETUPS, ["B"], ["A"], 1.0).named == "b"
+    line = tie_verdict(Candidate("chest_rate_damping", 0.5, {}, setups=["A"]),
+                       Candidate("airbag_contact", 0.5, {}, setups=["B"]), past)
+    assert line.endswith("chest_rate_damping on A passes beside airbag_contact on B, which "
+                         "acts on other setups and is judged again beside it")
+    # neither passes beside the other: apart or not, nothing is named
+    assert past_the_tie(a, b, _fits([2.9, 2.5, 3.1, 2.2, 2.7, 2.8]), SETUPS, ["A"], ["B"],
+                        1.0).named == ""
+    # an effect on every setup is never apart
+    assert not past_the_tie(a, b, both, SETUPS, None, ["B"], 1.0).apart
+
+
 def test_the_tests_left_out_are_drawn_against_the_others(campaign, tmp_path):
     # report.md points a reviewer to broken.png: one panel per test left out, its channel
     from matplotlib.image import imread

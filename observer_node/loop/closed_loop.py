@@ -255,7 +255,8 @@ def _run(est_tests: list[CrashTest], val_tests: list[CrashTest], out: Path, rate
         # signature linearised around a trajectory that never switches: always try it.
         named += [c for c in ranked if not c.parameters
                   and EFFECTS[c.kind].search.method == "switch" and c not in named]
-        # the other side of a tie both of whose effects the data defend (past_the_tie)
+        # the other side of a tie both of whose effects the data defend, or of one looked
+        # past on setups apart (past_the_tie)
         named += [c for c in carry if c.kind not in {e["kind"] for e in effects}
                   and all(n.kind != c.kind for n in named)]
         carry = []
@@ -332,6 +333,9 @@ def _run(est_tests: list[CrashTest], val_tests: list[CrashTest], out: Path, rate
                 step.decision = (f"{best.kind} on {scope_label(best.setups)} passes the rule, "
                                  f"but {tie}; {tie_note}: neither is named")
                 break
+            # the side not named, when it acts on other setups: judged again beside it
+            if past.apart and past.named in ("a", "b"):
+                carry.append(rival[1] if past.named == "a" else best)
             if past.named == "b":  # the runner-up explains the winner's gain, not the reverse
                 (cv_best, best, ev_best), narrower = defended_scope(
                     [rival, *(t for t in passing if t[1].kind == rival[1].kind

@@ -130,12 +130,15 @@ class PastTheTie:
     """Two effects that both pass the rule and cannot be told apart, each judged beside the
     other: the model with both against the model with one. ``named``: the kinds the data
     defend ("a": ``a`` passes the rule beside ``b`` and ``b`` adds nothing beside ``a``, so
-    ``a`` explains what ``b`` did; "b": the reverse; "both": each passes beside the other;
-    "": neither explains the other away, a true tie)."""
+    ``a`` explains what ``b`` did, or the two act on different setups (``apart``); "b": the
+    reverse; "both": each passes beside the other; "": neither explains the other away, a
+    true tie). ``apart``: their scopes share no setup, so the one named may leave the other
+    to be judged beside it in the next round."""
 
     named: str
     a_beside_b: Evidence  # what ``a`` adds to the model that has ``b``
     b_beside_a: Evidence
+    apart: bool = False
 
 
 def past_the_tie(cv_a: dict[str, float], cv_b: dict[str, float], cv_both: dict[str, float],
@@ -148,10 +151,19 @@ def past_the_tie(cv_a: dict[str, float], cv_b: dict[str, float], cv_both: dict[s
     "Nothing" is less than ``POSSIBLE_MIN``: a rival that still adds under the margin on
     most tests is not explained away (held-out set I: a relief-vented airbag still added
     0.88 points on 6 of 6 tests beside a belt stiffening that had gained 1.23 beside it, and
-    was given up for it until this was asked)."""
+    was given up for it until this was asked).
+
+    Two effects on setups apart are not two explanations of one thing: each acts on tests the
+    other does not touch, and meets the other only through the base parameters all setups
+    share. One that passes the rule beside the other is then named, whatever the other still
+    adds; the other is judged again beside it (held-out set R: rib damping on R16 and an
+    airbag on the sled tied, the damping passing beside the bag, the bag gaining 1.39 points
+    beside it: neither was named)."""
     a = judge(cv_b, cv_both, setups, scope_a, margin)
     b = judge(cv_a, cv_both, setups, scope_b, margin)
+    apart = (scope_a is not None and scope_b is not None
+             and not set(scope_a) & set(scope_b))
     named = ("both" if a.accepted and b.accepted
-             else "a" if a.accepted and b.gain_points < POSSIBLE_MIN
-             else "b" if b.accepted and a.gain_points < POSSIBLE_MIN else "")
-    return PastTheTie(named, a, b)
+             else "a" if a.accepted and (apart or b.gain_points < POSSIBLE_MIN)
+             else "b" if b.accepted and (apart or a.gain_points < POSSIBLE_MIN) else "")
+    return PastTheTie(named, a, b, apart)
