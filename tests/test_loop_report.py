@@ -190,7 +190,7 @@ def test_evidence_png_draws_each_round_as_the_rule_reads_it(tmp_path: Path) -> N
     assert rows[0][1] == rule.test_gain_points and rows[0][3] == rule.ci95_points
     # a long decision is shortened and wrapped, not run off the figure
     assert title.startswith("round 1 (model with no effect): airbag_contact")
-    assert all(len(line) <= 115 for line in title.splitlines()) and len(title) <= 235
+    assert all(len(line) <= 100 for line in title.splitlines()) and len(title) <= 235
     png = plots.loop_evidence(tmp_path / "evidence.png", [(title, rows)],
                               {"A": "R16", "B": "R16", "C": "SLED", "D": "SLED"}, 1.0)
     assert png.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"

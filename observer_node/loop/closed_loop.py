@@ -651,7 +651,7 @@ def _evidence_rounds(history: list[LoopStep]) -> list[tuple[str, list[plots.Evid
                   ev.ci95_points, ev.accepted) for o, ev in step.sensor.items()]
         had = ", ".join(step.effects_before) or "no effect"
         title = textwrap.shorten(f"round {i + 1} (model with {had}): {step.decision}", 230)
-        rounds.append((textwrap.fill(title, 115), rows))
+        rounds.append((textwrap.fill(title, 100), rows))
     return rounds
 
 
