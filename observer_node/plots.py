@@ -123,6 +123,8 @@ def order_scan(path: Path, title: str, xlabel: str, rows: list[dict], x_key: str
     return _save(fig, path)
 
 
+#: the lowest gain evidence.png draws where it is [fit points]
+EVIDENCE_FLOOR_POINTS = -20.0
 #: (label, per-test gains [fit points], mean gain, its 95 % interval, passes the rule)
 EvidenceRow = tuple[str, dict[str, float], float, tuple[float, float], bool]
 
@@ -133,7 +135,9 @@ def loop_evidence(path: Path, rounds: list[tuple[str, list[EvidenceRow]]],
     per estimation test [fit points] (dots, coloured by setup), their mean (diamond) and its
     95 % interval (bar), against zero and the rule's margin. A candidate that passes the rule
     is drawn in black, one that does not in grey: a tie is two black rows, and a "possible"
-    one is a grey row whose bar reaches past zero or whose mean falls short of the margin."""
+    one is a grey row whose bar reaches past zero or whose mean falls short of the margin.
+    Gains below ``EVIDENCE_FLOOR_POINTS`` (a trial that ran away scores -1000 %) are drawn at
+    the floor as a left-pointing triangle, so one such test does not squash the rest."""
     rounds = rounds or [("the loop ran no round", [])]
     setups = list(dict.fromkeys(setup_of.values()))
     colours = {s: plt.get_cmap("tab10")(i % 10) for i, s in enumerate(setups)}
@@ -141,14 +145,17 @@ def loop_evidence(path: Path, rounds: list[tuple[str, list[EvidenceRow]]],
                for title, rows in rounds] or [1.0]
     fig, axes = plt.subplots(len(heights), 1, figsize=(8.5, sum(heights) + 0.4),
                              gridspec_kw={"height_ratios": heights}, squeeze=False)
+    floor = EVIDENCE_FLOOR_POINTS
     for ax, (title, rows) in zip(axes[:, 0], rounds, strict=True):
+        # an interval is drawn up to the largest gain shown (a run-away's spans thousands)
+        top = max([margin_points, *(g for r in rows for g in (r[2], *r[1].values()))]) + 2.0
         for y, (_label, per_test, mean, (lo, hi), passes) in enumerate(reversed(rows)):
             ink = "black" if passes else "0.6"
             for test, g in per_test.items():
-                ax.plot(g, y, "o", ms=4, alpha=0.8, mec="none",
-                        color=colours.get(setup_of.get(test, ""), "0.4"))
-            ax.plot([lo, hi], [y, y], "-", color=ink, lw=2)
-            ax.plot(mean, y, "D", color=ink, ms=6)
+                ax.plot(max(g, floor), y, "o" if g >= floor else "<", ms=4, alpha=0.8,
+                        mec="none", color=colours.get(setup_of.get(test, ""), "0.4"))
+            ax.plot([max(lo, floor), min(max(hi, floor), top)], [y, y], "-", color=ink, lw=2)
+            ax.plot(max(mean, floor), y, "D" if mean >= floor else "<", color=ink, ms=6)
         ax.set_yticks(range(len(rows)), [r[0] for r in reversed(rows)], fontsize=8)
         for r, tick in zip(reversed(rows), ax.get_yticklabels(), strict=True):
             tick.set_color("black" if r[4] else "0.45")
@@ -162,6 +169,6 @@ def loop_evidence(path: Path, rounds: list[tuple[str, list[EvidenceRow]]],
     handles = [plt.Line2D([], [], ls="", marker="o", color=c, label=s)
                for s, c in colours.items()]
     if handles:
-        axes[0][0].legend(handles=handles, fontsize=7, loc="lower right", title="setup",
+        axes[0][0].legend(handles=handles, fontsize=7, loc="best", title="setup",
                           title_fontsize=7)
     return _save(fig, path)

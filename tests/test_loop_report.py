@@ -173,7 +173,8 @@ def test_the_bundled_report_json_reads_back_to_the_same_text():
         json.dumps(report["settings"], indent=1))
 
 
-def test_evidence_png_draws_each_round_as_the_rule_reads_it(tmp_path: Path) -> None:
+def test_evidence_png_draws_each_round_as_the_rule_reads_it(
+        tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
     # a tie: two candidates pass the rule; a third does not; the sensor candidates follow
     rule, weak = _rule(), judge({"A": 80.0, "B": 82.0}, {"A": 80.2, "B": 81.9},
                                 {"A": "R16", "B": "SLED"}, None, 1.0)
@@ -194,5 +195,14 @@ def test_evidence_png_draws_each_round_as_the_rule_reads_it(tmp_path: Path) -> N
     png = plots.loop_evidence(tmp_path / "evidence.png", [(title, rows)],
                               {"A": "R16", "B": "R16", "C": "SLED", "D": "SLED"}, 1.0)
     assert png.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+    # a trial that ran away (-1000 %) is drawn at the floor, not across the whole axis
+    ran_away = [("belt_unloading on all", {"A": -1090.0, "C": 2.0}, -544.0, (-9e3, 8e3), False)]
+    drawn = []
+    save = plots._save
+    monkeypatch.setattr(plots, "_save", lambda fig, path: drawn.append(fig.axes[0].get_xlim())
+                        or save(fig, path))
+    plots.loop_evidence(tmp_path / "away.png", [("round 1", rows + ran_away)],
+                        {"A": "R16", "C": "SLED"}, 1.0)
+    assert plots.EVIDENCE_FLOOR_POINTS - 5 < drawn[0][0] < 0 < 2.0 < drawn[0][1] < 100
     # a loop that ran no round still gets its figure
     assert plots.loop_evidence(tmp_path / "none.png", [], {}, 1.0).stat().st_size > 0
