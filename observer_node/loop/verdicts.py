@@ -95,14 +95,14 @@ def tie_verdict(a: Candidate, b: Candidate, past: PastTheTie) -> str:
                 + (", passing the rule" if ev.accepted else ""))
     a_on, b_on = f"{a.kind} on {scope_label(a.setups)}", f"{b.kind} on {scope_label(b.setups)}"
     if past.apart and past.named in ("a", "b"):
-        (won, lost) = (a_on, b_on) if past.named == "a" else (b_on, a_on)
-        return (f"looked past the tie: {beside(a, b, past.a_beside_b)}; "
-                f"{beside(b, a, past.b_beside_a)}: {won} passes beside {lost}, which acts on "
-                f"other setups and is judged again beside it")
-    verdict = {"a": f"{a_on} explains what {b.kind} did, not the reverse",
-               "b": f"{b_on} explains what {a.kind} did, not the reverse",
-               "both": "the data defend both",
-               "": "neither explains the other away"}[past.named]
+        won, lost = (a_on, b_on) if past.named == "a" else (b_on, a_on)
+        verdict = (f"{won} passes beside {lost}, which acts on other setups and is judged "
+                   "again beside it")
+    else:
+        verdict = {"a": f"{a_on} explains what {b.kind} did, not the reverse",
+                   "b": f"{b_on} explains what {a.kind} did, not the reverse",
+                   "both": "the data defend both",
+                   "": "neither explains the other away"}[past.named]
     return (f"looked past the tie: {beside(a, b, past.a_beside_b)}; "
             f"{beside(b, a, past.b_beside_a)}: {verdict}")
 
