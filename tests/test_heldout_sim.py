@@ -1218,6 +1218,11 @@ def set_j(tmp_path_factory: pytest.TempPathFactory) -> Path:
     return _generate(tmp_path_factory, "j", WATCHED_J)
 
 
+def _cases_of(sets: str) -> list[cases.Case]:
+    """Every case of these sets ("abc": sets A, B and C), in order."""
+    return [c for s in sets for c in heldout_sets.case_set(s)]
+
+
 def _is_new(new: list[cases.Case], before: list[cases.Case], seed0: int, lab_side: int,
             size: int = 14) -> None:
     """A set's names, seeds (seed0..seed0+999), (estimation, validation) pairings, effect
@@ -1241,7 +1246,7 @@ def _is_new(new: list[cases.Case], before: list[cases.Case], seed0: int, lab_sid
 def test_set_j_is_new() -> None:
     """Set J's are none of sets A-I's: its mixes validate on two of the three rigs, which no
     earlier set did."""
-    _is_new(SET_J, [c for s in "abcdefghi" for c in heldout_sets.case_set(s)], 19000, 3)
+    _is_new(SET_J, _cases_of("abcdefghi"), 19000, 3)
 
 
 def test_set_j_rib_fung_is_exponential() -> None:
@@ -1326,7 +1331,7 @@ def set_k(tmp_path_factory: pytest.TempPathFactory) -> Path:
 
 
 def test_set_k_is_new() -> None:
-    _is_new(SET_K, [c for s in "abcdefghij" for c in heldout_sets.case_set(s)], 20000, 2)
+    _is_new(SET_K, _cases_of("abcdefghij"), 20000, 2)
 
 
 def test_set_k_pulse_from_is_the_other_tests_pulse(set_k: Path) -> None:
@@ -1387,7 +1392,7 @@ def set_l(tmp_path_factory: pytest.TempPathFactory) -> Path:
 
 
 def test_set_l_is_new() -> None:
-    _is_new(SET_L, [c for s in "abcdefghijk" for c in heldout_sets.case_set(s)], 21000, 2)
+    _is_new(SET_L, _cases_of("abcdefghijk"), 21000, 2)
 
 
 def test_set_l_pulse_rate_stretches_the_pulse_in_time(set_l: Path) -> None:
@@ -1472,7 +1477,7 @@ def set_m(tmp_path_factory: pytest.TempPathFactory) -> Path:
 
 
 def test_set_m_is_new() -> None:
-    _is_new(SET_M, [c for s in "abcdefghijkl" for c in heldout_sets.case_set(s)], 22000, 2)
+    _is_new(SET_M, _cases_of("abcdefghijkl"), 22000, 2)
 
 
 def _scope(c: cases.Case) -> set[str]:
@@ -1626,7 +1631,7 @@ def set_n(tmp_path_factory: pytest.TempPathFactory) -> Path:
 
 
 def test_set_n_is_new() -> None:
-    _is_new(SET_N, [c for s in "abcdefghijklm" for c in heldout_sets.case_set(s)], 23000, 2,
+    _is_new(SET_N, _cases_of("abcdefghijklm"), 23000, 2,
             size=12)
 
 
@@ -1681,7 +1686,7 @@ def test_set_n_judges_scope_on_thinly_held_rigs() -> None:
 def _lab_side_is_new_and_unnamed(new: list[cases.Case], before_sets: str, output: str) -> None:
     """One broken estimation test, of a form no earlier set used, the only thing expected; one
     transducer error on ``output``, of a form no earlier set used, nothing physical named."""
-    before = [c for s in before_sets for c in heldout_sets.case_set(s)]
+    before = _cases_of(before_sets)
     lib = physics.EFFECTS
     (broken,) = [c for c in new if c.expect_broken]
     (e,) = broken.effects
@@ -1767,7 +1772,7 @@ def set_o(tmp_path_factory: pytest.TempPathFactory) -> Path:
 
 
 def test_set_o_is_new() -> None:
-    _is_new(SET_O, [c for s in "abcdefghijklmn" for c in heldout_sets.case_set(s)], 24000, 2,
+    _is_new(SET_O, _cases_of("abcdefghijklmn"), 24000, 2,
             size=13)
 
 
@@ -1817,7 +1822,7 @@ def test_set_o_judges_two_effects_apart_and_none_invented() -> None:
         assert 1 <= len(e.setups) <= 2
         assert any(c.est.count(r) >= 2 for r in _held(c.est) - set(e.setups))
     # 4. both delays, on every rig, 1-5 ms, at sizes no earlier set used on either input
-    before = [c for s in "abcdefghijklmn" for c in heldout_sets.case_set(s)]
+    before = _cases_of("abcdefghijklmn")
     used = {e.size for c in before for e in c.effects if lib[e.key] == "input_delay"}
     delays = [c for c in SET_O if c.expect == (("input_delay", "all"),)]
     assert sorted(c.effects[0].key for c in delays) == ["brs_late", "pulse_late"]
@@ -1934,7 +1939,7 @@ def set_p(tmp_path_factory: pytest.TempPathFactory) -> Path:
 
 
 def test_set_p_is_new() -> None:
-    _is_new(SET_P, [c for s in "abcdefghijklmn" for c in heldout_sets.case_set(s)], 25000, 0,
+    _is_new(SET_P, _cases_of("abcdefghijklmn"), 25000, 0,
             size=8)
 
 
@@ -2051,7 +2056,7 @@ def test_set_p_scoped_unloading_moves_its_rigs_only(set_p: Path, case: str) -> N
 SET_Q = heldout_sets.case_set("q")
 # the lagging outputs: CR alone, CD alone, both on the dummy's recorder
 WATCHED_Q = ("hq_cr_late", "hq_cd_rc_filter", "hq_dummy_late")
-BEFORE_Q = [c for s in "abcdefghijklmnop" for c in heldout_sets.case_set(s)]
+BEFORE_Q = _cases_of("abcdefghijklmnop")
 
 
 @pytest.fixture(scope="module")
@@ -2191,7 +2196,7 @@ def test_set_q_dummy_late_moves_both_outputs_alike(set_q: Path) -> None:
 SET_R = heldout_sets.case_set("r")
 # the new physical form, the broken test, the transducer error
 WATCHED_R = ("hr_rib_foam_all", "hr_broken_cd_reversed", "hr_cd_slew")
-BEFORE_R = [c for s in "abcdefghijklmnopq" for c in heldout_sets.case_set(s)]
+BEFORE_R = _cases_of("abcdefghijklmnopq")
 
 
 @pytest.fixture(scope="module")
