@@ -13,7 +13,7 @@ import pytest
 from observer_node.data.filters import cfc_filter
 from observer_node.data.setups import assign_setups
 from observer_node.ident.dataset import make_dataset
-from observer_node.loop.diagnosis import shape_gains, unexplained
+from observer_node.loop.diagnosis import shape_gains, unexplained, without_static
 from observer_node.loop.evidence import judge
 from observer_node.loop.screening import (
     judged_fits,
@@ -227,6 +227,48 @@ def test_a_transducer_non_linearity_is_a_static_function_of_one_output(campaign)
     u = unexplained(bent, y_hat)
     assert [x.output for x in u] == ["cd"] and u[0].shape == "static"
     assert unexplained(data, y_hat) == []
+    # taken out of the measurement, the over-reading leaves what a right transducer reads
+    right = without_static(bent, y_hat, "cd")
+    assert np.allclose(right.y, data.y, atol=1e-6 * np.max(np.abs(data.y)))
+
+
+class _InProcess:
+    """A cluster of one: the loop's runner, each call in turn."""
+
+    workers = 1
+
+    def map(self, f, args):
+        return [f(*a) for a in args]
+
+
+def test_a_physical_effect_in_both_outputs_is_not_one_transducers_error(campaign):
+    """The strongest physical candidate is judged by the rule on the other output's fit alone
+    before a transducer of one output is named: a rib damping the model lacks moves CR as
+    well as CD, so it passes there; a CD transducer's over-reading leaves CR nothing to gain."""
+    from observer_node.ident.greybox import fit_greybox
+    from observer_node.loop.analysis import Candidate
+    from observer_node.loop.closed_loop import _other_output
+    from observer_node.loop.refit import folds, model
+
+    data = make_dataset([t for t in campaign if t.name.startswith("R16")][:4], 1000.0)
+    base = dict(fit_greybox(data).params)
+    damping = {"kind": "chest_rate_damping", "parameters": {"c3": 4000.0}}
+    setups = dict(zip(data.names, data.setups, strict=True))
+    cand = Candidate("chest_rate_damping", 0.3, {"c3": 1000.0})
+    tried = [(90.0, cand, judge({"T": 90.0}, {"T": 92.0}, {"T": "R16"}, None, 1.0))]
+
+    def other(y: np.ndarray) -> object:
+        return _other_output(_InProcess(), base, [], dataclasses.replace(data, y=y),
+                             folds(data), tried, "cd", setups, 1.0)
+
+    with np.errstate(all="ignore"):
+        damped = model(base, [damping], data).simulate(data.pulse_g, data.brs_rad)
+        plain = model(base, [], data).simulate(data.pulse_g, data.brs_rad)
+    found = other(damped)
+    assert found is not None and found[0] is cand and found[1].gain_points >= 1.0
+    bent = plain.copy()
+    bent[..., 1] += 0.02 * bent[..., 1] ** 2  # CD over-reading 40 % at 20 mm
+    assert other(bent) is None
 
 
 def test_an_unreachable_scheduler_is_one_line_and_exit_2(tmp_path):

@@ -59,7 +59,7 @@ from .analysis import (
     scope_label,
 )
 from .cluster import Runner, cluster
-from .diagnosis import sensor_fold_scores, unexplained
+from .diagnosis import SHAPES, Unexplained, sensor_fold_scores, unexplained, without_static
 from .evidence import (
     POSSIBLE_MIN,
     SETUP_TOLERANCE,
@@ -69,7 +69,7 @@ from .evidence import (
     judge,
     past_the_tie,
 )
-from .refit import MAX_FOLDS, fold_scores, folds, model, refit, score
+from .refit import MAX_FOLDS, fold_scores, fold_scores_by_output, folds, model, refit, score
 from .report import (
     AcceptedEffect,
     EffectEvidence,
@@ -237,6 +237,7 @@ def _run(est_tests: list[CrashTest], val_tests: list[CrashTest], out: Path, rate
     accepted: list[AcceptedEffect] = []
     possible: list[PossibleEffect] = []
     sensor: SensorEffect | None = None
+    both_outputs: list[Unexplained] = []  # a residual in both outputs no effect explains
     first_ranking: list[RankedCandidate] = []
     resid0 = _residual(base, effects, est)
     tests0 = correlation_tests(resid0, est)
@@ -291,6 +292,37 @@ def _run(est_tests: list[CrashTest], val_tests: list[CrashTest], out: Path, rate
         if best_sensor is not None and best_sensor[1].accepted and (
                 not passing or best_sensor[1].gain_points > passing[0][2].gain_points):
             o, ev = best_sensor
+            # A transducer moves its own output only. If the strongest physical candidate
+            # also passes the rule on the other output's fit alone, the residual is in both:
+            # physics no library form fits, not this transducer.
+            both = _other_output(runner, base, effects, est, folds_, tried, o, test_setup,
+                                 margin)
+            if both is not None:
+                c, ev_other = both
+                o2 = _other(o)
+                step.decision = (
+                    f"a static correction of {o} gains most ({ev.gain_points:+.2f} points), "
+                    f"but {c.kind} on {scope_label(c.setups)} also gains "
+                    f"{ev_other.gain_points:+.2f} points on {o2}'s fit alone, which a "
+                    f"transducer of {o} cannot move: a physical effect in both outputs that "
+                    "no effect of the library explains: unexplained, nothing named")
+                # in each output's own fit points: the sensor's folds score fit_TOT, the
+                # mean of the corrected output and the other, which the correction leaves as is
+                on_o = {s: 2.0 * v for s, v in ev.setup_gain_points.items()}
+                both_outputs = [
+                    Unexplained(o, _gaining(on_o), SHAPES["both"].format(o=o.upper()), "both",
+                                _rounded(on_o), round(ev_other.gain_points, 2)),
+                    Unexplained(o2, _gaining(ev_other.setup_gain_points),
+                                SHAPES["both"].format(o=o2.upper()), "both",
+                                _rounded(ev_other.setup_gain_points),
+                                round(2.0 * ev.gain_points, 2))]
+                kinds = [e["kind"] for e in effects]
+                possible += [PossibleEffect(
+                    t.kind, scope_label(t.setups), kinds, e,
+                    f"a static correction of {o} gains more ({ev.gain_points:+.2f} points) "
+                    "and the residual is in both outputs: no library effect explains it")
+                    for _, t, e in passing]
+                break
             sensor = SensorEffect(o, [e["kind"] for e in effects],
                                   f"a static function of {o.upper()}: the {o.upper()} "
                                   "transducer's gain or non-linearity, not the chest's physics",
@@ -432,7 +464,7 @@ def _run(est_tests: list[CrashTest], val_tests: list[CrashTest], out: Path, rate
         # by the gain as reported (rounded to 0.001 points): ties keep the order tried
         possible=sorted(possible, key=lambda p: -round(p.evidence.gain_points, 3)),
         sensor_effects=[sensor] if sensor else [],
-        unexplained=[] if sensor else unexplained(est, y_final),
+        unexplained=both_outputs or ([] if sensor else unexplained(est, y_final)),
         warnings=broken,
         left_out=_with_and_without(broken, base, effects, est_tests, val_tests, est_kept,
                                    val, rate_hz, window_s),
@@ -492,6 +524,52 @@ def _sensor_fold(base: dict, effects: list[dict], data: Dataset, train: list[int
                  test: list[int]) -> dict[str, dict[str, float]]:
     with np.errstate(all="ignore"):
         return sensor_fold_scores(base, effects, data, train, test)
+
+
+def _fold_by_output(base: dict, effects: list[dict], data: Dataset, train: list[int],
+                    test: list[int]) -> dict[str, dict[str, float]]:
+    with np.errstate(all="ignore"):
+        return fold_scores_by_output(base, effects, data, train, test)
+
+
+def _other_output(runner: Runner, base: dict, effects: list[dict], data: Dataset,
+                  folds_: list[tuple[list[int], list[int]]],
+                  tried: list[tuple[float, Candidate, Evidence]], o: str,
+                  test_setup: dict[str, str], margin: float
+                  ) -> tuple[Candidate, Evidence] | None:
+    """The strongest physical candidate (the first of ``tried``) judged by the rule on the fit
+    of the output other than ``o`` alone, against the model as it stands, both refitted on
+    the tests with ``o``'s static correction taken out; it and that evidence when it passes
+    there, else None. Taken out, because a transducer's error bends the fit of the parameters
+    both outputs share, and any effect that frees them then gains on the other output too."""
+    if not tried:
+        return None
+    c = tried[0][1]
+    o2 = _other(o)
+    with np.errstate(all="ignore"):
+        data = without_static(data, model(base, effects, data).simulate(data.pulse_g,
+                                                                         data.brs_rad), o)
+    starts = runner.map(_all_tests, [(base, effects, data), (base, [*effects, c.effect()], data)])
+    res = runner.map(_fold_by_output, [(b, e, data, tr, te) for b, e in starts
+                                       for tr, te in folds_])
+    k = len(folds_)
+    now, with_c = ({n: v for r in res[i * k:(i + 1) * k] for n, v in r[o2].items()}
+                   for i in range(2))
+    ev = judge(now, with_c, test_setup, c.setups, margin)
+    return (c, ev) if ev.accepted else None
+
+
+def _other(o: str) -> str:
+    return "cd" if o == "cr" else "cr"
+
+
+def _gaining(per_setup: dict[str, float]) -> list[str]:
+    """The setups where a gain is positive (all of them when none is)."""
+    return [s for s, v in per_setup.items() if v > 0] or list(per_setup)
+
+
+def _rounded(per_setup: dict[str, float]) -> dict[str, float]:
+    return {s: round(v, 2) for s, v in per_setup.items()}
 
 
 def _cv(runner: Runner, models: list[tuple[dict, list[dict]]], data: Dataset,

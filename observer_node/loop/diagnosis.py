@@ -11,12 +11,15 @@ CD. Two shapes are looked for per output, each fitted by least squares to the re
 Their size is given as the fit points [%, eq. 3.15] the correction would add. The sensor
 candidate (:func:`sensor_fold_scores`) is the static correction of one output, fitted on
 each cross-validation fold's training tests and scored on its held-out ones, so it competes
-with physics under the same rule (:mod:`.evidence`).
+with physics under the same rule (:mod:`.evidence`). Before one is named, the loop checks the
+"one output only" (:func:`without_static`, ``both``): if the strongest physical candidate still
+passes the rule on the other output's fit once the correction is taken out of the data, the
+residual is in both outputs, and it is physics no effect of the library explains.
 """
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import Any
 
 import numpy as np
@@ -27,7 +30,12 @@ from .refit import FOLD_NFEV, model, refit_from
 
 SHAPES = {"static": "a static function of {o} (a transducer's non-linearity: its error grows "
                     "with the value)",
-          "lag": "a lag or rate term in {o} (proportional to its rate of change)"}
+          "lag": "a lag or rate term in {o} (proportional to its rate of change)",
+          "both": "a physical effect the library lacks: a static correction of one output "
+                  "and the strongest physical candidate on the other both gain, so it is in "
+                  "{o} and in the other output, not one transducer's error"}
+
+FITTED = ("static", "lag")  # the shapes fitted to a residual ("both" is judged by the loop)
 
 
 def _basis(y_hat: np.ndarray, shape: str, fs_hz: float, scale: float = 0.0) -> np.ndarray:
@@ -56,7 +64,7 @@ def shape_gains(data: Dataset, y_hat: np.ndarray) -> dict[str, dict[str, np.ndar
     for k, o in enumerate(OUTPUT_NAMES):
         base = _fits(y[..., k], yh[..., k])
         out[o] = {}
-        for shape in SHAPES:
+        for shape in FITTED:
             X = _basis(y_hat[..., k], shape, data.fs_hz)[:, data.win]
             corr = yh[..., k] + X @ _solve(y[..., k] - yh[..., k], X)
             out[o][shape] = _fits(y[..., k], corr) - base
@@ -100,6 +108,18 @@ def unexplained(data: Dataset, y_hat: np.ndarray, min_points: float = 1.0
                 {s: round(v, 2) for s, v in per_setup.items()},
                 round(float(np.mean([np.mean(v) for v in gains[_other(o)].values()])), 2)))
     return out
+
+
+def without_static(data: Dataset, y_hat: np.ndarray, output: str) -> Dataset:
+    """``data`` with one output's static correction (fitted in-sample on the estimate
+    ``y_hat``) taken out of its measurement: what the tests would read through a transducer
+    without that error, so the model refitted on them no longer bends to it."""
+    k = OUTPUT_NAMES.index(output)
+    X = _basis(y_hat[..., k], "static", data.fs_hz)
+    coef = _solve(data.y[:, data.win, k] - y_hat[:, data.win, k], X[:, data.win])
+    y = data.y.copy()
+    y[..., k] -= X @ coef
+    return replace(data, y=y)
 
 
 def _other(o: str) -> str:

@@ -217,5 +217,15 @@ def fold_scores(base: dict, effects: list[dict], data: Dataset, train: list[int]
     return {n: _finite(v.total) for n, v in t.items()}
 
 
+def fold_scores_by_output(base: dict, effects: list[dict], data: Dataset, train: list[int],
+                          test: list[int], max_nfev: int = FOLD_NFEV
+                          ) -> dict[str, dict[str, float]]:
+    """As :func:`fold_scores`, each output's fit [%] apart: {"cr": {test: fit}, "cd": ...}."""
+    r = refit_from(base, effects, data.subset(train), max_nfev)
+    t = score(r.base, r.effects, data.subset(test)).tests
+    return {"cr": {n: _finite(v.cr) for n, v in t.items()},
+            "cd": {n: _finite(v.cd) for n, v in t.items()}}
+
+
 def _finite(v: float) -> float:
     return float(v) if np.isfinite(v) else -1e3
