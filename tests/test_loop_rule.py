@@ -241,34 +241,65 @@ class _InProcess:
         return [f(*a) for a in args]
 
 
-def test_a_physical_effect_in_both_outputs_is_not_one_transducers_error(campaign):
-    """The strongest physical candidate is judged by the rule on the other output's fit alone
-    before a transducer of one output is named: a rib damping the model lacks moves CR as
-    well as CD, so it passes there; a CD transducer's over-reading leaves CR nothing to gain."""
+@pytest.fixture(scope="module")
+def chest(campaign):
+    """Four R16 tests, the grey-box fitted on them, and what it reads: as it stands, with a
+    rib damping it lacks (in both outputs), and through a CD transducer over-reading 40 % at
+    20 mm (CD alone)."""
     from observer_node.ident.greybox import fit_greybox
-    from observer_node.loop.analysis import Candidate
-    from observer_node.loop.closed_loop import _other_output
-    from observer_node.loop.refit import folds, model
+    from observer_node.loop.refit import model
 
     data = make_dataset([t for t in campaign if t.name.startswith("R16")][:4], 1000.0)
     base = dict(fit_greybox(data).params)
     damping = {"kind": "chest_rate_damping", "parameters": {"c3": 4000.0}}
+    with np.errstate(all="ignore"):
+        damped = model(base, [damping], data).simulate(data.pulse_g, data.brs_rad)
+        bent = model(base, [], data).simulate(data.pulse_g, data.brs_rad)
+    bent[..., 1] += 0.02 * bent[..., 1] ** 2
+    return data, base, damped, bent
+
+
+def _one_passing(kind: str, parameters: dict) -> list:
+    from observer_node.loop.analysis import Candidate
+    return [(90.0, Candidate(kind, 0.3, parameters),
+             judge({"T": 90.0}, {"T": 92.0}, {"T": "R16"}, None, 1.0))]
+
+
+def test_a_physical_effect_in_both_outputs_is_not_one_transducers_error(chest):
+    """The strongest physical candidate is judged by the rule on the other output's fit alone
+    before a transducer of one output is named: a rib damping the model lacks moves CR as
+    well as CD, so it passes there; a CD transducer's over-reading leaves CR nothing to gain."""
+    from observer_node.loop.closed_loop import _other_output
+    from observer_node.loop.refit import folds
+
+    data, base, damped, bent = chest
+    tried = _one_passing("chest_rate_damping", {"c3": 1000.0})
     setups = dict(zip(data.names, data.setups, strict=True))
-    cand = Candidate("chest_rate_damping", 0.3, {"c3": 1000.0})
-    tried = [(90.0, cand, judge({"T": 90.0}, {"T": 92.0}, {"T": "R16"}, None, 1.0))]
 
     def other(y: np.ndarray) -> object:
         return _other_output(_InProcess(), base, [], dataclasses.replace(data, y=y),
                              folds(data), tried, "cd", setups, 1.0)
 
-    with np.errstate(all="ignore"):
-        damped = model(base, [damping], data).simulate(data.pulse_g, data.brs_rad)
-        plain = model(base, [], data).simulate(data.pulse_g, data.brs_rad)
     found = other(damped)
-    assert found is not None and found[0] is cand and found[1].gain_points >= 1.0
-    bent = plain.copy()
-    bent[..., 1] += 0.02 * bent[..., 1] ** 2  # CD over-reading 40 % at 20 mm
+    assert found is not None and found[0] is tried[0][1] and found[1].gain_points >= 1.0
     assert other(bent) is None
+
+
+def test_a_physical_effect_no_better_than_a_transducer_is_not_named():
+    """A physical effect that wins a round where one output's static correction passes the
+    rule too is named only if it beats that correction test by test above the scatter (set F:
+    a rib stiffening +2.71 points against a CD correction's +2.69, better on 3 of 5 tests)."""
+    from observer_node.loop.analysis import Candidate
+    from observer_node.loop.verdicts import untold_from_sensor
+
+    stiff = Candidate("chest_stiffening", 0.3, {"k3": 1e8})
+    sensor = judge(*_cv([2.6, 2.1, 3.0, 2.4, 2.9, 2.5]), SETUPS, None, 1.0)
+    close = judge(*_cv([2.9, 1.8, 3.3, 2.2, 2.7, 2.8]), SETUPS, None, 1.0)
+    why = untold_from_sensor(stiff, close, "cd", sensor)
+    assert sensor.accepted and close.accepted and why is not None
+    assert "static correction of cd" in why and "better on 3 of 6 tests" in why
+    clear = judge(*_cv([4.1, 3.5, 4.6, 3.9, 4.0, 4.4]), SETUPS, None, 1.0)
+    assert untold_from_sensor(stiff, clear, "cd", sensor) is None
 
 
 def test_an_unreachable_scheduler_is_one_line_and_exit_2(tmp_path):

@@ -101,6 +101,7 @@ from .verdicts import (
     runner_up_of,
     tie_verdict,
     untold,
+    untold_from_sensor,
     validation_refusal,
 )
 
@@ -237,7 +238,7 @@ def _run(est_tests: list[CrashTest], val_tests: list[CrashTest], out: Path, rate
     accepted: list[AcceptedEffect] = []
     possible: list[PossibleEffect] = []
     sensor: SensorEffect | None = None
-    both_outputs: list[Unexplained] = []  # a residual in both outputs no effect explains
+    left_unexplained: list[Unexplained] = []  # what the rounds left: no effect, no transducer
     first_ranking: list[RankedCandidate] = []
     resid0 = _residual(base, effects, est)
     tests0 = correlation_tests(resid0, est)
@@ -307,9 +308,10 @@ def _run(est_tests: list[CrashTest], val_tests: list[CrashTest], out: Path, rate
                     f"transducer of {o} cannot move: a physical effect in both outputs that "
                     "no effect of the library explains: unexplained, nothing named")
                 # in each output's own fit points: the sensor's folds score fit_TOT, the
-                # mean of the corrected output and the other, which the correction leaves as is
+                # mean of the corrected output and the other, which the correction leaves
+                # as is
                 on_o = {s: 2.0 * v for s, v in ev.setup_gain_points.items()}
-                both_outputs = [
+                left_unexplained = [
                     Unexplained(o, _gaining(on_o), SHAPES["both"].format(o=o.upper()), "both",
                                 _rounded(on_o), round(ev_other.gain_points, 2)),
                     Unexplained(o2, _gaining(ev_other.setup_gain_points),
@@ -330,6 +332,25 @@ def _run(est_tests: list[CrashTest], val_tests: list[CrashTest], out: Path, rate
             step.decision = (f"a sensor effect on {o} explains the residual better than "
                              "any physical effect: reported, not added to the model")
             break
+        if best_sensor is not None and best_sensor[1].accepted and passing:
+            # Physics wins, but one output's static correction passes too: as against a
+            # physical rival, the effect is named only if it beats it test by test above the
+            # scatter; else the chest or that transducer, the data cannot tell.
+            o, ev = best_sensor
+            why = untold_from_sensor(passing[0][1], passing[0][2], o, ev)
+            if why is not None:
+                step.decision = f"{why}; nothing named"
+                kinds = [e["kind"] for e in effects]
+                possible += [PossibleEffect(
+                    t.kind, scope_label(t.setups), kinds, e,
+                    f"the data cannot tell it from a static correction of {o} (its "
+                    "transducer's error), which passes the rule too")
+                    for _, t, e in passing]
+                on_o = {s: 2.0 * v for s, v in ev.setup_gain_points.items()}  # as above
+                left_unexplained = [Unexplained(
+                    o, _gaining(on_o), SHAPES["static"].format(o=o.upper()), "static",
+                    _rounded(on_o), round(2.0 * sensor_ev[_other(o)].gain_points, 2))]
+                break
         if not passing:
             step.decision = ("no candidate passes the rule (mean paired gain >= "
                              f"{margin:g} points, above the scatter, no setup "
@@ -464,7 +485,7 @@ def _run(est_tests: list[CrashTest], val_tests: list[CrashTest], out: Path, rate
         # by the gain as reported (rounded to 0.001 points): ties keep the order tried
         possible=sorted(possible, key=lambda p: -round(p.evidence.gain_points, 3)),
         sensor_effects=[sensor] if sensor else [],
-        unexplained=both_outputs or ([] if sensor else unexplained(est, y_final)),
+        unexplained=left_unexplained or ([] if sensor else unexplained(est, y_final)),
         warnings=broken,
         left_out=_with_and_without(broken, base, effects, est_tests, val_tests, est_kept,
                                    val, rate_hz, window_s),
