@@ -223,9 +223,10 @@ def soak_dummy(params: dict[str, float], kelvin: float) -> dict[str, float]:
     """``params`` of a dummy whose thorax was run ``kelvin`` K below its certification band
     (negative: above it): the ribs' dampings x exp(SOAK_DAMP_PER_K K), stiffnesses x
     exp(SOAK_STIFF_PER_K K)."""
-    gain = {**dict.fromkeys(SOAK_DAMP, np.exp(SOAK_DAMP_PER_K * kelvin)),
-            **dict.fromkeys(SOAK_STIFF, np.exp(SOAK_STIFF_PER_K * kelvin))}
-    return {k: v * float(gain.get(k, 1.0)) for k, v in params.items()}
+    gain: dict[str, float] = {
+        **dict.fromkeys(SOAK_DAMP, float(np.exp(SOAK_DAMP_PER_K * kelvin))),
+        **dict.fromkeys(SOAK_STIFF, float(np.exp(SOAK_STIFF_PER_K * kelvin)))}
+    return {k: v * gain.get(k, 1.0) for k, v in params.items()}
 
 
 def draw(case: Case, effects_on: bool = True) -> tuple[list[Drawn], np.ndarray]:
