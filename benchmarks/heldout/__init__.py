@@ -52,11 +52,15 @@
   ``cases_r.py``: set R, the same again, on pairings no earlier case ran: the general list
   (clean cases, each kind of the library as physics, two effects on two rigs, a broken test, a
   transducer error on CD, a late pulse and a late BRS) at new seeds, sizes and scopes.
+  ``cases_s.py``: set S, the same again, on pairings no earlier case ran, by another engineer:
+  the general list at new seeds, sizes and scopes, with a rib cage damped by a constant loss
+  factor (hysteretic damping), a BRS counter of too few bits wrapping round (broken test) and
+  a spine accelerometer whose gauges creep (a transducer error on CR).
   ``make_sets.py``: writes a set (``--no-effects``: the same tests with every effect off).
   ``costs.py``: what each case costs the thesis grey-box (project CLI).
 
     python -m benchmarks.heldout.make_sets --out /tmp/heldout
-        [--set a|b|c|d|e|f|g|h|i|j|k|l|m|n|o|p|q|r] [--case NAME ...]
+        [--set a|b|c|d|e|f|g|h|i|j|k|l|m|n|o|p|q|r|s] [--case NAME ...]
 
 Never tune the loop on these cases; report them apart from the tuned ones.
 """

@@ -36,7 +36,7 @@ EXACT = {"pulse_late", "brs_late", "brs_freeze", "cd_dropout", "pulse_rail", "pu
          "cr_loose_mount", "brs_swap", "cd_arm_lift", "pulse_from", "cr_zero_shift",
          "pulse_rate", "cd_aa_filter", "dummy_scale", "cr_crosstalk", "dummy_soak", "cd_sag",
          "brs_counts", "cr_damped", "cr_late", "cd_rc_filter", "dummy_late",
-         "cd_reversed", "cd_slew"}
+         "cd_reversed", "cd_slew", "brs_wrap", "cr_creep"}
 DROPOUT_S = 0.010  # how long cd_dropout's wiper stays off the track
 KNEE_SLOPE = 0.6  # cd_knee: the gain of the CD calibration's second segment
 SHIFT_AT_S = 0.011  # pulse_zero_shift: when the zero shifts (in the crash-box spike)
@@ -96,6 +96,14 @@ CR_DAMPED_ZETA = 0.7
 # both channels alike. (The recorder's trigger, as it stamps it, comes that long before the
 # car's: a recorder that took its trigger late would write the chest early instead, which no
 # causal model can follow.) To the chest's model it is the same as both inputs leading by it
+# brs_wrap: the spindle encoder's counter holds only the effect's size in bits, two's
+# complement: once the spool has turned past half its range either way the count wraps round
+# to the other end (what the file holds jumps by 2^bits counts, turns of the spool lost)
+# cr_creep: the spine accelerometer's strain gauges creep in their adhesive (an old, overloaded
+# sensing element): under a sustained load its reading grows by the effect's share of it with
+# the adhesive's time constant CREEP_TAU_S (and falls back the same way once unloaded): CR
+# reads cr + share x (cr through a one-pole low-pass of that time constant); CD, pulse, BRS right
+CREEP_TAU_S = 0.015
 NOISE = {"pulse_g": 0.6, "cr_g": 0.55, "cd_mm": 0.10}  # white, before the CFC filters
 
 
@@ -145,6 +153,20 @@ def slew(x: np.ndarray, rate: float) -> np.ndarray:
         last = last + min(max(v - last, -rate), rate)
         y[i] = last
     return y
+
+
+def wrap(counts: np.ndarray, bits: int) -> np.ndarray:
+    """What a two's complement counter of ``bits`` bits holds of ``counts``: the same modulo
+    2^bits, within -2^(bits-1) .. 2^(bits-1) - 1."""
+    half = 2 ** (bits - 1)
+    return np.mod(counts + half, 2 * half) - half
+
+
+def creep(x: np.ndarray, share: float, tau_s: float = CREEP_TAU_S) -> np.ndarray:
+    """A sensing element whose gauges creep: ``x`` plus ``share`` of ``x`` through a causal
+    one-pole low-pass of time constant ``tau_s`` (a step reads 1, then 1 + share after a
+    while, reached as 1 - e^(-t / tau_s))."""
+    return x + share * rc_filter(x, 1.0 / (2 * np.pi * tau_s))
 
 
 def loose_mount(a: np.ndarray, f_hz: float, zeta: float = LOOSE_ZETA) -> np.ndarray:
@@ -201,9 +223,10 @@ def soak_dummy(params: dict[str, float], kelvin: float) -> dict[str, float]:
     """``params`` of a dummy whose thorax was run ``kelvin`` K below its certification band
     (negative: above it): the ribs' dampings x exp(SOAK_DAMP_PER_K K), stiffnesses x
     exp(SOAK_STIFF_PER_K K)."""
-    gain = {**dict.fromkeys(SOAK_DAMP, np.exp(SOAK_DAMP_PER_K * kelvin)),
-            **dict.fromkeys(SOAK_STIFF, np.exp(SOAK_STIFF_PER_K * kelvin))}
-    return {k: v * float(gain.get(k, 1.0)) for k, v in params.items()}
+    gain: dict[str, float] = {
+        **dict.fromkeys(SOAK_DAMP, float(np.exp(SOAK_DAMP_PER_K * kelvin))),
+        **dict.fromkeys(SOAK_STIFF, float(np.exp(SOAK_STIFF_PER_K * kelvin)))}
+    return {k: v * gain.get(k, 1.0) for k, v in params.items()}
 
 
 def draw(case: Case, effects_on: bool = True) -> tuple[list[Drawn], np.ndarray]:
@@ -297,6 +320,8 @@ def record(d: Drawn, i: int, sim: dict[str, np.ndarray], counts_per_rev: int,
     if e["brs_reset"]:  # a supply glitch resets the counter: it counts on from zero
         k = int(np.searchsorted(t, e["brs_reset"]))
         counts[k:] = counts[k:] - counts[k]
+    if e["brs_wrap"]:  # a counter of too few bits: the count wraps round past its half range
+        counts = wrap(counts, round(e["brs_wrap"]))
     if e["brs_reversed"]:  # the recorder's count direction set wrong: pay-in reads as pay-out
         counts = -counts
     # CR (CFC 180), CD (CFC 600, maybe a non-linear pot, maybe zeroed off)
@@ -317,6 +342,8 @@ def record(d: Drawn, i: int, sim: dict[str, np.ndarray], counts_per_rev: int,
         cr_read = loose_mount(cr_read, e["cr_loose_mount"])  # on a spring, a resonance
     if e["cr_damped"]:  # an oil-damped sensing element, its natural frequency too low
         cr_read = damped_element(cr_read, e["cr_damped"])
+    if e["cr_creep"]:  # the sensing element's gauges creep in their adhesive under load
+        cr_read = creep(cr_read, e["cr_creep"])
     if e["cr_late"]:  # the CR digitiser's pipeline delay, not taken off its time stamps
         cr_read = late(cr_read, e["cr_late"])
     if e["cr_zero_shift"]:  # the sensing element's zero shifts under the shock: once the

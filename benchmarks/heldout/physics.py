@@ -133,6 +133,10 @@ EFFECTS = {
     "rib_foam": "chest_rate_damping",  # damping pad engaging with compression, c at FOAM_D_M
     "cd_reversed": "",  # broken test: CD recorded at the wrong polarity (1 = on)
     "cd_slew": "",  # transducer: CD's amplifier follows no faster than this (mm/ms = m/s)
+    # set S's forms (cases_s.py): one physical form no earlier set used, two lab-side
+    "rib_loss": "chest_rate_damping",  # the ribs' damping layer's loss factor: eta k d sign(d')
+    "brs_wrap": "",  # broken test: the BRS counter holds this many bits (two's complement)
+    "cr_creep": "",  # transducer: CR's gauges creep in their adhesive, this share (tau CREEP_TAU_S)
 }
 POW_B_M = (0.015, 0.025)  # webbing_power: reference stretch, chest side and up to the retractor
 V_HYST = 0.02  # m/s: webbing_hysteresis switches between its paths within this rate
@@ -190,6 +194,13 @@ RIB_FRICTION_V_S = 0.02
 # the compression, F += c (d / FOAM_D_M) d' (c, the effect's size, N s/m at FOAM_D_M), in
 # compression only, from zero at rest, the contact taken no further than FOAM_MAX_M
 FOAM_D_M, FOAM_MAX_M = 0.030, 0.060
+
+# rib_loss: the ribs' bonded damping polymer as a constant loss factor (hysteretic, or
+# structural, damping: the energy lost per cycle a share of the elastic energy stored, about
+# independent of the rate): each rib adds eta k_r d in the sense of its rate, in compression
+# only, from zero at rest (stiffer by eta loading, softer by eta unloading); the sense switches
+# smoothly (tanh) within this rate (m/s), and the deflection is taken no further than LOSS_MAX_M
+LOSS_V_S, LOSS_MAX_M = 0.02, 0.060
 
 # Nominal Hybrid-III-like thorax, belt and retractor (SI), before per-test scatter.
 NOMINAL = {
@@ -304,6 +315,10 @@ def _deriv(b: Batch, j: np.ndarray | int, y: np.ndarray) -> np.ndarray:
     if np.any(cfo):
         fa = fa + cfo * np.clip(da, 0.0, FOAM_MAX_M) / FOAM_D_M * dva
         fb = fb + cfo * np.clip(db, 0.0, FOAM_MAX_M) / FOAM_D_M * dvb
+    eta = e["rib_loss"]  # the loss factor (dimensionless): a force in phase with the rate's sense
+    if np.any(eta):
+        fa = fa + eta * p["k_ra"] * np.clip(da, 0.0, LOSS_MAX_M) * np.tanh(dva / LOSS_V_S)
+        fb = fb + eta * p["k_rb"] * np.clip(db, 0.0, LOSS_MAX_M) * np.tanh(dvb / LOSS_V_S)
     fab = p["k_ab"] * (sa - sb) + p["c_ab"] * (va - vb)
 
     # belt, chest side: pushes the contact point of the sternum rearward
