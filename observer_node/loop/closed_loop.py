@@ -307,10 +307,7 @@ def _run(est_tests: list[CrashTest], val_tests: list[CrashTest], out: Path, rate
                     f"{ev_other.gain_points:+.2f} points on {o2}'s fit alone, which a "
                     f"transducer of {o} cannot move: a physical effect in both outputs that "
                     "no effect of the library explains: unexplained, nothing named")
-                # in each output's own fit points: the sensor's folds score fit_TOT, the
-                # mean of the corrected output and the other, which the correction leaves
-                # as is
-                on_o = {s: 2.0 * v for s, v in ev.setup_gain_points.items()}
+                on_o = _own_points(ev)
                 left_unexplained = [
                     Unexplained(o, _gaining(on_o), SHAPES["both"].format(o=o.upper()), "both",
                                 _rounded(on_o), round(ev_other.gain_points, 2)),
@@ -318,12 +315,10 @@ def _run(est_tests: list[CrashTest], val_tests: list[CrashTest], out: Path, rate
                                 SHAPES["both"].format(o=o2.upper()), "both",
                                 _rounded(ev_other.setup_gain_points),
                                 round(2.0 * ev.gain_points, 2))]
-                kinds = [e["kind"] for e in effects]
-                possible += [PossibleEffect(
-                    t.kind, scope_label(t.setups), kinds, e,
-                    f"a static correction of {o} gains more ({ev.gain_points:+.2f} points) "
-                    "and the residual is in both outputs: no library effect explains it")
-                    for _, t, e in passing]
+                possible += _all_possible(
+                    passing, effects, f"a static correction of {o} gains more "
+                    f"({ev.gain_points:+.2f} points) and the residual is in both outputs: no "
+                    "library effect explains it")
                 break
             sensor = SensorEffect(o, [e["kind"] for e in effects],
                                   f"a static function of {o.upper()}: the {o.upper()} "
@@ -340,13 +335,10 @@ def _run(est_tests: list[CrashTest], val_tests: list[CrashTest], out: Path, rate
             why = untold_from_sensor(passing[0][1], passing[0][2], o, ev)
             if why is not None:
                 step.decision = f"{why}; nothing named"
-                kinds = [e["kind"] for e in effects]
-                possible += [PossibleEffect(
-                    t.kind, scope_label(t.setups), kinds, e,
-                    f"the data cannot tell it from a static correction of {o} (its "
-                    "transducer's error), which passes the rule too")
-                    for _, t, e in passing]
-                on_o = {s: 2.0 * v for s, v in ev.setup_gain_points.items()}  # as above
+                possible += _all_possible(
+                    passing, effects, f"the data cannot tell it from a static correction of "
+                    f"{o} (its transducer's error), which passes the rule too")
+                on_o = _own_points(ev)
                 left_unexplained = [Unexplained(
                     o, _gaining(on_o), SHAPES["static"].format(o=o.upper()), "static",
                     _rounded(on_o), round(2.0 * sensor_ev[_other(o)].gain_points, 2))]
@@ -582,6 +574,21 @@ def _other_output(runner: Runner, base: dict, effects: list[dict], data: Dataset
 
 def _other(o: str) -> str:
     return "cd" if o == "cr" else "cr"
+
+
+def _all_possible(passing: list[tuple[float, Candidate, Evidence]], effects: list[dict],
+                  why: str) -> list[PossibleEffect]:
+    """Every passing candidate, listed as possible for the same reason."""
+    kinds = [e["kind"] for e in effects]
+    return [PossibleEffect(c.kind, scope_label(c.setups), kinds, ev, why)
+            for _, c, ev in passing]
+
+
+def _own_points(sensor: Evidence) -> dict[str, float]:
+    """A sensor candidate's gain per setup in its output's own fit points: its folds score
+    fit_TOT, the mean of the corrected output and the other, which the correction leaves as
+    is."""
+    return {s: 2.0 * v for s, v in sensor.setup_gain_points.items()}
 
 
 def _gaining(per_setup: dict[str, float]) -> list[str]:
