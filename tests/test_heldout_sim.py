@@ -2217,6 +2217,27 @@ def test_set_r_is_new() -> None:
     _is_new(SET_R, BEFORE_R, 27000, 2)
 
 
+def _two_broken_sensor_delays(set_: list, before: list, output: str) -> None:
+    """The general list's rest: one case of two kinds on disjoint rigs, each held twice; one
+    broken estimation test, the only thing expected; one transducer error on ``output``; a
+    late pulse and a late BRS on every rig, at 1-5 ms no case of ``before`` used."""
+    lib = physics.EFFECTS
+    (two,) = [c for c in set_ if len(c.effects) == 2]
+    a, b = two.effects
+    assert lib[a.key] != lib[b.key] and not set(a.setups) & set(b.setups)
+    assert all(two.est.count(r) >= 2 for e in two.effects for r in e.setups)
+    (broken,) = [c for c in set_ if c.expect_broken]
+    assert broken.expect_broken == broken.effects[0].tests and len(broken.expect_broken) == 1
+    (sensor,) = [c for c in set_ if c.expect_note]
+    assert sensor.expect_note == f"unexplained (or a sensor effect) on {output}"
+    used = {e.size for c in before for e in c.effects if lib[e.key] == "input_delay"}
+    delays = [c for c in set_ if c.expect == (("input_delay", "all"),)]
+    assert sorted(c.effects[0].key for c in delays) == ["brs_late", "pulse_late"]
+    for c in delays:
+        (e,) = c.effects
+        assert 0.001 <= e.size <= 0.005 and e.size not in used and e.setups == cases.ALL
+
+
 def test_set_r_covers_the_general_list() -> None:
     """Set R as its brief asks, the issue's own list again: clean cases at 48 and 96 counts;
     each kind of the library a loop can name, as physics, at least once; two effects of
@@ -2241,20 +2262,7 @@ def test_set_r_covers_the_general_list() -> None:
     assert kinds == {"chest_stiffening", "chest_rate_damping", "belt_unloading",
                      "belt_stiffening", "airbag_contact", "pelvis_coupling", "input_delay",
                      "input_gain"}
-    (two,) = [c for c in SET_R if len(c.effects) == 2]
-    a, b = two.effects
-    assert lib[a.key] != lib[b.key] and not set(a.setups) & set(b.setups)
-    assert all(two.est.count(r) >= 2 for e in two.effects for r in e.setups)
-    (broken,) = [c for c in SET_R if c.expect_broken]
-    assert broken.expect_broken == broken.effects[0].tests and len(broken.expect_broken) == 1
-    (sensor,) = [c for c in SET_R if c.expect_note]
-    assert sensor.expect_note == "unexplained (or a sensor effect) on cd"
-    used = {e.size for c in BEFORE_R for e in c.effects if lib[e.key] == "input_delay"}
-    delays = [c for c in SET_R if c.expect == (("input_delay", "all"),)]
-    assert sorted(c.effects[0].key for c in delays) == ["brs_late", "pulse_late"]
-    for c in delays:
-        (e,) = c.effects
-        assert 0.001 <= e.size <= 0.005 and e.size not in used and e.setups == cases.ALL
+    _two_broken_sensor_delays(SET_R, BEFORE_R, "cd")
     assert len(clean) + len(named) + 2 == len(SET_R)
 
 
@@ -2390,20 +2398,7 @@ def test_set_s_covers_the_general_list() -> None:
                      "input_gain"}
     for c in named:  # a bag only where there is an interior
         assert all(set(s.split("+")) <= INTERIOR for k, s in c.expect if k == "airbag_contact")
-    (two,) = [c for c in SET_S if len(c.effects) == 2]
-    a, b = two.effects
-    assert lib[a.key] != lib[b.key] and not set(a.setups) & set(b.setups)
-    assert all(two.est.count(r) >= 2 for e in two.effects for r in e.setups)
-    (broken,) = [c for c in SET_S if c.expect_broken]
-    assert broken.expect_broken == broken.effects[0].tests and len(broken.expect_broken) == 1
-    (sensor,) = [c for c in SET_S if c.expect_note]
-    assert sensor.expect_note == "unexplained (or a sensor effect) on cr"
-    used = {e.size for c in BEFORE_S for e in c.effects if lib[e.key] == "input_delay"}
-    delays = [c for c in SET_S if c.expect == (("input_delay", "all"),)]
-    assert sorted(c.effects[0].key for c in delays) == ["brs_late", "pulse_late"]
-    for c in delays:
-        (e,) = c.effects
-        assert 0.001 <= e.size <= 0.005 and e.size not in used and e.setups == cases.ALL
+    _two_broken_sensor_delays(SET_S, BEFORE_S, "cr")
     assert len(clean) + len(named) + 2 == len(SET_S)
 
 
