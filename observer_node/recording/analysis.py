@@ -80,6 +80,10 @@ class EventAnalysis:
     fit_vs_offline: OutputFits
     criteria: CriteriaComparison
     fit_vs_reference: Fits | None = None
+    # the time [s] from the onset to its last running tick when that is before the fit
+    # window's end: the inputs fell silent mid-event (a stalled bus or replay; the daemon's
+    # watchdog ended it), so its fits cover only what it ran. None: it ran past the window.
+    cut_s: float | None = None
     fit_vs_reference_valid: ValidFits | None = None  # None also when under 11 valid ticks
     offline_fit_vs_reference: OutputFits | None = None
     iso18571: OutputRatings | None = None  # against the reference on the window
@@ -87,7 +91,7 @@ class EventAnalysis:
     def as_dict(self) -> dict[str, Any]:
         out: dict[str, Any] = {
             "event": self.event, "onset_tick": self.onset_tick, "ticks": self.ticks,
-            "invalid_ticks": self.invalid_ticks,
+            "invalid_ticks": self.invalid_ticks, "cut_s": self.cut_s,
             "max_abs_diff_offline": self.max_abs_diff_offline.as_dict(),
             "fit_vs_offline": self.fit_vs_offline.as_dict()}
         if self.fit_vs_reference is not None:
@@ -162,6 +166,8 @@ def _event(rec: Recording, e: int, window_s: tuple[float, float], fs: float, rat
     onset = int(ticks[0])
     t_rel = (ticks - onset) / fs
     win = (t_rel >= window_s[0] - 1e-9) & (t_rel <= window_s[1] + 1e-9) & running
+    ran_s = float(t_rel[running][-1])
+    cut_s = ran_s if ran_s < window_s[1] - 1e-9 else None
     head = (e, onset, len(ticks), int((running & ~valid).sum()),
             OfflineDiff(float(np.max(np.abs(y_est[running, 0] - y_off[running, 0]))),
                         float(np.max(np.abs(y_est[running, 1] - y_off[running, 1])))),
@@ -169,7 +175,7 @@ def _event(rec: Recording, e: int, window_s: tuple[float, float], fs: float, rat
                        fit_percent(y_off[win, 1], y_est[win, 1])))
     have_ref = np.array([int(k) in rec.reference for k in ticks])
     if not (have_ref & win).sum() > 10:
-        entry = EventAnalysis(*head, criteria=CriteriaComparison(
+        entry = EventAnalysis(*head, cut_s=cut_s, criteria=CriteriaComparison(
             chest_criteria(y_est[running, 0], y_est[running, 1], fs)))
         return entry, t_rel, y_est, y_off, None, running & valid
     r = np.array([rec.reference.get(int(k), (np.nan, np.nan)) for k in ticks])
@@ -180,6 +186,7 @@ def _event(rec: Recording, e: int, window_s: tuple[float, float], fs: float, rat
     m = running & have_ref
     entry = EventAnalysis(
         *head,
+        cut_s=cut_s,
         fit_vs_reference=Fits.of(fit_percent(r[w, 0], y_est[w, 0]),
                                  fit_percent(r[w, 1], y_est[w, 1])),
         fit_vs_reference_valid=ValidFits(fit_percent(r[wv, 0], y_est[wv, 0]),
