@@ -18,6 +18,7 @@ from benchmarks.heldout.cases_p import BY_NAME_P
 from benchmarks.heldout.cases_q import BY_NAME_Q
 from benchmarks.heldout.cases_r import BY_NAME_R
 from benchmarks.heldout.cases_s import BY_NAME_S
+from benchmarks.heldout.cases_t import BY_NAME_T, MOSTLY_ONE_OUTPUT
 from observer_node.data import load_tests
 from observer_node.data.isomme import read_isomme
 from observer_node.data.setups import assign_setups
@@ -2513,3 +2514,233 @@ def test_set_s_cr_creep_moves_cr_only(set_s: Path) -> None:
         miss = np.abs(cr - lab.creep(cr0, e.size))[inner].max()
         moved = np.abs(cr - cr0).max()
         assert miss < 1.0 and miss < 0.2 * moved and moved > 2.0, (name, miss, moved)
+
+
+# ------------------------------------------------------------------ set T (cases_t.py)
+
+SET_T = heldout_sets.case_set("t")
+# the new physical form and the other cases mostly in one output, the broken test, the two
+# transducer errors
+WATCHED_T = (*MOSTLY_ONE_OUTPUT, "ht_broken_pulse_ms2", "ht_cd_arm_ring", "ht_cr_drift")
+BEFORE_T = _cases_of("abcdefghijklmnopqrs")
+
+
+@pytest.fixture(scope="module")
+def set_t(tmp_path_factory: pytest.TempPathFactory) -> Path:
+    return _generate(tmp_path_factory, "t", WATCHED_T)
+
+
+def test_set_t_is_new() -> None:
+    _is_new(SET_T, BEFORE_T, 29000, 3, size=15)
+
+
+def test_set_t_covers_the_general_list() -> None:
+    """Set T as its brief asks: clean cases at 48 and 96 counts; each kind of the library a loop
+    can name, as physics, at least once; two effects of different kinds on different rigs in
+    one case; a broken estimation test; a transducer error on CD alone and one on CR alone; a
+    late pulse and a late BRS at delays in 1-5 ms no earlier set used on any input; 6 + 6 tests,
+    every rig an estimation part holds held twice or more; an effect on some rigs only rests on
+    two estimation and two validation tests of them beside an estimation test of a rig it
+    spares."""
+    lib = physics.EFFECTS
+    for c in SET_T:
+        assert len(c.est) == len(c.val) == 6
+        assert all(c.est.count(r) >= 2 for r in set(c.est)), c.name
+        for e in c.effects:
+            assert set(e.setups) & set(c.est), c.name
+            if not e.tests and not set(e.setups) >= set(c.est) | set(c.val):
+                assert sum(s in e.setups for s in c.est) >= 2, c.name
+                assert sum(s not in e.setups for s in c.est) >= 1, c.name
+                assert sum(s in e.setups for s in c.val) >= 2, c.name
+    clean = [c for c in SET_T if not c.effects]
+    assert sorted(c.counts_per_rev for c in clean) == [48, 96]
+    assert all(not c.expect and not c.expect_note and not c.expect_broken for c in clean)
+    named = [c for c in SET_T if c.expect]
+    for c in named:  # the verdict is the effects' kinds on their rigs, nothing else
+        want = {(lib[e.key], "all" if e.setups == cases.ALL else "+".join(e.setups))
+                for e in c.effects}
+        assert set(c.expect) == want and not c.expect_note and not c.expect_broken, c.name
+    kinds = {k for c in named for k, _ in c.expect}
+    assert kinds == {"chest_stiffening", "chest_rate_damping", "belt_unloading",
+                     "belt_stiffening", "airbag_contact", "pelvis_coupling", "input_delay",
+                     "input_gain"}
+    for c in named:  # a bag only where there is an interior
+        assert all(set(s.split("+")) <= INTERIOR for k, s in c.expect if k == "airbag_contact")
+    (two,) = [c for c in SET_T if len(c.effects) == 2]
+    a, b = two.effects
+    assert lib[a.key] != lib[b.key] and not set(a.setups) & set(b.setups)
+    (broken,) = [c for c in SET_T if c.expect_broken]
+    assert broken.expect_broken == broken.effects[0].tests and len(broken.expect_broken) == 1
+    sensors = [c for c in SET_T if c.expect_note]
+    assert sorted(c.expect_note for c in sensors) == [
+        f"unexplained (or a sensor effect) on {o}" for o in ("cd", "cr")]
+    used = {e.size for c in BEFORE_T for e in c.effects if lib[e.key] == "input_delay"}
+    delays = [c for c in SET_T if c.expect == (("input_delay", "all"),)]
+    assert sorted(c.effects[0].key for c in delays) == ["brs_late", "pulse_late"]
+    for c in delays:
+        (e,) = c.effects
+        assert 0.001 <= e.size <= 0.005 and e.size not in used and e.setups == cases.ALL
+    assert len(clean) + len(named) + 3 == len(SET_T)
+
+
+def test_set_t_judges_sensor_against_physics() -> None:
+    """The emphasis of set T: two transducer errors, one on CD alone and one on CR alone, each
+    of a form no earlier set used, nothing physical named, only the output it is on; and two or
+    more physical cases whose effect shows mostly in one output, a single effect of the
+    library's kind on the rigs it is on, its kind the verdict."""
+    lib = physics.EFFECTS
+    for output in ("cd", "cr"):
+        (sensor,) = [c for c in SET_T if c.expect_note.endswith(f" on {output}")]
+        assert sensor.expect_note == f"unexplained (or a sensor effect) on {output}"
+        assert not sensor.expect and not sensor.expect_broken
+        (e,) = sensor.effects
+        assert lib[e.key] == "" and not e.tests and e.setups == cases.ALL
+        assert e.key.startswith(f"{output}_") and e.key not in _keys(BEFORE_T)
+    assert len(MOSTLY_ONE_OUTPUT) >= 2 and set(MOSTLY_ONE_OUTPUT.values()) <= {"cd", "cr"}
+    for name in MOSTLY_ONE_OUTPUT:
+        c = BY_NAME_T[name]
+        (e,) = c.effects
+        assert c.expect == ((lib[e.key], "all" if e.setups == cases.ALL
+                             else "+".join(e.setups)),)
+        assert lib[e.key] not in ("", "input_delay", "input_gain")
+
+
+def test_set_t_lab_side_is_new_and_unnamed() -> None:
+    """One broken estimation test, of a form no earlier set used, the only thing expected."""
+    lib = physics.EFFECTS
+    (broken,) = [c for c in SET_T if c.expect_broken]
+    (e,) = broken.effects
+    est, _ = cases.test_names(broken)
+    assert set(broken.expect_broken) == set(e.tests) and set(e.tests) <= set(est)
+    assert lib[e.key] == "" and not broken.expect and not broken.expect_note
+    assert e.key not in _keys(BEFORE_T)
+
+
+def test_set_t_new_forms_are_no_earlier_sets() -> None:
+    """The physical form and the three lab-side forms of set T are keys no earlier case
+    switched."""
+    new = {"rib_bumper", "pulse_ms2", "cd_arm_ring", "cr_drift"}
+    assert not new & _keys(BEFORE_T) and new <= _keys(SET_T)
+    assert physics.EFFECTS["rib_bumper"] == "chest_stiffening"
+    assert physics.EFFECTS["pulse_ms2"] == physics.EFFECTS["cd_arm_ring"] == ""
+    assert physics.EFFECTS["cr_drift"] == ""
+
+
+def test_set_t_rib_bumper_is_hertz_on_the_lower_sternum() -> None:
+    """rib_bumper: nothing at rest, within its gap or in extension; past BUMPER_GAP_M the lower
+    sternum mass alone feels K pen^1.5 against it, the spine its reaction; whatever the rate;
+    the upper sternum mass and nothing else moves."""
+    p = physics.NOMINAL
+    k = 5e6
+    assert np.array_equal(_deriv_one("rib_bumper", k), _deriv_one("", 0.0))
+    for d in (-0.01, 0.0, 0.010, physics.BUMPER_GAP_M, 0.025, 0.040):
+        for v in (1.5, -0.8, 0.0):
+            on = _deriv_one("rib_bumper", k, sa=d, sb=d, va=v, vb=v)
+            off = _deriv_one("", 0.0, sa=d, sb=d, va=v, vb=v)
+            want = k * max(d - physics.BUMPER_GAP_M, 0.0) ** 1.5
+            assert (on[1] - off[1]) * p["m_sp"] == pytest.approx(want, abs=1e-9)
+            assert (on[5] - off[5]) * p["m_b"] == pytest.approx(-want, abs=1e-9)
+            assert np.array_equal(np.delete(on - off, [1, 5]), np.zeros(physics.N_STATE - 2))
+
+
+def _moved(on: Path, off: Path, name: str, which: str) -> tuple[float, float]:
+    """How far an effect moved a channel of a test (its largest change), and that as a share of
+    the channel's own largest value without it."""
+    y, y0 = _channel(on, name, which), _channel(off, name, which)
+    change = float(np.abs(y - y0).max())
+    return change, change / float(np.abs(y0).max())
+
+
+@pytest.mark.parametrize("case", sorted(MOSTLY_ONE_OUTPUT))
+def test_set_t_one_output_cases_move_both_more_the_one(set_t: Path, case: str) -> None:
+    """Each physical case said to show mostly in one output is physics: it leaves the pulse
+    alone, moves both CR and CD on every test of its rigs (none elsewhere), and moves its output
+    by a larger share than the other, summed over its rigs' tests."""
+    c = BY_NAME_T[case]
+    (e,) = c.effects
+    mostly = MOSTLY_ONE_OUTPUT[case]
+    other = "cr" if mostly == "cd" else "cd"
+    on, off = set_t / "on" / case, set_t / "off" / case
+    share = {"cr": 0.0, "cd": 0.0}
+    for folder in sorted(on.glob("*/*")):
+        name = folder.name
+        assert np.array_equal(_channel(on, name, "pulse"), _channel(off, name, "pulse"))
+        if name.split("_")[0] not in e.setups:
+            assert _files(folder) == _files(off / folder.parent.name / name)
+            continue
+        for which in ("cr", "cd"):
+            change, part = _moved(on, off, name, which)
+            assert change > 0.3, (name, which, change)
+            share[which] += part
+    assert share[mostly] > 1.5 * share[other], share
+
+
+def test_set_t_pulse_ms2_scales_the_broken_tests_pulse_only(set_t: Path) -> None:
+    """The broken test's pulse is its twin's times G (m/s^2 under g; within the file's six
+    digits), its CR, CD and BRS untouched; every other test untouched."""
+    c = BY_NAME_T["ht_broken_pulse_ms2"]
+    (broken,) = c.expect_broken
+    on, off = set_t / "on" / c.name, set_t / "off" / c.name
+    bad, good = _channel(on, broken, "pulse"), _channel(off, broken, "pulse")
+    assert good.max() > 15 and bad.max() > 150
+    assert np.allclose(bad, good * physics.G, rtol=1e-5, atol=1e-4)
+    for which in ("cr", "cd"):
+        assert np.array_equal(_channel(on, broken, which), _channel(off, broken, which))
+    assert np.array_equal(_brs(on, broken), _brs(off, broken))
+    _others_untouched(set_t, c.name, broken)
+
+
+def test_set_t_drift_is_a_ramp_from_the_trigger() -> None:
+    """lab.drift: nothing before the trigger (t = 0), then the rate times the time since."""
+    x = np.linspace(-1.0, 1.0, physics.N_SAMPLES)
+    y = lab.drift(x, 25.0)
+    t = physics.T0_S + np.arange(x.size) / physics.FS_HZ
+    assert np.array_equal(y[t <= 0], x[t <= 0])
+    assert np.allclose((y - x)[t > 0], 25.0 * t[t > 0])
+
+
+def test_set_t_cr_drift_moves_cr_only(set_t: Path) -> None:
+    """CR is its twin's plus the drift's ramp (the CFC 180 filter passes a ramp; within its
+    ends), every test; CD, pulse and BRS untouched."""
+    c = BY_NAME_T["ht_cr_drift"]
+    (e,) = c.effects
+    on, off = set_t / "on" / c.name, set_t / "off" / c.name
+    folders = sorted(on.glob("*/*"))
+    assert len(folders) == 12
+    for folder in folders:
+        name = folder.name
+        for which in ("cd", "pulse"):
+            assert np.array_equal(_channel(on, name, which), _channel(off, name, which))
+        assert np.array_equal(_brs(on, name), _brs(off, name))
+        cr, cr0 = _channel(on, name, "cr"), _channel(off, name, "cr")
+        t = _times(len(cr))
+        inner = (t > 0.005) & (t < 0.17)
+        assert np.abs((cr - cr0) - e.size * t)[inner].max() < 0.05
+        assert np.abs(cr - cr0)[t < -0.005].max() < 0.05
+
+
+def test_set_t_arm_ring_is_a_lightly_damped_second_order() -> None:
+    """The chest pot arm's resonance (lab.damped_element at CD_RING_ZETA): a step overshoots by
+    exp(-zeta pi / sqrt(1 - zeta^2)) near half its period, rings, and settles at 1."""
+    f, z = 60.0, lab.CD_RING_ZETA
+    step = lab.damped_element(np.r_[np.zeros(10), np.ones(4000)], f, z)
+    over = np.exp(-z * np.pi / np.sqrt(1 - z * z))
+    assert step.max() == pytest.approx(1.0 + over, abs=0.02)
+    k = 10 + int(np.argmax(step[10:]))
+    assert k - 10 == pytest.approx(physics.FS_HZ / (2 * f * np.sqrt(1 - z * z)), abs=3)
+    assert step[-1] == pytest.approx(1.0, abs=1e-3)
+
+
+def test_set_t_cd_arm_ring_rings_cd_only(set_t: Path) -> None:
+    """CD is its twin's through the arm's resonance (within the noise, which is added after
+    it), every test, and moved by it; CR, pulse and BRS untouched."""
+    c = BY_NAME_T["ht_cd_arm_ring"]
+    (e,) = c.effects
+    seen = 0
+    for cd, cd0 in _cd_only(set_t / "on" / c.name, set_t / "off" / c.name):
+        inner = (_times(len(cd)) > 0.0) & (_times(len(cd)) < 0.17)
+        miss = np.abs(cd - lab.damped_element(cd0, e.size, lab.CD_RING_ZETA))[inner].max()
+        moved = np.abs(cd - cd0).max()
+        assert miss < 0.3 and miss < 0.2 * moved, (miss, moved)
+        seen += 1
+    assert seen == 12

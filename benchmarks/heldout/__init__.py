@@ -56,11 +56,16 @@
   the general list at new seeds, sizes and scopes, with a rib cage damped by a constant loss
   factor (hysteretic damping), a BRS counter of too few bits wrapping round (broken test) and
   a spine accelerometer whose gauges creep (a transducer error on CR).
+  ``cases_t.py``: set T, the same again, on pairings no earlier case ran, by another engineer,
+  judging sensor against physics: a transducer error on CD alone (a chest pot's arm ringing)
+  and one on CR alone (a spine accelerometer's zero drifting from the trigger) beside physical
+  effects that show mostly in one output (a stop behind the lower sternum, a new form), and the
+  general list's rest (a pulse channel written in m/s^2 under its g: a broken test).
   ``make_sets.py``: writes a set (``--no-effects``: the same tests with every effect off).
   ``costs.py``: what each case costs the thesis grey-box (project CLI).
 
     python -m benchmarks.heldout.make_sets --out /tmp/heldout
-        [--set a|b|c|d|e|f|g|h|i|j|k|l|m|n|o|p|q|r|s] [--case NAME ...]
+        [--set a|b|c|d|e|f|g|h|i|j|k|l|m|n|o|p|q|r|s|t] [--case NAME ...]
 
 Never tune the loop on these cases; report them apart from the tuned ones.
 """

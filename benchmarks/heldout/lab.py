@@ -36,7 +36,8 @@ EXACT = {"pulse_late", "brs_late", "brs_freeze", "cd_dropout", "pulse_rail", "pu
          "cr_loose_mount", "brs_swap", "cd_arm_lift", "pulse_from", "cr_zero_shift",
          "pulse_rate", "cd_aa_filter", "dummy_scale", "cr_crosstalk", "dummy_soak", "cd_sag",
          "brs_counts", "cr_damped", "cr_late", "cd_rc_filter", "dummy_late",
-         "cd_reversed", "cd_slew", "brs_wrap", "cr_creep"}
+         "cd_reversed", "cd_slew", "brs_wrap", "cr_creep", "pulse_ms2", "cd_arm_ring",
+         "cr_drift"}
 DROPOUT_S = 0.010  # how long cd_dropout's wiper stays off the track
 KNEE_SLOPE = 0.6  # cd_knee: the gain of the CD calibration's second segment
 SHIFT_AT_S = 0.011  # pulse_zero_shift: when the zero shifts (in the crash-box spike)
@@ -104,6 +105,16 @@ CR_DAMPED_ZETA = 0.7
 # the adhesive's time constant CREEP_TAU_S (and falls back the same way once unloaded): CR
 # reads cr + share x (cr through a one-pole low-pass of that time constant); CD, pulse, BRS right
 CREEP_TAU_S = 0.015
+# pulse_ms2: the pulse channel's export wrote m/s^2 where its header (and every other test's
+# file) states g: the file reads G times the deceleration, its noise with it
+# cd_arm_ring: the chest pot's arm (its slider and the rod to the sternum) is a mass on a
+# spring, lightly damped by the wiper's friction: the pot reads the sternum through a 2-pole
+# low-pass of this damping ratio at the arm's natural frequency (the effect's size, Hz),
+# causal: CD overshoots a fast loading and rings about the sternum's motion
+CD_RING_ZETA = 0.12
+# cr_drift: the recorder switches the spine accelerometer's bridge excitation on only at the
+# trigger (a battery-saving mode) and the bridge's zero drifts as its gauges warm: CR reads
+# cr + r t from the trigger on (r, the effect's size, g/s), nothing before; CD, pulse, BRS right
 NOISE = {"pulse_g": 0.6, "cr_g": 0.55, "cd_mm": 0.10}  # white, before the CFC filters
 
 
@@ -167,6 +178,13 @@ def creep(x: np.ndarray, share: float, tau_s: float = CREEP_TAU_S) -> np.ndarray
     one-pole low-pass of time constant ``tau_s`` (a step reads 1, then 1 + share after a
     while, reached as 1 - e^(-t / tau_s))."""
     return x + share * rc_filter(x, 1.0 / (2 * np.pi * tau_s))
+
+
+def drift(x: np.ndarray, rate_per_s: float) -> np.ndarray:
+    """``x`` (sampled at ``physics.FS_HZ``, its first sample at ``physics.T0_S``) plus a zero
+    growing at ``rate_per_s`` per second from the trigger (t = 0) on, nothing before."""
+    t = ph.T0_S + np.arange(x.size) / ph.FS_HZ
+    return x + rate_per_s * np.maximum(t, 0.0)
 
 
 def loose_mount(a: np.ndarray, f_hz: float, zeta: float = LOOSE_ZETA) -> np.ndarray:
@@ -297,6 +315,8 @@ def record(d: Drawn, i: int, sim: dict[str, np.ndarray], counts_per_rev: int,
     pulse = pulse + NOISE["pulse_g"] * rng.standard_normal(t.size)
     if e["pulse_rail"]:  # amplifier range set too low: the channel clips at its rails
         pulse = np.clip(pulse, -e["pulse_rail"], e["pulse_rail"])
+    if e["pulse_ms2"]:  # the export wrote m/s^2 under the header's g (noise and all)
+        pulse = pulse * ph.G
     # BRS: the spindle's counts, leading the belt the chest feels by brs_late (as the pulse),
     # maybe frozen by a cable fault
     # brs_swap: this test's BRS channel is another test's (of the same case, e["brs_swap"]
@@ -344,6 +364,8 @@ def record(d: Drawn, i: int, sim: dict[str, np.ndarray], counts_per_rev: int,
         cr_read = damped_element(cr_read, e["cr_damped"])
     if e["cr_creep"]:  # the sensing element's gauges creep in their adhesive under load
         cr_read = creep(cr_read, e["cr_creep"])
+    if e["cr_drift"]:  # the bridge's zero drifts as its gauges warm from the trigger on
+        cr_read = drift(cr_read, e["cr_drift"])
     if e["cr_late"]:  # the CR digitiser's pipeline delay, not taken off its time stamps
         cr_read = late(cr_read, e["cr_late"])
     if e["cr_zero_shift"]:  # the sensing element's zero shifts under the shock: once the
@@ -390,6 +412,8 @@ def record(d: Drawn, i: int, sim: dict[str, np.ndarray], counts_per_rev: int,
         cd = rc_filter(cd, e["cd_rc_filter"])
     if e["cd_slew"]:  # the conditioner's output amplifier slew-limited (a slow op-amp): CD
         cd = slew(cd, e["cd_slew"] * 1e3 / ph.FS_HZ)  # follows no faster, either way
+    if e["cd_arm_ring"]:  # the pot's arm a lightly damped mass on a spring: CD rings
+        cd = damped_element(cd, e["cd_arm_ring"], CD_RING_ZETA)
     cd = cd + NOISE["cd_mm"] * rng.standard_normal(t.size)
     if e["cd_stuck_bit"]:  # one data line of the digitiser stuck at 1: the recorded channel
         raw = -cd  # (J211 sign) reads one bit's weight high wherever that bit should be 0

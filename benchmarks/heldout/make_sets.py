@@ -2,8 +2,8 @@
 DIR/<case>/truth.json (the case, the expected verdict, the true parameters of every test).
 Deterministic from each case's seed.
 
-    python -m benchmarks.heldout.make_sets --out DIR [--set a|b|c|d|e|f|g|h|i|j|k|l|m|n|o|p|q|r|s]
-        [--case NAME ...] [--no-effects]
+    python -m benchmarks.heldout.make_sets --out DIR
+        [--set a|b|c|d|e|f|g|h|i|j|k|l|m|n|o|p|q|r|s|t] [--case NAME ...] [--no-effects]
 """
 
 from __future__ import annotations
@@ -69,8 +69,9 @@ def main(argv: list[str] | None = None) -> int:
                          "(cases_g.py), set H (cases_h.py), set I (cases_i.py), set J "
                          "(cases_j.py), set K (cases_k.py), set L (cases_l.py), set M "
                          "(cases_m.py), set N (cases_n.py), set O (cases_o.py), set P "
-                         "(cases_p.py), set Q (cases_q.py), set R (cases_r.py) or set S "
-                         "(cases_s.py, held out from the loop's engineers)")
+                         "(cases_p.py), set Q (cases_q.py), set R (cases_r.py), set S "
+                         "(cases_s.py) or set T (cases_t.py, held out from the loop's "
+                         "engineers)")
     ap.add_argument("--case", action="append", metavar="NAME",
                     help="only this case of the set (repeatable); default all, in set A: "
                          + ", ".join(c.name for c in CASES))

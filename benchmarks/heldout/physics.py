@@ -137,6 +137,11 @@ EFFECTS = {
     "rib_loss": "chest_rate_damping",  # the ribs' damping layer's loss factor: eta k d sign(d')
     "brs_wrap": "",  # broken test: the BRS counter holds this many bits (two's complement)
     "cr_creep": "",  # transducer: CR's gauges creep in their adhesive, this share (tau CREEP_TAU_S)
+    # set T's forms (cases_t.py): one physical form no earlier set used, three lab-side
+    "rib_bumper": "chest_stiffening",  # lower sternum meets the spine box's stop: K pen^1.5
+    "pulse_ms2": "",  # broken test: the pulse file in m/s^2 under its header's g (1 = on)
+    "cd_arm_ring": "",  # transducer: the chest pot's arm resonates at this (Hz), lightly damped
+    "cr_drift": "",  # transducer: CR's zero drifts from the trigger on at this rate (g/s)
 }
 POW_B_M = (0.015, 0.025)  # webbing_power: reference stretch, chest side and up to the retractor
 V_HYST = 0.02  # m/s: webbing_hysteresis switches between its paths within this rate
@@ -201,6 +206,13 @@ FOAM_D_M, FOAM_MAX_M = 0.030, 0.060
 # only, from zero at rest (stiffer by eta loading, softer by eta unloading); the sense switches
 # smoothly (tanh) within this rate (m/s), and the deflection is taken no further than LOSS_MAX_M
 LOSS_V_S, LOSS_MAX_M = 0.02, 0.060
+
+# rib_bumper: the sternum's lower edge (the lower sternum mass, below where the diagonal belt
+# crosses) meets the spine box's deflection stop, a rubber bumper, once its ribs have closed
+# BUMPER_GAP_M: a Hertzian contact (a rubber pad under a rounded edge), F = K pen^1.5 (K, the
+# effect's size, N/m^1.5), in compression only, on the lower sternum mass alone (the upper one
+# has no stop behind it)
+BUMPER_GAP_M = 0.015
 
 # Nominal Hybrid-III-like thorax, belt and retractor (SI), before per-test scatter.
 NOMINAL = {
@@ -319,6 +331,9 @@ def _deriv(b: Batch, j: np.ndarray | int, y: np.ndarray) -> np.ndarray:
     if np.any(eta):
         fa = fa + eta * p["k_ra"] * np.clip(da, 0.0, LOSS_MAX_M) * np.tanh(dva / LOSS_V_S)
         fb = fb + eta * p["k_rb"] * np.clip(db, 0.0, LOSS_MAX_M) * np.tanh(dvb / LOSS_V_S)
+    kbu = e["rib_bumper"]  # N/m^1.5: the lower sternum mass's stop, Hertz past its gap
+    if np.any(kbu):
+        fb = fb + kbu * np.maximum(db - BUMPER_GAP_M, 0.0) ** 1.5
     fab = p["k_ab"] * (sa - sb) + p["c_ab"] * (va - vb)
 
     # belt, chest side: pushes the contact point of the sternum rearward

@@ -13,7 +13,8 @@ written after set M had been looked at, the same way), set O (``cases_o``, writt
 had been looked at, the same way), set P (``cases_p``, written beside set O by another engineer,
 the same way), set Q (``cases_q``, written after sets O and P, the same way), set R
 (``cases_r``, written after set Q, the same way), set S (``cases_s``, written after set R by
-another engineer, the same way)."""
+another engineer, the same way), set T (``cases_t``, written after set S by another engineer,
+the same way)."""
 
 from __future__ import annotations
 
@@ -36,17 +37,18 @@ from .cases_p import SET_P
 from .cases_q import SET_Q
 from .cases_r import SET_R
 from .cases_s import SET_S
+from .cases_t import SET_T
 
 SETS = ("a", "b", "c", "d", "e", "f", "g", "h", "i", "j", "k", "l", "m", "n", "o", "p", "q",
-        "r", "s")
+        "r", "s", "t")
 
 
 def case_set(name: str) -> list[Case]:
     """Set A (``cases``), B (``cases_b``), C (``cases_c``), D (``cases_d``), E (``cases_e``),
     F (``cases_f``), G (``cases_g``), H (``cases_h``), I (``cases_i``), J (``cases_j``), K
     (``cases_k``), L (``cases_l``), M (``cases_m``), N (``cases_n``), O (``cases_o``), P
-    (``cases_p``), Q (``cases_q``), R (``cases_r``) or S (``cases_s``); ValueError for another
-    name."""
+    (``cases_p``), Q (``cases_q``), R (``cases_r``), S (``cases_s``) or T (``cases_t``);
+    ValueError for another name."""
     if name == "a":
         return list(CASES)
     if name == "b":
@@ -85,6 +87,8 @@ def case_set(name: str) -> list[Case]:
         return list(SET_R)
     if name == "s":
         return list(SET_S)
+    if name == "t":
+        return list(SET_T)
     raise ValueError(f"unknown case set {name!r}; known: {', '.join(SETS)}")
 
 
