@@ -2218,10 +2218,48 @@ def test_set_r_is_new() -> None:
     _is_new(SET_R, BEFORE_R, 27000, 2)
 
 
-def _two_broken_sensor_delays(set_: list, before: list, output: str) -> None:
+def _scopes_rest_on_two(set_: list) -> None:
+    """6 + 6 tests, every rig the estimation part holds held twice or more; an effect on some
+    rigs only acts on a rig its case estimates and rests on two estimation and two validation
+    tests of them beside an estimation test of a rig it spares."""
+    for c in set_:
+        assert len(c.est) == len(c.val) == 6
+        assert all(c.est.count(r) >= 2 for r in set(c.est)), c.name
+        for e in c.effects:
+            assert set(e.setups) & set(c.est), c.name
+            if not e.tests and not set(e.setups) >= set(c.est) | set(c.val):
+                assert sum(s in e.setups for s in c.est) >= 2, c.name
+                assert sum(s not in e.setups for s in c.est) >= 1, c.name
+                assert sum(s in e.setups for s in c.val) >= 2, c.name
+
+
+def _clean_and_named(set_: list) -> tuple[list, list]:
+    """The general list's core: two clean cases at 48 and 96 counts, nothing expected; every
+    other verdict the effects' kinds on their rigs, each kind of the library at least once, a
+    bag only where there is an interior. Returns (clean, named)."""
+    lib = physics.EFFECTS
+    clean = [c for c in set_ if not c.effects]
+    assert sorted(c.counts_per_rev for c in clean) == [48, 96]
+    assert all(not c.expect and not c.expect_note and not c.expect_broken for c in clean)
+    named = [c for c in set_ if c.expect]
+    for c in named:  # the verdict is the effects' kinds on their rigs, nothing else
+        want = {(lib[e.key], "all" if e.setups == cases.ALL else "+".join(e.setups))
+                for e in c.effects}
+        assert set(c.expect) == want and not c.expect_note and not c.expect_broken, c.name
+    kinds = {k for c in named for k, _ in c.expect}
+    assert kinds == {"chest_stiffening", "chest_rate_damping", "belt_unloading",
+                     "belt_stiffening", "airbag_contact", "pelvis_coupling", "input_delay",
+                     "input_gain"}
+    for c in named:  # a bag only where there is an interior
+        assert all(set(s.split("+")) <= INTERIOR for k, s in c.expect if k == "airbag_contact")
+    return clean, named
+
+
+def _two_broken_sensor_delays(set_: list, before: list, outputs: str) -> None:
     """The general list's rest: one case of two kinds on disjoint rigs, each held twice; one
-    broken estimation test, the only thing expected; one transducer error on ``output``; a
-    late pulse and a late BRS on every rig, at 1-5 ms no case of ``before`` used."""
+    broken estimation test, the only thing expected; one transducer error on each output of
+    ``outputs`` ("cd", "cr" or "cdcr"); a late pulse and a late BRS on every rig, at 1-5 ms no
+    case of ``before`` used."""
     lib = physics.EFFECTS
     (two,) = [c for c in set_ if len(c.effects) == 2]
     a, b = two.effects
@@ -2229,8 +2267,9 @@ def _two_broken_sensor_delays(set_: list, before: list, output: str) -> None:
     assert all(two.est.count(r) >= 2 for e in two.effects for r in e.setups)
     (broken,) = [c for c in set_ if c.expect_broken]
     assert broken.expect_broken == broken.effects[0].tests and len(broken.expect_broken) == 1
-    (sensor,) = [c for c in set_ if c.expect_note]
-    assert sensor.expect_note == f"unexplained (or a sensor effect) on {output}"
+    sensors = [c for c in set_ if c.expect_note]
+    assert sorted(c.expect_note for c in sensors) == [
+        f"unexplained (or a sensor effect) on {o}" for o in (outputs[:2], outputs[2:]) if o]
     used = {e.size for c in before for e in c.effects if lib[e.key] == "input_delay"}
     delays = [c for c in set_ if c.expect == (("input_delay", "all"),)]
     assert sorted(c.effects[0].key for c in delays) == ["brs_late", "pulse_late"]
@@ -2245,24 +2284,12 @@ def test_set_r_covers_the_general_list() -> None:
     different kinds on different rigs in one case; a broken estimation test; a transducer error
     on CD alone; a late pulse and a late BRS at delays in 1-5 ms no earlier set used on any
     input; 6 + 6 tests, every rig an estimation part holds held twice or more."""
-    lib = physics.EFFECTS
     for c in SET_R:
         assert len(c.est) == len(c.val) == 6
         assert all(c.est.count(r) >= 2 for r in set(c.est)), c.name
         for e in c.effects:  # every scoped effect acts on rigs its case estimates or validates
             assert set(e.setups) <= set(c.est) | set(c.val), c.name
-    clean = [c for c in SET_R if not c.effects]
-    assert sorted(c.counts_per_rev for c in clean) == [48, 96]
-    assert all(not c.expect and not c.expect_note and not c.expect_broken for c in clean)
-    named = [c for c in SET_R if c.expect]
-    for c in named:  # the verdict is the effects' kinds on their rigs, nothing else
-        want = {(lib[e.key], "all" if e.setups == cases.ALL else "+".join(e.setups))
-                for e in c.effects}
-        assert set(c.expect) == want and not c.expect_note and not c.expect_broken, c.name
-    kinds = {k for c in named for k, _ in c.expect}
-    assert kinds == {"chest_stiffening", "chest_rate_damping", "belt_unloading",
-                     "belt_stiffening", "airbag_contact", "pelvis_coupling", "input_delay",
-                     "input_gain"}
+    clean, named = _clean_and_named(SET_R)
     _two_broken_sensor_delays(SET_R, BEFORE_R, "cd")
     assert len(clean) + len(named) + 2 == len(SET_R)
 
@@ -2375,30 +2402,8 @@ def test_set_s_covers_the_general_list() -> None:
     on CR alone; a late pulse and a late BRS at delays in 1-5 ms no earlier set used on any
     input; 6 + 6 tests, every rig an estimation part holds held twice or more; an effect on
     some rigs only rests on two estimation tests of them beside one of a rig it spares."""
-    lib = physics.EFFECTS
-    for c in SET_S:
-        assert len(c.est) == len(c.val) == 6
-        assert all(c.est.count(r) >= 2 for r in set(c.est)), c.name
-        for e in c.effects:  # every scoped effect acts on rigs its case estimates
-            assert set(e.setups) & set(c.est), c.name
-            if not e.tests and not set(e.setups) >= set(c.est) | set(c.val):
-                assert sum(s in e.setups for s in c.est) >= 2, c.name
-                assert sum(s not in e.setups for s in c.est) >= 1, c.name
-                assert sum(s in e.setups for s in c.val) >= 2, c.name
-    clean = [c for c in SET_S if not c.effects]
-    assert sorted(c.counts_per_rev for c in clean) == [48, 96]
-    assert all(not c.expect and not c.expect_note and not c.expect_broken for c in clean)
-    named = [c for c in SET_S if c.expect]
-    for c in named:  # the verdict is the effects' kinds on their rigs, nothing else
-        want = {(lib[e.key], "all" if e.setups == cases.ALL else "+".join(e.setups))
-                for e in c.effects}
-        assert set(c.expect) == want and not c.expect_note and not c.expect_broken, c.name
-    kinds = {k for c in named for k, _ in c.expect}
-    assert kinds == {"chest_stiffening", "chest_rate_damping", "belt_unloading",
-                     "belt_stiffening", "airbag_contact", "pelvis_coupling", "input_delay",
-                     "input_gain"}
-    for c in named:  # a bag only where there is an interior
-        assert all(set(s.split("+")) <= INTERIOR for k, s in c.expect if k == "airbag_contact")
+    _scopes_rest_on_two(SET_S)
+    clean, named = _clean_and_named(SET_S)
     _two_broken_sensor_delays(SET_S, BEFORE_S, "cr")
     assert len(clean) + len(named) + 2 == len(SET_S)
 
@@ -2542,44 +2547,9 @@ def test_set_t_covers_the_general_list() -> None:
     every rig an estimation part holds held twice or more; an effect on some rigs only rests on
     two estimation and two validation tests of them beside an estimation test of a rig it
     spares."""
-    lib = physics.EFFECTS
-    for c in SET_T:
-        assert len(c.est) == len(c.val) == 6
-        assert all(c.est.count(r) >= 2 for r in set(c.est)), c.name
-        for e in c.effects:
-            assert set(e.setups) & set(c.est), c.name
-            if not e.tests and not set(e.setups) >= set(c.est) | set(c.val):
-                assert sum(s in e.setups for s in c.est) >= 2, c.name
-                assert sum(s not in e.setups for s in c.est) >= 1, c.name
-                assert sum(s in e.setups for s in c.val) >= 2, c.name
-    clean = [c for c in SET_T if not c.effects]
-    assert sorted(c.counts_per_rev for c in clean) == [48, 96]
-    assert all(not c.expect and not c.expect_note and not c.expect_broken for c in clean)
-    named = [c for c in SET_T if c.expect]
-    for c in named:  # the verdict is the effects' kinds on their rigs, nothing else
-        want = {(lib[e.key], "all" if e.setups == cases.ALL else "+".join(e.setups))
-                for e in c.effects}
-        assert set(c.expect) == want and not c.expect_note and not c.expect_broken, c.name
-    kinds = {k for c in named for k, _ in c.expect}
-    assert kinds == {"chest_stiffening", "chest_rate_damping", "belt_unloading",
-                     "belt_stiffening", "airbag_contact", "pelvis_coupling", "input_delay",
-                     "input_gain"}
-    for c in named:  # a bag only where there is an interior
-        assert all(set(s.split("+")) <= INTERIOR for k, s in c.expect if k == "airbag_contact")
-    (two,) = [c for c in SET_T if len(c.effects) == 2]
-    a, b = two.effects
-    assert lib[a.key] != lib[b.key] and not set(a.setups) & set(b.setups)
-    (broken,) = [c for c in SET_T if c.expect_broken]
-    assert broken.expect_broken == broken.effects[0].tests and len(broken.expect_broken) == 1
-    sensors = [c for c in SET_T if c.expect_note]
-    assert sorted(c.expect_note for c in sensors) == [
-        f"unexplained (or a sensor effect) on {o}" for o in ("cd", "cr")]
-    used = {e.size for c in BEFORE_T for e in c.effects if lib[e.key] == "input_delay"}
-    delays = [c for c in SET_T if c.expect == (("input_delay", "all"),)]
-    assert sorted(c.effects[0].key for c in delays) == ["brs_late", "pulse_late"]
-    for c in delays:
-        (e,) = c.effects
-        assert 0.001 <= e.size <= 0.005 and e.size not in used and e.setups == cases.ALL
+    _scopes_rest_on_two(SET_T)
+    clean, named = _clean_and_named(SET_T)
+    _two_broken_sensor_delays(SET_T, BEFORE_T, "cdcr")
     assert len(clean) + len(named) + 3 == len(SET_T)
 
 
