@@ -237,6 +237,8 @@ def _plot_event(path: Path, rec: Recording, e: int, t: np.ndarray, y_est: np.nda
         title += f": fit CR {fit.cr:.1f} %, CD {fit.cd:.1f} %"
     if entry.invalid_ticks:
         title += f"; {entry.invalid_ticks} ticks flagged invalid (shaded)"
+    if entry.cut_s is not None:
+        title += f"\ncut after {entry.cut_s * 1000:.0f} ms: the inputs fell silent mid-event"
     fig.suptitle(title)
     fig.tight_layout()
     path.parent.mkdir(parents=True, exist_ok=True)
