@@ -12,6 +12,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
+from observer_node import cli
 from observer_node.criteria import chest_criteria
 from observer_node.daemon.harness import CODEC, Harness
 from observer_node.data.filters import cfc_filter
@@ -50,7 +51,7 @@ def _feed(h: Harness, k0: int, accel_g: list[float]) -> int:
 
 @pytest.mark.parametrize("silent_after", [2, 4, 6])
 def test_accelerometer_silent_after_a_trigger_neither_kills_the_daemon_nor_analyze(
-        model, tmp_path, silent_after):
+        model, tmp_path, capsys, silent_after):
     """Armed, then a crash pulse that stops ``silent_after`` ticks after the trigger: the
     watchdog ends the event, its criteria go out, and the daemon ticks on. ``analyze`` reads
     the recording of that event without a traceback."""
@@ -77,6 +78,10 @@ def test_accelerometer_silent_after_a_trigger_neither_kills_the_daemon_nor_analy
     (event,) = result.events
     est = event.criteria.as_dict()["estimate"]
     assert all(math.isnan(v) or math.isfinite(v) for v in est.values())
+    # ended long before the fit window does: said, in the analysis and by the CLI
+    assert event.cut_s is not None and event.cut_s < 0.05
+    assert cli.main(["analyze", str(path), "--out", str(tmp_path / "an")]) == 0
+    assert f"WARNING: cut after {event.cut_s * 1000:.0f} ms" in capsys.readouterr().out
 
 
 def test_a_step_that_raises_is_counted_flagged_invalid_and_survived(model, tmp_path,
@@ -191,4 +196,5 @@ def test_analyze_reads_a_recording_cut_after_any_tick(model, tmp_path):
         (event,) = analyze(rec, ratings=False).events
         for v in event.criteria.as_dict()["estimate"].values():
             assert math.isnan(v) or math.isfinite(v)
+        assert event.cut_s is not None and event.cut_s < 0.15  # the file ends mid-event
     assert set(range(5, 10)) <= seen  # the lengths the CFC filter refused

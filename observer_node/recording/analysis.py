@@ -82,7 +82,8 @@ class EventAnalysis:
     fit_vs_reference: Fits | None = None
     # the time [s] from the onset to its last running tick when that is before the fit
     # window's end: the inputs fell silent mid-event (a stalled bus or replay; the daemon's
-    # watchdog ended it), so its fits cover only what it ran. None: it ran past the window.
+    # watchdog ended it) or the recording ends there (the daemon stopped), so its fits cover
+    # only what it ran. None: it ran past the window.
     cut_s: float | None = None
     fit_vs_reference_valid: ValidFits | None = None  # None also when under 11 valid ticks
     offline_fit_vs_reference: OutputFits | None = None
@@ -238,7 +239,8 @@ def _plot_event(path: Path, rec: Recording, e: int, t: np.ndarray, y_est: np.nda
     if entry.invalid_ticks:
         title += f"; {entry.invalid_ticks} ticks flagged invalid (shaded)"
     if entry.cut_s is not None:
-        title += f"\ncut after {entry.cut_s * 1000:.0f} ms: the inputs fell silent mid-event"
+        title += (f"\ncut after {entry.cut_s * 1000:.0f} ms: inputs silent mid-event, or the "
+                  "recording ends there")
     fig.suptitle(title)
     fig.tight_layout()
     path.parent.mkdir(parents=True, exist_ok=True)
