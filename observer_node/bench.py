@@ -170,9 +170,8 @@ def run_bench(out: Path, model_path: str | None = None, interface: str = "auto",
             continue
         if ev.cut_s is not None:
             print(f"bench: WARNING: {name}: the daemon's event was cut after "
-                  f"{ev.cut_s * 1000:.0f} ms: the accelerometer fell silent mid-event (a "
-                  "stalled replay or bus), so its daemon fits cover only that part",
-                  file=sys.stderr)
+                  f"{ev.cut_s * 1000:.0f} ms: {ev.cut_why}; its daemon fits cover only that "
+                  "part", file=sys.stderr)
         if not (diff := _max_diff(ev)) < 1e-6:
             # the daemon must step exactly what an offline run of its inputs does
             print(f"bench: WARNING: {name}: the daemon differs from the offline re-run of its own "
@@ -192,6 +191,11 @@ def _max_diff(ev: EventAnalysis) -> float:
     return max(ev.max_abs_diff_offline.cr_g, ev.max_abs_diff_offline.cd_mm)
 
 
+def _cut(ev: EventAnalysis | None) -> str:
+    """A table row's mark for an event cut short (its daemon fits cover only its start)."""
+    return f"  cut after {ev.cut_s * 1000:.0f} ms" if ev and ev.cut_s is not None else ""
+
+
 def _print_tables(r: BenchResult, model_name: str) -> None:
     """Per replayed test: the daemon's fits beside the offline ones (and the thesis
     grey-box's); a test the daemon did not trigger on says so."""
@@ -208,15 +212,14 @@ def _print_tables(r: BenchResult, model_name: str) -> None:
             b, o = r.baseline_offline[name], r.offline[name]
             daemon = f"{live[name].cr:10.1f}{live[name].cd:8.1f}" if ev else f"{none:>18}"
             print(f"  {name:<10}{b.cr:8.1f}{b.cd:8.1f}{b.cd_max_err_mm:+10.1f}mm"
-                  f"{daemon}{o.cd_max_err_mm:+10.1f}mm{o.cd_max_ref_mm:14.1f} mm")
+                  f"{daemon}{o.cd_max_err_mm:+10.1f}mm{o.cd_max_ref_mm:14.1f} mm{_cut(ev)}")
     print(f"\n  {'test':<10}{'daemon fit CR':>14}{'CD':>7}{'offline fit CR':>16}{'CD':>7}"
           f"{'max |daemon - offline re-run|':>31}")
     for name, ev in r.events.items():
         o = r.offline[name]
         daemon = f"{live[name].cr:14.1f}{live[name].cd:7.1f}" if ev else f"{none:>21}"
         diff = f"{_max_diff(ev):31.1e}" if ev else f"{none:>31}"
-        cut = f"  cut after {ev.cut_s * 1000:.0f} ms" if ev and ev.cut_s is not None else ""
-        print(f"  {name:<10}{daemon}{o.cr:16.1f}{o.cd:7.1f}{diff}{cut}")
+        print(f"  {name:<10}{daemon}{o.cr:16.1f}{o.cd:7.1f}{diff}{_cut(ev)}")
     print("\n  Fits are eq. 3.15 over 0.01..0.15 s; the daemon's window starts at its detected "
           "onset, the offline one at the lab's t = 0, hence small differences. CD max err: "
           "peak chest deflection of the estimate minus the measured one (Euro NCAP scores it "

@@ -70,10 +70,11 @@ def test_an_event_cut_by_a_stalled_replay_is_marked_not_shown_as_a_fit(model_pat
     assert bench._max_diff(event) < 1e-6
     out, err = capsys.readouterr()
     assert "R16_004: the daemon's event was cut after" in err
-    assert next(line for line in out.splitlines()
-                if line.lstrip().startswith("R16_004") and "cut after" in line)
+    rows = [line for line in out.splitlines() if line.lstrip().startswith("R16_004")]
+    assert rows and all("cut after" in line for line in rows), rows  # in every table
+    assert "watchdog" in event.cut_why  # the inputs resumed after the silence
     saved = json.loads((tmp_path / "analysis.json").read_text())["events"][0]
-    assert saved["cut_s"] == pytest.approx(event.cut_s)
+    assert saved["cut_s"] == pytest.approx(event.cut_s) and saved["cut_why"] == event.cut_why
 
 
 def test_pairing_by_onset_tick_keeps_every_test_and_names_strays():

@@ -79,9 +79,27 @@ def test_accelerometer_silent_after_a_trigger_neither_kills_the_daemon_nor_analy
     est = event.criteria.as_dict()["estimate"]
     assert all(math.isnan(v) or math.isfinite(v) for v in est.values())
     # ended long before the fit window does: said, in the analysis and by the CLI
-    assert event.cut_s is not None and event.cut_s < 0.05
+    assert event.cut_s is not None and event.cut_s < 0.05 and "watchdog" in event.cut_why
     assert cli.main(["analyze", str(path), "--out", str(tmp_path / "an")]) == 0
     assert f"WARNING: cut after {event.cut_s * 1000:.0f} ms" in capsys.readouterr().out
+
+
+@pytest.mark.parametrize("event_s", [0.2, 0.1])
+def test_an_event_that_runs_its_full_length_is_not_marked_cut(model, tmp_path, event_s):
+    """Inputs without a gap through an event of the configured length, shorter than the fit
+    window (0.1 s) or not: the analysis marks nothing cut (a false alarm would hide a real
+    one among many)."""
+    from observer_node.daemon.core import CoreConfig
+
+    path = tmp_path / "run.mcap"
+    h = Harness(model, f"full{event_s}", record=path, core=CoreConfig(event_s=event_s))
+    with h:
+        k = _feed(h, 0, [0.0] * 300)
+        _feed(h, k, [-20.0] * round(event_s * 1000 + 50))  # the pulse outlasts the event
+    assert h.node.core.events_cut == 0
+    (event,) = analyze(read_recording(path), ratings=False).events
+    assert event.ticks >= event_s * 1000 - 10
+    assert event.cut_s is None and event.cut_why == ""
 
 
 def test_a_step_that_raises_is_counted_flagged_invalid_and_survived(model, tmp_path,
@@ -197,4 +215,5 @@ def test_analyze_reads_a_recording_cut_after_any_tick(model, tmp_path):
         for v in event.criteria.as_dict()["estimate"].values():
             assert math.isnan(v) or math.isfinite(v)
         assert event.cut_s is not None and event.cut_s < 0.15  # the file ends mid-event
+        assert event.cut_why.startswith("the recording ends there")
     assert set(range(5, 10)) <= seen  # the lengths the CFC filter refused

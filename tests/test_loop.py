@@ -108,16 +108,19 @@ def test_bench_main_job_on_the_virtual_bus(r16_loop, tmp_path, capsys):
 
     result = run_bench(tmp_path, interface="virtual", loop_tests=est, loop_dir=r16_loop[0])
     assert len(result.events) == 3
+    out, err = capsys.readouterr()
     for event, name in zip(result.events.values(), ("R16_002", "SLED_002", "FULL_002"),
                            strict=True):
+        assert max(event.max_abs_diff_offline.as_dict().values()) < 1e-9, name
+        if event.cut_s is not None:  # a busy machine stalled the replay: said, not hidden
+            assert f"{name}: the daemon's event was cut after" in err, name
+            continue
         live, off = event.fit_vs_reference, result.offline[name]
         assert abs(live.cr - off.cr) < 2 and abs(live.cd - off.cd) < 2, name
-        assert max(event.max_abs_diff_offline.as_dict().values()) < 1e-9, name
     # the loop's model beats the thesis grey-box on the bus, as offline
     base, off = result.baseline_offline, result.offline
     assert sum(off[n].cd for n in off) > sum(base[n].cd for n in base)
     assert (tmp_path / "run.mcap").exists() and (tmp_path / "event0.png").exists()
-    out = capsys.readouterr().out
     assert "daemon ticks" in out and "thesis grey-box (offline)" in out
     assert "reusing the loop's result" in out  # made by the r16_loop fixture from these tests
     plain, model = loop_models(r16_loop[0], est, ("R16_002",))

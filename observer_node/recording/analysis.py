@@ -4,6 +4,7 @@ the reference frames (the thesis's fit, eq. 3.15), and plotted."""
 from __future__ import annotations
 
 import json
+import math
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
@@ -80,11 +81,13 @@ class EventAnalysis:
     fit_vs_offline: OutputFits
     criteria: CriteriaComparison
     fit_vs_reference: Fits | None = None
-    # the time [s] from the onset to its last running tick when that is before the fit
-    # window's end: the inputs fell silent mid-event (a stalled bus or replay; the daemon's
-    # watchdog ended it) or the recording ends there (the daemon stopped), so its fits cover
-    # only what it ran. None: it ran past the window.
+    # the time [s] from the onset to its last running tick when the event ended before the
+    # fit window's end and before its own length (``core.event_s``): its fits cover only what
+    # it ran. None: it ran past the window, or its full length. ``cut_why`` says why (the
+    # recording ends there, or no accelerometer frame reached the daemon for longer than an
+    # event and its watchdog ended it).
     cut_s: float | None = None
+    cut_why: str = ""
     fit_vs_reference_valid: ValidFits | None = None  # None also when under 11 valid ticks
     offline_fit_vs_reference: OutputFits | None = None
     iso18571: OutputRatings | None = None  # against the reference on the window
@@ -92,7 +95,7 @@ class EventAnalysis:
     def as_dict(self) -> dict[str, Any]:
         out: dict[str, Any] = {
             "event": self.event, "onset_tick": self.onset_tick, "ticks": self.ticks,
-            "invalid_ticks": self.invalid_ticks, "cut_s": self.cut_s,
+            "invalid_ticks": self.invalid_ticks, "cut_s": self.cut_s, "cut_why": self.cut_why,
             "max_abs_diff_offline": self.max_abs_diff_offline.as_dict(),
             "fit_vs_offline": self.fit_vs_offline.as_dict()}
         if self.fit_vs_reference is not None:
@@ -168,7 +171,14 @@ def _event(rec: Recording, e: int, window_s: tuple[float, float], fs: float, rat
     t_rel = (ticks - onset) / fs
     win = (t_rel >= window_s[0] - 1e-9) & (t_rel <= window_s[1] + 1e-9) & running
     ran_s = float(t_rel[running][-1])
-    cut_s = ran_s if ran_s < window_s[1] - 1e-9 else None
+    # a full event runs event_s less the few ticks before its onset was found
+    full_s = rec.event_s - 10 / fs if math.isfinite(rec.event_s) else math.inf
+    cut_s = ran_s if ran_s < min(window_s[1], full_s) - 1e-9 else None
+    cut_why = "" if cut_s is None else (
+        "the recording ends there (or its inputs stop for good)"
+        if int(ticks[-1]) >= int(T["tick"][-1])
+        else "no accelerometer frame reached the daemon for longer than an event (a stalled "
+             "replay, bus or daemon), and its watchdog ended the event")
     head = (e, onset, len(ticks), int((running & ~valid).sum()),
             OfflineDiff(float(np.max(np.abs(y_est[running, 0] - y_off[running, 0]))),
                         float(np.max(np.abs(y_est[running, 1] - y_off[running, 1])))),
@@ -176,7 +186,7 @@ def _event(rec: Recording, e: int, window_s: tuple[float, float], fs: float, rat
                        fit_percent(y_off[win, 1], y_est[win, 1])))
     have_ref = np.array([int(k) in rec.reference for k in ticks])
     if not (have_ref & win).sum() > 10:
-        entry = EventAnalysis(*head, cut_s=cut_s, criteria=CriteriaComparison(
+        entry = EventAnalysis(*head, cut_s=cut_s, cut_why=cut_why, criteria=CriteriaComparison(
             chest_criteria(y_est[running, 0], y_est[running, 1], fs)))
         return entry, t_rel, y_est, y_off, None, running & valid
     r = np.array([rec.reference.get(int(k), (np.nan, np.nan)) for k in ticks])
@@ -188,6 +198,7 @@ def _event(rec: Recording, e: int, window_s: tuple[float, float], fs: float, rat
     entry = EventAnalysis(
         *head,
         cut_s=cut_s,
+        cut_why=cut_why,
         fit_vs_reference=Fits.of(fit_percent(r[w, 0], y_est[w, 0]),
                                  fit_percent(r[w, 1], y_est[w, 1])),
         fit_vs_reference_valid=ValidFits(fit_percent(r[wv, 0], y_est[wv, 0]),
@@ -239,8 +250,9 @@ def _plot_event(path: Path, rec: Recording, e: int, t: np.ndarray, y_est: np.nda
     if entry.invalid_ticks:
         title += f"; {entry.invalid_ticks} ticks flagged invalid (shaded)"
     if entry.cut_s is not None:
-        title += (f"\ncut after {entry.cut_s * 1000:.0f} ms: inputs silent mid-event, or the "
-                  "recording ends there")
+        title += (f"\ncut after {entry.cut_s * 1000:.0f} ms: "
+                  + ("the recording ends there" if "recording" in entry.cut_why
+                     else "no accelerometer frame for longer than an event"))
     fig.suptitle(title)
     fig.tight_layout()
     path.parent.mkdir(parents=True, exist_ok=True)

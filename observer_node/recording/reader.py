@@ -8,6 +8,7 @@ reader up to the last complete chunk and reported as salvaged. Topics and fields
 from __future__ import annotations
 
 import json
+import math
 import struct
 from collections.abc import Iterator
 from dataclasses import dataclass, field
@@ -40,6 +41,16 @@ class Recording:
     @property
     def tick_rate_hz(self) -> float:
         return float(self.metadata.get(fmt.META_RUN, {}).get(fmt.RunMeta.TICK_RATE_HZ, "nan"))
+
+    @property
+    def event_s(self) -> float:
+        """How long the daemon runs an event [s] (its ``core.event_s``); NaN when the
+        recording does not say (an older or foreign file)."""
+        try:
+            cfg = json.loads(self.metadata[fmt.META_RUN][fmt.RunMeta.CONFIG])
+            return float(cfg["core"]["event_s"])
+        except (KeyError, TypeError, ValueError):
+            return math.nan
 
 
 # The writer's table read backwards: (message field, TickRow column) of each tick topic
