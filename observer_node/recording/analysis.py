@@ -68,6 +68,12 @@ class ValidFits:
         return {"cr": self.cr, "cd": self.cd, "ticks": self.ticks}
 
 
+# why an event ended before its length and the fit window (EventAnalysis.cut_why)
+CUT_AT_END = "the recording ends there (or its inputs stop for good)"
+CUT_BY_SILENCE = ("no accelerometer frame reached the daemon for longer than an event (a "
+                  "stalled replay, bus or daemon), and its watchdog ended the event")
+
+
 @dataclass(frozen=True)
 class EventAnalysis:
     """One recorded event: its onset, the daemon against its own offline re-run, and with
@@ -175,10 +181,7 @@ def _event(rec: Recording, e: int, window_s: tuple[float, float], fs: float, rat
     full_s = rec.event_s - 10 / fs if math.isfinite(rec.event_s) else math.inf
     cut_s = ran_s if ran_s < min(window_s[1], full_s) - 1e-9 else None
     cut_why = "" if cut_s is None else (
-        "the recording ends there (or its inputs stop for good)"
-        if int(ticks[-1]) >= int(T["tick"][-1])
-        else "no accelerometer frame reached the daemon for longer than an event (a stalled "
-             "replay, bus or daemon), and its watchdog ended the event")
+        CUT_AT_END if int(ticks[-1]) >= int(T["tick"][-1]) else CUT_BY_SILENCE)
     head = (e, onset, len(ticks), int((running & ~valid).sum()),
             OfflineDiff(float(np.max(np.abs(y_est[running, 0] - y_off[running, 0]))),
                         float(np.max(np.abs(y_est[running, 1] - y_off[running, 1])))),
@@ -251,7 +254,7 @@ def _plot_event(path: Path, rec: Recording, e: int, t: np.ndarray, y_est: np.nda
         title += f"; {entry.invalid_ticks} ticks flagged invalid (shaded)"
     if entry.cut_s is not None:
         title += (f"\ncut after {entry.cut_s * 1000:.0f} ms: "
-                  + ("the recording ends there" if "recording" in entry.cut_why
+                  + ("the recording ends there" if entry.cut_why == CUT_AT_END
                      else "no accelerometer frame for longer than an event"))
     fig.suptitle(title)
     fig.tight_layout()
