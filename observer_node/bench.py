@@ -170,8 +170,8 @@ def run_bench(out: Path, model_path: str | None = None, interface: str = "auto",
             continue
         if ev.cut_s is not None:
             print(f"bench: WARNING: {name}: the daemon's event was cut after "
-                  f"{ev.cut_s * 1000:.0f} ms: {ev.cut_why}; its daemon fits cover only that "
-                  "part", file=sys.stderr)
+                  f"{ev.cut_s * 1000:.0f} ms: {ev.cut_why}; {ev.cut_covers()}",
+                  file=sys.stderr)
         if not (diff := _max_diff(ev)) < 1e-6:
             # the daemon must step exactly what an offline run of its inputs does
             print(f"bench: WARNING: {name}: the daemon differs from the offline re-run of its own "
@@ -192,7 +192,7 @@ def _max_diff(ev: EventAnalysis) -> float:
 
 
 def _cut(ev: EventAnalysis | None) -> str:
-    """A table row's mark for an event cut short (its daemon fits cover only its start)."""
+    """A table row's mark for an event cut short (its fits or criteria cover only its start)."""
     return f"  cut after {ev.cut_s * 1000:.0f} ms" if ev and ev.cut_s is not None else ""
 
 

@@ -15,6 +15,21 @@ import observer_node.bench as bench
 import observer_node.replay.player as player
 from observer_node.data import read_isomme
 
+PRE_TICKS = 200  # the bench replays 0.2 s of rest before each crash, at 1 kHz
+
+
+def _ticks(name: str) -> int:
+    """The daemon ticks a bundled test spans in the bench's replay (its accelerometer
+    frames, with the rest before the crash)."""
+    from observer_node.data import bundled_campaign
+    from observer_node.dbc import Codec
+    from observer_node.replay.schedule import crash_test_schedule
+
+    codec = Codec()
+    sched = crash_test_schedule(read_isomme(bundled_campaign() / f"{name}.zip"), codec, 1000.0,
+                                reference=True, pre_s=PRE_TICKS / 1000)
+    return int(np.count_nonzero(sched.ids == codec["TunnelAccel"].frame_id))
+
 
 def test_a_test_that_does_not_trigger_relabels_no_other(model_path, tmp_path, capsys,
                                                         monkeypatch):
@@ -30,11 +45,16 @@ def test_a_test_that_does_not_trigger_relabels_no_other(model_path, tmp_path, ca
     assert list(result.events) == list(names)
     assert result.events["R16_002"] is None
     out, err = capsys.readouterr()
+    starts = dict(zip(names, np.cumsum([0, *(_ticks(n) for n in names[:-1])]), strict=True))
     for name in names[1:]:
         event, off = result.events[name], result.offline[name]
         assert event is not None, name
+        # whatever its fit, the event is this test's: its onset lies where this test's crash
+        # starts in the replay (0.2 s of rest before it), not in another test's
+        assert PRE_TICKS <= event.onset_tick - starts[name] <= PRE_TICKS + 60, name
         if event.cut_s is not None:  # a busy machine stalled the replay: said, not hidden
             assert f"{name}: the daemon's event was cut after" in err, name
+        if event.cut_in_window:  # its fits cover only its start
             continue
         # the event is the one of this test: its fit is this test's offline fit
         assert abs(event.fit_vs_reference.cr - off.cr) < 2, name
@@ -65,7 +85,7 @@ def test_an_event_cut_by_a_stalled_replay_is_marked_not_shown_as_a_fit(model_pat
                              tests=("R16_004",))
     event = result.events["R16_004"]
     assert event is not None and event.cut_s is not None
-    assert 0.01 < event.cut_s < 0.15  # shorter than the fit window
+    assert 0.01 < event.cut_s < 0.15 and event.cut_in_window  # shorter than the window
     # the daemon still stepped exactly its inputs: the cut is the bus's, not a daemon fault
     assert bench._max_diff(event) < 1e-6
     out, err = capsys.readouterr()
@@ -75,6 +95,7 @@ def test_an_event_cut_by_a_stalled_replay_is_marked_not_shown_as_a_fit(model_pat
     assert "watchdog" in event.cut_why  # the inputs resumed after the silence
     saved = json.loads((tmp_path / "analysis.json").read_text())["events"][0]
     assert saved["cut_s"] == pytest.approx(event.cut_s) and saved["cut_why"] == event.cut_why
+    assert saved["cut_in_window"] is True
 
 
 def test_pairing_by_onset_tick_keeps_every_test_and_names_strays():

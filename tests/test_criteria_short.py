@@ -102,6 +102,27 @@ def test_an_event_that_runs_its_full_length_is_not_marked_cut(model, tmp_path, e
     assert event.cut_s is None and event.cut_why == ""
 
 
+def test_an_event_cut_after_the_fit_window_says_its_criteria_are_partial(model, tmp_path,
+                                                                         capsys):
+    """An event of 0.4 s whose recording ends 0.2 s after the trigger: its fit window
+    (to 0.15 s) is whole, but its injury criteria cover only half the event, and the
+    analysis says so rather than passing them as the event's."""
+    from observer_node.daemon.core import CoreConfig
+
+    path = tmp_path / "run.mcap"
+    h = Harness(model, "long", record=path, core=CoreConfig(event_s=0.4))
+    with h:  # the harness's thread ends 0.3 s after its last input, inside the event
+        k = _feed(h, 0, [0.0] * 300)
+        _feed(h, k, [-20.0] * 200)
+    (event,) = analyze(read_recording(path), ratings=False).events
+    assert event.cut_s is not None and 0.15 < event.cut_s < 0.2
+    assert not event.cut_in_window and event.cut_why.startswith("the recording ends there")
+    assert cli.main(["analyze", str(path), "--out", str(tmp_path / "an")]) == 0
+    out = capsys.readouterr().out
+    assert f"WARNING: cut after {event.cut_s * 1000:.0f} ms" in out
+    assert "its fit window is whole; its criteria cover only that part" in out
+
+
 def test_a_step_that_raises_is_counted_flagged_invalid_and_survived(model, tmp_path,
                                                                     monkeypatch):
     """Whatever fails inside the loop (here the criteria of an event) is counted in

@@ -114,6 +114,7 @@ def test_bench_main_job_on_the_virtual_bus(r16_loop, tmp_path, capsys):
         assert max(event.max_abs_diff_offline.as_dict().values()) < 1e-9, name
         if event.cut_s is not None:  # a busy machine stalled the replay: said, not hidden
             assert f"{name}: the daemon's event was cut after" in err, name
+        if event.cut_in_window:  # its fits cover only its start
             continue
         live, off = event.fit_vs_reference, result.offline[name]
         assert abs(live.cr - off.cr) < 2 and abs(live.cd - off.cd) < 2, name

@@ -50,8 +50,8 @@ def _print_event(ev: EventAnalysis) -> None:
             f"CD {ev.max_abs_diff_offline.cd_mm:.2g} mm")
     print(line)
     if ev.cut_s is not None:
-        print(f"    WARNING: cut after {ev.cut_s * 1000:.0f} ms: {ev.cut_why}; its fits and "
-              "criteria cover only that part")
+        print(f"    WARNING: cut after {ev.cut_s * 1000:.0f} ms: {ev.cut_why}; "
+              f"{ev.cut_covers()}")
     if ev.fit_vs_reference is not None:
         f = ev.fit_vs_reference
         print(f"    fit vs reference (eq. 3.15): CR {f.cr:.1f} %  CD {f.cd:.1f} %  "

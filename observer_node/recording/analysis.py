@@ -87,21 +87,29 @@ class EventAnalysis:
     fit_vs_offline: OutputFits
     criteria: CriteriaComparison
     fit_vs_reference: Fits | None = None
-    # the time [s] from the onset to its last running tick when the event ended before the
-    # fit window's end and before its own length (``core.event_s``): its fits cover only what
-    # it ran. None: it ran past the window, or its full length. ``cut_why`` says why (the
-    # recording ends there, or no accelerometer frame reached the daemon for longer than an
-    # event and its watchdog ended it).
+    # the time [s] from the onset to its last running tick when the event ended before its
+    # own length (``core.event_s``; unknown: before the fit window's end): its criteria cover
+    # only what it ran, and its fits too when ``cut_in_window``. None: it ran its full
+    # length. ``cut_why`` says why (the recording ends there, or no accelerometer frame
+    # reached the daemon for longer than an event and its watchdog ended it).
     cut_s: float | None = None
     cut_why: str = ""
+    cut_in_window: bool = False  # cut before the fit window's end: the fits are partial too
     fit_vs_reference_valid: ValidFits | None = None  # None also when under 11 valid ticks
     offline_fit_vs_reference: OutputFits | None = None
     iso18571: OutputRatings | None = None  # against the reference on the window
+
+    def cut_covers(self) -> str:
+        """What of the event a cut leaves partial, for the warnings of analyze and bench."""
+        if self.cut_in_window:
+            return "its fits and criteria cover only that part"
+        return "its fit window is whole; its criteria cover only that part"
 
     def as_dict(self) -> dict[str, Any]:
         out: dict[str, Any] = {
             "event": self.event, "onset_tick": self.onset_tick, "ticks": self.ticks,
             "invalid_ticks": self.invalid_ticks, "cut_s": self.cut_s, "cut_why": self.cut_why,
+            "cut_in_window": self.cut_in_window,
             "max_abs_diff_offline": self.max_abs_diff_offline.as_dict(),
             "fit_vs_offline": self.fit_vs_offline.as_dict()}
         if self.fit_vs_reference is not None:
@@ -177,11 +185,14 @@ def _event(rec: Recording, e: int, window_s: tuple[float, float], fs: float, rat
     t_rel = (ticks - onset) / fs
     win = (t_rel >= window_s[0] - 1e-9) & (t_rel <= window_s[1] + 1e-9) & running
     ran_s = float(t_rel[running][-1])
-    # a full event runs event_s less the few ticks before its onset was found
-    full_s = rec.event_s - 10 / fs if math.isfinite(rec.event_s) else math.inf
-    cut_s = ran_s if ran_s < min(window_s[1], full_s) - 1e-9 else None
+    # a full event runs event_s less the few ticks before its onset was found; of an
+    # unknown length, only a cut inside the fit window can be told
+    full_s = rec.event_s - 10 / fs if math.isfinite(rec.event_s) else window_s[1]
+    cut_s = ran_s if ran_s < full_s - 1e-9 else None
     cut_why = "" if cut_s is None else (
         CUT_AT_END if int(ticks[-1]) >= int(T["tick"][-1]) else CUT_BY_SILENCE)
+    cut = {"cut_s": cut_s, "cut_why": cut_why,
+           "cut_in_window": cut_s is not None and cut_s < window_s[1] - 1e-9}
     head = (e, onset, len(ticks), int((running & ~valid).sum()),
             OfflineDiff(float(np.max(np.abs(y_est[running, 0] - y_off[running, 0]))),
                         float(np.max(np.abs(y_est[running, 1] - y_off[running, 1])))),
@@ -189,7 +200,7 @@ def _event(rec: Recording, e: int, window_s: tuple[float, float], fs: float, rat
                        fit_percent(y_off[win, 1], y_est[win, 1])))
     have_ref = np.array([int(k) in rec.reference for k in ticks])
     if not (have_ref & win).sum() > 10:
-        entry = EventAnalysis(*head, cut_s=cut_s, cut_why=cut_why, criteria=CriteriaComparison(
+        entry = EventAnalysis(*head, **cut, criteria=CriteriaComparison(
             chest_criteria(y_est[running, 0], y_est[running, 1], fs)))
         return entry, t_rel, y_est, y_off, None, running & valid
     r = np.array([rec.reference.get(int(k), (np.nan, np.nan)) for k in ticks])
@@ -200,8 +211,7 @@ def _event(rec: Recording, e: int, window_s: tuple[float, float], fs: float, rat
     m = running & have_ref
     entry = EventAnalysis(
         *head,
-        cut_s=cut_s,
-        cut_why=cut_why,
+        **cut,
         fit_vs_reference=Fits.of(fit_percent(r[w, 0], y_est[w, 0]),
                                  fit_percent(r[w, 1], y_est[w, 1])),
         fit_vs_reference_valid=ValidFits(fit_percent(r[wv, 0], y_est[wv, 0]),
