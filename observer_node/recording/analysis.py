@@ -191,8 +191,7 @@ def _event(rec: Recording, e: int, window_s: tuple[float, float], fs: float, rat
     cut_s = ran_s if ran_s < full_s - 1e-9 else None
     cut_why = "" if cut_s is None else (
         CUT_AT_END if int(ticks[-1]) >= int(T["tick"][-1]) else CUT_BY_SILENCE)
-    cut = {"cut_s": cut_s, "cut_why": cut_why,
-           "cut_in_window": cut_s is not None and cut_s < window_s[1] - 1e-9}
+    in_window = cut_s is not None and cut_s < window_s[1] - 1e-9
     head = (e, onset, len(ticks), int((running & ~valid).sum()),
             OfflineDiff(float(np.max(np.abs(y_est[running, 0] - y_off[running, 0]))),
                         float(np.max(np.abs(y_est[running, 1] - y_off[running, 1])))),
@@ -200,7 +199,8 @@ def _event(rec: Recording, e: int, window_s: tuple[float, float], fs: float, rat
                        fit_percent(y_off[win, 1], y_est[win, 1])))
     have_ref = np.array([int(k) in rec.reference for k in ticks])
     if not (have_ref & win).sum() > 10:
-        entry = EventAnalysis(*head, **cut, criteria=CriteriaComparison(
+        entry = EventAnalysis(*head, cut_s=cut_s, cut_why=cut_why, cut_in_window=in_window,
+                              criteria=CriteriaComparison(
             chest_criteria(y_est[running, 0], y_est[running, 1], fs)))
         return entry, t_rel, y_est, y_off, None, running & valid
     r = np.array([rec.reference.get(int(k), (np.nan, np.nan)) for k in ticks])
@@ -211,7 +211,9 @@ def _event(rec: Recording, e: int, window_s: tuple[float, float], fs: float, rat
     m = running & have_ref
     entry = EventAnalysis(
         *head,
-        **cut,
+        cut_s=cut_s,
+        cut_why=cut_why,
+        cut_in_window=in_window,
         fit_vs_reference=Fits.of(fit_percent(r[w, 0], y_est[w, 0]),
                                  fit_percent(r[w, 1], y_est[w, 1])),
         fit_vs_reference_valid=ValidFits(fit_percent(r[wv, 0], y_est[wv, 0]),
