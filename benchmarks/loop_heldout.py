@@ -19,6 +19,11 @@ Per case the loop runs blind at its defaults on 6 estimation + 6 validation test
   starting values and, where the loop named the same structure, from the loop's own result;
   the better of the two, scored on the same validation tests;
 - the gap (reachable - after) and the loop's time;
+- whether the expected structure itself passes the loop's rule against the grey-box
+  ("truth"): both cross-validated leave-one-test-out on the estimation tests as the loop does
+  and judged by ``evidence.judge`` at the loop's margin ("pass", or "fail" with its mean gain
+  and tests improved; "-" where nothing physical is expected). A miss whose truth fails is
+  beyond any search over the library: the six estimation tests do not defend it;
 - at the end: how many cases are right, and how many named effects are there and not there,
   and how many refused or tied effects are there and not there.
 
@@ -44,7 +49,8 @@ from benchmarks.heldout.sets import SETS, select
 from observer_node.data import load_tests
 from observer_node.ident.dataset import make_dataset
 from observer_node.loop.closed_loop import run_loop
-from observer_node.loop.refit import refit, score
+from observer_node.loop.evidence import judge
+from observer_node.loop.refit import fold_scores, folds, refit, score
 from observer_node.loop.report import LoopReport
 from observer_node.model.effects import EFFECTS
 
@@ -143,7 +149,39 @@ def run_case(case: Case, sets: Path, work: Path, workers: int | None) -> dict:
            "before": r.baseline.fit.total, "after": r.final.fit.total,
            "seconds": seconds, "possible": [f"{p.kind}@{p.scope}" for p in r.possible]}
     row["reachable"] = _reachable(case, r, est, val, found == expected)
+    row["truth"] = _truth_by_the_rule(case, r, est)
     return row
+
+
+def _truth_by_the_rule(case: Case, r: LoopReport, est_tests: list) -> dict | None:
+    """The expected structure judged by the loop's own rule against the grey-box, both
+    cross-validated leave-one-test-out on the estimation tests (the truly broken left out)
+    as the loop does; the rule reads the setups held by at least two estimation tests. None
+    when nothing physical is expected (clean, broken-test and transducer cases)."""
+    effects = _expected_structure(case, r, _delays(case, r.settings.rate_hz))
+    if not effects:
+        return None
+    keep = [t for t in est_tests if t.name not in case.expect_broken]
+    est = make_dataset(keep, r.settings.rate_hz)
+    held = {s: est.setups.count(s) for s in est.setups}
+    setup_of = ({n: s for n, s in zip(est.names, est.setups, strict=True) if held[s] >= 2}
+                or dict(zip(est.names, est.setups, strict=True)))
+    cv = []
+    with np.errstate(all="ignore"):
+        for base, eff in ((dict(r.baseline.parameters), []),
+                          (dict(r.baseline.parameters), effects)):
+            fit = refit(base, eff, est, max_nfev=150 if eff else 60)
+            cv.append({n: v for tr, te in folds(est)
+                       for n, v in fold_scores(fit.base, fit.effects, est, tr, te).items()})
+    ev = judge(cv[0], cv[1], setup_of, None, r.settings.margin)
+    return {"passes": ev.accepted, "gain": ev.gain_points, "improved": ev.tests_improved,
+            "tests": ev.tests, "reason": ev.reason}
+
+
+def _truth_cell(t: dict | None) -> str:
+    if t is None:
+        return "-"
+    return "pass" if t["passes"] else f"fail {t['gain']:+.1f} {t['improved']}/{t['tests']}"
 
 
 def _reachable(case: Case, r: LoopReport, est_tests: list, val_tests: list, same: bool) -> float:
@@ -193,7 +231,7 @@ def main() -> None:
     print(f"loop reports in {work}/CASE/report.md", flush=True)
     print(f"{'case':<20}{'named (kind@scope)':<46}{'flagged':<10}{'right':>6}{'judged':>7}"
           f"{'before':>8}"
-          f"{'after':>7}{'reach':>7}{'gap':>6}{'time s':>8}", flush=True)
+          f"{'after':>7}{'reach':>7}{'gap':>6}{'time s':>8}  truth", flush=True)
     rows = []
     for case in cases:
         row = run_case(case, sets, work, a.workers)
@@ -211,7 +249,8 @@ def main() -> None:
         print(f"{case.name:<20}{named:<46}{','.join(row['flagged']) or '-':<10}"
               f"{'yes' if row['right'] else 'NO':>6}{'yes' if row['right_judged'] else 'NO':>7}"
               f"{row['before']:8.1f}{row['after']:7.1f}"
-              f"{reach:7.1f}{reach - row['after']:6.1f}{row['seconds']:8.1f}", flush=True)
+              f"{reach:7.1f}{reach - row['after']:6.1f}{row['seconds']:8.1f}  "
+              f"{_truth_cell(row['truth'])}", flush=True)
         if not row["right"] or not row["right_judged"]:
             print(f"{'':<20}expected: {', '.join(row['expected']) or '(none)'}"
                   + (f" (on the rigs held at least twice, {'+'.join(row['judged_rigs'])}: "
@@ -228,6 +267,11 @@ def main() -> None:
     print(f"right: {ok}/{len(rows)}; right on the judged rigs: {judged_ok}/{len(rows)}; "
           f"within 2 points of reach: {close}/{len(rows)}; both: {both}/{len(rows)}",
           flush=True)
+    truths = [r["truth"] for r in rows if r["truth"] is not None]
+    print(f"the expected structure passes the rule against the grey-box in "
+          f"{sum(t['passes'] for t in truths)} of the {len(truths)} cases that expect one; "
+          f"right in {sum(r['right'] for r in rows if r['truth'] and r['truth']['passes'])} "
+          "of those", flush=True)
     for there in (False, True):
         n_named = sum(_there(f, r) == there for r in rows for f in r["found"])
         refused = sum(_there(f, r) == there for r in rows for f in r["refused"])
