@@ -61,11 +61,16 @@
   and one on CR alone (a spine accelerometer's zero drifting from the trigger) beside physical
   effects that show mostly in one output (a stop behind the lower sternum, a new form), and the
   general list's rest (a pulse channel written in m/s^2 under its g: a broken test).
+  ``cases_u.py``: set U, the same again, on pairings no earlier case ran, by another engineer:
+  the general list with the library's ordinary physical forms (the form an engineer would
+  first write for each kind) on all three rigs or on two, at new seeds and sizes, a pulse
+  cable parting mid-crash (broken test) and a chest pot loaded by its conditioner (a
+  transducer error on CD).
   ``make_sets.py``: writes a set (``--no-effects``: the same tests with every effect off).
   ``costs.py``: what each case costs the thesis grey-box (project CLI).
 
     python -m benchmarks.heldout.make_sets --out /tmp/heldout
-        [--set a|b|c|d|e|f|g|h|i|j|k|l|m|n|o|p|q|r|s|t] [--case NAME ...]
+        [--set a|b|c|d|e|f|g|h|i|j|k|l|m|n|o|p|q|r|s|t|u] [--case NAME ...]
 
 Never tune the loop on these cases; report them apart from the tuned ones.
 """

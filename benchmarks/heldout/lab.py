@@ -37,7 +37,7 @@ EXACT = {"pulse_late", "brs_late", "brs_freeze", "cd_dropout", "pulse_rail", "pu
          "pulse_rate", "cd_aa_filter", "dummy_scale", "cr_crosstalk", "dummy_soak", "cd_sag",
          "brs_counts", "cr_damped", "cr_late", "cd_rc_filter", "dummy_late",
          "cd_reversed", "cd_slew", "brs_wrap", "cr_creep", "pulse_ms2", "cd_arm_ring",
-         "cr_drift"}
+         "cr_drift", "pulse_cable_break", "cd_pot_loading"}
 DROPOUT_S = 0.010  # how long cd_dropout's wiper stays off the track
 KNEE_SLOPE = 0.6  # cd_knee: the gain of the CD calibration's second segment
 SHIFT_AT_S = 0.011  # pulse_zero_shift: when the zero shifts (in the crash-box spike)
@@ -115,6 +115,19 @@ CD_RING_ZETA = 0.12
 # cr_drift: the recorder switches the spine accelerometer's bridge excitation on only at the
 # trigger (a battery-saving mode) and the bridge's zero drifts as its gauges warm: CR reads
 # cr + r t from the trigger on (r, the effect's size, g/s), nothing before; CD, pulse, BRS right
+# pulse_cable_break: the carriage (or tunnel) accelerometer's cable parts mid-crash (its
+# connector pulled off the module as the rig decelerates): from the effect's time (s) on the
+# channel's input is open and the amplifier reads its zero, 0 g, its own noise still on it
+# (unlike cr_cable_break's constant: the pulse module's noise is its amplifier's); CR, CD, BRS
+# right, and the physics ran on the true pulse
+# cd_pot_loading: the chest pot (a linear potentiometer over a stroke of POT_STROKE_MM, the
+# chest at rest POT_REST of the way along it) read by a conditioner whose input resistance is
+# too low for it: the wiper's voltage is loaded, the textbook loading error, v(x) = x / (1 + r x
+# (1 - x)) at the fraction x of the stroke (r = R_pot / R_in, the effect's size); the channel is
+# calibrated over the full stroke (where the error vanishes) and zeroed at rest, so CD reads
+# POT_STROKE_MM (v(x) - v(x_rest)): low over the middle of the stroke, by a share growing with
+# r; CR, pulse, BRS right
+POT_STROKE_MM, POT_REST = 100.0, 0.1
 NOISE = {"pulse_g": 0.6, "cr_g": 0.55, "cd_mm": 0.10}  # white, before the CFC filters
 
 
@@ -185,6 +198,16 @@ def drift(x: np.ndarray, rate_per_s: float) -> np.ndarray:
     growing at ``rate_per_s`` per second from the trigger (t = 0) on, nothing before."""
     t = ph.T0_S + np.arange(x.size) / ph.FS_HZ
     return x + rate_per_s * np.maximum(t, 0.0)
+
+
+def pot_loading(cd_mm: np.ndarray, r: float) -> np.ndarray:
+    """What a chest pot loaded by its conditioner (``r`` = R_pot / R_in) reads of the chest's
+    deflection ``cd_mm``: POT_STROKE_MM (v(x) - v(x_rest)), v(x) = x / (1 + r x (1 - x)), x the
+    fraction of the stroke (POT_REST at rest): 0 at rest, low over the stroke's middle."""
+    def v(x: np.ndarray | float) -> np.ndarray | float:
+        return x / (1.0 + r * x * (1.0 - x))
+    x = np.clip(POT_REST + cd_mm / POT_STROKE_MM, 0.0, 1.0)
+    return POT_STROKE_MM * (v(x) - v(POT_REST))
 
 
 def loose_mount(a: np.ndarray, f_hz: float, zeta: float = LOOSE_ZETA) -> np.ndarray:
@@ -312,6 +335,8 @@ def record(d: Drawn, i: int, sim: dict[str, np.ndarray], counts_per_rev: int,
         pulse = pulse * (1.0 + e["pulse_gain"])
     if e["pulse_zero_shift"]:  # a shock shifts the sensor's zero: it stays shifted
         pulse = pulse + e["pulse_zero_shift"] * (t >= SHIFT_AT_S)
+    if e["pulse_cable_break"]:  # the cable parts: the open input reads 0 g from then on
+        pulse = np.where(t >= e["pulse_cable_break"], 0.0, pulse)
     pulse = pulse + NOISE["pulse_g"] * rng.standard_normal(t.size)
     if e["pulse_rail"]:  # amplifier range set too low: the channel clips at its rails
         pulse = np.clip(pulse, -e["pulse_rail"], e["pulse_rail"])
@@ -393,6 +418,8 @@ def record(d: Drawn, i: int, sim: dict[str, np.ndarray], counts_per_rev: int,
     if e["dummy_late"]:  # as CR: the same recorder
         cd_true = late(cd_true, e["dummy_late"])
     cd = cd_true * (1.0 + e["cd_pot_nonlinear"] * (np.maximum(cd_true, 0) / 25.0) ** 2)
+    if e["cd_pot_loading"]:  # the pot's wiper loaded by a low conditioner input: reads low
+        cd = pot_loading(cd, e["cd_pot_loading"])  # over its stroke's middle
     if e["cd_knee"]:  # two-segment calibration, the second segment's slope entered wrong
         cd = np.where(cd > e["cd_knee"], e["cd_knee"] + KNEE_SLOPE * (cd - e["cd_knee"]), cd)
     if e["cd_compress"]:  # the pot's linkage reads low at large deflection, smoothly

@@ -142,6 +142,9 @@ EFFECTS = {
     "pulse_ms2": "",  # broken test: the pulse file in m/s^2 under its header's g (1 = on)
     "cd_arm_ring": "",  # transducer: the chest pot's arm resonates at this (Hz), lightly damped
     "cr_drift": "",  # transducer: CR's zero drifts from the trigger on at this rate (g/s)
+    # set U's forms (cases_u.py): two lab-side, its physics the library's ordinary forms
+    "pulse_cable_break": "",  # broken test: the pulse cable parts at this time (s), reads 0 g
+    "cd_pot_loading": "",  # transducer: the chest pot loaded by its conditioner, R_pot/R_in
 }
 POW_B_M = (0.015, 0.025)  # webbing_power: reference stretch, chest side and up to the retractor
 V_HYST = 0.02  # m/s: webbing_hysteresis switches between its paths within this rate
