@@ -90,12 +90,43 @@ def test_an_event_cut_by_a_stalled_replay_is_marked_not_shown_as_a_fit(model_pat
     assert bench._max_diff(event) < 1e-6
     out, err = capsys.readouterr()
     assert "R16_004: the daemon's event was cut after" in err
+    assert "while the test's data went on (a stalled replay, bus or daemon)" in err
     rows = [line for line in out.splitlines() if line.lstrip().startswith("R16_004")]
     assert rows and all("cut after" in line for line in rows), rows  # in every table
     assert "watchdog" in event.cut_why  # the inputs resumed after the silence
     saved = json.loads((tmp_path / "analysis.json").read_text())["events"][0]
     assert saved["cut_s"] == pytest.approx(event.cut_s) and saved["cut_why"] == event.cut_why
     assert saved["cut_in_window"] is True
+
+
+def test_an_event_longer_than_its_tests_data_is_noted_not_blamed_on_a_stall(
+        model_path, tmp_path, capsys, monkeypatch):
+    # The daemon configured for events of 0.25 s; the bundled tests' data end about 0.2 s
+    # after the onset. Nothing stalled: the bench says the data end there (its criteria
+    # cover that much, its fit window is whole), warns of no fault and marks no row.
+    from observer_node.daemon import config
+    from observer_node.daemon.core import CoreConfig
+
+    node_config = config.NodeConfig
+    monkeypatch.setattr(config, "NodeConfig",
+                        lambda **kw: node_config(**kw, core=CoreConfig(event_s=0.25)))
+    names = ("R16_002", "R16_004")
+    result = bench.run_bench(tmp_path, str(model_path), interface="virtual", tests=names)
+    out, err = capsys.readouterr()
+    ran_out = 0
+    for name in names:
+        event = result.events[name]
+        assert event is not None and event.cut_s is not None, name
+        if event.cut_s < result.data_end_s[name] - 1e-6:  # a busy machine stalled the replay
+            assert f"{name}: the daemon's event was cut after" in err, name
+            continue
+        ran_out += 1
+        assert not event.cut_in_window
+        assert f"bench: note: {name}: the test's data end" in err, err
+        assert f"WARNING: {name}: the daemon's event was cut" not in err, err
+        assert not [line for line in out.splitlines()
+                    if line.lstrip().startswith(name) and ("cut" in line or "data end" in line)]
+    assert ran_out  # at least one event ran to its data's end (both do on an idle machine)
 
 
 def test_pairing_by_onset_tick_keeps_every_test_and_names_strays():

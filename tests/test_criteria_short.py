@@ -17,6 +17,7 @@ from observer_node.criteria import chest_criteria
 from observer_node.daemon.harness import CODEC, Harness
 from observer_node.data.filters import cfc_filter
 from observer_node.recording import analyze, read_recording
+from observer_node.recording.reader import Recording
 
 ACC, BRS, CRIT = CODEC["TunnelAccel"], CODEC["BeltSpindle"], CODEC["ChestCriteria"]
 
@@ -102,8 +103,25 @@ def test_an_event_that_runs_its_full_length_is_not_marked_cut(model, tmp_path, e
     assert event.cut_s is None and event.cut_why == ""
 
 
+@pytest.mark.parametrize(("short_ms", "cut"), [(5, False), (15, True)])
+def test_an_event_short_of_its_length_by_more_than_10_ms_is_cut(model, tmp_path, short_ms,
+                                                                 cut):
+    """The threshold, pinned: an event of 0.2 s whose data end 5 ms before it would is whole
+    (a replayed test's file may end so, nothing of the crash missing); 15 ms short, cut."""
+    from observer_node.daemon.core import CoreConfig
+
+    path = tmp_path / "run.mcap"
+    h = Harness(model, f"short{short_ms}", record=path, core=CoreConfig(event_s=0.2))
+    with h:
+        k = _feed(h, 0, [0.0] * 300)
+        _feed(h, k, [-20.0] * (200 - short_ms))  # the onset: the first frame of the pulse
+    (event,) = analyze(read_recording(path), ratings=False).events
+    assert event.ticks == 200 - short_ms
+    assert (event.cut_s is not None) == cut and not event.cut_in_window
+
+
 def test_an_event_cut_after_the_fit_window_says_its_criteria_are_partial(model, tmp_path,
-                                                                         capsys):
+                                                                         capsys, monkeypatch):
     """An event of 0.4 s whose recording ends 0.2 s after the trigger: its fit window
     (to 0.15 s) is whole, but its injury criteria cover only half the event, and the
     analysis says so rather than passing them as the event's."""
@@ -121,6 +139,10 @@ def test_an_event_cut_after_the_fit_window_says_its_criteria_are_partial(model, 
     out = capsys.readouterr().out
     assert f"WARNING: cut after {event.cut_s * 1000:.0f} ms" in out
     assert "its fit window is whole; its criteria cover only that part" in out
+    # of a recording that does not say its events' length, only a cut inside the window
+    monkeypatch.setattr(Recording, "event_s", property(lambda self: math.nan))
+    (event,) = analyze(read_recording(path), ratings=False).events
+    assert event.cut_s is None
 
 
 def test_a_step_that_raises_is_counted_flagged_invalid_and_survived(model, tmp_path,
@@ -197,7 +219,7 @@ def test_analyze_reads_a_recording_cut_after_any_tick(model, tmp_path):
     (after its last complete chunk): some cuts end the event 5-9 ticks after its trigger,
     the lengths the CFC filter refused. ``analyze`` reports every cut (criteria numbers or
     NaN), never a traceback."""
-    from observer_node.recording import Recording, RecordingError
+    from observer_node.recording import RecordingError
 
     path = tmp_path / "run.mcap"
     h = Harness(model, "cutanalyze", record=path)
