@@ -10,7 +10,8 @@ Per case the loop runs blind at its defaults on 6 estimation + 6 validation test
 
 - what it named (kind@scope, scopes as the simulator's setups), what passed the rule but the
   validation tests refused ("refused:"), the pair that passed the rule but the data cannot
-  tell apart, so neither is named ("tied:"), the tests it flagged, and
+  tell apart, so neither is named ("tied:"), the side of it carried in the model for its
+  fit ("carried:"; not a name, the model's better observer), the tests it flagged, and
   whether that is the expected verdict (for the transducer case: nothing physical named and
   "unexplained" or a sensor effect on CD);
 - the validation fit_TOT before and after;
@@ -122,6 +123,8 @@ def run_case(case: Case, sets: Path, work: Path, workers: int | None) -> dict:
     refused = sorted(f"{p.kind}@{_sim_scope([] if p.scope == 'all' else p.scope.split('+'), r)}"
                      for p in r.possible if "do not confirm" in p.why_not)
     expected = sorted(f"{k}@{'+'.join(sorted(s.split('+')))}" for k, s in case.expect)
+    # in the model for its fit, not named (the better side of a tie)
+    carried = sorted(f"{e.kind}@{_sim_scope(e.setups or [], r)}" for e in r.carried)
     flagged = sorted({w.test for w in r.warnings})
     sensor = [s.output for s in r.sensor_effects]
     unexpl = [u.output for u in r.unexplained]
@@ -145,7 +148,7 @@ def run_case(case: Case, sets: Path, work: Path, workers: int | None) -> dict:
            "rigs": every, "judged_rigs": judged, "expected_judged": as_judged,
            "right_judged": right_judged,
            "sensor": sensor, "unexplained": unexpl, "right": right, "tied": tied,
-           "refused": refused,
+           "carried": carried, "refused": refused,
            "before": r.baseline.fit.total, "after": r.final.fit.total,
            "seconds": seconds, "possible": [f"{p.kind}@{p.scope}" for p in r.possible]}
     row["reachable"] = _reachable(case, r, est, val, found == expected)
@@ -240,6 +243,8 @@ def main() -> None:
         named = ", ".join(row["found"]) or "(none)"
         if row["tied"]:
             named += f"; tied: {'|'.join(row['tied'])}"
+        if row["carried"]:
+            named += f"; carried: {','.join(row['carried'])}"
         if row["refused"]:
             named += f"; refused: {','.join(row['refused'])}"
         if row["sensor"]:

@@ -97,8 +97,11 @@ def loop_models(loop_dir: Path, est_names: tuple[str, ...], val_names: tuple[str
         (loop_dir / STAMP).write_text(json.dumps(stamp, indent=1) + "\n")
     report = json.loads((loop_dir / "report.json").read_text())
     effects = [AcceptedEffect.from_dict(e) for e in report["effects"]]
+    carried = [AcceptedEffect.from_dict(e) for e in report.get("carried", [])]
     print("bench: the loop's effects: " + (", ".join(
-        f"{e.kind} on {', '.join(e.setups or ['all'])}" for e in effects) or "none"))
+        f"{e.kind} on {', '.join(e.setups or ['all'])}" for e in effects) or "none")
+        + "".join(f"; {e.kind} on {', '.join(e.setups or ['all'])} in the model for its "
+                  "fit, not named (a tie)" for e in carried))
     return (ModelFile.load(loop_dir / "baseline-model.json"),
             ModelFile.load(loop_dir / "model.json"))
 

@@ -36,6 +36,8 @@ def test_clean_data_accepts_no_effect(tmp_path):
     assert r.effects == []
     assert r.final.fit == r.baseline.fit
     assert (tmp_path / "report.md").read_text().count("No effect was accepted") == 1
+    assert r.carried == []
+    assert "carried" not in json.loads((tmp_path / "report.json").read_text())
 
 
 @pytest.mark.parametrize("draw", [0, 1])
@@ -233,3 +235,51 @@ def test_a_test_is_judged_by_the_fit_made_without_it(tmp_path, where):
     assert "by a model fitted without it" in r.warnings[0].reason
     assert r.effects == []  # clean physics: nothing named once the test is out
     assert t.name not in (r.estimation + r.validation)
+
+
+class _InProcess:
+    """The loop's runner in this process, so that an effect registered here exists in its
+    tasks too (the local cluster's worker processes would not have it)."""
+
+    workers = 1
+
+    @staticmethod
+    def map(f, args):
+        return [f(*a) for a in args]
+
+
+def test_a_tie_names_neither_and_carries_the_better_one_for_its_fit(tmp_path, monkeypatch):
+    # The ribs harden on R16; the library also holds the same force under another name, so
+    # the two pass the rule alike and neither adds anything beside the other: a true tie.
+    # Neither is named, both are possible, and one of them is in model.json for its fit,
+    # reported as carried (report.json, report.md), not as a finding.
+    from contextlib import contextmanager
+
+    from observer_node.loop import closed_loop
+    from observer_node.model.effects import EFFECTS, registered
+
+    @contextmanager
+    def here(scheduler=None, workers=None):
+        yield _InProcess()
+
+    monkeypatch.setattr(closed_loop, "cluster", here)
+    twin = dataclasses.replace(EFFECTS["chest_stiffening"], kind="rib_hardening_twin")
+    with registered(twin):
+        r = _run({"chest_stiffening": 1.0}, "R16", tmp_path)
+        mf = ModelFile.load(tmp_path / "model.json")
+    pair = {"chest_stiffening", "rib_hardening_twin"}
+    assert r.effects == [], r.history
+    assert {p.kind for p in r.possible if "cannot tell it from" in p.why_not} == pair
+    assert len(r.carried) == 1 and r.carried[0].kind in pair, r.history
+    c = r.carried[0]
+    assert [e["kind"] for e in mf.effects] == [c.kind]
+    assert c.fit.total == r.final.fit.total > r.baseline.fit.total + 1.0
+    assert c.evidence.tie is not None and "neither explains the other away" in c.evidence.tie
+    assert "is carried in the model for its fit, not named" in r.history[-1].decision
+    report = json.loads((tmp_path / "report.json").read_text())
+    assert report["effects"] == [] and [e["kind"] for e in report["carried"]] == [c.kind]
+    md = (tmp_path / "report.md").read_text()
+    assert f"| + {c.kind}, carried, not named | all |" in md
+    assert f"## {c.kind}: in the model for its fit, not a finding" in md
+    assert "No effect was named: " in md
+    assert "is carried in the model for its fit" in md.split("## Fits")[1].split("##")[0]

@@ -5,7 +5,7 @@ written (the key order of each object is part of that: report.json is compared b
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import Any
 
 from ..criteria import CriteriaComparison
@@ -344,8 +344,8 @@ class LoopSettings:
 class LoopReport:
     """The thesis grey-box and the final model on the validation tests, the effects accepted
     (each with its evidence, scope, parameters and validation fit), those possible but not
-    accepted, sensor effects, unexplained structure, tests left out and why, and how the
-    loop got there."""
+    accepted, sensor effects, unexplained structure, tests left out and why, how the loop
+    got there, and the effect carried in the model for its fit when a tie named neither."""
 
     baseline: ModelFit
     effects: list[AcceptedEffect]  # in the order accepted
@@ -370,10 +370,14 @@ class LoopReport:
     criteria: dict[str, dict[str, CriteriaComparison]]  # baseline, final: per test
     iso18571: dict[str, IsoRatings] | None  # baseline, final (None: not rated)
     seconds: float  # the loop's run time [s]
+    # In the model for its fit, not named: the better side of a tie neither side of which
+    # the data defend as a finding (absent from report.json when none).
+    carried: list[AcceptedEffect] = field(default_factory=list)
 
     def as_dict(self) -> dict[str, Any]:
         return {
             "baseline": self.baseline.as_dict(), "effects": [e.as_dict() for e in self.effects],
+            **({"carried": [e.as_dict() for e in self.carried]} if self.carried else {}),
             "possible": [p.as_dict() for p in self.possible],
             "sensor_effects": [s.as_dict() for s in self.sensor_effects],
             "unexplained": [u.as_dict() for u in self.unexplained],

@@ -29,9 +29,12 @@ def markdown(r: LoopReport) -> str:
     for e in r.effects:
         lines.append(f"| + {e.kind} | {'+'.join(e.setups or ['all'])} | "
                      f"{e.fit.cr:.1f} | {e.fit.cd:.1f} | {e.fit.total:.1f} |")
+    for e in r.carried:
+        lines.append(f"| + {e.kind}, carried, not named | {'+'.join(e.setups or ['all'])} | "
+                     f"{e.fit.cr:.1f} | {e.fit.cd:.1f} | {e.fit.total:.1f} |")
     lines += [f"| **final** | | **{f.cr:.1f}** | **{f.cd:.1f}** | **{f.total:.1f}** |", ""]
     if not r.effects:
-        lines += [none_accepted(r.history, r.settings.rule), ""]
+        lines += [none_accepted(r.history, r.settings.rule, bool(r.carried)), ""]
     lines += _markdown_findings(r)
     lines += ["## Injury criteria on the validation tests", "",
               "Mean |estimate - measured| over the validation tests (peak chest deflection, "
@@ -50,6 +53,8 @@ def markdown(r: LoopReport) -> str:
     lines.append("")
     for e in r.effects:
         lines += _markdown_effect(e)
+    for e in r.carried:
+        lines += _markdown_effect(e, carried=True)
     lines += ["## First ranking of candidates (share of the residual explained)", "",
               "| effect | scope | explained |", "|---|---|---|"]
     lines += [f"| {c.kind} | {c.scope} | {100 * c.explained_share:.1f} % |"
@@ -74,17 +79,19 @@ def markdown(r: LoopReport) -> str:
     return "\n".join(lines)
 
 
-def none_accepted(history: list[LoopStep], rule: str) -> str:
-    """report.md's line when the model stays the thesis grey-box: why, as the loop decided
-    (no candidate passed, the validation tests refused the one that did, or a sensor)."""
+def none_accepted(history: list[LoopStep], rule: str, carried: bool = False) -> str:
+    """report.md's line when no effect is named: why, as the loop decided (no candidate
+    passed, the validation tests refused the one that did, a sensor, or a tie, whose better
+    side may be ``carried`` in the model for its fit)."""
     why = history[-1].decision if history else ""
     if not why or why.startswith("no candidate passes"):
         return f"No effect was accepted: none passed the rule ({rule})."
-    return f"No effect was accepted: {why}."
+    return f"No effect was {'named' if carried else 'accepted'}: {why}."
 
 
-def _markdown_effect(e: AcceptedEffect) -> list[str]:
-    """An accepted effect's section: scope, parameters, confidence, warnings, rivals."""
+def _markdown_effect(e: AcceptedEffect, carried: bool = False) -> list[str]:
+    """An accepted (or ``carried``) effect's section: scope, parameters, confidence,
+    warnings, rivals."""
     ev, se = e.evidence, e.std_err
     params = ", ".join((f"{k} = {v:.4g}" + (f" ± {se[k]:.2g}" if k in se else ""))
                        if isinstance(v, float) else f"{k} = {v}"
@@ -110,7 +117,14 @@ def _markdown_effect(e: AcceptedEffect) -> list[str]:
                   "points from the accepted scope)")
     where = (f"acts on setups {', '.join(e.setups)}: {', '.join(e.applies_to or [])}"
              if e.setups is not None else "acts on every test")
-    return [f"## {e.kind}", "", e.description, "",
+    head = [f"## {e.kind}", "", e.description, ""]
+    if carried:
+        head = [f"## {e.kind}: in the model for its fit, not a finding", "", e.description, "",
+                "The data cannot tell it from its rival (below), so neither is named; it is in "
+                "model.json because it predicts CR and CD better than the model without it "
+                "and the validation tests confirm that. Read it as a better observer, not as "
+                "a finding about the dummy or the car.", ""]
+    return [*head,
             f"- {where}",
             f"- parameters (± standard error): {params or '(none)'}",
             f"- confidence (cross-validated, paired over tests): {e.confidence}",
