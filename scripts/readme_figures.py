@@ -109,7 +109,7 @@ def _gain(rule: Evidence) -> str:
 
 
 def bench_table(tmp: Path) -> str:
-    from observer_node.bench import SHIPPED_LOOP, run_bench
+    from observer_node.bench import SHIPPED_LOOP, daemon_cd_max_err_mm, run_bench
 
     with contextlib.redirect_stdout(io.StringIO()):  # the loop runs here, never the shipped one
         result = run_bench(tmp / "bench", interface="virtual", rerun_loop=True)
@@ -131,7 +131,7 @@ def bench_table(tmp: Path) -> str:
         live = ev.fit_vs_reference
         diff = max(ev.max_abs_diff_offline.as_dict().values())
         rows.append(f"| {name} | {_num(b.cr)} | {_num(b.cd)} | {_num(b.cd_max_err_mm)} | "
-                    f"{_num(live.cr)} | {_num(live.cd)} | {_num(off.cd_max_err_mm)} | "
+                    f"{_num(live.cr)} | {_num(live.cd)} | {_num(daemon_cd_max_err_mm(ev))} | "
                     f"{_num(off.cd_max_ref_mm)} | {'< 1e-9' if diff < 1e-9 else f'{diff:.2g}'} |")
     return "\n".join(rows)
 

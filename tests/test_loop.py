@@ -104,7 +104,7 @@ def test_bench_main_job_on_the_virtual_bus(r16_loop, tmp_path, capsys):
     """The README's bench: the loop's model on the bus beside the thesis grey-box, every
     event stepped as offline; the loop's result is reused when it was made from the same
     tests (a subset here, to keep the test short)."""
-    from observer_node.bench import loop_models, run_bench
+    from observer_node.bench import daemon_cd_max_err_mm, loop_models, run_bench
 
     from .conftest import R16_LOOP_EST as est
 
@@ -120,6 +120,10 @@ def test_bench_main_job_on_the_virtual_bus(r16_loop, tmp_path, capsys):
             continue
         live, off = event.fit_vs_reference, result.offline[name]
         assert abs(live.cr - off.cr) < 2 and abs(live.cd - off.cd) < 2, name
+        # the bus's own peak deflection error, from the daemon's event: printed in its column
+        err_mm = daemon_cd_max_err_mm(event)
+        assert err_mm == event.criteria.error.cd_max_mm and abs(err_mm - off.cd_max_err_mm) < 1
+        assert f"{live.cd:8.1f}{err_mm:+10.1f}mm" in out, name
     # the loop's model beats the thesis grey-box on the bus, as offline
     base, off = result.baseline_offline, result.offline
     assert sum(off[n].cd for n in off) > sum(base[n].cd for n in base)
@@ -266,13 +270,16 @@ def test_a_tie_names_neither_and_carries_the_better_one_for_its_fit(tmp_path, mo
     twin = dataclasses.replace(EFFECTS["chest_stiffening"], kind="rib_hardening_twin")
     with registered(twin):
         r = _run({"chest_stiffening": 1.0}, "R16", tmp_path)
-        mf = ModelFile.load(tmp_path / "model.json")
+        mf = ModelFile.load(tmp_path / "model.json")  # the note is no obstacle to the daemon
+        y = mf.observer().simulate(np.ones((1, 50)), np.zeros((1, 50)))
     pair = {"chest_stiffening", "rib_hardening_twin"}
     assert r.effects == [], r.history
     assert {p.kind for p in r.possible if "cannot tell it from" in p.why_not} == pair
     assert len(r.carried) == 1 and r.carried[0].kind in pair, r.history
     c = r.carried[0]
     assert [e["kind"] for e in mf.effects] == [c.kind]
+    assert mf.effects[0]["note"].startswith("carried for its fit, not a finding: ")
+    assert y.shape == (1, 50, 2) and np.isfinite(y).all()
     assert c.fit.total == r.final.fit.total > r.baseline.fit.total + 1.0
     assert c.evidence.tie is not None and "neither explains the other away" in c.evidence.tie
     assert "is carried in the model for its fit, not named" in r.history[-1].decision

@@ -486,7 +486,13 @@ def _run(est_tests: list[CrashTest], val_tests: list[CrashTest], out: Path, rate
     final_val = score(base, effects, val)
     judged = {label: scores(val, model(b, e, val).simulate(val.pulse_g, val.brs_rad), ratings)
               for label, b, e in (("baseline", gb.params, []), ("final", base, effects))}
-    mf = _model_file(base, effects, est, rate_hz, gb, setups)
+    in_file = effects
+    if carried:  # model.json says of a carried effect what report.md does: it is no finding
+        ru = carried[0].evidence.runner_up
+        rival = f"{ru.kind} on {ru.scope}" if ru is not None else "a rival"
+        in_file = [*effects[:-1], {**effects[-1], "note": "carried for its fit, not a "
+                                   f"finding: {rival} fits alike (report.md)"}]
+    mf = _model_file(base, in_file, est, rate_hz, gb, setups)
     mf.save(out / "model.json")
     # the thesis grey-box on the same tests, for a side-by-side run (observer-node bench)
     _model_file(dict(gb.params), [], est, rate_hz, gb, setups).save(out / "baseline-model.json")
