@@ -489,9 +489,9 @@ def _run(est_tests: list[CrashTest], val_tests: list[CrashTest], out: Path, rate
     in_file = effects
     if carried:  # model.json says of a carried effect what report.md does: it is no finding
         ru = carried[0].evidence.runner_up
-        rival = f"{ru.kind} on {ru.scope}" if ru is not None else "a rival"
+        tied_with = f"{ru.kind} on {ru.scope}" if ru is not None else "a rival"
         in_file = [*effects[:-1], {**effects[-1], "note": "carried for its fit, not a "
-                                   f"finding: {rival} fits alike (report.md)"}]
+                                   f"finding: {tied_with} fits alike (report.md)"}]
     mf = _model_file(base, in_file, est, rate_hz, gb, setups)
     mf.save(out / "model.json")
     # the thesis grey-box on the same tests, for a side-by-side run (observer-node bench)
