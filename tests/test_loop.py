@@ -279,6 +279,11 @@ def test_a_tie_names_neither_and_carries_the_better_one_for_its_fit(tmp_path, mo
     c = r.carried[0]
     assert [e["kind"] for e in mf.effects] == [c.kind]
     assert mf.effects[0]["note"].startswith("carried for its fit, not a finding: ")
+    assert mf.name == f"greybox (carries {c.kind} for its fit, not a finding)"
+    # its line among the possible says it is in the model; the validation fit rose with it
+    assert [p.why_not.endswith("carried in model.json for its fit, not named")
+            for p in r.possible if p.kind == c.kind] == [True]
+    assert c.fit.cr > r.baseline.fit.cr and c.fit.cd > r.baseline.fit.cd
     assert y.shape == (1, 50, 2) and np.isfinite(y).all()
     assert c.fit.total == r.final.fit.total > r.baseline.fit.total + 1.0
     assert c.evidence.tie is not None and "neither explains the other away" in c.evidence.tie

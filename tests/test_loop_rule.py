@@ -595,3 +595,35 @@ def test_an_input_delay_of_both_inputs_alike_that_helps_one_output_is_that_outpu
     assert output_lag("input_delay", {"n_pulse": 3.0, "n_brs": 3.1}, 3.0, 1.5) is None
     assert output_lag("input_delay", {"n_pulse": 3.0, "n_brs": 4.0}, 3.0, 0.1) is None  # apart
     assert output_lag("chest_stiffening", {"k3": 1e8}, 3.0, 0.1) is None
+
+
+def test_a_tie_is_carried_only_when_the_validation_fit_rises_and_no_output_falls():
+    """Fit is a carried effect's only reason to be in the model: the validation tests'
+    fit_TOT must rise with it, and neither output's fall by more than the tolerance."""
+    from observer_node.ident.metrics import Fits
+    from observer_node.loop.verdicts import VALIDATION_TOLERANCE, carry_refusal
+
+    before = Fits(cr=90.0, cd=88.0, total=89.0)
+    assert carry_refusal(before, Fits(cr=91.0, cd=89.0, total=90.0)) is None
+    assert carry_refusal(before, Fits(cr=91.0, cd=88.0 - VALIDATION_TOLERANCE / 2,
+                                      total=89.4)) is None
+    flat = carry_refusal(before, Fits(cr=90.0, cd=88.0, total=89.0))
+    assert flat is not None and "does not rise" in flat and "89.0 -> 89.0" in flat
+    cd = carry_refusal(before, Fits(cr=94.0, cd=87.0, total=90.5))
+    assert cd is not None and "CD fit falls" in cd and "88.0 -> 87.0" in cd
+
+
+def test_a_model_file_note_is_a_string():
+    """An effect's note (the loop's word on a carried effect) is text, and nothing else."""
+    import json
+
+    from observer_node.bench import SHIPPED_LOOP
+    from observer_node.model import ModelFile
+    from observer_node.model.modelfile import ModelFileError
+
+    d = json.loads((SHIPPED_LOOP / "model.json").read_text())
+    d["effects"][-1]["note"] = "carried for its fit, not a finding: x on all fits alike"
+    assert ModelFile.from_dict(d, "m.json").effects[-1]["note"].startswith("carried")
+    d["effects"][-1]["note"] = 12
+    with pytest.raises(ModelFileError, match="note"):
+        ModelFile.from_dict(d, "m.json")

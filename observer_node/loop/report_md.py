@@ -121,9 +121,9 @@ def _markdown_effect(e: AcceptedEffect, carried: bool = False) -> list[str]:
     if carried:
         head = [f"## {e.kind}: in the model for its fit, not a finding", "", e.description, "",
                 "The data cannot tell it from its rival (below), so neither is named; it is in "
-                "model.json because it predicts CR and CD better than the model without it "
-                "and the validation tests confirm that. Read it as a better observer, not as "
-                "a finding about the dummy or the car.", ""]
+                "model.json because the validation tests' fit_TOT rises with it and neither "
+                "output's falls. Read it as a better observer, not as a finding about the "
+                "dummy or the car.", ""]
     return [*head,
             f"- {where}",
             f"- parameters (± standard error): {params or '(none)'}",

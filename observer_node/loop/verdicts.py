@@ -10,6 +10,7 @@ from collections.abc import Set as AbstractSet
 
 import numpy as np
 
+from ..ident.metrics import Fits
 from ..model.effects import EFFECTS
 from .analysis import DELAY_MAX_S, Candidate, scope_label
 from .evidence import Evidence, PastTheTie, beats
@@ -192,6 +193,20 @@ def validation_refusal(fit_before: float, fit_after: float) -> str | None:
         return None
     return (f"the validation tests do not confirm it: their fit_TOT falls from "
             f"{fit_before:.1f} to {fit_after:.1f} %")
+
+
+def carry_refusal(before: Fits, after: Fits) -> str | None:
+    """Why the better side of a tie is not carried in the model for its fit: fit is its only
+    reason to be there, so the validation tests' fit_TOT [%] must rise with it, and neither
+    output's fall by more than ``VALIDATION_TOLERANCE`` (None: it is carried)."""
+    if after.total <= before.total:
+        return (f"the validation tests' fit_TOT does not rise with it ({before.total:.1f} -> "
+                f"{after.total:.1f} %)")
+    for o in ("cr", "cd"):
+        if getattr(after, o) < getattr(before, o) - VALIDATION_TOLERANCE:
+            return (f"the validation tests' {o.upper()} fit falls with it "
+                    f"({getattr(before, o):.1f} -> {getattr(after, o):.1f} %)")
+    return None
 
 
 def parameter_warnings(kind: str, params: dict, std_err: dict[str, float],

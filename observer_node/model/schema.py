@@ -94,6 +94,9 @@ def _schema() -> dict[str, Any]:
                           "properties": {
                               "kind": {"enum": sorted(EFFECTS)},
                               # scope: the setups the effect acts on (absent: all)
+                              # note: why it is there when it is no finding (the loop's
+                              # carried side of a tie)
+                              "note": {"type": "string", "maxLength": 300},
                               "setups": {"type": "array", "minItems": 1, "uniqueItems": True,
                                          "items": {"type": "string", "minLength": 1}}},
                           "allOf": [_effect(e) for e in EFFECTS.values()]}},
