@@ -11,7 +11,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from benchmarks.heldout import cases, lab, make_sets, physics
+from benchmarks.heldout import cases, draw_v, lab, make_sets, physics
 from benchmarks.heldout import sets as heldout_sets
 from benchmarks.heldout.cases import BY_NAME
 from benchmarks.heldout.cases_p import BY_NAME_P
@@ -20,6 +20,7 @@ from benchmarks.heldout.cases_r import BY_NAME_R
 from benchmarks.heldout.cases_s import BY_NAME_S
 from benchmarks.heldout.cases_t import BY_NAME_T, MOSTLY_ONE_OUTPUT
 from benchmarks.heldout.cases_u import BY_NAME_U, ONE_PHYSICAL_U, ORDINARY_U
+from benchmarks.heldout.cases_v import BY_NAME_V, ONE_PHYSICAL_V
 from observer_node.data import load_tests
 from observer_node.data.isomme import read_isomme
 from observer_node.data.setups import assign_setups
@@ -1087,6 +1088,10 @@ LATER_SETS = {
           {"a": ["h_airbag", "h_broken_brs"], "b": ["hb_pulse_gain_full"],
            "e": ["he_broken_cr_cable"], "r": ["hr_pulse_gain_sleds"],
            "t": ["ht_broken_pulse_ms2", "ht_cd_arm_ring"]}),
+    "v": ("set_v", ("hv_two_valve_full_lumbar_r16", "hv_clean48"),
+          {"a": ["h_broken_brs"], "e": ["he_broken_cr_cable"], "q": ["hq_cr_late"],
+           "s": ["hs_rib_fung_sled"],
+           "u": ["hu_broken_pulse_cable", "hu_cd_pot_loading", "hu_lumbar_all"]}),
 }
 later_set = pytest.mark.parametrize("case_set", sorted(LATER_SETS))
 # a CR recorded at the wrong polarity peaks below zero: left out of the check that CR peaks
@@ -2871,6 +2876,209 @@ def test_set_u_has_no_run_aways(set_u: Path) -> None:
             rows.append((c.name, t["name"], t["setup"], -float(brs.min()), t["peak_cd_mm"],
                          t["peak_cr_g"]))
     assert len(rows) == 12 * len(SET_U)
+    median = {r: float(np.median([x[3] for x in rows if x[2] == r])) for r in cases.ALL}
+    assert all(m > 10 for m in median.values()), median  # degrees paid out
+    for case, name, rig, payout, cd, cr in rows:
+        assert median[rig] / 3 < payout < 3 * median[rig], (case, name, payout, median[rig])
+        assert 12.0 < cd < 80.0 and 15.0 < cr < 80.0, (case, name, cd, cr)
+
+
+# ------------------------------------------------------------------ set V (cases_v.py)
+
+SET_V = heldout_sets.case_set("v")
+# the broken test, the transducer error, and every physical case of one effect (its rigs moved,
+# the others untouched)
+WATCHED_V = ("hv_broken_cr_rail", "hv_cr_clock", *ONE_PHYSICAL_V)
+BEFORE_V = _cases_of("abcdefghijklmnopqrstu")
+
+
+@pytest.fixture(scope="module")
+def set_v(tmp_path_factory: pytest.TempPathFactory) -> Path:
+    return _generate(tmp_path_factory, "v", WATCHED_V)
+
+
+def test_set_v_is_new() -> None:
+    """Set V's names, seeds (31xxx), pairings, effect sizes and lab-side kinds are none of sets
+    A-U's."""
+    _is_new(SET_V, BEFORE_V, 31000, 2, size=14)
+
+
+def test_set_v_covers_the_general_list() -> None:
+    """Set V as its brief asks: clean cases at 48 and 96 counts; each kind of the library a loop
+    can name, as physics, once in a case of its own; two effects of different kinds on different
+    rigs in one case; a broken estimation test; a transducer error on CR alone (as drawn); a
+    late pulse and a late BRS at delays in 1-5 ms no earlier set used on any input; 6 + 6
+    tests, every rig an estimation part holds held twice or more; an effect on some rigs only
+    rests on two estimation and two validation tests of them beside an estimation test of a rig
+    it spares."""
+    _scopes_rest_on_two(SET_V)
+    clean, named = _clean_and_named(SET_V)
+    _two_broken_sensor_delays(SET_V, BEFORE_V, "cr")
+    assert len(clean) + len(named) + 2 == len(SET_V)
+    lib = physics.EFFECTS
+    singles = [c for c in SET_V if len(c.effects) == 1 and lib[c.effects[0].key]
+               and lib[c.effects[0].key] != "input_delay"]
+    assert sorted(c.name for c in singles) == sorted(ONE_PHYSICAL_V)
+    assert sorted(lib[c.effects[0].key] for c in singles) == sorted(draw_v.KINDS)
+    for c in named:  # every named effect's rigs appear in its case; no bag on R16
+        for e in c.effects:
+            assert set(e.setups) <= set(c.est) | set(c.val), c.name
+            assert lib[e.key] != "airbag_contact" or "R16" not in e.setups
+
+
+def test_set_v_follows_its_draw() -> None:
+    """The emphasis of set V: its designer's choices are numpy's default_rng(31000)'s
+    (``draw_v.py``), followed as drawn: each kind's form, rigs, counts and mix; the two-effect
+    case's kinds, forms, rigs, counts and mix; the delays, their counts and mixes; the
+    transducer error's output; the broken test's channel and test; the clean cases' mixes. The
+    input gain is the BRS's, not the pulse accelerometer's."""
+    d = draw_v.draw(31000)
+    lib = physics.EFFECTS
+    for kind, want in d["single"].items():
+        (c,) = [c for c in SET_V if c.name in ONE_PHYSICAL_V and lib[c.effects[0].key] == kind]
+        (e,) = c.effects
+        assert (e.key, e.setups, c.counts_per_rev) == (want["form"], want["rigs"], want["counts"])
+        assert _pairing(c) == (want["est"], want["val"]), c.name
+    assert {lib[k] for k in draw_v.BRS_GAIN} == {"input_gain"}
+    for kind, rejected in d["rejected"].items():  # drawn again: the first draw is not in V
+        assert (rejected["form"], rejected["rigs"]) not in {
+            (e.key, e.setups) for c in SET_V for e in c.effects if lib[e.key] == kind}
+    two = d["two"]
+    (c,) = [c for c in SET_V if len(c.effects) == 2]
+    assert tuple(lib[e.key] for e in c.effects) == two["kinds"]
+    assert tuple(e.key for e in c.effects) == two["forms"]
+    assert tuple(e.setups for e in c.effects) == two["rigs"]
+    assert (c.counts_per_rev, _pairing(c)) == (two["counts"], (two["est"], two["val"]))
+    for key in ("pulse_late", "brs_late"):
+        (c,) = [c for c in SET_V if c.effects and c.effects[0].key == key]
+        assert c.effects[0].size == d[key]["delay_s"] and c.counts_per_rev == d[key]["counts"]
+        assert _pairing(c) == (d[key]["est"], d[key]["val"])
+    (sensor,) = [c for c in SET_V if c.expect_note]
+    assert sensor.expect_note.endswith(f"on {d['transducer']['output']}")
+    assert sensor.effects[0].key.startswith(d["transducer"]["output"] + "_")
+    assert (sensor.counts_per_rev, _pairing(sensor)) == (
+        d["transducer"]["counts"], (d["transducer"]["est"], d["transducer"]["val"]))
+    (broken,) = [c for c in SET_V if c.expect_broken]
+    assert broken.expect_broken == (d["broken"]["test"],)
+    assert broken.effects[0].key.startswith(d["broken"]["channel"] + "_")
+    assert (broken.counts_per_rev, _pairing(broken)) == (
+        d["broken"]["counts"], (d["broken"]["est"], d["broken"]["val"]))
+    for n in (48, 96):
+        (c,) = [c for c in SET_V if not c.effects and c.counts_per_rev == n]
+        assert _pairing(c) == (d[f"clean{n}"]["est"], d[f"clean{n}"]["val"])
+
+
+def test_set_v_lab_side_is_new_and_unnamed() -> None:
+    """One broken estimation test, of a form no earlier set used, the only thing expected; one
+    transducer error on CR, of a form no earlier set used, nothing physical named."""
+    _lab_side_is_new_and_unnamed(SET_V, "abcdefghijklmnopqrstu", "cr")
+
+
+def test_set_v_new_forms_are_no_earlier_sets() -> None:
+    """Set V's two lab-side forms are keys no earlier case switched, named nothing physical;
+    its physics is earlier sets' forms only."""
+    new = {"cr_rail", "cr_clock"}
+    assert not new & _keys(BEFORE_V) and new <= _keys(SET_V)
+    assert physics.EFFECTS["cr_rail"] == physics.EFFECTS["cr_clock"] == ""
+    assert _keys(SET_V) - new <= _keys(BEFORE_V)
+
+
+@pytest.mark.parametrize("case", sorted(ONE_PHYSICAL_V))
+def test_set_v_physics_moves_its_rigs_only(set_v: Path, case: str) -> None:
+    """Each physical case moves what its form moves on every test of its rigs and leaves the
+    tests of a rig it spares untouched to the bit: the chest's and belt's forms CR and CD (the
+    pulse untouched); the BRS's off-centre encoder the BRS alone."""
+    c = BY_NAME_V[case]
+    (e,) = c.effects
+    on, off = set_v / "on" / case, set_v / "off" / case
+    seen = 0
+    for folder in sorted(on.glob("*/*")):
+        name = folder.name
+        if name.split("_")[0] not in e.setups:
+            assert _files(folder) == _files(off / folder.parent.name / name)
+            continue
+        seen += 1
+        assert np.array_equal(_channel(on, name, "pulse"), _channel(off, name, "pulse"))
+        if e.key == "brs_eccentric":
+            for which in ("cr", "cd"):
+                assert np.array_equal(_channel(on, name, which), _channel(off, name, which))
+            assert np.abs(_brs(on, name) - _brs(off, name)).max() >= 360.0 / c.counts_per_rev
+            continue
+        for which in ("cr", "cd"):
+            change = float(np.abs(_channel(on, name, which) - _channel(off, name, which)).max())
+            assert change > 0.3, (name, which, change)
+    assert seen >= 4
+
+
+def test_set_v_cr_rail_clips_the_broken_tests_cr_only(set_v: Path) -> None:
+    """The broken test's CR is flat at the rail (through CFC 180) where its twin's passes it,
+    its twin's where the twin's stays well inside; its CD, pulse and BRS untouched; every other
+    test untouched."""
+    c = BY_NAME_V["hv_broken_cr_rail"]
+    (broken,) = c.expect_broken
+    (e,) = c.effects
+    on, off = set_v / "on" / c.name, set_v / "off" / c.name
+    bad, good = _channel(on, broken, "cr"), _channel(off, broken, "cr")
+    assert good.max() > e.size + 8.0  # the spine decelerated far past the range
+    assert bad.max() < e.size + 1.0 and bad.max() > e.size - 1.0
+    inside = np.abs(good) < e.size - 5.0
+    assert np.abs(bad[inside] - good[inside]).max() < 2.0
+    for which in ("cd", "pulse"):
+        assert np.array_equal(_channel(on, broken, which), _channel(off, broken, which))
+    assert np.array_equal(_brs(on, broken), _brs(off, broken))
+    _others_untouched(set_v, c.name, broken)
+
+
+def test_set_v_clock_stretches_the_time_base() -> None:
+    """lab.clock: nothing with share 0 or before the trigger; an event at t is written at
+    t / (1 + share)."""
+    t = _times(physics.N_SAMPLES)
+    x = np.exp(-(((t - 0.050) / 0.004) ** 2))
+    assert np.array_equal(lab.clock(x, 0.0), x)
+    y = lab.clock(x, 0.1)
+    assert t[np.argmax(y)] == pytest.approx(0.050 / 1.1, abs=1.5e-4)
+    ramp = np.maximum(t, 0.0)
+    assert np.allclose(lab.clock(ramp, 0.1)[t < 0], 0.0)
+    inner = (t > 0) & (t < 0.15)
+    assert np.allclose(lab.clock(ramp, 0.1)[inner], 1.1 * ramp[inner])
+
+
+def test_set_v_cr_clock_moves_cr_only(set_v: Path) -> None:
+    """CR is its twin's on the stretched time base (within the noise and the CFC filter), every
+    test, and moved by it; CD, pulse and BRS untouched."""
+    c = BY_NAME_V["hv_cr_clock"]
+    (e,) = c.effects
+    on, off = set_v / "on" / c.name, set_v / "off" / c.name
+    seen = 0
+    for folder in sorted(on.glob("*/*")):
+        name = folder.name
+        for which in ("cd", "pulse"):
+            assert np.array_equal(_channel(on, name, which), _channel(off, name, which))
+        assert np.array_equal(_brs(on, name), _brs(off, name))
+        cr, cr0 = _channel(on, name, "cr"), _channel(off, name, "cr")
+        miss = np.abs(cr - lab.clock(cr0, e.size)).max()  # within the noise and the filter
+        moved = np.abs(cr - cr0).max()
+        assert moved > 2.0 and miss < 0.25 * moved, (folder.name, miss, moved)
+        seen += 1
+    assert seen == 12
+
+
+def test_set_v_has_no_run_aways(set_v: Path) -> None:
+    """No simulation ran away (set T's capstan once paid 26 spindle turns out on one test):
+    every test of set V pays its BRS out within 3x of its rig's median over the set (and more
+    than a third of it), its true chest deflection peaks at 12-80 mm and its CR at 15-80 g,
+    nothing NaN."""
+    rows = []
+    for c in SET_V:
+        truth = json.loads((set_v / "on" / c.name / "truth.json").read_text())
+        for t in truth["tests"]:
+            brs = _brs(set_v / "on" / c.name, t["name"])
+            assert np.all(np.isfinite(brs)), (c.name, t["name"])
+            for which in ("pulse", "cr", "cd"):
+                assert np.all(np.isfinite(_channel(set_v / "on" / c.name, t["name"], which)))
+            rows.append((c.name, t["name"], t["setup"], -float(brs.min()), t["peak_cd_mm"],
+                         t["peak_cr_g"]))
+    assert len(rows) == 12 * len(SET_V)
     median = {r: float(np.median([x[3] for x in rows if x[2] == r])) for r in cases.ALL}
     assert all(m > 10 for m in median.values()), median  # degrees paid out
     for case, name, rig, payout, cd, cr in rows:

@@ -66,11 +66,16 @@
   first write for each kind) on all three rigs or on two, at new seeds and sizes, a pulse
   cable parting mid-crash (broken test) and a chest pot loaded by its conditioner (a
   transducer error on CD).
+  ``cases_v.py``: set V, the same again, on pairings no earlier case ran, by another engineer:
+  the general list with every choice drawn by a seeded generator (``draw_v.py``: forms, rigs,
+  mixes, counts, delays, the broken channel, the transducer's output), the sizes set by costs,
+  a CR conditioner on too small a range (broken test) and a CR module's clock running slow (a
+  transducer error on CR).
   ``make_sets.py``: writes a set (``--no-effects``: the same tests with every effect off).
   ``costs.py``: what each case costs the thesis grey-box (project CLI).
 
     python -m benchmarks.heldout.make_sets --out /tmp/heldout
-        [--set a|b|c|d|e|f|g|h|i|j|k|l|m|n|o|p|q|r|s|t|u] [--case NAME ...]
+        [--set a|b|c|d|e|f|g|h|i|j|k|l|m|n|o|p|q|r|s|t|u|v] [--case NAME ...]
 
 Never tune the loop on these cases; report them apart from the tuned ones.
 """

@@ -37,7 +37,7 @@ EXACT = {"pulse_late", "brs_late", "brs_freeze", "cd_dropout", "pulse_rail", "pu
          "pulse_rate", "cd_aa_filter", "dummy_scale", "cr_crosstalk", "dummy_soak", "cd_sag",
          "brs_counts", "cr_damped", "cr_late", "cd_rc_filter", "dummy_late",
          "cd_reversed", "cd_slew", "brs_wrap", "cr_creep", "pulse_ms2", "cd_arm_ring",
-         "cr_drift", "pulse_cable_break", "cd_pot_loading"}
+         "cr_drift", "pulse_cable_break", "cd_pot_loading", "cr_rail", "cr_clock"}
 DROPOUT_S = 0.010  # how long cd_dropout's wiper stays off the track
 KNEE_SLOPE = 0.6  # cd_knee: the gain of the CD calibration's second segment
 SHIFT_AT_S = 0.011  # pulse_zero_shift: when the zero shifts (in the crash-box spike)
@@ -128,6 +128,15 @@ CD_RING_ZETA = 0.12
 # POT_STROKE_MM (v(x) - v(x_rest)): low over the middle of the stroke, by a share growing with
 # r; CR, pulse, BRS right
 POT_STROKE_MM, POT_REST = 100.0, 0.1
+# cr_rail: the spine accelerometer's conditioner set to too small a range (a gain meant for a
+# head or a pelvis channel of lower g, or a range switch left on its lower step): its output
+# saturates, the raw channel flat at +-the effect's size (g) wherever the spine's deceleration
+# is larger, its noise clipped with it, before the CFC 180 filter; CD, pulse, BRS right
+# cr_clock: the CR channel's digitiser module (in the dummy's spine box) runs on its own
+# crystal, slow by the effect's share, while it writes its samples at the stated rate from the
+# common trigger: the sample the file stamps t was taken at t (1 + s), so CR's time base is
+# stretched, its events written early by a share growing with the time since the trigger
+# (5 ms at 50 ms for s = 0.1); CR's values are right; CD, pulse, BRS right
 NOISE = {"pulse_g": 0.6, "cr_g": 0.55, "cd_mm": 0.10}  # white, before the CFC filters
 
 
@@ -236,6 +245,14 @@ def damped_element(a: np.ndarray, f_hz: float, zeta: float = CR_DAMPED_ZETA) -> 
     w = 2 * ph.FS_HZ * np.tan(np.pi * f_hz / ph.FS_HZ)
     bb, aa = signal.bilinear([w * w], [1.0, 2 * zeta * w, w * w], fs=ph.FS_HZ)
     return np.asarray(signal.lfilter(bb, aa, a))
+
+
+def clock(x: np.ndarray, share: float) -> np.ndarray:
+    """``x`` (sampled at ``physics.FS_HZ``, its first sample at ``physics.T0_S``) as a module
+    whose clock runs slow by ``share`` writes it from the common trigger (t = 0) on: the
+    sample stamped t holds what was at t (1 + share), the record's end held."""
+    t = ph.T0_S + np.arange(x.size) / ph.FS_HZ
+    return np.interp(t * (1.0 + share), t, x)
 
 
 def late(x: np.ndarray, seconds: float) -> np.ndarray:
@@ -391,6 +408,8 @@ def record(d: Drawn, i: int, sim: dict[str, np.ndarray], counts_per_rev: int,
         cr_read = creep(cr_read, e["cr_creep"])
     if e["cr_drift"]:  # the bridge's zero drifts as its gauges warm from the trigger on
         cr_read = drift(cr_read, e["cr_drift"])
+    if e["cr_clock"]:  # the CR module's own clock slow: its time base stretched from trigger
+        cr_read = clock(cr_read, e["cr_clock"])
     if e["cr_late"]:  # the CR digitiser's pipeline delay, not taken off its time stamps
         cr_read = late(cr_read, e["cr_late"])
     if e["cr_zero_shift"]:  # the sensing element's zero shifts under the shock: once the
@@ -409,6 +428,8 @@ def record(d: Drawn, i: int, sim: dict[str, np.ndarray], counts_per_rev: int,
         k = int(np.searchsorted(t, LOST_AT_S))  # rest arrives that much early, the end padded
         nb = round(e["cr_lost_block"] * ph.FS_HZ)
         cr_raw = np.concatenate([cr_raw[:k], cr_raw[k + nb:], np.full(nb, cr_raw[-1])])
+    if e["cr_rail"]:  # the conditioner's range too small: the raw channel flat at its rails
+        cr_raw = np.clip(cr_raw, -e["cr_rail"], e["cr_rail"])
     if e["cr_cable_break"]:  # the cable parts: the amplifier reads a constant from then on
         cr_raw[t >= e["cr_cable_break"]] = CABLE_BREAK_G
     cr = ph.cfc(cr_raw, 180)

@@ -145,6 +145,9 @@ EFFECTS = {
     # set U's forms (cases_u.py): two lab-side, its physics the library's ordinary forms
     "pulse_cable_break": "",  # broken test: the pulse cable parts at this time (s), reads 0 g
     "cd_pot_loading": "",  # transducer: the chest pot loaded by its conditioner, R_pot/R_in
+    # set V's forms (cases_v.py): two lab-side, its physics any set's forms, drawn (draw_v.py)
+    "cr_rail": "",  # broken test: CR conditioner's range too small, clips at this (g)
+    "cr_clock": "",  # transducer: CR's module clock slow by this share, its time base stretched
 }
 POW_B_M = (0.015, 0.025)  # webbing_power: reference stretch, chest side and up to the retractor
 V_HYST = 0.02  # m/s: webbing_hysteresis switches between its paths within this rate
