@@ -2862,25 +2862,31 @@ def test_set_u_cd_pot_loading_moves_cd_only(set_u: Path) -> None:
     assert seen == 12
 
 
-def test_set_u_has_no_run_aways(set_u: Path) -> None:
+def _no_run_aways(case_list: list, root: Path) -> None:
     """No simulation ran away (set T's capstan once paid 26 spindle turns out on one test):
-    every test of set U pays its BRS out within 3x of its rig's median over the set (and more
+    every test of the set pays its BRS out within 3x of its rig's median over the set (and more
     than a third of it), its true chest deflection peaks at 12-80 mm and its CR at 15-80 g,
-    nothing NaN."""
+    no channel NaN."""
     rows = []
-    for c in SET_U:
-        truth = json.loads((set_u / "on" / c.name / "truth.json").read_text())
+    for c in case_list:
+        truth = json.loads((root / "on" / c.name / "truth.json").read_text())
         for t in truth["tests"]:
-            brs = _brs(set_u / "on" / c.name, t["name"])
+            brs = _brs(root / "on" / c.name, t["name"])
             assert np.all(np.isfinite(brs)), (c.name, t["name"])
+            for which in ("pulse", "cr", "cd"):
+                assert np.all(np.isfinite(_channel(root / "on" / c.name, t["name"], which)))
             rows.append((c.name, t["name"], t["setup"], -float(brs.min()), t["peak_cd_mm"],
                          t["peak_cr_g"]))
-    assert len(rows) == 12 * len(SET_U)
+    assert len(rows) == 12 * len(case_list)
     median = {r: float(np.median([x[3] for x in rows if x[2] == r])) for r in cases.ALL}
     assert all(m > 10 for m in median.values()), median  # degrees paid out
     for case, name, rig, payout, cd, cr in rows:
         assert median[rig] / 3 < payout < 3 * median[rig], (case, name, payout, median[rig])
         assert 12.0 < cd < 80.0 and 15.0 < cr < 80.0, (case, name, cd, cr)
+
+
+def test_set_u_has_no_run_aways(set_u: Path) -> None:
+    _no_run_aways(SET_U, set_u)
 
 
 # ------------------------------------------------------------------ set V (cases_v.py)
@@ -3064,23 +3070,4 @@ def test_set_v_cr_clock_moves_cr_only(set_v: Path) -> None:
 
 
 def test_set_v_has_no_run_aways(set_v: Path) -> None:
-    """No simulation ran away (set T's capstan once paid 26 spindle turns out on one test):
-    every test of set V pays its BRS out within 3x of its rig's median over the set (and more
-    than a third of it), its true chest deflection peaks at 12-80 mm and its CR at 15-80 g,
-    nothing NaN."""
-    rows = []
-    for c in SET_V:
-        truth = json.loads((set_v / "on" / c.name / "truth.json").read_text())
-        for t in truth["tests"]:
-            brs = _brs(set_v / "on" / c.name, t["name"])
-            assert np.all(np.isfinite(brs)), (c.name, t["name"])
-            for which in ("pulse", "cr", "cd"):
-                assert np.all(np.isfinite(_channel(set_v / "on" / c.name, t["name"], which)))
-            rows.append((c.name, t["name"], t["setup"], -float(brs.min()), t["peak_cd_mm"],
-                         t["peak_cr_g"]))
-    assert len(rows) == 12 * len(SET_V)
-    median = {r: float(np.median([x[3] for x in rows if x[2] == r])) for r in cases.ALL}
-    assert all(m > 10 for m in median.values()), median  # degrees paid out
-    for case, name, rig, payout, cd, cr in rows:
-        assert median[rig] / 3 < payout < 3 * median[rig], (case, name, payout, median[rig])
-        assert 12.0 < cd < 80.0 and 15.0 < cr < 80.0, (case, name, cd, cr)
+    _no_run_aways(SET_V, set_v)
