@@ -447,17 +447,16 @@ def _run(est_tests: list[CrashTest], val_tests: list[CrashTest], out: Path, rate
         if carrying:
             refused = refused or carry_refusal(Fits(**_fit3(score(base, effects, val))),
                                                Fits(**_fit3(val_fit)))
-        if refused and carrying:
-            step.decision += f"; {best.kind} is not carried: {refused}"
-            break
+            if refused:
+                step.decision += f"; {best.kind} is not carried: {refused}"
+                break
+            named_model = (base, effects)
         if refused:
             possible.append(PossibleEffect(best.kind, scope_label(best.setups),
                                            [e["kind"] for e in effects], ev_best, refused))
             step.decision = (f"{best.kind} on {scope_label(best.setups)} passes the rule on "
                              f"the estimation tests, but {refused}: not accepted")
             break
-        if carrying:
-            named_model = (base, effects)
         base, effects, base_se = fit.base, fit.effects, fit.base_std_err
         cv_now = cv_tests_best
         params, se = effects[-1]["parameters"], fit.effect_std_err[-1]
