@@ -627,3 +627,72 @@ def test_a_model_file_note_is_a_string():
     d["effects"][-1]["note"] = 12
     with pytest.raises(ModelFileError, match="note"):
         ModelFile.from_dict(d, "m.json")
+
+
+def test_a_scoped_effect_is_judged_on_its_own_tests_the_rest_held():
+    """Set V's rib stiffening on FULL: its own tests gain alike, the spared ones' refit
+    noise (+5.3, -4.1, +4.3) takes the interval below zero; held, they do not move."""
+    from observer_node.loop.evidence import held_verdict
+
+    before, after = _cv([5.3, -4.1, 4.3, 0.2, 5.6, 3.9])
+    joint = judge(before, after, SETUPS, ["C"], 1.0)
+    assert not joint.accepted
+    inside = {"T4": "C", "T5": "C"}
+    held = judge({"T4": 90.0, "T5": 90.0}, {"T4": 94.9, "T5": 95.1}, inside, ["C"], 1.0)
+    ev = held_verdict(joint, held)
+    assert ev.accepted and ev.held and ev.reason == ""
+    assert ev.test_gain_points == {"T4": pytest.approx(4.9), "T5": pytest.approx(5.1)}
+    assert ev.setup_gain_points == joint.setup_gain_points  # refitted whole
+    assert ev.as_dict()["held"] is True and "held" not in joint.as_dict()
+    assert "the rest of the model held" in ev.confidence
+    assert type(ev).from_dict(ev.as_dict()).held
+
+
+def test_held_nothing_is_named_that_lowers_a_setup_or_gains_too_little_on_its_tests():
+    from observer_node.loop.evidence import held_verdict
+
+    inside = {"T4": "C", "T5": "C"}
+    held = judge({"T4": 90.0, "T5": 90.0}, {"T4": 94.9, "T5": 95.1}, inside, ["C"], 1.0)
+    lowers = judge(*_cv([-1.0, -0.8, 0.1, 0.0, 5.0, 4.8]), SETUPS, ["C"], 1.0)
+    ev = held_verdict(lowers, held)
+    assert not ev.accepted and "lowers setup A" in ev.reason and "rest held" in ev.reason
+    small = judge({"T4": 90.0, "T5": 90.0}, {"T4": 90.5, "T5": 90.6}, inside, ["C"], 1.0)
+    joint = judge(*_cv([5.3, -4.1, 4.3, 0.2, 0.6, 0.4]), SETUPS, ["C"], 1.0)
+    ev = held_verdict(joint, small)
+    assert not ev.accepted and not ev.held and "< 1 points" in ev.reason.split("rest held")[1]
+    assert held_verdict(joint, None) is joint
+    # what passes refitted whole on what the spared setups gain is not named (set S: a rib
+    # stiffening on a clean set's FULL rig, on R16's gains)
+    spill = judge(*_cv([2.4, 2.2, 1.6, 1.1, 0.5, 0.3]), SETUPS, ["C"], 1.0)
+    assert spill.accepted
+    ev = held_verdict(spill, small)
+    assert not ev.accepted and ev.reason.startswith("passes refitted whole, but on the tests")
+
+
+def test_a_held_fold_scores_only_the_tests_the_effect_acts_on():
+    """The held reading's fold: the model without the effect refitted on the training tests,
+    the effect's parameters alone fitted on its setups' training tests; a bag on FULL raises
+    every held-out FULL test's fit and no other test is scored."""
+    from observer_node.ident.greybox import fit_greybox
+    from observer_node.loop.refit import folds, held_fold_scores
+    from observer_node.model.effects import EFFECTS
+    from observer_node.simulator import PlantConfig, simulate_mixed
+
+    bag = PlantConfig(effects={"airbag_contact": 1.0})
+    tests = simulate_mixed({"R16": 2, "SLED": 2, "FULL": 2}, 61,
+                           {"R16": PlantConfig(), "SLED": PlantConfig(), "FULL": bag}, "E")
+    assign_setups(tests)
+    data = make_dataset(tests, 1000.0)
+    full = [n for n, s in zip(data.names, data.setups, strict=True) if s == "FULL-FRONTAL"]
+    assert len(full) == 2
+    base = dict(fit_greybox(data).params)
+    new = {"kind": "airbag_contact", "setups": ["FULL-FRONTAL"],
+           "parameters": {p.name: p.typical for p in EFFECTS["airbag_contact"].params}}
+    before, after = {}, {}
+    for train, test in folds(data):
+        b, a = held_fold_scores(base, [], new, data, train, test)
+        assert set(b) == set(a) <= set(full)
+        before |= b
+        after |= a
+    assert set(after) == set(full)
+    assert all(after[n] > before[n] + 1.0 for n in full), (before, after)
