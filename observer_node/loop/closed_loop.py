@@ -872,7 +872,8 @@ def _evidence_rounds(history: list[LoopStep]) -> list[tuple[str, list[plots.Evid
     rounds = []
     for i, step in enumerate(history):
         rows: list[plots.EvidenceRow] = [
-            (f"{t.kind} on {t.scope}", t.evidence.test_gain_points, t.evidence.gain_points,
+            (f"{t.kind} on {t.scope}" + (" (its tests, rest held)" if t.evidence.held else ""),
+             t.evidence.test_gain_points, t.evidence.gain_points,
              t.evidence.ci95_points, t.evidence.accepted) for t in step.tried[:EVIDENCE_ROWS]]
         rows += [(f"sensor: {o.upper()} static", ev.test_gain_points, ev.gain_points,
                   ev.ci95_points, ev.accepted) for o, ev in step.sensor.items()]
