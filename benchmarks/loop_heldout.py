@@ -22,8 +22,8 @@ Per case the loop runs blind at its defaults on 6 estimation + 6 validation test
 - the gap (reachable - after) and the loop's time;
 - whether the expected structure itself passes the loop's rule against the grey-box
   ("truth"): both cross-validated leave-one-test-out on the estimation tests as the loop does
-  and judged by ``evidence.judge`` at the loop's margin (one scoped effect on its own tests,
-  the rest held, as the loop judges it: ``evidence.held_verdict``):
+  and judged by ``evidence.judge`` at the loop's margin (one scoped effect refused so is read
+  again on its own tests, the rest held, as the loop does: ``evidence.held_verdict``):
   "pass", or "fail" with its mean gain and tests improved; "-" where nothing physical is
   expected. A miss whose truth fails is
   beyond any search over the library: the six estimation tests do not defend it;
@@ -181,8 +181,8 @@ def _truth_by_the_rule(case: Case, r: LoopReport, est_tests: list) -> dict | Non
     scope = effects[0].get("setups") if len(effects) == 1 else None
     ev = judge(cv[0], cv[1], setup_of, scope, r.settings.margin)
     inside = {n: s for n, s in setup_of.items() if scope is not None and s in scope}
-    if len(inside) >= 2 and set(setup_of.values()) - set(inside.values()):
-        # one scoped effect: judged as the loop judges it, on its own tests, the rest held
+    if not ev.accepted and len(inside) >= 2 and set(setup_of.values()) - set(inside.values()):
+        # one scoped effect refused so: read again on its own tests, the rest held, as the loop
         base0 = refit(dict(r.baseline.parameters), [], est).base
         before: dict[str, float] = {}
         after: dict[str, float] = {}

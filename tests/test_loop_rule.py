@@ -629,7 +629,7 @@ def test_a_model_file_note_is_a_string():
         ModelFile.from_dict(d, "m.json")
 
 
-def test_a_scoped_effect_is_judged_on_its_own_tests_the_rest_held():
+def test_a_scoped_effect_refused_refitted_whole_is_named_when_it_passes_held():
     """Set V's rib stiffening on FULL: its own tests gain alike, the spared ones' refit
     noise (+5.3, -4.1, +4.3) takes the interval below zero; held, they do not move."""
     from observer_node.loop.evidence import held_verdict
@@ -661,12 +661,10 @@ def test_held_nothing_is_named_that_lowers_a_setup_or_gains_too_little_on_its_te
     ev = held_verdict(joint, small)
     assert not ev.accepted and not ev.held and "< 1 points" in ev.reason.split("rest held")[1]
     assert held_verdict(joint, None) is joint
-    # what passes refitted whole on what the spared setups gain is not named (set S: a rib
-    # stiffening on a clean set's FULL rig, on R16's gains)
-    spill = judge(*_cv([2.4, 2.2, 1.6, 1.1, 0.5, 0.3]), SETUPS, ["C"], 1.0)
-    assert spill.accepted
-    ev = held_verdict(spill, small)
-    assert not ev.accepted and ev.reason.startswith("passes refitted whole, but on the tests")
+    # a second chance only: what passes refitted whole stands (campaign-a's airbag on half
+    # the tests passes so, and not held: the shared parameters had bent to its absence)
+    passed = judge(*_cv([1.4, 1.2, 1.6, 1.1, 1.5, 1.3]), SETUPS, ["C"], 1.0)
+    assert held_verdict(passed, small) is passed
 
 
 def test_a_held_fold_scores_only_the_tests_the_effect_acts_on():

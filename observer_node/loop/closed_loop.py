@@ -288,7 +288,7 @@ def _run(est_tests: list[CrashTest], val_tests: list[CrashTest], out: Path, rate
             cvs = _cv(runner, [(base, [*effects, t.effect()]) for t in trials], est, folds_)
             joint = [judge(cv_now, cv, test_setup, t.setups, margin)
                      for cv, t in zip(cvs, trials, strict=True)]
-            # a scoped effect: judged on its own tests, the spared ones' refit noise out
+            # a scoped effect the spared setups' refit noise hides: read on its own tests
             second = [i for i, (t, ev) in enumerate(zip(trials, joint, strict=True))
                       if _held_worth(t, ev, test_setup, margin)]
             if second:
@@ -683,8 +683,8 @@ def _look_past(runner: Runner, base: dict, effects: list[dict], data: Dataset,
                per_test: dict[int, dict[str, float]], test_setup: dict[str, str],
                margin: float) -> PastTheTie:
     """A tie between ``a`` and ``b`` looked past: the model with both cross-validated, and
-    each judged by the rule beside the other (a scoped one on its own tests, the model with
-    the other held, as in the round)."""
+    each judged by the rule beside the other (a scoped one refused so read again on its own
+    tests, the model with the other held, as in the round)."""
     cv_both = _cv(runner, [(base, [*effects, a.effect(), b.effect()])], data, folds_)[0]
     sides: list[Evidence] = []
     for x, y in ((a, b), (b, a)):
@@ -699,16 +699,15 @@ def _look_past(runner: Runner, base: dict, effects: list[dict], data: Dataset,
 
 def _held_worth(c: Candidate, ev: Evidence, test_setup: dict[str, str], margin: float
                 ) -> bool:
-    """Whether a candidate is judged on the tests it acts on, the rest held
-    (:func:`~.evidence.held_verdict`): scoped, sparing a judged setup, on two judged tests or
-    more, and passing the rule or gaining at least ``margin`` points on them refitted whole
-    (held, they gain less: the shared parameters do not help)."""
-    if c.setups is None:
+    """Whether a candidate the rule refused is read again on the tests it acts on, the rest
+    held (:func:`~.evidence.held_verdict`): scoped, sparing a judged setup, on two judged tests
+    or more, and gaining at least ``margin`` points on them refitted whole (held, they gain
+    less: the shared parameters do not help)."""
+    if c.setups is None or ev.accepted:
         return False
     judged = set(test_setup.values())
     inside = sum(s in c.setups for s in test_setup.values())
-    return (bool(judged - set(c.setups)) and inside >= 2
-            and (ev.accepted or ev.gain_in_scope_points >= margin))
+    return bool(judged - set(c.setups)) and inside >= 2 and ev.gain_in_scope_points >= margin
 
 
 def _held_fold(base: dict, effects: list[dict], new: dict, data: Dataset, train: list[int],
