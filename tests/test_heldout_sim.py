@@ -2865,9 +2865,11 @@ def test_set_u_cd_pot_loading_moves_cd_only(set_u: Path) -> None:
 
 def _no_run_aways(case_list: list, root: Path) -> None:
     """No simulation ran away (set T's capstan once paid 26 spindle turns out on one test):
-    every test of the set pays its BRS out within 3x of its rig's median over the set (and more
-    than a third of it), its true chest deflection peaks at 12-80 mm and its CR at 15-80 g,
-    no channel NaN."""
+    every test of the set pays its BRS out (in degrees of the spool: counts x 360 / counts per
+    rev, so that 48- and 128-count cases compare) within 3x of its rig's median over the set
+    (and more than a third of it), its true chest deflection peaks at 12-80 mm and its CR at
+    15-80 g, no channel NaN. A broken test whose BRS channel is the fault (set W's reversed
+    count) is left out of the pay-out only: its channel is not the spool's motion."""
     rows = []
     for c in case_list:
         truth = json.loads((root / "on" / c.name / "truth.json").read_text())
@@ -2876,9 +2878,16 @@ def _no_run_aways(case_list: list, root: Path) -> None:
             assert np.all(np.isfinite(brs)), (c.name, t["name"])
             for which in ("pulse", "cr", "cd"):
                 assert np.all(np.isfinite(_channel(root / "on" / c.name, t["name"], which)))
-            rows.append((c.name, t["name"], t["setup"], -float(brs.min()), t["peak_cd_mm"],
+            assert 12.0 < t["peak_cd_mm"] < 80.0 and 15.0 < t["peak_cr_g"] < 80.0, (c.name, t)
+            if t["name"] in c.expect_broken and any(e.key.startswith("brs_")
+                                                    for e in c.effects):
+                continue
+            rows.append((c.name, t["name"], t["setup"],
+                         -float(brs.min()) * 360.0 / c.counts_per_rev, t["peak_cd_mm"],
                          t["peak_cr_g"]))
-    assert len(rows) == 12 * len(case_list)
+    broken_brs = sum(1 for c in case_list for e in c.effects
+                     if c.expect_broken and e.key.startswith("brs_"))
+    assert len(rows) == 12 * len(case_list) - broken_brs
     median = {r: float(np.median([x[3] for x in rows if x[2] == r])) for r in cases.ALL}
     assert all(m > 10 for m in median.values()), median  # degrees paid out
     for case, name, rig, payout, cd, cr in rows:
@@ -3135,8 +3144,8 @@ def test_set_w_covers_the_general_list() -> None:
 
 def test_set_w_follows_its_draw() -> None:
     """The emphasis of set W: its designer's choices are numpy's default_rng(32000)'s
-    (``draw_w.py``; the two-effect case drawn again by default_rng(32001), its first draw having
-    no pairing left), followed as drawn: each kind's form, rigs, counts and mix; the two-effect
+    (``draw_w.py``; the draws found impossible drawn again by 32001-32007, ``REDRAWN``),
+    followed as drawn: each kind's form, rigs, counts and mix; the two-effect
     case's kinds, forms, rigs, counts and mix; the delays, their counts and mixes; the
     transducer error's output, form, counts and mix; the broken test's channel, form, test,
     counts and mix; the clean cases' mixes."""
@@ -3150,18 +3159,27 @@ def test_set_w_follows_its_draw() -> None:
         assert _pairing(c) == (want["est"], want["val"]), c.name
         assert e.key in draw_w.forms(kind) and e.setups in draw_w.scopes(kind)
     assert {lib[k] for k in draw_w.BRS_GAIN} == {"input_gain"}
-    assert list(d["rejected"]) == list(draw_w.REDRAWN) == ["two", "belt_unloading"]
-    assert list(draw_w.REDRAWN.values()) == [32001, 32002]
-    slack = d["rejected"]["belt_unloading"]  # drawn again: a switch costing above the band
-    assert (slack["form"], slack["rigs"]) not in {
-        (e.key, e.setups) for c in SET_W for e in c.effects if lib[e.key] == "belt_unloading"}
-    rejected = d["rejected"]["two"]  # drawn again: its rigs had no pairing left in A-V
-    assert rejected["est"] is None
+    # drawn again, each by the next seed, in order: a draw with no pairing left, or one whose
+    # cost could not be brought into the band (a switch, a delay); none of them is in W
+    assert [(w, s) for w, s, _ in d["rejected"]] == list(draw_w.REDRAWN) == [
+        ("two", 32001), ("belt_unloading", 32002), ("two", 32003), ("two", 32004),
+        ("two", 32005), ("brs_late", 32006), ("pulse_late", 32007)]
+    (c2,) = [c for c in SET_W if len(c.effects) == 2]
+    for what, _, first in d["rejected"]:
+        if what == "two":
+            assert first["est"] is None or first["forms"] != tuple(e.key for e in c2.effects)
+        elif what in draw_w.KINDS:
+            assert (first["form"], first["rigs"]) not in {
+                (e.key, e.setups) for c in SET_W for e in c.effects if lib[e.key] == what}
+        else:
+            assert first["delay_s"] not in {e.size for c in SET_W for e in c.effects}
+    assert [first["est"] for w, _, first in d["rejected"] if w == "two"] == [
+        None, (0, 4, 2), None, None]
     two = d["two"]
     (c,) = [c for c in SET_W if len(c.effects) == 2]
     assert tuple(lib[e.key] for e in c.effects) == two["kinds"]
     assert tuple(e.key for e in c.effects) == two["forms"]
-    assert tuple(e.setups for e in c.effects) == two["rigs"] != rejected["rigs"]
+    assert tuple(e.setups for e in c.effects) == two["rigs"]
     assert (c.counts_per_rev, _pairing(c)) == (two["counts"], (two["est"], two["val"]))
     for key in ("pulse_late", "brs_late"):
         (c,) = [c for c in SET_W if c.effects and c.effects[0].key == key]
@@ -3222,7 +3240,7 @@ def test_set_w_lab_side_is_as_drawn_and_unnamed() -> None:
 def test_set_w_physics_moves_its_rigs_only(set_w: Path, case: str) -> None:
     """Each physical case moves what its form moves on every test of its rigs and leaves the
     tests of a rig it spares untouched to the bit: the chest's and belt's forms CR and CD (the
-    pulse untouched); the BRS's off-centre encoder the BRS alone."""
+    pulse untouched); the BRS's off-centre encoder the BRS alone, by about its error in counts."""
     c = BY_NAME_W[case]
     (e,) = c.effects
     on, off = set_w / "on" / case, set_w / "off" / case
@@ -3237,7 +3255,9 @@ def test_set_w_physics_moves_its_rigs_only(set_w: Path, case: str) -> None:
         if e.key == "brs_eccentric":
             for which in ("cr", "cd"):
                 assert np.array_equal(_channel(on, name, which), _channel(off, name, which))
-            assert np.abs(_brs(on, name) - _brs(off, name)).max() >= 360.0 / c.counts_per_rev
+            # the ring's error, e sin(th + phase) rad, read in counts (the files hold counts)
+            ring = int(e.size * c.counts_per_rev / (2 * np.pi))
+            assert np.abs(_brs(on, name) - _brs(off, name)).max() >= max(ring, 1)
             continue
         for which in ("cr", "cd"):
             change = float(np.abs(_channel(on, name, which) - _channel(off, name, which)).max())
