@@ -63,7 +63,7 @@ def main(argv: list[str] | None = None) -> int:
     ap = argparse.ArgumentParser(prog="python -m benchmarks.heldout.make_sets",
                                  description=__doc__.split("\n\n")[0])
     ap.add_argument("--out", required=True, type=Path, help="folder to write the sets into")
-    ap.add_argument("--set", dest="case_set", choices=SETS, default="a",
+    ap.add_argument("--set", dest="case_set", choices=SETS, default="a", type=str.lower,
                     help="set A (cases.py, default), set B (cases_b.py), set C (cases_c.py), "
                          "set D (cases_d.py), set E (cases_e.py), set F (cases_f.py), set G "
                          "(cases_g.py), set H (cases_h.py), set I (cases_i.py), set J "
