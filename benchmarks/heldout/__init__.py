@@ -71,11 +71,16 @@
   mixes, counts, delays, the broken channel, the transducer's output), the sizes set by costs,
   a CR conditioner on too small a range (broken test) and a CR module's clock running slow (a
   transducer error on CR).
+  ``cases_w.py``: set W, the same again, on pairings no earlier case ran, by another engineer:
+  the general list with every choice drawn by a seeded generator (``draw_w.py``, set V's
+  process at 32000, the transducer error's and the broken test's forms drawn as well, among
+  every lab-side form the simulator has), the sizes set by costs, and a CD module's clock
+  running slow (``cd_clock``, a transducer form drawn into the pool beside the others).
   ``make_sets.py``: writes a set (``--no-effects``: the same tests with every effect off).
   ``costs.py``: what each case costs the thesis grey-box (project CLI).
 
     python -m benchmarks.heldout.make_sets --out /tmp/heldout
-        [--set a|b|c|d|e|f|g|h|i|j|k|l|m|n|o|p|q|r|s|t|u|v] [--case NAME ...]
+        [--set a|b|c|d|e|f|g|h|i|j|k|l|m|n|o|p|q|r|s|t|u|v|w] [--case NAME ...]
 
 Never tune the loop on these cases; report them apart from the tuned ones.
 """

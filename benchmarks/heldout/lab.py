@@ -37,7 +37,8 @@ EXACT = {"pulse_late", "brs_late", "brs_freeze", "cd_dropout", "pulse_rail", "pu
          "pulse_rate", "cd_aa_filter", "dummy_scale", "cr_crosstalk", "dummy_soak", "cd_sag",
          "brs_counts", "cr_damped", "cr_late", "cd_rc_filter", "dummy_late",
          "cd_reversed", "cd_slew", "brs_wrap", "cr_creep", "pulse_ms2", "cd_arm_ring",
-         "cr_drift", "pulse_cable_break", "cd_pot_loading", "cr_rail", "cr_clock"}
+         "cr_drift", "pulse_cable_break", "cd_pot_loading", "cr_rail", "cr_clock",
+         "cd_clock"}
 DROPOUT_S = 0.010  # how long cd_dropout's wiper stays off the track
 KNEE_SLOPE = 0.6  # cd_knee: the gain of the CD calibration's second segment
 SHIFT_AT_S = 0.011  # pulse_zero_shift: when the zero shifts (in the crash-box spike)
@@ -137,6 +138,11 @@ POT_STROKE_MM, POT_REST = 100.0, 0.1
 # common trigger: the sample the file stamps t was taken at t (1 + s), so CR's time base is
 # stretched, its events written early by a share growing with the time since the trigger
 # (5 ms at 50 ms for s = 0.1); CR's values are right; CD, pulse, BRS right
+# cd_clock: the chest pot's channel is digitised by a module of its own (a separate bridge and
+# potentiometer module in the spine box, beside CR's) on its own crystal, slow by the effect's
+# share, while it writes its samples at the stated rate from the common trigger: the sample
+# stamped t holds the sternum's deflection at t (1 + s), CD's time base stretched (its peak
+# written early by a share of its time); CD's values are right, CR, pulse and BRS right
 NOISE = {"pulse_g": 0.6, "cr_g": 0.55, "cd_mm": 0.10}  # white, before the CFC filters
 
 
@@ -462,6 +468,8 @@ def record(d: Drawn, i: int, sim: dict[str, np.ndarray], counts_per_rev: int,
         cd = slew(cd, e["cd_slew"] * 1e3 / ph.FS_HZ)  # follows no faster, either way
     if e["cd_arm_ring"]:  # the pot's arm a lightly damped mass on a spring: CD rings
         cd = damped_element(cd, e["cd_arm_ring"], CD_RING_ZETA)
+    if e["cd_clock"]:  # the CD module's own clock slow: its time base stretched from trigger
+        cd = clock(cd, e["cd_clock"])
     cd = cd + NOISE["cd_mm"] * rng.standard_normal(t.size)
     if e["cd_stuck_bit"]:  # one data line of the digitiser stuck at 1: the recorded channel
         raw = -cd  # (J211 sign) reads one bit's weight high wherever that bit should be 0

@@ -3,7 +3,7 @@ DIR/<case>/truth.json (the case, the expected verdict, the true parameters of ev
 Deterministic from each case's seed.
 
     python -m benchmarks.heldout.make_sets --out DIR
-        [--set a|b|c|d|e|f|g|h|i|j|k|l|m|n|o|p|q|r|s|t|u|v] [--case NAME ...] [--no-effects]
+        [--set a|b|c|d|e|f|g|h|i|j|k|l|m|n|o|p|q|r|s|t|u|v|w] [--case NAME ...] [--no-effects]
 """
 
 from __future__ import annotations
@@ -63,15 +63,16 @@ def main(argv: list[str] | None = None) -> int:
     ap = argparse.ArgumentParser(prog="python -m benchmarks.heldout.make_sets",
                                  description=__doc__.split("\n\n")[0])
     ap.add_argument("--out", required=True, type=Path, help="folder to write the sets into")
-    ap.add_argument("--set", dest="case_set", choices=SETS, default="a",
+    ap.add_argument("--set", dest="case_set", choices=SETS, default="a", type=str.lower,
                     help="set A (cases.py, default), set B (cases_b.py), set C (cases_c.py), "
                          "set D (cases_d.py), set E (cases_e.py), set F (cases_f.py), set G "
                          "(cases_g.py), set H (cases_h.py), set I (cases_i.py), set J "
                          "(cases_j.py), set K (cases_k.py), set L (cases_l.py), set M "
                          "(cases_m.py), set N (cases_n.py), set O (cases_o.py), set P "
                          "(cases_p.py), set Q (cases_q.py), set R (cases_r.py), set S "
-                         "(cases_s.py), set T (cases_t.py), set U (cases_u.py) or set V "
-                         "(cases_v.py, held out from the loop's engineers)")
+                         "(cases_s.py), set T (cases_t.py), set U (cases_u.py), set V "
+                         "(cases_v.py) or set W (cases_w.py, held out from the loop's "
+                         "engineers)")
     ap.add_argument("--case", action="append", metavar="NAME",
                     help="only this case of the set (repeatable); default all, in set A: "
                          + ", ".join(c.name for c in CASES))

@@ -148,6 +148,8 @@ EFFECTS = {
     # set V's forms (cases_v.py): two lab-side, its physics any set's forms, drawn (draw_v.py)
     "cr_rail": "",  # broken test: CR conditioner's range too small, clips at this (g)
     "cr_clock": "",  # transducer: CR's module clock slow by this share, its time base stretched
+    # set W's form (cases_w.py): one lab-side, drawn into its pools beside every earlier set's
+    "cd_clock": "",  # transducer: CD's module clock slow by this share, its time base stretched
 }
 POW_B_M = (0.015, 0.025)  # webbing_power: reference stretch, chest side and up to the retractor
 V_HYST = 0.02  # m/s: webbing_hysteresis switches between its paths within this rate

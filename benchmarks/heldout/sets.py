@@ -15,7 +15,8 @@ the same way), set Q (``cases_q``, written after sets O and P, the same way), se
 (``cases_r``, written after set Q, the same way), set S (``cases_s``, written after set R by
 another engineer, the same way), set T (``cases_t``, written after set S by another engineer,
 the same way), set U (``cases_u``, written after set T by another engineer, the same way), set
-V (``cases_v``, written after set U by another engineer, its choices drawn, the same way)."""
+V (``cases_v``, written after set U by another engineer, its choices drawn, the same way), set W
+(``cases_w``, written after set V by another engineer, its choices drawn, the same way)."""
 
 from __future__ import annotations
 
@@ -41,9 +42,10 @@ from .cases_s import SET_S
 from .cases_t import SET_T
 from .cases_u import SET_U
 from .cases_v import SET_V
+from .cases_w import SET_W
 
 SETS = ("a", "b", "c", "d", "e", "f", "g", "h", "i", "j", "k", "l", "m", "n", "o", "p", "q",
-        "r", "s", "t", "u", "v")
+        "r", "s", "t", "u", "v", "w")
 
 
 def case_set(name: str) -> list[Case]:
@@ -51,7 +53,7 @@ def case_set(name: str) -> list[Case]:
     F (``cases_f``), G (``cases_g``), H (``cases_h``), I (``cases_i``), J (``cases_j``), K
     (``cases_k``), L (``cases_l``), M (``cases_m``), N (``cases_n``), O (``cases_o``), P
     (``cases_p``), Q (``cases_q``), R (``cases_r``), S (``cases_s``), T (``cases_t``), U
-    (``cases_u``) or V (``cases_v``); ValueError for another name."""
+    (``cases_u``), V (``cases_v``) or W (``cases_w``); ValueError for another name."""
     if name == "a":
         return list(CASES)
     if name == "b":
@@ -96,6 +98,8 @@ def case_set(name: str) -> list[Case]:
         return list(SET_U)
     if name == "v":
         return list(SET_V)
+    if name == "w":
+        return list(SET_W)
     raise ValueError(f"unknown case set {name!r}; known: {', '.join(SETS)}")
 
 
