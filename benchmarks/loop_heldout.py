@@ -22,10 +22,8 @@ Per case the loop runs blind at its defaults on 6 estimation + 6 validation test
 - the gap (reachable - after) and the loop's time;
 - whether the expected structure itself passes the loop's rule against the grey-box
   ("truth"): both cross-validated leave-one-test-out on the estimation tests as the loop does
-  and judged by ``evidence.judge`` at the loop's margin (one scoped effect refused so is read
-  again on its own tests, the rest held, as the loop does: ``evidence.held_verdict``):
-  "pass", or "fail" with its mean gain and tests improved; "-" where nothing physical is
-  expected. A miss whose truth fails is
+  and judged by ``evidence.judge`` at the loop's margin ("pass", or "fail" with its mean gain
+  and tests improved; "-" where nothing physical is expected). A miss whose truth fails is
   beyond any search over the library: the six estimation tests do not defend it;
 - at the end: how many cases are right, and how many named effects are there and not there,
   and how many refused or tied effects are there and not there.
@@ -52,8 +50,8 @@ from benchmarks.heldout.sets import SETS, select
 from observer_node.data import load_tests
 from observer_node.ident.dataset import make_dataset
 from observer_node.loop.closed_loop import run_loop
-from observer_node.loop.evidence import held_verdict, judge
-from observer_node.loop.refit import fold_scores, folds, held_fold_scores, refit, score
+from observer_node.loop.evidence import judge
+from observer_node.loop.refit import fold_scores, folds, refit, score
 from observer_node.loop.report import LoopReport
 from observer_node.model.effects import EFFECTS
 
@@ -178,21 +176,7 @@ def _truth_by_the_rule(case: Case, r: LoopReport, est_tests: list) -> dict | Non
             fit = refit(base, eff, est, max_nfev=150 if eff else 60)
             cv.append({n: v for tr, te in folds(est)
                        for n, v in fold_scores(fit.base, fit.effects, est, tr, te).items()})
-    scope = effects[0].get("setups") if len(effects) == 1 else None
-    ev = judge(cv[0], cv[1], setup_of, scope, r.settings.margin)
-    inside = {n: s for n, s in setup_of.items() if scope is not None and s in scope}
-    if not ev.accepted and len(inside) >= 2 and set(setup_of.values()) - set(inside.values()):
-        # one scoped effect refused so: read again on its own tests, the rest held, as the loop
-        base0 = refit(dict(r.baseline.parameters), [], est).base
-        before: dict[str, float] = {}
-        after: dict[str, float] = {}
-        with np.errstate(all="ignore"):
-            for tr, te in folds(est):
-                b, a = held_fold_scores(base0, [], effects[0], est, tr, te)
-                before |= b
-                after |= a
-        ev = held_verdict(ev, judge(before, after, {n: inside[n] for n in before if n in inside},
-                                    scope, r.settings.margin))
+    ev = judge(cv[0], cv[1], setup_of, None, r.settings.margin)
     return {"passes": ev.accepted, "gain": ev.gain_points, "improved": ev.tests_improved,
             "tests": ev.tests, "reason": ev.reason}
 

@@ -18,8 +18,6 @@ def add_subparser(subparsers: argparse._SubParsersAction[argparse.ArgumentParser
         "refit, and name it only if it beats test-to-test scatter: each estimation test's "
         "cross-validated fit with and without it, paired, must gain --margin points on average "
         "with a 95 % interval above zero (or a sign test, p <= 0.0625), and no setup may lose; "
-        "an effect on some setups only that fails is read again on their tests, the rest of the "
-        "model held; "
         "repeat; report fits before and after on the validation tests. Tests that look broken "
         "(missing, frozen, saturated or spiking channels, a fit far below the others') are "
         "named and left out; a one-output static error is reported as a sensor effect; what "

@@ -67,20 +67,10 @@ from .evidence import (
     SIGN_P,
     Evidence,
     PastTheTie,
-    held_verdict,
     judge,
-    tie_named,
+    past_the_tie,
 )
-from .refit import (
-    MAX_FOLDS,
-    fold_scores,
-    fold_scores_by_output,
-    folds,
-    held_fold_scores,
-    model,
-    refit,
-    score,
-)
+from .refit import MAX_FOLDS, fold_scores, fold_scores_by_output, folds, model, refit, score
 from .report import (
     AcceptedEffect,
     EffectEvidence,
@@ -286,21 +276,8 @@ def _run(est_tests: list[CrashTest], val_tests: list[CrashTest], out: Path, rate
             prog.update(f"cross-validating {len(trials)} candidate(s): "
                         + ", ".join(f"{t.kind} on {scope_label(t.setups)}" for t in trials))
             cvs = _cv(runner, [(base, [*effects, t.effect()]) for t in trials], est, folds_)
-            joint = [judge(cv_now, cv, test_setup, t.setups, margin)
-                     for cv, t in zip(cvs, trials, strict=True)]
-            # a scoped effect the spared setups' refit noise hides: read on its own tests
-            second = [i for i, (t, ev) in enumerate(zip(trials, joint, strict=True))
-                      if _held_worth(t, ev, test_setup, margin)]
-            if second:
-                prog.update("reading " + ", ".join(
-                    f"{trials[i].kind} on {scope_label(trials[i].setups)}" for i in second)
-                    + " on the tests each acts on, the rest held")
-                held = _held(runner, base, effects, est, folds_,
-                             [trials[i] for i in second], test_setup, margin)
-                for i, h in zip(second, held, strict=True):
-                    joint[i] = held_verdict(joint[i], h)
-            for cv, t, ev in zip(cvs, trials, joint, strict=True):
-                tried.append((_mean(cv), t, ev))
+            for cv, t in zip(cvs, trials, strict=True):
+                tried.append((_mean(cv), t, judge(cv_now, cv, test_setup, t.setups, margin)))
                 per_test[id(t)] = cv
             if any(ev.accepted for _, _, ev in tried):
                 break
@@ -683,55 +660,10 @@ def _look_past(runner: Runner, base: dict, effects: list[dict], data: Dataset,
                per_test: dict[int, dict[str, float]], test_setup: dict[str, str],
                margin: float) -> PastTheTie:
     """A tie between ``a`` and ``b`` looked past: the model with both cross-validated, and
-    each judged by the rule beside the other (a scoped one refused so read again on its own
-    tests, the model with the other held, as in the round)."""
+    each judged by the rule beside the other."""
     cv_both = _cv(runner, [(base, [*effects, a.effect(), b.effect()])], data, folds_)[0]
-    sides: list[Evidence] = []
-    for x, y in ((a, b), (b, a)):
-        ev = judge(per_test[id(y)], cv_both, test_setup, x.setups, margin)
-        if _held_worth(x, ev, test_setup, margin):
-            b_y, e_y = runner.map(_all_tests, [(base, [*effects, y.effect()], data)])[0]
-            ev = held_verdict(ev, _held(runner, b_y, e_y, data, folds_, [x], test_setup,
-                                        margin)[0])
-        sides.append(ev)
-    return tie_named(sides[0], sides[1], a.setups, b.setups)
-
-
-def _held_worth(c: Candidate, ev: Evidence, test_setup: dict[str, str], margin: float
-                ) -> bool:
-    """Whether a candidate the rule refused is read again on the tests it acts on, the rest
-    held (:func:`~.evidence.held_verdict`): scoped, sparing a judged setup, on two judged tests
-    or more, and gaining at least ``margin`` points on them refitted whole (held, they gain
-    less: the shared parameters do not help)."""
-    if c.setups is None or ev.accepted:
-        return False
-    judged = set(test_setup.values())
-    inside = sum(s in c.setups for s in test_setup.values())
-    return bool(judged - set(c.setups)) and inside >= 2 and ev.gain_in_scope_points >= margin
-
-
-def _held_fold(base: dict, effects: list[dict], new: dict, data: Dataset, train: list[int],
-               test: list[int]) -> tuple[dict[str, float], dict[str, float]]:
-    with np.errstate(all="ignore"):
-        return held_fold_scores(base, effects, new, data, train, test)
-
-
-def _held(runner: Runner, base: dict, effects: list[dict], data: Dataset,
-          folds_: list[tuple[list[int], list[int]]], cands: list[Candidate],
-          test_setup: dict[str, str], margin: float) -> list[Evidence | None]:
-    """Each scoped candidate judged by the rule on the judged tests of its setups alone, the
-    model (``base``, ``effects``, fitted on all tests) refitted without it in each fold and
-    held while its own parameters are fitted: every fold of every candidate a task."""
-    res = runner.map(_held_fold, [(base, effects, c.effect(), data, tr, te)
-                                  for c in cands for tr, te in folds_])
-    k, out = len(folds_), []
-    for i, c in enumerate(cands):
-        before = {n: v for r in res[i * k:(i + 1) * k] for n, v in r[0].items()}
-        after = {n: v for r in res[i * k:(i + 1) * k] for n, v in r[1].items()}
-        inside = {n: s for n, s in test_setup.items() if n in before}
-        out.append(judge(before, after, inside, c.setups, margin) if len(inside) >= 2
-                   else None)
-    return out
+    return past_the_tie(per_test[id(a)], per_test[id(b)], cv_both, test_setup, a.setups,
+                        b.setups, margin)
 
 
 def _sensor_candidates(runner: Runner, base: dict, effects: list[dict], data: Dataset,
@@ -871,8 +803,7 @@ def _evidence_rounds(history: list[LoopStep]) -> list[tuple[str, list[plots.Evid
     rounds = []
     for i, step in enumerate(history):
         rows: list[plots.EvidenceRow] = [
-            (f"{t.kind} on {t.scope}" + (" (its tests, rest held)" if t.evidence.held else ""),
-             t.evidence.test_gain_points, t.evidence.gain_points,
+            (f"{t.kind} on {t.scope}", t.evidence.test_gain_points, t.evidence.gain_points,
              t.evidence.ci95_points, t.evidence.accepted) for t in step.tried[:EVIDENCE_ROWS]]
         rows += [(f"sensor: {o.upper()} static", ev.test_gain_points, ev.gain_points,
                   ev.ci95_points, ev.accepted) for o, ev in step.sensor.items()]

@@ -20,17 +20,6 @@ All tests count, those the effect does not act on too: the model is refitted who
 scoped effect that frees the shared parameters helps (or harms) the other setups' tests as
 well. The gain on the tests it acts on is reported beside.
 
-A scoped effect that fails there is read again (:func:`held_verdict`): on the tests it acts on
-alone, the rest of the model held as fitted without it in each fold, so that only its own
-parameters move. Refitted whole, it moves the shared parameters and with them the tests of the
-setups it spares, by as much as its own (set V: a rib stiffening on FULL gained 5.6, 3.9 and
-5.7 points on FULL's tests and +5.3, -4.1, +4.3 on the others', whose interval reached below
-zero): that spill-over is refit noise, not evidence against it. Held, the spared tests do not
-move; the effect must pass the same rule on its own tests, and the model refitted whole must
-still lower no setup. A second chance only: held, an effect gains less than refitted whole
-where the shared parameters had bent to its absence (campaign-a's airbag on SLED and FULL,
-half the tests, passes refitted whole and not held), so what passes refitted whole stands.
-
 A candidate that gains something but fails the rule is **possible**: reported, never named as a
 finding.
 
@@ -40,7 +29,7 @@ wider one test by test, above the scatter (:func:`above_scatter`); otherwise the
 
 from __future__ import annotations
 
-from dataclasses import asdict, dataclass, replace
+from dataclasses import asdict, dataclass
 
 import numpy as np
 from scipy import stats
@@ -64,12 +53,9 @@ class Evidence:
     setup_gain_points: dict[str, float]  # mean paired gain per setup, over all its tests
     accepted: bool
     reason: str  # why not, when not accepted
-    held: bool = False  # judged on the tests it acts on, the rest held (held_verdict)
 
     def as_dict(self) -> dict:
         d = asdict(self)
-        if not self.held:  # absent, so reports before the held reading read the same
-            del d["held"]
         d["ci95_points"] = [round(v, 2) for v in self.ci95_points]
         for k in ("gain_points", "sign_test_p", "gain_in_scope_points"):
             d[k] = round(d[k], 3)
@@ -88,9 +74,7 @@ class Evidence:
         lo, hi = self.ci95_points
         return (f"{self.gain_points:+.1f} points (95 % CI {lo:+.1f}..{hi:+.1f}), "
                 f"{self.tests_improved}/{self.tests} tests improved (sign test p = "
-                f"{self.sign_test_p:.3f})"
-                + (" on the tests it acts on, the rest of the model held" if self.held
-                   else ""))
+                f"{self.sign_test_p:.3f})")
 
 
 def above_scatter(d: np.ndarray) -> tuple[bool, float, float, int, float]:
@@ -141,23 +125,6 @@ def judge(before: dict[str, float], after: dict[str, float], setups: dict[str, s
                     len(names), sign_p, per_setup, not reason, reason)
 
 
-def held_verdict(joint: Evidence, held: Evidence | None) -> Evidence:
-    """The rule's verdict on a scoped effect from its ``joint`` evidence (refitted whole, every
-    test) and its ``held`` one (the tests it acts on, the rest of the model held; None when not
-    read): accepted as ``joint`` says, else when ``held`` passes the rule and, refitted whole,
-    no setup falls by more than ``SETUP_TOLERANCE``. Accepted so, the evidence is the held
-    one's, with the setups' gains refitted whole; refused, the joint one's, with why the held
-    reading refused it too."""
-    if joint.accepted or held is None:
-        return joint
-    worst = min(joint.setup_gain_points.values(), default=0.0)
-    if held.accepted and worst >= -SETUP_TOLERANCE:
-        return replace(held, setup_gain_points=joint.setup_gain_points, held=True)
-    why = held.reason or (f"refitted whole, it lowers a setup's fit by {-worst:.2f} points")
-    return replace(joint, reason=f"{joint.reason}; on the tests it acts on, the rest held: "
-                                 f"{why}")
-
-
 @dataclass
 class PastTheTie:
     """Two effects that both pass the rule and cannot be told apart, each judged beside the
@@ -192,14 +159,8 @@ def past_the_tie(cv_a: dict[str, float], cv_b: dict[str, float], cv_both: dict[s
     adds; the other is judged again beside it (held-out set R: rib damping on R16 and an
     airbag on the sled tied, the damping passing beside the bag, the bag gaining 1.39 points
     beside it: neither was named)."""
-    return tie_named(judge(cv_b, cv_both, setups, scope_a, margin),
-                     judge(cv_a, cv_both, setups, scope_b, margin), scope_a, scope_b)
-
-
-def tie_named(a: Evidence, b: Evidence, scope_a: list[str] | None,
-              scope_b: list[str] | None) -> PastTheTie:
-    """What the data defend of a tie from the rule's evidence on ``a`` beside ``b`` and on
-    ``b`` beside ``a`` (:func:`past_the_tie`)."""
+    a = judge(cv_b, cv_both, setups, scope_a, margin)
+    b = judge(cv_a, cv_both, setups, scope_b, margin)
     apart = (scope_a is not None and scope_b is not None
              and not set(scope_a) & set(scope_b))
     named = ("both" if a.accepted and b.accepted

@@ -157,33 +157,6 @@ def refit_from(base: dict, effects: list[dict], data: Dataset, max_nfev: int = 6
     return Refit(b, [_copy_effect(e) for e in eff], float(2 * res.cost), base_se, eff_se)
 
 
-def refit_effect(base: dict, effects: list[dict], new: dict, data: Dataset,
-                 max_nfev: int = 40) -> dict:
-    """Least squares over ``new``'s parameters alone, the base parameters and ``effects``
-    held: what the effect adds to the model as it was fitted without it (output-error,
-    weighted as :func:`refit_from`). Returns the fitted effect."""
-    held = [_copy_effect(e) for e in effects]
-    trial = [_copy_effect(new)]
-    layout = _layout(trial)
-    if not layout:  # a parameter-free switch: nothing to fit
-        return trial[0]
-    w = weights(data)
-    y = data.y[:, data.win]
-
-    def residual(theta: np.ndarray) -> np.ndarray:
-        for slot, v in zip(layout, theta, strict=True):
-            _set(trial, slot.i, slot.name, slot.value(v))
-        with np.errstate(all="ignore"):
-            y_hat = model(base, [*held, trial[0]], data).simulate(data.pulse_g, data.brs_rad)
-        r = ((y_hat[:, data.win] - y) * w[:, None, :]).ravel()
-        return np.where(np.isfinite(r) & (np.abs(r) < 1e3), r, 1e3)
-
-    theta0 = np.array([sl.free(_get(trial, sl.i, sl.name)) for sl in layout], float)
-    res = optimize.least_squares(residual, theta0, method="trf", max_nfev=max_nfev)
-    residual(res.x)
-    return _copy_effect(trial[0])
-
-
 def _std_errors(jac: np.ndarray, fun: np.ndarray) -> np.ndarray:
     """Standard errors of the fitted variables (inf where the Jacobian says nothing)."""
     m, n = jac.shape
@@ -252,28 +225,6 @@ def fold_scores_by_output(base: dict, effects: list[dict], data: Dataset, train:
     t = score(r.base, r.effects, data.subset(test)).tests
     return {"cr": {n: _finite(v.cr) for n, v in t.items()},
             "cd": {n: _finite(v.cd) for n, v in t.items()}}
-
-
-def held_fold_scores(base: dict, effects: list[dict], new: dict, data: Dataset,
-                     train: list[int], test: list[int], max_nfev: int = FOLD_NFEV
-                     ) -> tuple[dict[str, float], dict[str, float]]:
-    """One fold of a scoped effect judged on the tests it acts on, the rest of the model
-    held: the model without it refitted on ``train`` (from ``base``/``effects``, the fit on
-    all tests), then the effect's parameters alone fitted on the training tests of its
-    setups (:func:`refit_effect`); fit_TOT [%] of each held-out test of its setups without
-    it and with it. A test of another setup would score the same twice: none is returned."""
-    scope = new["setups"]
-    r = refit_from(base, effects, data.subset(train), max_nfev)
-    inside = [i for i in test if data.setups[i] in scope]
-    fit_on = [i for i in train if data.setups[i] in scope]
-    if not inside or not fit_on:
-        return {}, {}
-    fitted = refit_effect(r.base, r.effects, new, data.subset(fit_on))
-    held_out = data.subset(inside)
-    before = score(r.base, r.effects, held_out).tests
-    after = score(r.base, [*r.effects, fitted], held_out).tests
-    return ({n: _finite(v.total) for n, v in before.items()},
-            {n: _finite(v.total) for n, v in after.items()})
 
 
 def _finite(v: float) -> float:
