@@ -2919,6 +2919,25 @@ def test_set_v_is_new() -> None:
     _is_new(SET_V, BEFORE_V, 31000, 2, size=14)
 
 
+def _covers_the_general_list(case_set: list, before: list, output: str,
+                             one_physical: list[str] | tuple[str, ...],
+                             kinds: tuple[str, ...]) -> None:
+    """A drawn set's cases against the issue's list (sets V and W): see their tests."""
+    _scopes_rest_on_two(case_set)
+    clean, named = _clean_and_named(case_set)
+    _two_broken_sensor_delays(case_set, before, output)
+    assert len(clean) + len(named) + 2 == len(case_set)
+    lib = physics.EFFECTS
+    singles = [c for c in case_set if len(c.effects) == 1 and lib[c.effects[0].key]
+               and lib[c.effects[0].key] != "input_delay"]
+    assert sorted(c.name for c in singles) == sorted(one_physical)
+    assert sorted(lib[c.effects[0].key] for c in singles) == sorted(kinds)
+    for c in named:  # every named effect's rigs appear in its case; no bag on R16
+        for e in c.effects:
+            assert set(e.setups) <= set(c.est) | set(c.val), c.name
+            assert lib[e.key] != "airbag_contact" or "R16" not in e.setups
+
+
 def test_set_v_covers_the_general_list() -> None:
     """Set V as its brief asks: clean cases at 48 and 96 counts; each kind of the library a loop
     can name, as physics, once in a case of its own; two effects of different kinds on different
@@ -2927,19 +2946,7 @@ def test_set_v_covers_the_general_list() -> None:
     tests, every rig an estimation part holds held twice or more; an effect on some rigs only
     rests on two estimation and two validation tests of them beside an estimation test of a rig
     it spares."""
-    _scopes_rest_on_two(SET_V)
-    clean, named = _clean_and_named(SET_V)
-    _two_broken_sensor_delays(SET_V, BEFORE_V, "cr")
-    assert len(clean) + len(named) + 2 == len(SET_V)
-    lib = physics.EFFECTS
-    singles = [c for c in SET_V if len(c.effects) == 1 and lib[c.effects[0].key]
-               and lib[c.effects[0].key] != "input_delay"]
-    assert sorted(c.name for c in singles) == sorted(ONE_PHYSICAL_V)
-    assert sorted(lib[c.effects[0].key] for c in singles) == sorted(draw_v.KINDS)
-    for c in named:  # every named effect's rigs appear in its case; no bag on R16
-        for e in c.effects:
-            assert set(e.setups) <= set(c.est) | set(c.val), c.name
-            assert lib[e.key] != "airbag_contact" or "R16" not in e.setups
+    _covers_the_general_list(SET_V, BEFORE_V, "cr", ONE_PHYSICAL_V, draw_v.KINDS)
 
 
 def test_set_v_follows_its_draw() -> None:
@@ -3127,19 +3134,7 @@ def test_set_w_covers_the_general_list() -> None:
     tests, every rig an estimation part holds held twice or more; an effect on some rigs only
     rests on two estimation and two validation tests of them beside an estimation test of a rig
     it spares."""
-    _scopes_rest_on_two(SET_W)
-    clean, named = _clean_and_named(SET_W)
-    _two_broken_sensor_delays(SET_W, BEFORE_W, "cd")
-    assert len(clean) + len(named) + 2 == len(SET_W)
-    lib = physics.EFFECTS
-    singles = [c for c in SET_W if len(c.effects) == 1 and lib[c.effects[0].key]
-               and lib[c.effects[0].key] != "input_delay"]
-    assert sorted(c.name for c in singles) == sorted(ONE_PHYSICAL_W)
-    assert sorted(lib[c.effects[0].key] for c in singles) == sorted(draw_w.KINDS)
-    for c in named:  # every named effect's rigs appear in its case; no bag on R16
-        for e in c.effects:
-            assert set(e.setups) <= set(c.est) | set(c.val), c.name
-            assert lib[e.key] != "airbag_contact" or "R16" not in e.setups
+    _covers_the_general_list(SET_W, BEFORE_W, "cd", ONE_PHYSICAL_W, draw_w.KINDS)
 
 
 def test_set_w_follows_its_draw() -> None:
