@@ -44,63 +44,21 @@ from .cases_u import SET_U
 from .cases_v import SET_V
 from .cases_w import SET_W
 
-SETS = ("a", "b", "c", "d", "e", "f", "g", "h", "i", "j", "k", "l", "m", "n", "o", "p", "q",
-        "r", "s", "t", "u", "v", "w")
+# each set by its letter: set A is ``cases.CASES``, set X ``cases_x.SET_X``
+_BY_NAME: dict[str, list[Case]] = {
+    "a": CASES, "b": SET_B, "c": SET_C, "d": SET_D, "e": SET_E, "f": SET_F, "g": SET_G,
+    "h": SET_H, "i": SET_I, "j": SET_J, "k": SET_K, "l": SET_L, "m": SET_M, "n": SET_N,
+    "o": SET_O, "p": SET_P, "q": SET_Q, "r": SET_R, "s": SET_S, "t": SET_T, "u": SET_U,
+    "v": SET_V, "w": SET_W}
+SETS = tuple(_BY_NAME)
 
 
 def case_set(name: str) -> list[Case]:
-    """Set A (``cases``), B (``cases_b``), C (``cases_c``), D (``cases_d``), E (``cases_e``),
-    F (``cases_f``), G (``cases_g``), H (``cases_h``), I (``cases_i``), J (``cases_j``), K
-    (``cases_k``), L (``cases_l``), M (``cases_m``), N (``cases_n``), O (``cases_o``), P
-    (``cases_p``), Q (``cases_q``), R (``cases_r``), S (``cases_s``), T (``cases_t``), U
-    (``cases_u``), V (``cases_v``) or W (``cases_w``); ValueError for another name."""
-    if name == "a":
-        return list(CASES)
-    if name == "b":
-        return list(SET_B)
-    if name == "c":
-        return list(SET_C)
-    if name == "d":
-        return list(SET_D)
-    if name == "e":
-        return list(SET_E)
-    if name == "f":
-        return list(SET_F)
-    if name == "g":
-        return list(SET_G)
-    if name == "h":
-        return list(SET_H)
-    if name == "i":
-        return list(SET_I)
-    if name == "j":
-        return list(SET_J)
-    if name == "k":
-        return list(SET_K)
-    if name == "l":
-        return list(SET_L)
-    if name == "m":
-        return list(SET_M)
-    if name == "n":
-        return list(SET_N)
-    if name == "o":
-        return list(SET_O)
-    if name == "p":
-        return list(SET_P)
-    if name == "q":
-        return list(SET_Q)
-    if name == "r":
-        return list(SET_R)
-    if name == "s":
-        return list(SET_S)
-    if name == "t":
-        return list(SET_T)
-    if name == "u":
-        return list(SET_U)
-    if name == "v":
-        return list(SET_V)
-    if name == "w":
-        return list(SET_W)
-    raise ValueError(f"unknown case set {name!r}; known: {', '.join(SETS)}")
+    """Set A (``cases``), or set B ... W (``cases_b`` ... ``cases_w``) by its lower-case
+    letter; ValueError for another name."""
+    if name not in _BY_NAME:
+        raise ValueError(f"unknown case set {name!r}; known: {', '.join(SETS)}")
+    return list(_BY_NAME[name])
 
 
 def select(names: list[str] | None, case_set_name: str = "a") -> list[Case]:
