@@ -252,11 +252,11 @@ class _InProcess:
         return [f(*a) for a in args]
 
 
-def test_a_tie_names_neither_and_carries_the_better_one_for_its_fit(tmp_path, monkeypatch):
-    # The ribs harden on R16; the library also holds the same force under another name, so
-    # the two pass the rule alike and neither adds anything beside the other: a true tie.
-    # Neither is named, both are possible, and one of them is in model.json for its fit,
-    # reported as carried (report.json, report.md), not as a finding.
+@pytest.fixture
+def twin(monkeypatch):
+    """The library holds the chest's cubic stiffening twice, under two names: where the ribs
+    harden, the two pass the rule alike and neither adds anything beside the other, a true
+    tie. The refits run in this process, where the twin is registered."""
     from contextlib import contextmanager
 
     from observer_node.loop import closed_loop
@@ -267,12 +267,19 @@ def test_a_tie_names_neither_and_carries_the_better_one_for_its_fit(tmp_path, mo
         yield _InProcess()
 
     monkeypatch.setattr(closed_loop, "cluster", here)
-    twin = dataclasses.replace(EFFECTS["chest_stiffening"], kind="rib_hardening_twin")
-    with registered(twin):
-        r = _run({"chest_stiffening": 1.0}, "R16", tmp_path)
-        mf = ModelFile.load(tmp_path / "model.json")  # the note is no obstacle to the daemon
-        y = mf.observer().simulate(np.ones((1, 50)), np.zeros((1, 50)))
-    pair = {"chest_stiffening", "rib_hardening_twin"}
+    with registered(dataclasses.replace(EFFECTS["chest_stiffening"],
+                                        kind="rib_hardening_twin")):
+        yield "rib_hardening_twin"
+
+
+def test_a_tie_names_neither_and_carries_the_better_one_for_its_fit(tmp_path, twin):
+    # The ribs harden on R16: neither side of the tie is named, both are possible, and one of
+    # them is in model.json for its fit, reported as carried (report.json, report.md), not as
+    # a finding.
+    r = _run({"chest_stiffening": 1.0}, "R16", tmp_path)
+    mf = ModelFile.load(tmp_path / "model.json")  # the note is no obstacle to the daemon
+    y = mf.observer().simulate(np.ones((1, 50)), np.zeros((1, 50)))
+    pair = {"chest_stiffening", twin}
     assert r.effects == [], r.history
     assert {p.kind for p in r.possible if "cannot tell it from" in p.why_not} == pair
     assert len(r.carried) == 1 and r.carried[0].kind in pair, r.history
@@ -295,3 +302,49 @@ def test_a_tie_names_neither_and_carries_the_better_one_for_its_fit(tmp_path, mo
     assert f"## {c.kind}: in the model for its fit, not a finding" in md
     assert "No effect was named: " in md
     assert "is carried in the model for its fit" in md.split("## Fits")[1].split("##")[0]
+
+
+def test_a_tie_after_a_named_effect_is_carried_after_it(tmp_path, twin):
+    # The belt cannot push and the ribs harden, on R16: the one-sided belt is named first, then
+    # the ribs tie with their twin. model.json holds the named belt and, after it, the side
+    # carried for its fit with its note; the model's name and report.md say which is which.
+    r = _run({"belt_unloading": 1.0, "chest_stiffening": 1.0}, "R16", tmp_path)
+    assert [e.kind for e in r.effects] == ["belt_unloading"], r.history
+    assert len(r.carried) == 1 and r.carried[0].kind in {"chest_stiffening", twin}, r.history
+    c = r.carried[0]
+    assert r.history[0].decision == "accepted belt_unloading on all"
+    assert "is carried in the model for its fit, not named" in r.history[-1].decision
+    mf = ModelFile.load(tmp_path / "model.json")
+    assert [e["kind"] for e in mf.effects] == ["belt_unloading", c.kind]
+    assert "note" not in mf.effects[0] and mf.effects[1]["note"].startswith("carried for its")
+    assert mf.name == f"greybox+belt_unloading (carries {c.kind} for its fit, not a finding)"
+    # the named belt's fit, then the carried side's: the validation fit rose with it
+    assert r.final.fit.total == c.fit.total > r.effects[0].fit.total > r.baseline.fit.total
+    y = mf.observer().simulate(np.ones((1, 50)), np.zeros((1, 50)))
+    assert y.shape == (1, 50, 2) and np.isfinite(y).all()
+    md = (tmp_path / "report.md").read_text()
+    fits = md.split("## Fits")[1].split("##")[0]
+    assert "| + belt_unloading | all |" in fits
+    assert f"| + {c.kind}, carried, not named | all |" in fits
+    assert "No effect was" not in md
+    assert f"## {c.kind}: in the model for its fit, not a finding" in md
+
+
+def test_a_tie_the_validation_tests_do_not_confirm_is_not_carried(tmp_path, twin):
+    # The ribs harden in the estimation tests only (the validation tests' dummy does not):
+    # the tie is found on the estimation tests, but with either side the validation fit falls,
+    # so neither is carried: the model stays the grey-box and the report says why.
+    est = simulate_campaign("R16", 6, seed=21, prefix="EST",
+                            config=PlantConfig(effects={"chest_stiffening": 1.0}))
+    val = simulate_campaign("R16", 6, seed=22, config=PlantConfig(), prefix="VAL")
+    r = run_loop(est, val, tmp_path, verbose=False, plots=False, ratings=False)
+    assert r.effects == [] and r.carried == [], r.history
+    tied = [p for p in r.possible if "cannot tell it from" in p.why_not]
+    assert {p.kind for p in tied} == {"chest_stiffening", twin}, r.possible
+    assert not any("carried" in p.why_not for p in r.possible)
+    assert " is not carried: the validation tests " in r.history[-1].decision
+    assert ModelFile.load(tmp_path / "model.json").effects == []
+    assert r.final.fit == r.baseline.fit
+    assert "carried" not in json.loads((tmp_path / "report.json").read_text())
+    md = (tmp_path / "report.md").read_text()
+    assert "No effect was accepted" in md and "carried, not named" not in md
