@@ -269,7 +269,7 @@ def test_a_physical_effect_in_both_outputs_is_not_one_transducers_error(chest):
     """The strongest physical candidate is judged by the rule on the other output's fit alone
     before a transducer of one output is named: a rib damping the model lacks moves CR as
     well as CD, so it passes there; a CD transducer's over-reading leaves CR nothing to gain."""
-    from observer_node.loop.closed_loop import _other_output
+    from observer_node.loop.rounds import _other_output
     from observer_node.loop.refit import folds
 
     data, base, damped, bent = chest

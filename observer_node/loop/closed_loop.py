@@ -27,7 +27,6 @@ import itertools
 import json
 import textwrap
 import time
-from dataclasses import replace
 from pathlib import Path
 
 import numpy as np
@@ -38,7 +37,7 @@ from ..data.crashtest import THESIS_WINDOW_S, CrashDataError
 from ..data.setups import Setup, allowed_setups, assign_setups
 from ..ident import greybox
 from ..ident.dataset import Dataset, make_dataset
-from ..ident.metrics import Fits, FitTable
+from ..ident.metrics import Fits
 from ..ident.progress import Progress
 from ..model.chest import (
     PARAM_NAMES,
@@ -48,44 +47,29 @@ from ..model.chest import (
     discrete,
     model_matrices,
 )
-from ..model.effects import EFFECTS, describe
+from ..model.effects import EFFECTS
 from ..model.modelfile import ModelFile
 from ..scores import scores
 from .analysis import (
-    Candidate,
-    candidates,
     correlation_tests,
-    explained_share,
-    force_signature,
-    scope_label,
 )
 from .cluster import Runner, cluster
-from .diagnosis import SHAPES, Unexplained, sensor_fold_scores, unexplained, without_static
+from .diagnosis import unexplained
 from .evidence import (
-    POSSIBLE_MIN,
     SETUP_TOLERANCE,
     SIGN_P,
-    Evidence,
-    PastTheTie,
-    judge,
-    past_the_tie,
 )
-from .refit import MAX_FOLDS, fold_scores, fold_scores_by_output, folds, model, refit, score
+from .refit import MAX_FOLDS, folds, model, refit, score
 from .report import (
-    AcceptedEffect,
-    EffectEvidence,
     LeftOut,
     LoopReport,
     LoopSettings,
     LoopStep,
     ModelFit,
     NotJudged,
-    PossibleEffect,
-    RankedCandidate,
-    SensorEffect,
-    TriedCandidate,
 )
 from .report_md import markdown
+from .rounds import Context, State, cross_validate, fit3, one_round, residual
 from .screening import (
     BrokenTest,
     judged_fits,
@@ -94,23 +78,6 @@ from .screening import (
     residual_outliers,
     screen_channels,
 )
-from .verdicts import (
-    at_the_edge,
-    carry_refusal,
-    defended_scope,
-    output_lag,
-    parameter_warnings,
-    runner_up_of,
-    tie_verdict,
-    untold,
-    untold_from_sensor,
-    validation_refusal,
-)
-
-
-def _fit3(t: FitTable) -> dict[str, float]:
-    return {k: round(float(v), 2) for k, v in t.fit.as_dict().items()}
-
 
 # A rig with fewer estimation tests than this is not judged: with one test, an effect there
 # cannot be told from that test's scatter, and no fold both fits and scores the rig (set L: a
@@ -199,7 +166,7 @@ def _run(est_tests: list[CrashTest], val_tests: list[CrashTest], out: Path, rate
     # BRS read 4x: 81.7 % in-sample against the others' 86, 22.5 % left out); the only test
     # of its setup in-sample, since the model fitted without it never saw its rig.
     folds_ = folds(est)
-    cv0: dict[str, float] | None = _cv(runner, [(dict(gb.params), [])], est, folds_)[0]
+    cv0: dict[str, float] | None = cross_validate(runner, [(dict(gb.params), [])], est, folds_)[0]
     fitted = {n: v.total for n, v in score(dict(gb.params), [], est).tests.items()}
     setup_of = dict(zip(est.names, est.setups, strict=True))
     outliers = residual_outliers(*judged_fits(cv0 or {}, fitted, setup_of))
@@ -221,280 +188,26 @@ def _run(est_tests: list[CrashTest], val_tests: list[CrashTest], out: Path, rate
     test_setup = ({n: s for n, s in zip(est.names, est.setups, strict=True) if s not in thin}
                   or dict(zip(est.names, est.setups, strict=True)))
     base = dict(gb.params)
-    base_se: dict[str, float] = dict(gb.std_err)
-    effects: list[dict] = []
-    cv_now = cv0 if cv0 is not None else _cv(runner, [(base, effects)], est, folds_)[0]
+    cv_now = cv0 if cv0 is not None else cross_validate(runner, [(base, [])], est, folds_)[0]
     # A validation test is judged the same way, by the model the estimation tests made,
     # against them and the other validation tests: it never chose anything, but a broken one
     # would bend the fits the report gives and the refusal reads.
-    val_fits = {n: v.total for n, v in score(base, effects, val).tests.items()}
+    val_fits = {n: v.total for n, v in score(base, [], val).tests.items()}
     val_out = [b for b in residual_outliers({**cv_now, **val_fits}) if b.test in val_fits]
     if val_out and val.n_tests > len(val_out):
         broken += val_out
         left_out |= {b.test for b in val_out}
         val_kept = [t for t in val_kept if t.name not in left_out]
         val = make_dataset(val_kept, rate_hz, window_s)
-    baseline_val = score(base, effects, val)
-    val_before = baseline_val.fit.total
-    history: list[LoopStep] = []
-    accepted: list[AcceptedEffect] = []
-    carried: list[AcceptedEffect] = []  # in the model for its fit: one side of a tie
-    named_model: tuple[dict, list[dict]] | None = None  # the model without the carried one
-    possible: list[PossibleEffect] = []
-    sensor: SensorEffect | None = None
-    left_unexplained: list[Unexplained] = []  # what the rounds left: no effect, no transducer
-    first_ranking: list[RankedCandidate] = []
-    resid0 = _residual(base, effects, est)
+    baseline_val = score(base, [], val)
+    resid0 = residual(base, [], est)
     tests0 = correlation_tests(resid0, est)
-    carry: list[Candidate] = []
-    while len(accepted) < max_effects:
-        current = model(base, effects, est)
-        prog.update(f"residual analysis with {len(effects)} effect(s)")
-        ranked = candidates(current, est, {e["kind"] for e in effects}, scopes)
-        ranking = [RankedCandidate(c.kind, round(c.explained, 4), scope_label(c.setups),
-                                   c.scope_shares, c.parameters) for c in ranked]
-        if not first_ranking:
-            first_ranking = ranking
-        # Named effects first; the generic formula only when none of them helps.
-        named = [c for c in ranked if c.kind != "other" and c.explained > 0.01][:top_k]
-        # A parameter-free switching force (the one-sided belt) is predicted badly by its
-        # signature linearised around a trajectory that never switches: always try it.
-        named += [c for c in ranked if not c.parameters
-                  and EFFECTS[c.kind].search.method == "switch" and c not in named]
-        # the other side of a tie both of whose effects the data defend, or of one looked
-        # past on setups apart (past_the_tie)
-        named += [c for c in carry if c.kind not in {e["kind"] for e in effects}
-                  and all(n.kind != c.kind for n in named)]
-        carry = []
-        other = [c for c in ranked if c.kind == "other" and c.explained > 0.01]
-        tried: list[tuple[float, Candidate, Evidence]] = []
-        per_test: dict[int, dict[str, float]] = {}
-        for group in (named, other):
-            # the scope the residual points to, and the widest scope it could have:
-            # cross-validation chooses; each fold of each trial is a task on the cluster
-            trials = [t for c in group for t in _with_widest_scope(c, scopes[c.kind])]
-            prog.update(f"cross-validating {len(trials)} candidate(s): "
-                        + ", ".join(f"{t.kind} on {scope_label(t.setups)}" for t in trials))
-            cvs = _cv(runner, [(base, [*effects, t.effect()]) for t in trials], est, folds_)
-            for cv, t in zip(cvs, trials, strict=True):
-                tried.append((_mean(cv), t, judge(cv_now, cv, test_setup, t.setups, margin)))
-                per_test[id(t)] = cv
-            if any(ev.accepted for _, _, ev in tried):
-                break
-        tried.sort(key=lambda t: -t[0])
-        sensor_ev = _sensor_candidates(runner, base, effects, est, folds_, cv_now, test_setup,
-                                       margin)
-        step = LoopStep([e["kind"] for e in effects], _mean(cv_now), ranking,
-                        [TriedCandidate(c.kind, scope_label(c.setups), cv, ev)
-                         for cv, c, ev in tried], sensor_ev)
-        history.append(step)
-        # "possible": what the data cannot defend against the model as it now stands
-        possible = [PossibleEffect(c.kind, scope_label(c.setups), [e["kind"] for e in effects],
-                                   ev, ev.reason)
-                    for _, c, ev in tried if not ev.accepted and ev.gain_points >= POSSIBLE_MIN]
-        passing = [(cv, c, ev) for cv, c, ev in tried if ev.accepted]
-        best_sensor = max(sensor_ev.items(), key=lambda kv: kv[1].gain_points, default=None)
-        if best_sensor is not None and best_sensor[1].accepted and (
-                not passing or best_sensor[1].gain_points > passing[0][2].gain_points):
-            o, ev = best_sensor
-            # A transducer moves its own output only. If the strongest physical candidate
-            # also passes the rule on the other output's fit alone, the residual is in both:
-            # physics no library form fits, not this transducer.
-            both = _other_output(runner, base, effects, est, folds_, tried, o, test_setup,
-                                 margin)
-            if both is not None:
-                c, ev_other = both
-                o2 = _other(o)
-                step.decision = (
-                    f"a static correction of {o} gains most ({ev.gain_points:+.2f} points), "
-                    f"but {c.kind} on {scope_label(c.setups)} also gains "
-                    f"{ev_other.gain_points:+.2f} points on {o2}'s fit alone, which a "
-                    f"transducer of {o} cannot move: a physical effect in both outputs that "
-                    "no effect of the library explains: unexplained, nothing named")
-                on_o = _own_points(ev)
-                left_unexplained = [
-                    Unexplained(o, _gaining(on_o), SHAPES["both"].format(o=o.upper()), "both",
-                                _rounded(on_o), round(ev_other.gain_points, 2)),
-                    Unexplained(o2, _gaining(ev_other.setup_gain_points),
-                                SHAPES["both"].format(o=o2.upper()), "both",
-                                _rounded(ev_other.setup_gain_points),
-                                round(2.0 * ev.gain_points, 2))]
-                possible += _all_possible(
-                    passing, effects, f"a static correction of {o} gains more "
-                    f"({ev.gain_points:+.2f} points) and the residual is in both outputs: no "
-                    "library effect explains it")
-                break
-            sensor = SensorEffect(o, [e["kind"] for e in effects],
-                                  f"a static function of {o.upper()}: the {o.upper()} "
-                                  "transducer's gain or non-linearity, not the chest's physics",
-                                  ev)
-            step.decision = (f"a sensor effect on {o} explains the residual better than "
-                             "any physical effect: reported, not added to the model")
-            break
-        if best_sensor is not None and best_sensor[1].accepted and passing:
-            # Physics wins, but one output's static correction passes too: as against a
-            # physical rival, the effect is named only if it beats it test by test above the
-            # scatter; else the chest or that transducer, the data cannot tell.
-            o, ev = best_sensor
-            why = untold_from_sensor(passing[0][1], passing[0][2], o, ev)
-            if why is not None:
-                step.decision = f"{why}; nothing named"
-                possible += _all_possible(
-                    passing, effects, f"the data cannot tell it from a static correction of "
-                    f"{o} (its transducer's error), which passes the rule too")
-                on_o = _own_points(ev)
-                left_unexplained = [Unexplained(
-                    o, _gaining(on_o), SHAPES["static"].format(o=o.upper()), "static",
-                    _rounded(on_o), round(2.0 * sensor_ev[_other(o)].gain_points, 2))]
-                break
-        if not passing:
-            step.decision = ("no candidate passes the rule (mean paired gain >= "
-                             f"{margin:g} points, above the scatter, no setup "
-                             "lowered): " + "; ".join(f"{c.kind} on {scope_label(c.setups)}: "
-                                                       f"{ev.reason}" for _, c, ev in tried[:4]))
-            break
-        on_judged = {k: {n: v for n, v in cv.items() if n in test_setup}
-                     for k, cv in per_test.items()}  # scopes and rivals compared on these
-        (cv_best, best, ev_best), narrower = defended_scope(passing, on_judged, thin,
-                                                            est_setups)
-        cv_tests_best = per_test[id(best)]
-        runner_up, margin_points, other_scope = runner_up_of(
-            [(cv_best, best, ev_best), *(t for t in tried if t[1] is not best)], on_judged)
-        tie = untold(best.kind, runner_up, len(ev_best.test_gain_points))
-        tie_note: str | None = None
-        carrying = False  # a tie neither side of which is named: the better one is carried
-        if tie and runner_up is not None:
-            rival = next(t for t in tried if t[1].kind == runner_up.kind
-                         and scope_label(t[1].setups) == runner_up.scope)
-            prog.update(f"looking past a tie: {best.kind} and {rival[1].kind} together")
-            past = _look_past(runner, base, effects, est, folds_, best, rival[1], per_test,
-                              test_setup, margin)
-            tie_note = tie_verdict(best, rival[1], past)
-            if not past.named:
-                # two explanations the data defend equally are not a finding: both possible
-                kinds = [e["kind"] for e in effects]
-                possible += [
-                    PossibleEffect(best.kind, scope_label(best.setups), kinds, ev_best,
-                                   f"{tie}; {tie_note}"),
-                    PossibleEffect(runner_up.kind, runner_up.scope, kinds, rival[2],
-                                   f"the data cannot tell it from {best.kind} on "
-                                   f"{scope_label(best.setups)}, which passes the rule too; "
-                                   f"{tie_note}")]
-                step.decision = (f"{best.kind} on {scope_label(best.setups)} passes the rule, "
-                                 f"but {tie}; {tie_note}: neither is named")
-                # Neither is a finding, but either predicts CR and CD better than none: the
-                # better one is carried in the model for its fit if it passes the checks
-                # below, as a named effect must (set U: three ties left the model 2.2-4.2
-                # points short of the true structure's fit).
-                carrying = True
-            # the side not named, when it acts on other setups: judged again beside it
-            if past.apart and past.named in ("a", "b"):
-                carry.append(rival[1] if past.named == "a" else best)
-            if past.named == "b":  # the runner-up explains the winner's gain, not the reverse
-                (cv_best, best, ev_best), narrower = defended_scope(
-                    [rival, *(t for t in passing if t[1].kind == rival[1].kind
-                              and t[1] is not rival[1])], on_judged, thin, est_setups)
-                cv_tests_best = per_test[id(best)]
-                runner_up, margin_points, other_scope = runner_up_of(
-                    [(cv_best, best, ev_best), *(t for t in tried if t[1] is not best)],
-                    on_judged)
-            elif past.named == "both":  # the other is tried again in the next round
-                carry.append(rival[1])
-        prog.update(f"refitting with {best.kind} on all estimation tests")
-        fit = refit(base, [*effects, best.effect()], est, max_nfev=120)
-        # per output, in-sample: an input delay that helps one output alone is its lag
-        was, now = score(base, effects, est).fit, score(fit.base, fit.effects, est).fit
-        gains = {"cr": now.cr - was.cr, "cd": now.cd - was.cd}
-        lag = output_lag(best.kind, fit.effects[-1]["parameters"], gains["cr"], gains["cd"])
-        if lag is not None and carrying:
-            step.decision += (f"; {best.kind} is not carried: it delays both inputs alike "
-                              f"and helps {lag} alone")
-            break
-        if lag is not None:
-            ms = 1000.0 * float(np.mean([fit.effects[-1]["parameters"][n]
-                                         for n in ("n_pulse", "n_brs")])) / rate_hz
-            rest = "cd" if lag == "cr" else "cr"
-            sensor = SensorEffect(
-                lag, [e["kind"] for e in effects],
-                f"a lag of about {ms:.1f} ms on {lag.upper()} alone: both inputs delayed alike "
-                f"is the outputs' timing, and {lag.upper()} gained {gains[lag]:+.1f} points "
-                f"where {rest.upper()} gained {gains[rest]:+.1f}: the {lag.upper()} "
-                "transducer or its filter, not the inputs", ev_best)
-            step.decision = (f"input_delay on {scope_label(best.setups)} passes the rule, but "
-                             f"it delays both inputs alike and helps {lag} alone: reported as "
-                             f"a lag of the {lag} transducer, not added to the model")
-            break
-        resid_old = _residual(base, effects, est)
-        resid_new = _residual(fit.base, fit.effects, est)
-        share_before, share_after = _signature_shares(best, effects, base, fit.effects,
-                                                      fit.base, resid_old, resid_new, est)
-        ct_old, ct_new = correlation_tests(resid_old, est), correlation_tests(resid_new, est)
-        xc_before, xc_after = ct_old.rms_ratio, ct_new.rms_ratio
-        # The input cross-correlation is reported, not decisive: on simulator data it rose
-        # for true effects too (what remains is discretisation error correlated with the pulse).
-        # Less correlated than before, or no longer worth mentioning (< 2 % of the residual).
-        # Not for a parameter-free switch (the one-sided belt): its signature, linearised along
-        # a trajectory that never switches, says little (why it is always tried).
-        if best.parameters and share_after >= share_before and share_after >= 0.02:
-            why = (f"the refitted residual is not less correlated with its signature "
-                   f"({share_before:.3f} -> {share_after:.3f})")
-            step.decision = (f"{step.decision}; {best.kind} is not carried: {why}" if carrying
-                             else f"{best.kind}: {why}: not accepted")
-            break
-        val_fit = score(fit.base, fit.effects, val)
-        refused = (at_the_edge(best.kind, fit.effects[-1]["parameters"], rate_hz)
-                   or validation_refusal(val_before, val_fit.fit.total))
-        if carrying:
-            refused = refused or carry_refusal(Fits(**_fit3(score(base, effects, val))),
-                                               Fits(**_fit3(val_fit)))
-            if refused:
-                step.decision += f"; {best.kind} is not carried: {refused}"
-                break
-            named_model = (base, effects)
-        if refused:
-            possible.append(PossibleEffect(best.kind, scope_label(best.setups),
-                                           [e["kind"] for e in effects], ev_best, refused))
-            step.decision = (f"{best.kind} on {scope_label(best.setups)} passes the rule on "
-                             f"the estimation tests, but {refused}: not accepted")
-            break
-        base, effects, base_se = fit.base, fit.effects, fit.base_std_err
-        cv_now = cv_tests_best
-        params, se = effects[-1]["parameters"], fit.effect_std_err[-1]
-        entry = AcceptedEffect(
-            kind=best.kind, description=describe(best.kind, params), parameters=params,
-            std_err=se, setups=best.setups, applies_to=_applies_to(best.setups, est, val),
-            warnings=parameter_warnings(best.kind, params, se, rate_hz),
-            confidence=ev_best.confidence,
-            evidence=EffectEvidence(
-                ranking_share=round(best.explained, 4), scope_shares=best.scope_shares,
-                rule=ev_best, explained_share_before=round(share_before, 4),
-                explained_share_after=round(share_after, 4),
-                cv_fit_before=round(step.cv_fit_before, 2), cv_fit_after=round(cv_best, 2),
-                runner_up=runner_up, margin_points=margin_points, other_scope=other_scope,
-                input_xcorr_rms_ratio_before=round(xc_before, 2),
-                input_xcorr_rms_ratio_after=round(xc_after, 2),
-                input_xcorr_max_ratio_before=round(ct_old.max_ratio, 2),
-                input_xcorr_max_ratio_after=round(ct_new.max_ratio, 2), tie=tie_note),
-            fit=Fits(**_fit3(val_fit)))
-        if carrying:
-            carried.append(entry)
-            # its line among the possible says where it went
-            possible = [replace(p, why_not=f"{p.why_not}; carried in model.json for its fit, "
-                                "not named") if p.kind == best.kind
-                        and p.scope == scope_label(best.setups) else p for p in possible]
-            step.decision += (f"; {best.kind} on {scope_label(best.setups)}, the side ranked "
-                              "first, is carried in the model for its fit, not named "
-                              f"(validation fit_TOT {val_before:.1f} -> "
-                              f"{val_fit.fit.total:.1f} %)")
-            prog.update(f"carried {best.kind} for its fit, not named: validation fit "
-                        f"{val_fit.fit.total:.1f} %")
-            break
-        accepted.append(entry)
-        val_before = val_fit.fit.total
-        step.decision = f"accepted {best.kind} on {scope_label(best.setups)}" + (
-            f" (on {narrower} only it fits no better beyond the scatter)" if narrower else "")
-        prog.update(f"accepted {best.kind} on {scope_label(best.setups)}: validation fit "
-                    f"{val_fit.fit.total:.1f} %")
+    ctx = Context(runner, est, val, folds_, test_setup, thin, est_setups, scopes, margin, top_k,
+                  rate_hz, prog)
+    st = State(base, dict(gb.std_err), [], cv_now, baseline_val.fit.total)
+    while len(st.accepted) < max_effects and one_round(ctx, st):
+        pass
+    base, effects, carried = st.base, st.effects, st.carried
     final_val = score(base, effects, val)
     judged = {label: scores(val, model(b, e, val).simulate(val.pulse_g, val.brs_rad), ratings)
               for label, b, e in (("baseline", gb.params, []), ("final", base, effects))}
@@ -508,30 +221,30 @@ def _run(est_tests: list[CrashTest], val_tests: list[CrashTest], out: Path, rate
     mf.save(out / "model.json")
     # the thesis grey-box on the same tests, for a side-by-side run (observer-node bench)
     _model_file(dict(gb.params), [], est, rate_hz, gb, setups).save(out / "baseline-model.json")
-    resid_final = _residual(base, effects, est)
+    resid_final = residual(base, effects, est)
     # What no named effect explains is read without the carried one: it may be a mimic
     # of a form the library lacks, and in the model it would hide that form's trace.
-    named_base, named_effects = named_model or (base, effects)
+    named_base, named_effects = st.named_model or (base, effects)
     y_named = model(named_base, named_effects, est).simulate(est.pulse_g, est.brs_rad)
     iso = {k: v.iso18571 for k, v in judged.items() if v.iso18571 is not None}
     report = LoopReport(
-        baseline=ModelFit(Fits(**_fit3(baseline_val)), gb.params, gb.std_err),
-        effects=accepted,
+        baseline=ModelFit(Fits(**fit3(baseline_val)), gb.params, gb.std_err),
+        effects=st.accepted,
         # by the gain as reported (rounded to 0.001 points): ties keep the order tried
-        possible=sorted(possible, key=lambda p: -round(p.evidence.gain_points, 3)),
-        sensor_effects=[sensor] if sensor else [],
-        unexplained=left_unexplained or ([] if sensor else unexplained(est, y_named)),
+        possible=sorted(st.possible, key=lambda p: -round(p.evidence.gain_points, 3)),
+        sensor_effects=[st.sensor] if st.sensor else [],
+        unexplained=st.left_unexplained or ([] if st.sensor else unexplained(est, y_named)),
         warnings=broken,
         left_out=_with_and_without(broken, base, effects, est_tests, val_tests, est_kept,
                                    val, rate_hz, window_s),
-        final=ModelFit(Fits(**_fit3(final_val)), base, base_se),
+        final=ModelFit(Fits(**fit3(final_val)), base, st.base_se),
         setups=setups, not_judged=not_judged,
         model="model.json", baseline_model="baseline-model.json",
         software_version=__version__,
         estimation=est.names, validation=val.names,
         residual_tests={"baseline": tests0, "final": correlation_tests(resid_final, est)},
-        first_ranking=first_ranking,
-        history=history,
+        first_ranking=st.first_ranking,
+        history=st.history,
         settings=LoopSettings(
             rate_hz=rate_hz, window_s=window_s, margin=margin, top_k=top_k,
             groups=[f"{n}={p}" for n, p in groups or []], allow_anywhere=anywhere,
@@ -552,128 +265,11 @@ def _run(est_tests: list[CrashTest], val_tests: list[CrashTest], out: Path, rate
     (out / "report.json").write_text(json.dumps(as_json, indent=1, default=float) + "\n")
     if plots:
         _plots(out, base, effects, gb.params, val, broken, [*est_tests, *val_tests])
-        _evidence_plot(out, history, est, margin)
+        _evidence_plot(out, st.history, est, margin)
     (out / "report.md").write_text(markdown(report))
-    prog.done(f"{len(accepted)} effect(s) accepted; validation fit "
+    prog.done(f"{len(st.accepted)} effect(s) accepted; validation fit "
               f"{baseline_val.fit.total:.1f} -> {final_val.fit.total:.1f} %")
     return report
-
-
-def _mean(per_test: dict[str, float]) -> float:
-    return float(np.mean(list(per_test.values())))
-
-
-def _all_tests(base: dict, effects: list[dict], data: Dataset) -> tuple[dict, list[dict]]:
-    """A trial fitted on all estimation tests, where each of its folds starts: a task."""
-    with np.errstate(all="ignore"):
-        r = refit(base, effects, data)
-    return r.base, r.effects
-
-
-def _fold(base: dict, effects: list[dict], data: Dataset, train: list[int],
-          test: list[int]) -> dict[str, float]:
-    """One fold of one model: a task on the cluster (quiet about overflowing trials)."""
-    with np.errstate(all="ignore"):
-        return fold_scores(base, effects, data, train, test)
-
-
-def _sensor_fold(base: dict, effects: list[dict], data: Dataset, train: list[int],
-                 test: list[int]) -> dict[str, dict[str, float]]:
-    with np.errstate(all="ignore"):
-        return sensor_fold_scores(base, effects, data, train, test)
-
-
-def _fold_by_output(base: dict, effects: list[dict], data: Dataset, train: list[int],
-                    test: list[int]) -> dict[str, dict[str, float]]:
-    with np.errstate(all="ignore"):
-        return fold_scores_by_output(base, effects, data, train, test)
-
-
-def _other_output(runner: Runner, base: dict, effects: list[dict], data: Dataset,
-                  folds_: list[tuple[list[int], list[int]]],
-                  tried: list[tuple[float, Candidate, Evidence]], o: str,
-                  test_setup: dict[str, str], margin: float
-                  ) -> tuple[Candidate, Evidence] | None:
-    """The strongest physical candidate (the first of ``tried``) judged by the rule on the fit
-    of the output other than ``o`` alone, against the model as it stands, both refitted on
-    the tests with ``o``'s static correction taken out; it and that evidence when it passes
-    there, else None. Taken out, because a transducer's error bends the fit of the parameters
-    both outputs share, and any effect that frees them then gains on the other output too."""
-    if not tried:
-        return None
-    c = tried[0][1]
-    o2 = _other(o)
-    with np.errstate(all="ignore"):
-        data = without_static(data, model(base, effects, data).simulate(data.pulse_g,
-                                                                         data.brs_rad), o)
-    starts = runner.map(_all_tests, [(base, effects, data), (base, [*effects, c.effect()], data)])
-    res = runner.map(_fold_by_output, [(b, e, data, tr, te) for b, e in starts
-                                       for tr, te in folds_])
-    k = len(folds_)
-    now, with_c = ({n: v for r in res[i * k:(i + 1) * k] for n, v in r[o2].items()}
-                   for i in range(2))
-    ev = judge(now, with_c, test_setup, c.setups, margin)
-    return (c, ev) if ev.accepted else None
-
-
-def _other(o: str) -> str:
-    return "cd" if o == "cr" else "cr"
-
-
-def _all_possible(passing: list[tuple[float, Candidate, Evidence]], effects: list[dict],
-                  why: str) -> list[PossibleEffect]:
-    """Every passing candidate, listed as possible for the same reason."""
-    kinds = [e["kind"] for e in effects]
-    return [PossibleEffect(c.kind, scope_label(c.setups), kinds, ev, why)
-            for _, c, ev in passing]
-
-
-def _own_points(sensor: Evidence) -> dict[str, float]:
-    """A sensor candidate's gain per setup in its output's own fit points: its folds score
-    fit_TOT, the mean of the corrected output and the other, which the correction leaves as
-    is."""
-    return {s: 2.0 * v for s, v in sensor.setup_gain_points.items()}
-
-
-def _gaining(per_setup: dict[str, float]) -> list[str]:
-    """The setups where a gain is positive (all of them when none is)."""
-    return [s for s, v in per_setup.items() if v > 0] or list(per_setup)
-
-
-def _rounded(per_setup: dict[str, float]) -> dict[str, float]:
-    return {s: round(v, 2) for s, v in per_setup.items()}
-
-
-def _cv(runner: Runner, models: list[tuple[dict, list[dict]]], data: Dataset,
-        folds_: list[tuple[list[int], list[int]]]) -> list[dict[str, float]]:
-    """Per-test cross-validated fit_TOT [%] of each (base, effects): each fitted on all tests,
-    then refitted from there without each fold's held-out tests; every fit a task."""
-    starts = runner.map(_all_tests, [(b, e, data) for b, e in models])
-    res = runner.map(_fold, [(b, e, data, tr, te) for b, e in starts for tr, te in folds_])
-    k = len(folds_)
-    return [{n: v for r in res[i * k:(i + 1) * k] for n, v in r.items()}
-            for i in range(len(models))]
-
-
-def _look_past(runner: Runner, base: dict, effects: list[dict], data: Dataset,
-               folds_: list[tuple[list[int], list[int]]], a: Candidate, b: Candidate,
-               per_test: dict[int, dict[str, float]], test_setup: dict[str, str],
-               margin: float) -> PastTheTie:
-    """A tie between ``a`` and ``b`` looked past: the model with both cross-validated, and
-    each judged by the rule beside the other."""
-    cv_both = _cv(runner, [(base, [*effects, a.effect(), b.effect()])], data, folds_)[0]
-    return past_the_tie(per_test[id(a)], per_test[id(b)], cv_both, test_setup, a.setups,
-                        b.setups, margin)
-
-
-def _sensor_candidates(runner: Runner, base: dict, effects: list[dict], data: Dataset,
-                       folds_: list[tuple[list[int], list[int]]], cv_now: dict[str, float],
-                       test_setup: dict[str, str], margin: float) -> dict[str, Evidence]:
-    """The sensor family: a static correction of one output, judged by the same rule."""
-    res = runner.map(_sensor_fold, [(base, effects, data, tr, te) for tr, te in folds_])
-    return {o: judge(cv_now, {n: v for r in res for n, v in r[o].items()}, test_setup, None,
-                     margin)
-            for o in res[0]}
 
 
 def _with_and_without(broken: list[BrokenTest], base: dict, effects: list[dict],
@@ -694,7 +290,7 @@ def _with_and_without(broken: list[BrokenTest], base: dict, effects: list[dict],
             est_all = make_dataset([*est_kept, *back_est], rate_hz, window_s)
             with np.errstate(all="ignore"):
                 r = refit(base, effects, est_all, max_nfev=60)
-            fitted_with = Fits(**_fit3(score(r.base, r.effects, val)))
+            fitted_with = Fits(**fit3(score(r.base, r.effects, val)))
         except (CrashDataError, ValueError) as e:  # missing samples: not fittable at all
             fitted_with = f"cannot be fitted: {e}"
     back_val = [t for t in val_tests if t.name in names]
@@ -702,58 +298,11 @@ def _with_and_without(broken: list[BrokenTest], base: dict, effects: list[dict],
         try:
             val_all = make_dataset([*[t for t in val_tests if t.name not in names],
                                     *back_val], rate_hz, window_s)
-            scored_with = Fits(**_fit3(score(base, effects, val_all)))
+            scored_with = Fits(**fit3(score(base, effects, val_all)))
         except (CrashDataError, ValueError) as e:
             scored_with = f"cannot be scored: {e}"
-    return LeftOut(sorted(names), Fits(**_fit3(score(base, effects, val))), fitted_with,
+    return LeftOut(sorted(names), Fits(**fit3(score(base, effects, val))), fitted_with,
                    scored_with)
-
-
-def _with_widest_scope(c: Candidate, options: list[list[str] | None]) -> list[Candidate]:
-    """``c`` on the scope the residual chose, and on the widest scope it is allowed."""
-    widest = options[0] if None in options else max(options, key=lambda o: len(o or []))
-    if c.setups == widest or (c.setups is not None and widest is not None
-                              and sorted(c.setups) == sorted(widest)):
-        return [c]
-    return [c, Candidate(c.kind, c.explained, c.parameters, None, widest, c.scope_shares)]
-
-
-def _applies_to(scope: list[str] | None, est: Dataset, val: Dataset) -> list[str] | None:
-    """The estimation and validation tests a scoped effect acts on (None: every test)."""
-    if scope is None:
-        return None
-    return [n for d in (est, val) for n, s in zip(d.names, d.setups, strict=True) if s in scope]
-
-
-def _residual(base: dict, effects: list[dict], data: Dataset) -> np.ndarray:
-    y_hat = model(base, effects, data).simulate(data.pulse_g, data.brs_rad)
-    return (data.y - y_hat)[:, data.win]
-
-
-def _signature_shares(c: Candidate, effects: list[dict], base: dict[str, float],
-                      new_effects: list[dict], new_base: dict[str, float],
-                      resid_old: np.ndarray, resid_new: np.ndarray,
-                      data: Dataset) -> tuple[float, float]:
-    """How much of the residual the candidate's signature explains before and after the
-    refit, each along its own model's trajectory (would more of the effect still help?).
-    Effects that are not forces (delay, offset) are judged by the input correlation alone."""
-    effect = EFFECTS[c.kind]
-    if effect.force is None or effect.search.method == "sparse":
-        return 1.0, 0.0
-    params = new_effects[-1]["parameters"]
-    if effect.acts == "belt_slack":
-        params = {}
-    elif not any(params.values()):
-        return 1.0, 0.0
-    old = model(base, effects, data)
-    new = model(new_base, new_effects[:-1], data)
-    mask = (np.ones(data.n_tests) if c.setups is None else
-            np.array([s in c.setups for s in data.setups], float))[:, None, None]
-    before = explained_share(resid_old, mask * force_signature(old, data, c.kind, params),
-                             data)
-    after = explained_share(resid_new, mask * force_signature(new, data, c.kind, params),
-                            data)
-    return before, after
 
 
 def model_name(effects: list[dict]) -> str:
