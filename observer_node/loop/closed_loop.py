@@ -28,6 +28,7 @@ import json
 import textwrap
 import time
 from pathlib import Path
+from typing import NamedTuple
 
 import numpy as np
 
@@ -118,6 +119,72 @@ def scope_options(kind: str, setups: list[Setup], est_setups: list[str],
     return out
 
 
+
+class _Screened(NamedTuple):
+    """The tests the loop fits and scores, once the broken ones are left out."""
+
+    est: Dataset
+    val: Dataset
+    gb: greybox.GreyBoxFit  # the thesis grey-box on ``est``
+    broken: list[BrokenTest]  # what was left out, and why
+    est_kept: list[CrashTest]
+    folds: list[tuple[list[int], list[int]]]
+    cv_now: dict[str, float]  # the grey-box's cross-validated fit_TOT [%] per test
+
+
+def _screened(est_tests: list[CrashTest], val_tests: list[CrashTest], rate_hz: float,
+              window_s: tuple[float, float], runner: Runner, prog: Progress) -> _Screened:
+    """Broken channels left out, then tests the thesis grey-box fits far worse than the
+    others (:mod:`.screening`); the grey-box identified on what is left."""
+    # Broken channels are found on the recorded data, before anything is fitted on them.
+    broken = [b for t in (*est_tests, *val_tests) for b in screen_channels(t, window_s[1])]
+    flagged = {b.test for b in broken}
+    for check in (polarity_outliers, payout_outliers):
+        broken += [b for b in check([*est_tests, *val_tests], window_s[1])
+                   if b.test not in flagged]
+        flagged = {b.test for b in broken}
+    left_out = flagged
+    est_kept = [t for t in est_tests if t.name not in left_out]
+    val_kept = [t for t in val_tests if t.name not in left_out]
+    if len(est_kept) < 2 or not val_kept:
+        raise CrashDataError("too few tests left after leaving out broken ones: "
+                             + "; ".join(f"{b.test} {b.channel}: {b.reason}" for b in broken))
+    est = make_dataset(est_kept, rate_hz, window_s)
+    val = make_dataset(val_kept, rate_hz, window_s)
+    prog.update(f"identifying the thesis grey-box model (using {runner.workers} worker(s))")
+    gb = greybox.fit_greybox(est)
+    # A test the thesis model fits far worse than every other is left out too, and the model
+    # identified again without it. Each test is judged by the model fitted without it
+    # (leave-one-test-out): in-sample, a broken test bends the fit towards itself (set H's
+    # BRS read 4x: 81.7 % in-sample against the others' 86, 22.5 % left out); the only test
+    # of its setup in-sample, since the model fitted without it never saw its rig.
+    folds_ = folds(est)
+    cv0: dict[str, float] | None = cross_validate(runner, [(dict(gb.params), [])], est,
+                                                  folds_)[0]
+    fitted = {n: v.total for n, v in score(dict(gb.params), [], est).tests.items()}
+    setup_of = dict(zip(est.names, est.setups, strict=True))
+    outliers = residual_outliers(*judged_fits(cv0 or {}, fitted, setup_of))
+    if outliers and est.n_tests - len(outliers) >= 2:
+        broken += outliers
+        left_out |= {b.test for b in outliers}
+        est_kept = [t for t in est_kept if t.name not in left_out]
+        est = make_dataset(est_kept, rate_hz, window_s)
+        gb = greybox.fit_greybox(est)
+        folds_, cv0 = folds(est), None
+    cv_now = cv0 if cv0 is not None else cross_validate(runner, [(dict(gb.params), [])],
+                                                        est, folds_)[0]
+    # A validation test is judged the same way, by the model the estimation tests made,
+    # against them and the other validation tests: it never chose anything, but a broken one
+    # would bend the fits the report gives and the refusal reads.
+    val_fits = {n: v.total for n, v in score(dict(gb.params), [], val).tests.items()}
+    val_out = [b for b in residual_outliers({**cv_now, **val_fits}) if b.test in val_fits]
+    if val_out and val.n_tests > len(val_out):
+        broken += val_out
+        left_out |= {b.test for b in val_out}
+        val_kept = [t for t in val_kept if t.name not in left_out]
+        val = make_dataset(val_kept, rate_hz, window_s)
+    return _Screened(est, val, gb, broken, est_kept, folds_, cv_now)
+
 def run_loop(est_tests: list[CrashTest], val_tests: list[CrashTest], out: Path,
              rate_hz: float = 1000.0, window_s: tuple[float, float] = THESIS_WINDOW_S,
              margin: float = 1.0, top_k: int = 5, max_effects: int = 4,
@@ -143,40 +210,8 @@ def _run(est_tests: list[CrashTest], val_tests: list[CrashTest], out: Path, rate
     prog = Progress("loop", enabled=verbose)
     out.mkdir(parents=True, exist_ok=True)
     setups = assign_setups([*est_tests, *val_tests], groups)
-    # Broken channels are found on the recorded data, before anything is fitted on them.
-    broken = [b for t in (*est_tests, *val_tests) for b in screen_channels(t, window_s[1])]
-    flagged = {b.test for b in broken}
-    for check in (polarity_outliers, payout_outliers):
-        broken += [b for b in check([*est_tests, *val_tests], window_s[1])
-                   if b.test not in flagged]
-        flagged = {b.test for b in broken}
-    left_out = flagged
-    est_kept = [t for t in est_tests if t.name not in left_out]
-    val_kept = [t for t in val_tests if t.name not in left_out]
-    if len(est_kept) < 2 or not val_kept:
-        raise CrashDataError("too few tests left after leaving out broken ones: "
-                             + "; ".join(f"{b.test} {b.channel}: {b.reason}" for b in broken))
-    est = make_dataset(est_kept, rate_hz, window_s)
-    val = make_dataset(val_kept, rate_hz, window_s)
-    prog.update(f"identifying the thesis grey-box model (using {runner.workers} worker(s))")
-    gb = greybox.fit_greybox(est)
-    # A test the thesis model fits far worse than every other is left out too, and the model
-    # identified again without it. Each test is judged by the model fitted without it
-    # (leave-one-test-out): in-sample, a broken test bends the fit towards itself (set H's
-    # BRS read 4x: 81.7 % in-sample against the others' 86, 22.5 % left out); the only test
-    # of its setup in-sample, since the model fitted without it never saw its rig.
-    folds_ = folds(est)
-    cv0: dict[str, float] | None = cross_validate(runner, [(dict(gb.params), [])], est, folds_)[0]
-    fitted = {n: v.total for n, v in score(dict(gb.params), [], est).tests.items()}
-    setup_of = dict(zip(est.names, est.setups, strict=True))
-    outliers = residual_outliers(*judged_fits(cv0 or {}, fitted, setup_of))
-    if outliers and est.n_tests - len(outliers) >= 2:
-        broken += outliers
-        left_out |= {b.test for b in outliers}
-        est_kept = [t for t in est_kept if t.name not in left_out]
-        est = make_dataset(est_kept, rate_hz, window_s)
-        gb = greybox.fit_greybox(est)
-        folds_, cv0 = folds(est), None
+    scr = _screened(est_tests, val_tests, rate_hz, window_s, runner, prog)
+    est, val, gb, broken = scr.est, scr.val, scr.gb, scr.broken
     est_setups = list(dict.fromkeys(est.setups))
     rigs_judged, not_judged = judged_setups(est, val)
     thin = {n.setup for n in not_judged}
@@ -188,23 +223,12 @@ def _run(est_tests: list[CrashTest], val_tests: list[CrashTest], out: Path, rate
     test_setup = ({n: s for n, s in zip(est.names, est.setups, strict=True) if s not in thin}
                   or dict(zip(est.names, est.setups, strict=True)))
     base = dict(gb.params)
-    cv_now = cv0 if cv0 is not None else cross_validate(runner, [(base, [])], est, folds_)[0]
-    # A validation test is judged the same way, by the model the estimation tests made,
-    # against them and the other validation tests: it never chose anything, but a broken one
-    # would bend the fits the report gives and the refusal reads.
-    val_fits = {n: v.total for n, v in score(base, [], val).tests.items()}
-    val_out = [b for b in residual_outliers({**cv_now, **val_fits}) if b.test in val_fits]
-    if val_out and val.n_tests > len(val_out):
-        broken += val_out
-        left_out |= {b.test for b in val_out}
-        val_kept = [t for t in val_kept if t.name not in left_out]
-        val = make_dataset(val_kept, rate_hz, window_s)
     baseline_val = score(base, [], val)
     resid0 = residual(base, [], est)
     tests0 = correlation_tests(resid0, est)
-    ctx = Context(runner, est, val, folds_, test_setup, thin, est_setups, scopes, margin, top_k,
+    ctx = Context(runner, est, val, scr.folds, test_setup, thin, est_setups, scopes, margin, top_k,
                   rate_hz, prog)
-    st = State(base, dict(gb.std_err), [], cv_now, baseline_val.fit.total)
+    st = State(base, dict(gb.std_err), [], scr.cv_now, baseline_val.fit.total)
     while len(st.accepted) < max_effects and one_round(ctx, st):
         pass
     base, effects, carried = st.base, st.effects, st.carried
@@ -235,7 +259,7 @@ def _run(est_tests: list[CrashTest], val_tests: list[CrashTest], out: Path, rate
         sensor_effects=[st.sensor] if st.sensor else [],
         unexplained=st.left_unexplained or ([] if st.sensor else unexplained(est, y_named)),
         warnings=broken,
-        left_out=_with_and_without(broken, base, effects, est_tests, val_tests, est_kept,
+        left_out=_with_and_without(broken, base, effects, est_tests, val_tests, scr.est_kept,
                                    val, rate_hz, window_s),
         final=ModelFit(Fits(**fit3(final_val)), base, st.base_se),
         setups=setups, not_judged=not_judged,

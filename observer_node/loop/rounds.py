@@ -20,6 +20,7 @@ from ..ident.progress import Progress
 from ..model.effects import EFFECTS, describe
 from .analysis import (
     Candidate,
+    CorrelationTests,
     candidates,
     correlation_tests,
     explained_share,
@@ -29,7 +30,7 @@ from .analysis import (
 from .cluster import Runner
 from .diagnosis import SHAPES, Unexplained, sensor_fold_scores, without_static
 from .evidence import POSSIBLE_MIN, Evidence, PastTheTie, judge, past_the_tie
-from .refit import fold_scores, fold_scores_by_output, model, refit, score
+from .refit import Refit, fold_scores, fold_scores_by_output, model, refit, score
 from .report import (
     AcceptedEffect,
     EffectEvidence,
@@ -297,39 +298,91 @@ def _picked(c: Context, st: State, step: LoopStep, tried: list[Tried], passing: 
 
 def _added(c: Context, st: State, step: LoopStep, pick: _Pick,
            per_test: dict[int, dict[str, float]]) -> bool:
-    """The pick refitted on all estimation tests and checked: a lag of one output, its
-    signature, its parameters' range and the validation tests. Named (True: another round
-    follows), carried, or refused."""
-    best, ev_best = pick.best, pick.ev
+    """The pick refitted on all estimation tests and checked (a lag of one output, its
+    signature, its parameters' range, the validation tests), then named (True: another round
+    follows) or carried; else refused, the step's decision saying why."""
+    best = pick.best
     c.prog.update(f"refitting with {best.kind} on all estimation tests")
     fit = refit(st.base, [*st.effects, best.effect()], c.est, max_nfev=120)
-    # per output, in-sample: an input delay that helps one output alone is its lag
+    if _an_output_lag(c, st, step, pick, fit):
+        return False
+    checked = _checked(c, st, step, pick, fit)
+    if checked is None:
+        return False
+    entry = _entry(c, st, step, pick, fit, checked)
+    st.base, st.effects, st.base_se = fit.base, fit.effects, fit.base_std_err
+    st.cv_now = per_test[id(best)]
+    if pick.carrying:
+        st.carried.append(entry)
+        # its line among the possible says where it went
+        st.possible = [replace(p, why_not=f"{p.why_not}; carried in model.json for its fit, "
+                               "not named") if p.kind == best.kind
+                       and p.scope == scope_label(best.setups) else p for p in st.possible]
+        step.decision += (f"; {best.kind} on {scope_label(best.setups)}, the side ranked "
+                          "first, is carried in the model for its fit, not named "
+                          f"(validation fit_TOT {st.val_before:.1f} -> "
+                          f"{checked.val_fit.fit.total:.1f} %)")
+        c.prog.update(f"carried {best.kind} for its fit, not named: validation fit "
+                      f"{checked.val_fit.fit.total:.1f} %")
+        return False
+    st.accepted.append(entry)
+    st.val_before = checked.val_fit.fit.total
+    step.decision = f"accepted {best.kind} on {scope_label(best.setups)}" + (
+        f" (on {pick.narrower} only it fits no better beyond the scatter)"
+        if pick.narrower else "")
+    c.prog.update(f"accepted {best.kind} on {scope_label(best.setups)}: validation fit "
+                  f"{checked.val_fit.fit.total:.1f} %")
+    return True
+
+
+def _an_output_lag(c: Context, st: State, step: LoopStep, pick: _Pick, fit: Refit) -> bool:
+    """True when the pick is an input delay that helps one output alone (in-sample, per
+    output): that output's lag, a sensor effect, not the inputs'."""
+    best = pick.best
     was, now = score(st.base, st.effects, c.est).fit, score(fit.base, fit.effects, c.est).fit
     gains = {"cr": now.cr - was.cr, "cd": now.cd - was.cd}
     lag = output_lag(best.kind, fit.effects[-1]["parameters"], gains["cr"], gains["cd"])
-    if lag is not None and pick.carrying:
+    if lag is None:
+        return False
+    if pick.carrying:
         step.decision += (f"; {best.kind} is not carried: it delays both inputs alike "
                           f"and helps {lag} alone")
-        return False
-    if lag is not None:
-        ms = 1000.0 * float(np.mean([fit.effects[-1]["parameters"][n]
-                                     for n in ("n_pulse", "n_brs")])) / c.rate_hz
-        rest = "cd" if lag == "cr" else "cr"
-        st.sensor = SensorEffect(
-            lag, [e["kind"] for e in st.effects],
-            f"a lag of about {ms:.1f} ms on {lag.upper()} alone: both inputs delayed alike "
-            f"is the outputs' timing, and {lag.upper()} gained {gains[lag]:+.1f} points "
-            f"where {rest.upper()} gained {gains[rest]:+.1f}: the {lag.upper()} "
-            "transducer or its filter, not the inputs", ev_best)
-        step.decision = (f"input_delay on {scope_label(best.setups)} passes the rule, but "
-                         f"it delays both inputs alike and helps {lag} alone: reported as "
-                         f"a lag of the {lag} transducer, not added to the model")
-        return False
+        return True
+    ms = 1000.0 * float(np.mean([fit.effects[-1]["parameters"][n]
+                                 for n in ("n_pulse", "n_brs")])) / c.rate_hz
+    rest = "cd" if lag == "cr" else "cr"
+    st.sensor = SensorEffect(
+        lag, [e["kind"] for e in st.effects],
+        f"a lag of about {ms:.1f} ms on {lag.upper()} alone: both inputs delayed alike "
+        f"is the outputs' timing, and {lag.upper()} gained {gains[lag]:+.1f} points "
+        f"where {rest.upper()} gained {gains[rest]:+.1f}: the {lag.upper()} "
+        "transducer or its filter, not the inputs", pick.ev)
+    step.decision = (f"input_delay on {scope_label(best.setups)} passes the rule, but "
+                     f"it delays both inputs alike and helps {lag} alone: reported as "
+                     f"a lag of the {lag} transducer, not added to the model")
+    return True
+
+
+class _Checked(NamedTuple):
+    """What the refit's checks measured, for the report."""
+
+    share_before: float  # of the residual its signature explains, before the refit
+    share_after: float  # and after
+    xcorr_old: CorrelationTests
+    xcorr_new: CorrelationTests
+    val_fit: FitTable  # the validation tests' fits with it
+
+
+def _checked(c: Context, st: State, step: LoopStep, pick: _Pick, fit: Refit
+             ) -> _Checked | None:
+    """The refit's checks: its signature explains less of the residual, its parameters are
+    inside their range, the validation tests do not fall (and, to carry a side of a tie,
+    rise with no output falling). None when refused, the step's decision saying why."""
+    best = pick.best
     resid_old = residual(st.base, st.effects, c.est)
     resid_new = residual(fit.base, fit.effects, c.est)
     share_before, share_after = _signature_shares(best, st.effects, st.base, fit.effects,
                                                   fit.base, resid_old, resid_new, c.est)
-    ct_old, ct_new = correlation_tests(resid_old, c.est), correlation_tests(resid_new, c.est)
     # The input cross-correlation is reported, not decisive: on simulator data it rose for
     # true effects too (what remains is discretisation error correlated with the pulse).
     # Less correlated than before, or no longer worth mentioning (< 2 % of the residual).
@@ -340,7 +393,7 @@ def _added(c: Context, st: State, step: LoopStep, pick: _Pick,
                f"({share_before:.3f} -> {share_after:.3f})")
         step.decision = (f"{step.decision}; {best.kind} is not carried: {why}" if pick.carrying
                          else f"{best.kind}: {why}: not accepted")
-        return False
+        return None
     val_fit = score(fit.base, fit.effects, c.val)
     refused = (at_the_edge(best.kind, fit.effects[-1]["parameters"], c.rate_hz)
                or validation_refusal(st.val_before, val_fit.fit.total))
@@ -349,26 +402,33 @@ def _added(c: Context, st: State, step: LoopStep, pick: _Pick,
                                            Fits(**fit3(val_fit)))
         if refused:
             step.decision += f"; {best.kind} is not carried: {refused}"
-            return False
+            return None
         st.named_model = (st.base, st.effects)
     if refused:
         st.possible.append(PossibleEffect(best.kind, scope_label(best.setups),
-                                          [e["kind"] for e in st.effects], ev_best, refused))
+                                          [e["kind"] for e in st.effects], pick.ev, refused))
         step.decision = (f"{best.kind} on {scope_label(best.setups)} passes the rule on "
                          f"the estimation tests, but {refused}: not accepted")
-        return False
-    st.base, st.effects, st.base_se = fit.base, fit.effects, fit.base_std_err
-    st.cv_now = per_test[id(best)]
-    params, se = st.effects[-1]["parameters"], fit.effect_std_err[-1]
-    entry = AcceptedEffect(
+        return None
+    return _Checked(share_before, share_after, correlation_tests(resid_old, c.est),
+                    correlation_tests(resid_new, c.est), val_fit)
+
+
+def _entry(c: Context, st: State, step: LoopStep, pick: _Pick, fit: Refit,
+           checked: _Checked) -> AcceptedEffect:
+    """The report's entry for the pick, named or carried, with its evidence."""
+    best, ev_best = pick.best, pick.ev
+    params, se = fit.effects[-1]["parameters"], fit.effect_std_err[-1]
+    ct_old, ct_new = checked.xcorr_old, checked.xcorr_new
+    return AcceptedEffect(
         kind=best.kind, description=describe(best.kind, params), parameters=params,
         std_err=se, setups=best.setups, applies_to=_applies_to(best.setups, c.est, c.val),
         warnings=parameter_warnings(best.kind, params, se, c.rate_hz),
         confidence=ev_best.confidence,
         evidence=EffectEvidence(
             ranking_share=round(best.explained, 4), scope_shares=best.scope_shares,
-            rule=ev_best, explained_share_before=round(share_before, 4),
-            explained_share_after=round(share_after, 4),
+            rule=ev_best, explained_share_before=round(checked.share_before, 4),
+            explained_share_after=round(checked.share_after, 4),
             cv_fit_before=round(step.cv_fit_before, 2), cv_fit_after=round(pick.cv, 2),
             runner_up=pick.runner_up, margin_points=pick.margin_points,
             other_scope=pick.other_scope,
@@ -376,28 +436,7 @@ def _added(c: Context, st: State, step: LoopStep, pick: _Pick,
             input_xcorr_rms_ratio_after=round(ct_new.rms_ratio, 2),
             input_xcorr_max_ratio_before=round(ct_old.max_ratio, 2),
             input_xcorr_max_ratio_after=round(ct_new.max_ratio, 2), tie=pick.tie_note),
-        fit=Fits(**fit3(val_fit)))
-    if pick.carrying:
-        st.carried.append(entry)
-        # its line among the possible says where it went
-        st.possible = [replace(p, why_not=f"{p.why_not}; carried in model.json for its fit, "
-                               "not named") if p.kind == best.kind
-                       and p.scope == scope_label(best.setups) else p for p in st.possible]
-        step.decision += (f"; {best.kind} on {scope_label(best.setups)}, the side ranked "
-                          "first, is carried in the model for its fit, not named "
-                          f"(validation fit_TOT {st.val_before:.1f} -> "
-                          f"{val_fit.fit.total:.1f} %)")
-        c.prog.update(f"carried {best.kind} for its fit, not named: validation fit "
-                      f"{val_fit.fit.total:.1f} %")
-        return False
-    st.accepted.append(entry)
-    st.val_before = val_fit.fit.total
-    step.decision = f"accepted {best.kind} on {scope_label(best.setups)}" + (
-        f" (on {pick.narrower} only it fits no better beyond the scatter)"
-        if pick.narrower else "")
-    c.prog.update(f"accepted {best.kind} on {scope_label(best.setups)}: validation fit "
-                  f"{val_fit.fit.total:.1f} %")
-    return True
+        fit=Fits(**fit3(checked.val_fit)))
 
 
 # ------------------------------------------------------------------ fits, folds and signatures
