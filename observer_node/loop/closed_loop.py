@@ -119,7 +119,6 @@ def scope_options(kind: str, setups: list[Setup], est_setups: list[str],
     return out
 
 
-
 class _Screened(NamedTuple):
     """The tests the loop fits and scores, once the broken ones are left out."""
 
@@ -184,6 +183,7 @@ def _screened(est_tests: list[CrashTest], val_tests: list[CrashTest], rate_hz: f
         val_kept = [t for t in val_kept if t.name not in left_out]
         val = make_dataset(val_kept, rate_hz, window_s)
     return _Screened(est, val, gb, broken, est_kept, folds_, cv_now)
+
 
 def run_loop(est_tests: list[CrashTest], val_tests: list[CrashTest], out: Path,
              rate_hz: float = 1000.0, window_s: tuple[float, float] = THESIS_WINDOW_S,

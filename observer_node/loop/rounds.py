@@ -476,7 +476,7 @@ def _fold_by_output(base: dict, effects: list[dict], data: Dataset, train: list[
 
 
 def cross_validate(runner: Runner, models: list[tuple[dict, list[dict]]], data: Dataset,
-       folds_: Folds) -> list[dict[str, float]]:
+                   folds_: Folds) -> list[dict[str, float]]:
     """Per-test cross-validated fit_TOT [%] of each (base, effects): each fitted on all tests,
     then refitted from there without each fold's held-out tests; every fit a task."""
     starts = runner.map(_all_tests, [(b, e, data) for b, e in models])
@@ -484,7 +484,6 @@ def cross_validate(runner: Runner, models: list[tuple[dict, list[dict]]], data: 
     k = len(folds_)
     return [{n: v for r in res[i * k:(i + 1) * k] for n, v in r.items()}
             for i in range(len(models))]
-
 
 
 def _other_output(runner: Runner, base: dict, effects: list[dict], data: Dataset,
