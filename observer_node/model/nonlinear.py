@@ -219,12 +219,16 @@ class NonlinearGreyBox:
         z = np.zeros((6, ntest))
         y = np.empty((ntest, n, 2))
         Ad, Bd, Gd, C, Df = self.Ad, self.Bd, self.Gd, self.C, self.Df
+        # each tick's inputs as contiguous rows over the tests, laid out once: a tick reads
+        # views (the layout stacking them per tick made, so the same products)
+        inputs = np.ascontiguousarray(np.stack([u1, u2]).transpose(2, 0, 1))
+        theta_t = np.ascontiguousarray(theta.T)
         for k in range(n):
             if states is not None:
                 states[:, :, k] = z
-            a, b, th = u1[:, k], u2[:, k], theta[:, k]
+            ab = inputs[k]
+            a, b, th = ab[0], ab[1], theta_t[k]
             f = self._forces_all(z, a, b, th)
-            ab = np.vstack([a, b])
             if not self.after_input:
                 y[:, k] = (C @ z + Df @ f).T
             zn = Ad @ z + Bd @ ab + Gd @ f
@@ -245,18 +249,17 @@ class NonlinearGreyBox:
     def _forces_all(self, z: np.ndarray, a: np.ndarray, b: np.ndarray,
                     th: np.ndarray) -> np.ndarray:
         """Forces (2, tests) of the effects at states z (6, tests), scoped by their masks."""
-        fs = np.zeros(a.shape[0])
-        fn = np.zeros(a.shape[0])
+        f = np.zeros((2, a.shape[0]))
         if not self._force_fns:
-            return np.vstack([fs, fn])
+            return f
         k = kinematics(z, a, b, th, self.base)
         for force, p, mask in self._force_fns:
             s1, s2 = force(p, k, self.base)
             if mask is not None:
                 s1, s2 = s1 * mask, s2 * mask
-            fs = fs + s1
-            fn = fn + s2
-        return np.vstack([fs, fn])
+            f[0] += s1
+            f[1] += s2
+        return f
 
     def _check_tests(self, ntest: int) -> None:
         if self.test_setups is not None and len(self.test_setups) != ntest:
