@@ -269,8 +269,8 @@ def test_a_physical_effect_in_both_outputs_is_not_one_transducers_error(chest):
     """The strongest physical candidate is judged by the rule on the other output's fit alone
     before a transducer of one output is named: a rib damping the model lacks moves CR as
     well as CD, so it passes there; a CD transducer's over-reading leaves CR nothing to gain."""
-    from observer_node.loop.rounds import _other_output
     from observer_node.loop.refit import folds
+    from observer_node.loop.rounds import _other_output
 
     data, base, damped, bent = chest
     tried = _one_passing("chest_rate_damping", {"c3": 1000.0})
@@ -627,3 +627,32 @@ def test_a_model_file_note_is_a_string():
     d["effects"][-1]["note"] = 12
     with pytest.raises(ModelFileError, match="note"):
         ModelFile.from_dict(d, "m.json")
+
+
+def test_a_scoped_carried_effect_runs_on_its_setups_bench_only_with_its_note():
+    """A bench of one setup runs the effects that act there: a carried side of a tie scoped
+    to some setups keeps its note on those and is absent from the others' models."""
+    import json
+
+    import numpy as np
+
+    from observer_node.bench import SHIPPED_LOOP
+    from observer_node.loop.closed_loop import model_name
+    from observer_node.model import ModelFile
+
+    d = json.loads((SHIPPED_LOOP / "model.json").read_text())
+    bag = d["effects"][-1]
+    assert bag["kind"] == "airbag_contact" and bag["setups"] == ["SLED", "FULL"]
+    bag["note"] = "carried for its fit, not a finding: pelvis_coupling on SLED+FULL fits alike"
+    d["name"] = model_name(d["effects"])
+    mf = ModelFile.from_dict(d, "m.json")
+    assert mf.name == ("greybox+belt_unloading+chest_stiffening (carries airbag_contact for "
+                       "its fit, not a finding)")
+    sled, r16 = mf.for_setup("SLED"), mf.for_setup("R16")
+    assert [e["kind"] for e in sled.effects][-1] == "airbag_contact"
+    assert sled.effects[-1]["note"] == bag["note"] and "setups" not in sled.effects[-1]
+    assert "airbag_contact" not in [e["kind"] for e in r16.effects]
+    assert not any("note" in e for e in r16.effects)
+    for one in (sled, r16):
+        y = one.observer().simulate(np.ones((1, 50)), np.zeros((1, 50)))
+        assert y.shape == (1, 50, 2) and np.isfinite(y).all()
