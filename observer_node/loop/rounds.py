@@ -151,7 +151,8 @@ def one_round(c: Context, st: State) -> bool:
 def _cross_validated(c: Context, st: State, ranked: list[Candidate]
                      ) -> tuple[list[Tried], dict[int, dict[str, float]]]:
     """The candidates tried this round, best cross-validated fit first, and each one's
-    per-test cross-validated fit_TOT (by ``id``)."""
+    per-test cross-validated fit_TOT (by ``id``); the rivals the last round left in
+    ``st.carry`` are among them, and the list is emptied."""
     # Named effects first; the generic formula only when none of them helps.
     named = [x for x in ranked if x.kind != "other" and x.explained > 0.01][:c.top_k]
     # A parameter-free switching force (the one-sided belt) is predicted badly by its
