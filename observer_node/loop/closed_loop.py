@@ -51,15 +51,10 @@ from ..model.chest import (
 from ..model.effects import EFFECTS
 from ..model.modelfile import ModelFile
 from ..scores import scores
-from .analysis import (
-    correlation_tests,
-)
+from .analysis import correlation_tests
 from .cluster import Runner, cluster
 from .diagnosis import unexplained
-from .evidence import (
-    SETUP_TOLERANCE,
-    SIGN_P,
-)
+from .evidence import SETUP_TOLERANCE, SIGN_P
 from .refit import MAX_FOLDS, folds, model, refit, score
 from .report import (
     LeftOut,

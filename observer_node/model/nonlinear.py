@@ -223,12 +223,14 @@ class NonlinearGreyBox:
         # views (the layout stacking them per tick made, so the same products)
         inputs = np.ascontiguousarray(np.stack([u1, u2]).transpose(2, 0, 1))
         theta_t = np.ascontiguousarray(theta.T)
+        # without force effects the force is zero at every tick: one array, read only
+        no_force = None if self._force_fns else np.zeros((2, ntest))
         for k in range(n):
             if states is not None:
                 states[:, :, k] = z
             ab = inputs[k]
             a, b, th = ab[0], ab[1], theta_t[k]
-            f = self._forces_all(z, a, b, th)
+            f = self._forces_all(z, a, b, th) if no_force is None else no_force
             if not self.after_input:
                 y[:, k] = (C @ z + Df @ f).T
             zn = Ad @ z + Bd @ ab + Gd @ f
@@ -241,7 +243,8 @@ class NonlinearGreyBox:
                     zn = np.where(slack, z_slack, zn)
             z = zn
             if self.after_input:
-                y[:, k] = (C @ z + Df @ self._forces_all(z, a, b, th)).T
+                f = self._forces_all(z, a, b, th) if no_force is None else no_force
+                y[:, k] = (C @ z + Df @ f).T
         if self.offset_mask is not None:
             return y + self.offset_mask[:, None, None] * self.offset
         return y + self.offset
