@@ -656,3 +656,40 @@ def test_a_scoped_carried_effect_runs_on_its_setups_bench_only_with_its_note():
     for one in (sled, r16):
         y = one.observer().simulate(np.ones((1, 50)), np.zeros((1, 50)))
         assert y.shape == (1, 50, 2) and np.isfinite(y).all()
+
+
+# validation fit_TOT [%] per test: R1, R2 on a judged rig, S1, S2 and T1, T2 on two rigs only
+# validation tests hold
+_SETUP_OF = {"R1": "R16", "R2": "R16", "S1": "SLED", "S2": "SLED", "T1": "FULL", "T2": "FULL"}
+_BEFORE = dict.fromkeys(_SETUP_OF, 90.0)
+
+
+def _fits(r16: float, sled: float, full: float) -> dict[str, float]:
+    by = {"R16": r16, "SLED": sled, "FULL": full}
+    return {n: by[s] for n, s in _SETUP_OF.items()}
+
+
+@pytest.mark.parametrize(("own", "wider", "reachable", "added"), [
+    # refused for the sled alone (the base it freed): the sled recovers with the effect there
+    (_fits(90.5, 80.0, 90.0), _fits(90.5, 91.0, 90.0), ["SLED"], ["SLED"]),
+    # each rig on its own tests: FULL, which falls with the effect, is not added
+    (_fits(90.5, 80.0, 90.0), _fits(90.5, 91.0, 85.0), ["SLED", "FULL"], ["SLED"]),
+    # a judged rig's own validation tests fall: no guess elsewhere buys that off
+    (_fits(88.0, 80.0, 90.0), _fits(88.0, 99.0, 90.0), ["SLED"], []),
+    # the sled recovers, but FULL falls with the effect on its own scope and with it there
+    # alike: all the validation tests together still refuse it
+    (_fits(90.0, 80.0, 80.0), _fits(90.0, 90.0, 80.0), ["SLED", "FULL"], []),
+    # the sled falls but the effect may not act there (an airbag the metadata rules out):
+    # a guess on FULL does not buy that off
+    (_fits(89.8, 80.0, 80.0), _fits(89.8, 80.0, 95.0), ["FULL"], []),
+    # the sled falls with the effect there too
+    (_fits(90.5, 80.0, 90.0), _fits(90.5, 85.0, 90.0), ["SLED"], []),
+])
+def test_a_guess_on_a_setup_only_validation_tests_hold_is_judged_on_its_own_tests(
+        own, wider, reachable, added):
+    from observer_node.loop.verdicts import reached_setups
+
+    # the rest of the rigs (FULL where it is not reachable) keep their fit "own"
+    if "FULL" not in reachable:
+        wider = {n: (v if _SETUP_OF[n] != "FULL" else own[n]) for n, v in wider.items()}
+    assert reached_setups(_BEFORE, own, wider, _SETUP_OF, reachable) == added
