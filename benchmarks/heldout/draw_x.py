@@ -25,7 +25,10 @@ The rules for what the draw leaves open, written down before the first draw (``S
 
 1. A form with a size: its first size is the median of the sizes every case of sets A-W gave
    that key, to two significant figures; if A-W used that value for the key, the next value up
-   in the second figure A-W did not use.
+   in the second figure A-W did not use. (Added after the draw, before any cost: a key no case
+   of A-W sized, the draw's spool_buildup, starts at the largest size an earlier set's notes
+   report trying, set K's 4.5 mm per wrap; a size that leaves the physics meaningless, the
+   spool's radius below zero within 7 rad of pay-out, counts as running away.)
 2. Its cost is the thesis grey-box's validation fit (TOT) on the case's twin with every effect
    off less that on the case (``costs._fit`` on ``make_sets.make``'s folders). Band: 1.5-6
    points (a delay 1-6). Out of band, the next size aims at 3.5 points: the size times (3.5 /
