@@ -11,8 +11,7 @@ Per case the loop runs blind at its defaults on 6 estimation + 6 validation test
 - what it named (kind@scope, scopes as the simulator's setups), what passed the rule but the
   validation tests refused ("refused:"), the pair that passed the rule but the data cannot
   tell apart, so neither is named ("tied:"), the side of it carried in the model for its
-  fit ("carried:"; not a name, the model's better observer), where a named effect acts as
-  a guess on rigs only validation tests hold ("guess:"), the tests it flagged, and
+  fit ("carried:"; not a name, the model's better observer), the tests it flagged, and
   whether that is the expected verdict (for the transducer case: nothing physical named and
   "unexplained" or a sensor effect on CD);
 - the validation fit_TOT before and after;
@@ -116,9 +115,7 @@ def run_case(case: Case, sets: Path, work: Path, workers: int | None) -> dict:
     r = run_loop(est, val, work / case.name, verbose=False, plots=False, ratings=False,
                  workers=workers)
     seconds = time.monotonic() - t0
-    # the scope an effect is named on: not the setups it acts on as a guess
-    found = sorted(f"{e.kind}@{_sim_scope(e.named_setups or [], r)}" for e in r.effects)
-    guessed = sorted(f"{e.kind}@{_sim_scope(e.guessed_on, r)}" for e in r.effects if e.guessed_on)
+    found = sorted(f"{e.kind}@{_sim_scope(e.setups or [], r)}" for e in r.effects)
     # passed the rule, not named: a rival of another kind passes too, not told apart
     tied = sorted(f"{p.kind}@{_sim_scope([] if p.scope == 'all' else p.scope.split('+'), r)}"
                   for p in r.possible if "cannot tell it from" in p.why_not)
@@ -151,7 +148,7 @@ def run_case(case: Case, sets: Path, work: Path, workers: int | None) -> dict:
            "rigs": every, "judged_rigs": judged, "expected_judged": as_judged,
            "right_judged": right_judged,
            "sensor": sensor, "unexplained": unexpl, "right": right, "tied": tied,
-           "carried": carried, "guessed": guessed, "refused": refused,
+           "carried": carried, "refused": refused,
            "before": r.baseline.fit.total, "after": r.final.fit.total,
            "seconds": seconds, "possible": [f"{p.kind}@{p.scope}" for p in r.possible]}
     row["reachable"] = _reachable(case, r, est, val, found == expected)
@@ -248,8 +245,6 @@ def main() -> None:
             named += f"; tied: {'|'.join(row['tied'])}"
         if row["carried"]:
             named += f"; carried: {','.join(row['carried'])}"
-        if row.get("guessed"):
-            named += f"; guess: {','.join(row['guessed'])}"
         if row["refused"]:
             named += f"; refused: {','.join(row['refused'])}"
         if row["sensor"]:

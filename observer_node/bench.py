@@ -99,9 +99,7 @@ def loop_models(loop_dir: Path, est_names: tuple[str, ...], val_names: tuple[str
     effects = [AcceptedEffect.from_dict(e) for e in report["effects"]]
     carried = [AcceptedEffect.from_dict(e) for e in report.get("carried", [])]
     print("bench: the loop's effects: " + (", ".join(
-        f"{e.kind} on {', '.join(e.named_setups or ['all'])}"
-        + (f" (and as a guess on {', '.join(e.guessed_on)})" if e.guessed_on else "")
-        for e in effects) or "none")
+        f"{e.kind} on {', '.join(e.setups or ['all'])}" for e in effects) or "none")
         + "".join(f"; {e.kind} on {', '.join(e.setups or ['all'])} in the model for its "
                   "fit, not named (a tie)" for e in carried))
     return (ModelFile.load(loop_dir / "baseline-model.json"),

@@ -17,10 +17,8 @@
    reported before and after, but does not decide: on simulator data it rose for true
    effects too. Repeat until no candidate helps.
 4. The validation tests never choose an effect; they refuse one whose refit lowers their
-   fit_TOT by more than 0.3 points (a scoped one may instead act, as a guess, on the setups
-   only they hold, where that is what keeps them from falling), and give the fits before,
-   after each effect and at the end. Everything is written to OUTDIR (report.json,
-   report.md, model.json, plots).
+   fit_TOT by more than 0.3 points, and give the fits before, after each effect and at the
+   end. Everything is written to OUTDIR (report.json, report.md, model.json, plots).
 """
 
 from __future__ import annotations
@@ -235,15 +233,11 @@ def _run(est_tests: list[CrashTest], val_tests: list[CrashTest], out: Path, rate
     final_val = score(base, effects, val)
     judged = {label: scores(val, model(b, e, val).simulate(val.pulse_g, val.brs_rad), ratings)
               for label, b, e in (("baseline", gb.params, []), ("final", base, effects))}
-    # model.json says where an effect acts as a guess (setups no estimation test holds)
-    guesses = {(a.kind, tuple(a.setups or ())): a.guessed_on for a in st.accepted
-               if a.guessed_on}
-    in_file = [{**e, "guessed_on": guesses[(e["kind"], tuple(e.get("setups", ())))]}
-               if (e["kind"], tuple(e.get("setups", ()))) in guesses else e for e in effects]
+    in_file = effects
     if carried:  # model.json says of a carried effect what report.md does: it is no finding
         ru = carried[0].evidence.runner_up
         tied_with = f"{ru.kind} on {ru.scope}" if ru is not None else "a rival"
-        in_file = [*in_file[:-1], {**in_file[-1], "note": "carried for its fit, not a "
+        in_file = [*effects[:-1], {**effects[-1], "note": "carried for its fit, not a "
                                    f"finding: {tied_with} fits alike (report.md)"}]
     mf = _model_file(base, in_file, est, rate_hz, gb, setups)
     mf.save(out / "model.json")

@@ -119,9 +119,7 @@ class AcceptedEffect:
     the effect's definition, :mod:`observer_node.model.effects`) and their standard errors,
     the setups it acts on and those setups' estimation and validation tests (None: every
     test), warnings on its parameters, the rule's verdict in one line, the evidence, and the
-    validation fits [%] of the model with it (rounded to 0.01). ``guessed_on``: the setups
-    among ``setups`` no estimation test holds, where it acts as the model's best guess (the
-    validation tests chose it there), not as a finding."""
+    validation fits [%] of the model with it (rounded to 0.01)."""
 
     kind: str
     description: str
@@ -133,19 +131,11 @@ class AcceptedEffect:
     confidence: str
     evidence: EffectEvidence
     fit: Fits
-    guessed_on: list[str] | None = None
 
     @property
     def scope(self) -> str:
         """The setups it acts on joined by "+", or "all"."""
         return "all" if self.setups is None else "+".join(self.setups)
-
-    @property
-    def named_setups(self) -> list[str] | None:
-        """The setups it is named on: those it acts on but the guesses (None: every test)."""
-        if self.setups is None:
-            return None
-        return [s for s in self.setups if s not in (self.guessed_on or [])]
 
     def model_entry(self) -> dict[str, Any]:
         """The effect as model.json and the refit take it."""
@@ -158,16 +148,14 @@ class AcceptedEffect:
                 **({"setups": self.setups, "applies_to": self.applies_to}
                    if self.setups is not None else {}),
                 "warnings": self.warnings, "confidence": self.confidence,
-                "evidence": self.evidence.as_dict(), "fit": self.fit.as_dict(),
-                **({"guessed_on": self.guessed_on} if self.guessed_on else {})}
+                "evidence": self.evidence.as_dict(), "fit": self.fit.as_dict()}
 
     @classmethod
     def from_dict(cls, d: dict[str, Any]) -> AcceptedEffect:
         """An entry of report.json's ``effects``, read back."""
         return cls(d["kind"], d["description"], d["parameters"], d["std_err"],
                    d.get("setups"), d.get("applies_to"), d["warnings"], d["confidence"],
-                   EffectEvidence.from_dict(d["evidence"]), Fits(**d["fit"]),
-                   d.get("guessed_on"))
+                   EffectEvidence.from_dict(d["evidence"]), Fits(**d["fit"]))
 
 
 @dataclass(frozen=True)

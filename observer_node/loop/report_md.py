@@ -21,13 +21,13 @@ def markdown(r: LoopReport) -> str:
     if r.not_judged:
         lines += ["", "**Not judged** (too few estimation tests to tell an effect there from "
                   "one test's scatter; nothing is claimed about them, and an effect named on "
-                  "\"all\", or marked a guess there, acts there as the model's best guess): "
+                  "\"all\" acts there as the model's best guess): "
                   + "; ".join(f"{n.setup}, {n.why}" for n in r.not_judged) + "."]
     lines += ["", "## Fits", "",
               "| model | acts on | fit CR | fit CD | fit TOT |", "|---|---|---|---|---|",
               f"| thesis grey-box | all | {b.cr:.1f} | {b.cd:.1f} | {b.total:.1f} |"]
     for e in r.effects:
-        lines.append(f"| + {e.kind} | {_acts_on(e)} | "
+        lines.append(f"| + {e.kind} | {'+'.join(e.setups or ['all'])} | "
                      f"{e.fit.cr:.1f} | {e.fit.cd:.1f} | {e.fit.total:.1f} |")
     for e in r.carried:
         lines.append(f"| + {e.kind}, carried, not named | {'+'.join(e.setups or ['all'])} | "
@@ -116,8 +116,6 @@ def _markdown_effect(e: AcceptedEffect, carried: bool = False) -> list[str]:
                   f"cross-validated {os_.cv_fit:.1f} % ({os_.margin_points:+.1f} "
                   "points from the accepted scope)")
     where = (f"acts on setups {', '.join(e.setups)}: {', '.join(e.applies_to or [])}"
-             + (f" ({', '.join(e.guessed_on)}: a guess, see the warning)"
-                if e.guessed_on else "")
              if e.setups is not None else "acts on every test")
     head = [f"## {e.kind}", "", e.description, ""]
     if carried:
@@ -187,14 +185,6 @@ def _markdown_findings(r: LoopReport) -> list[str]:
                          f"{ev.tests_improved}/{ev.tests} | {p.why_not} |")
         lines.append("")
     return lines
-
-
-def _acts_on(e: AcceptedEffect) -> str:
-    """Its setups joined by "+", those it acts on as a guess marked so."""
-    if e.setups is None:
-        return "all"
-    guessed = e.guessed_on or []
-    return "+".join(e.named_setups or []) + (f" (guess: {'+'.join(guessed)})" if guessed else "")
 
 
 def _pct(f: Fits | str) -> str:

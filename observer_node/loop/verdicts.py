@@ -186,41 +186,13 @@ VALIDATION_TOLERANCE = 0.3  # fit points: as SETUP_TOLERANCE, refit noise
 
 def validation_refusal(fit_before: float, fit_after: float) -> str | None:
     """Why an effect that passed the rule on the estimation tests is still not named: the
-    validation tests' fit_TOT [%] falls with it. They never name an effect, they can refuse
-    one: a finding about the dummy must hold on the tests it was not fitted to (on every
-    benchmark set before 2026-11-25, only wrong effects lowered it). Where a setup only
-    validation tests hold is at stake, :func:`reached_setups` may lift the refusal."""
+    validation tests' fit_TOT [%] falls with it. They never choose an effect, they can only
+    refuse one: a finding about the dummy must hold on the tests it was not fitted to (on
+    every benchmark set before 2026-11-25, only wrong effects lowered it)."""
     if fit_after >= fit_before - VALIDATION_TOLERANCE:
         return None
     return (f"the validation tests do not confirm it: their fit_TOT falls from "
             f"{fit_before:.1f} to {fit_after:.1f} %")
-
-
-def reached_setups(before: dict[str, float], own: dict[str, float], wider: dict[str, float],
-                   setup_of: dict[str, str], reachable: list[str]) -> list[str]:
-    """The setups a scoped effect the validation tests refused is extended to, as the model's
-    best guess ([] when the refusal stands). Each dict is the validation tests' fit_TOT [%]
-    per test: with the effects named so far, with the effect on its own scope, and with it on
-    every ``reachable`` setup too (no estimation test holds those: the validation tests alone
-    speak of them, and the effect acts on each one's tests only, so each is judged apart).
-
-    A reachable setup is added when its own tests do not fall with the effect there; the
-    refusal is lifted only when the tests of the other setups do not fall with the effect (a
-    judged rig's refusal is not bought off by a guess elsewhere) and all of them together, the
-    added setups' tests with it, pass :func:`validation_refusal`."""
-    def mean(fits: dict[str, float], setups: AbstractSet[str]) -> float:
-        return float(np.mean([v for n, v in fits.items() if setup_of[n] in setups]))
-
-    present = {setup_of[n] for n in before}
-    added = [s for s in reachable if s in present
-             and mean(wider, {s}) >= mean(before, {s}) - VALIDATION_TOLERANCE]
-    rest = present - set(reachable)
-    if not added or (rest and mean(own, rest) < mean(before, rest) - VALIDATION_TOLERANCE):
-        return []
-    after = {n: wider[n] if setup_of[n] in added else own[n] for n in before}
-    if validation_refusal(mean(before, present), mean(after, present)) is not None:
-        return []
-    return added
 
 
 def carry_refusal(before: Fits, after: Fits) -> str | None:

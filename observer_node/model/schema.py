@@ -97,11 +97,6 @@ def _schema() -> dict[str, Any]:
                               # note: why it is there when it is no finding (the loop's
                               # carried side of a tie)
                               "note": {"type": "string", "maxLength": 300},
-                              # guessed_on: setups among its scope it acts on as the loop's
-                              # best guess (no estimation test held them), not a finding
-                              "guessed_on": {"type": "array", "minItems": 1,
-                                             "uniqueItems": True,
-                                             "items": {"type": "string", "minLength": 1}},
                               "setups": {"type": "array", "minItems": 1, "uniqueItems": True,
                                          "items": {"type": "string", "minLength": 1}}},
                           "allOf": [_effect(e) for e in EFFECTS.values()]}},
