@@ -221,11 +221,8 @@ def _run(est_tests: list[CrashTest], val_tests: list[CrashTest], out: Path, rate
     baseline_val = score(base, [], val)
     resid0 = residual(base, [], est)
     tests0 = correlation_tests(resid0, est)
-    # setups only validation tests hold: the estimation tests say nothing there
-    val_only = [s for s in dict.fromkeys(val.setups) if s not in est_setups]
-    reach = {k: [s for s in val_only if s in allowed_setups(k, setups, anywhere)] for k in EFFECTS}
-    ctx = Context(runner, est, val, scr.folds, test_setup, thin, est_setups, scopes, reach,
-                  margin, top_k, rate_hz, prog)
+    ctx = Context(runner, est, val, scr.folds, test_setup, thin, est_setups, scopes, margin, top_k,
+                  rate_hz, prog)
     st = State(base, dict(gb.std_err), [], scr.cv_now, baseline_val.fit.total)
     while len(st.accepted) < max_effects and one_round(ctx, st):
         pass

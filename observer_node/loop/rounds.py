@@ -72,8 +72,6 @@ class Context:
     thin: set[str]  # setups too few estimation tests hold to be judged
     est_setups: list[str]
     scopes: dict[str, list[list[str] | None]]  # per kind, the scopes it may be tried on
-    reach: dict[str, list[str]]  # per kind, the setups no estimation test holds where it
-    # is possible: the validation tests alone speak of them
     margin: float
     top_k: int
     rate_hz: float
@@ -312,13 +310,9 @@ def _added(c: Context, st: State, step: LoopStep, pick: _Pick,
     checked = _checked(c, st, step, pick, fit)
     if checked is None:
         return False
-    st.cv_now = per_test[id(best)]
-    if checked.reached:  # it acts on setups only validation tests hold as well
-        best = replace(best, setups=[*(best.setups or []), *checked.reached])
-        fit.effects[-1] = {**fit.effects[-1], "setups": best.setups}
-        pick = pick._replace(best=best)
     entry = _entry(c, st, step, pick, fit, checked)
     st.base, st.effects, st.base_se = fit.base, fit.effects, fit.base_std_err
+    st.cv_now = per_test[id(best)]
     if pick.carrying:
         st.carried.append(entry)
         # its line among the possible says where it went
@@ -336,7 +330,7 @@ def _added(c: Context, st: State, step: LoopStep, pick: _Pick,
     st.val_before = checked.val_fit.fit.total
     step.decision = f"accepted {best.kind} on {scope_label(best.setups)}" + (
         f" (on {pick.narrower} only it fits no better beyond the scatter)"
-        if pick.narrower else "") + (f" ({_reach_note(checked)})" if checked.reached else "")
+        if pick.narrower else "")
     c.prog.update(f"accepted {best.kind} on {scope_label(best.setups)}: validation fit "
                   f"{checked.val_fit.fit.total:.1f} %")
     return True
@@ -378,10 +372,6 @@ class _Checked(NamedTuple):
     xcorr_old: CorrelationTests
     xcorr_new: CorrelationTests
     val_fit: FitTable  # the validation tests' fits with it
-    reached: list[str]  # setups no estimation test holds it was extended to, for the
-    # validation tests' sake (empty: none)
-    val_before: float  # the validation tests' fit_TOT [%] before it
-    val_own: float  # and with it on its own scope
 
 
 def _checked(c: Context, st: State, step: LoopStep, pick: _Pick, fit: Refit
@@ -406,14 +396,8 @@ def _checked(c: Context, st: State, step: LoopStep, pick: _Pick, fit: Refit
                          else f"{best.kind}: {why}: not accepted")
         return None
     val_fit = score(fit.base, fit.effects, c.val)
-    val_own = val_fit.fit.total
-    edge = at_the_edge(best.kind, fit.effects[-1]["parameters"], c.rate_hz)
-    refused = edge or validation_refusal(st.val_before, val_own)
-    reached: list[str] = []
-    if refused and not edge and not pick.carrying:
-        wider = _reaching(c, best, fit, st.val_before)
-        if wider is not None:
-            (reached, val_fit), refused = wider, None
+    refused = (at_the_edge(best.kind, fit.effects[-1]["parameters"], c.rate_hz)
+               or validation_refusal(st.val_before, val_fit.fit.total))
     if pick.carrying:
         refused = refused or carry_refusal(Fits(**fit3(score(st.base, st.effects, c.val))),
                                            Fits(**fit3(val_fit)))
@@ -428,38 +412,7 @@ def _checked(c: Context, st: State, step: LoopStep, pick: _Pick, fit: Refit
                          f"the estimation tests, but {refused}: not accepted")
         return None
     return _Checked(share_before, share_after, correlation_tests(resid_old, c.est),
-                    correlation_tests(resid_new, c.est), val_fit, reached, st.val_before,
-                    val_own)
-
-
-def _reaching(c: Context, best: Candidate, fit: Refit, val_before: float
-              ) -> tuple[list[str], FitTable] | None:
-    """A scoped effect the validation tests refuse, extended to the setups no estimation
-    test holds (where it is possible), and their fits, when they confirm it so; else None.
-
-    Only the validation tests hold such a setup, so the estimation tests, the rule and the
-    refit cannot say whether the effect acts there; the validation tests then may, for the
-    model, never for a name: the effect is named for its own scope. Its parameters stay as
-    fitted (no estimation test acts differently). Why: a stiffening on R16 freed the shared
-    base of the stiffness it had lent R16, and the validation tests, all on a sled with the
-    same stiffening, fell from 86.2 to 77.7 % (set W's bumper; set T's webbing toe alike)."""
-    extra = [s for s in c.reach[best.kind] if best.setups is not None and s not in best.setups]
-    if not extra:
-        return None
-    wider = [*fit.effects[:-1], {**fit.effects[-1], "setups": [*(best.setups or []), *extra]}]
-    val_fit = score(fit.base, wider, c.val)
-    if validation_refusal(val_before, val_fit.fit.total):
-        return None
-    return extra, val_fit
-
-
-def _reach_note(checked: _Checked) -> str:
-    """What an effect extended to setups only validation tests hold says of them."""
-    where = "+".join(checked.reached)
-    return (f"acts on {where} too, which no estimation test holds: without it there the "
-            f"validation tests' fit_TOT falls from {checked.val_before:.1f} to "
-            f"{checked.val_own:.1f} %, with it {checked.val_fit.fit.total:.1f} %; on "
-            f"{where} it is the model's best guess, not a finding")
+                    correlation_tests(resid_new, c.est), val_fit)
 
 
 def _entry(c: Context, st: State, step: LoopStep, pick: _Pick, fit: Refit,
@@ -471,8 +424,7 @@ def _entry(c: Context, st: State, step: LoopStep, pick: _Pick, fit: Refit,
     return AcceptedEffect(
         kind=best.kind, description=describe(best.kind, params), parameters=params,
         std_err=se, setups=best.setups, applies_to=_applies_to(best.setups, c.est, c.val),
-        warnings=[*parameter_warnings(best.kind, params, se, c.rate_hz),
-                  *([_reach_note(checked)] if checked.reached else [])],
+        warnings=parameter_warnings(best.kind, params, se, c.rate_hz),
         confidence=ev_best.confidence,
         evidence=EffectEvidence(
             ranking_share=round(best.explained, 4), scope_shares=best.scope_shares,
