@@ -7,6 +7,7 @@ from __future__ import annotations
 import json
 from collections.abc import Iterator
 from pathlib import Path
+from types import ModuleType
 
 import numpy as np
 import pytest
@@ -3139,6 +3140,49 @@ def test_set_w_covers_the_general_list() -> None:
     _covers_the_general_list(SET_W, BEFORE_W, "cd", ONE_PHYSICAL_W, draw_w.KINDS)
 
 
+def _singles_follow(d: dict, cases_: list[cases.Case], one_physical: tuple[str, ...],
+                    drawn_by: ModuleType) -> None:
+    """Each kind's one-effect case is its draw: form, rigs, counts and mix (sets W, X)."""
+    lib = physics.EFFECTS
+    for kind, want in d["single"].items():
+        (c,) = [c for c in cases_ if c.name in one_physical and lib[c.effects[0].key] == kind]
+        (e,) = c.effects
+        assert (e.key, e.setups, c.counts_per_rev) == (want["form"], want["rigs"], want["counts"])
+        assert _pairing(c) == (want["est"], want["val"]), c.name
+        assert e.key in drawn_by.forms(kind) and e.setups in drawn_by.scopes(kind)
+
+
+def _the_rest_follows(d: dict, cases_: list[cases.Case], drawn_by: ModuleType) -> None:
+    """The two-effect case, the delays, the transducer error, the broken test and the clean
+    cases are their draws (sets W, X)."""
+    lib = physics.EFFECTS
+    two = d["two"]
+    (c,) = [c for c in cases_ if len(c.effects) == 2]
+    assert tuple(lib[e.key] for e in c.effects) == two["kinds"]
+    assert tuple(e.key for e in c.effects) == two["forms"]
+    assert tuple(e.setups for e in c.effects) == two["rigs"]
+    assert (c.counts_per_rev, _pairing(c)) == (two["counts"], (two["est"], two["val"]))
+    for key in ("pulse_late", "brs_late"):
+        (c,) = [c for c in cases_ if c.effects and c.effects[0].key == key]
+        assert c.effects[0].size == d[key]["delay_s"] and c.counts_per_rev == d[key]["counts"]
+        assert _pairing(c) == (d[key]["est"], d[key]["val"])
+    (sensor,) = [c for c in cases_ if c.expect_note]
+    assert sensor.expect_note.endswith(f"on {d['transducer']['output']}")
+    assert sensor.effects[0].key == d["transducer"]["form"]
+    assert d["transducer"]["form"] in drawn_by.TRANSDUCER[d["transducer"]["output"]]
+    assert (sensor.counts_per_rev, _pairing(sensor)) == (
+        d["transducer"]["counts"], (d["transducer"]["est"], d["transducer"]["val"]))
+    (broken,) = [c for c in cases_ if c.expect_broken]
+    assert broken.expect_broken == (d["broken"]["test"],)
+    assert broken.effects[0].key == d["broken"]["form"]
+    assert d["broken"]["form"] in drawn_by.BROKEN[d["broken"]["channel"]]
+    assert (broken.counts_per_rev, _pairing(broken)) == (
+        d["broken"]["counts"], (d["broken"]["est"], d["broken"]["val"]))
+    for n in (48, 96):
+        (c,) = [c for c in cases_ if not c.effects and c.counts_per_rev == n]
+        assert _pairing(c) == (d[f"clean{n}"]["est"], d[f"clean{n}"]["val"])
+
+
 def test_set_w_follows_its_draw() -> None:
     """The emphasis of set W: its designer's choices are numpy's default_rng(32000)'s
     (``draw_w.py``; the draws found impossible drawn again by 32001-32007, ``REDRAWN``),
@@ -3149,12 +3193,7 @@ def test_set_w_follows_its_draw() -> None:
     d = draw_w.draw(32000)
     assert d == draw_w.draw()  # reproducible from its seed
     lib = physics.EFFECTS
-    for kind, want in d["single"].items():
-        (c,) = [c for c in SET_W if c.name in ONE_PHYSICAL_W and lib[c.effects[0].key] == kind]
-        (e,) = c.effects
-        assert (e.key, e.setups, c.counts_per_rev) == (want["form"], want["rigs"], want["counts"])
-        assert _pairing(c) == (want["est"], want["val"]), c.name
-        assert e.key in draw_w.forms(kind) and e.setups in draw_w.scopes(kind)
+    _singles_follow(d, SET_W, ONE_PHYSICAL_W, draw_w)
     assert {lib[k] for k in draw_w.BRS_GAIN} == {"input_gain"}
     # drawn again, each by the next seed, in order: a draw with no pairing left, or one whose
     # cost could not be brought into the band (a switch, a delay); none of them is in W
@@ -3172,31 +3211,7 @@ def test_set_w_follows_its_draw() -> None:
             assert first["delay_s"] not in {e.size for c in SET_W for e in c.effects}
     assert [first["est"] for w, _, first in d["rejected"] if w == "two"] == [
         None, (0, 4, 2), None, None]
-    two = d["two"]
-    (c,) = [c for c in SET_W if len(c.effects) == 2]
-    assert tuple(lib[e.key] for e in c.effects) == two["kinds"]
-    assert tuple(e.key for e in c.effects) == two["forms"]
-    assert tuple(e.setups for e in c.effects) == two["rigs"]
-    assert (c.counts_per_rev, _pairing(c)) == (two["counts"], (two["est"], two["val"]))
-    for key in ("pulse_late", "brs_late"):
-        (c,) = [c for c in SET_W if c.effects and c.effects[0].key == key]
-        assert c.effects[0].size == d[key]["delay_s"] and c.counts_per_rev == d[key]["counts"]
-        assert _pairing(c) == (d[key]["est"], d[key]["val"])
-    (sensor,) = [c for c in SET_W if c.expect_note]
-    assert sensor.expect_note.endswith(f"on {d['transducer']['output']}")
-    assert sensor.effects[0].key == d["transducer"]["form"]
-    assert d["transducer"]["form"] in draw_w.TRANSDUCER[d["transducer"]["output"]]
-    assert (sensor.counts_per_rev, _pairing(sensor)) == (
-        d["transducer"]["counts"], (d["transducer"]["est"], d["transducer"]["val"]))
-    (broken,) = [c for c in SET_W if c.expect_broken]
-    assert broken.expect_broken == (d["broken"]["test"],)
-    assert broken.effects[0].key == d["broken"]["form"]
-    assert d["broken"]["form"] in draw_w.BROKEN[d["broken"]["channel"]]
-    assert (broken.counts_per_rev, _pairing(broken)) == (
-        d["broken"]["counts"], (d["broken"]["est"], d["broken"]["val"]))
-    for n in (48, 96):
-        (c,) = [c for c in SET_W if not c.effects and c.counts_per_rev == n]
-        assert _pairing(c) == (d[f"clean{n}"]["est"], d[f"clean{n}"]["val"])
+    _the_rest_follows(d, SET_W, draw_w)
 
 
 def test_set_w_pools_are_every_lab_side_form() -> None:
@@ -3383,13 +3398,7 @@ def test_set_x_follows_its_draw() -> None:
     assert draw_x.EARLIER == "abcdefghijklmnopqrstuvw" and draw_x.SEED == 33000
     assert (draw_x.KINDS, draw_x.BRS_GAIN) == (draw_w.KINDS, draw_w.BRS_GAIN)
     assert (draw_x.TRANSDUCER, draw_x.BROKEN) == (draw_w.TRANSDUCER, draw_w.BROKEN)
-    lib = physics.EFFECTS
-    for kind, want in d["single"].items():
-        (c,) = [c for c in SET_X if c.name in ONE_PHYSICAL_X and lib[c.effects[0].key] == kind]
-        (e,) = c.effects
-        assert (e.key, e.setups, c.counts_per_rev) == (want["form"], want["rigs"], want["counts"])
-        assert _pairing(c) == (want["est"], want["val"]), c.name
-        assert e.key in draw_x.forms(kind) and e.setups in draw_x.scopes(kind)
+    _singles_follow(d, SET_X, ONE_PHYSICAL_X, draw_x)
     # drawn again, each by the next seed, in order: a draw whose cost could not be brought
     # into the band; none of them is in X
     assert [(w, s) for w, s, _ in d["rejected"]] == list(draw_x.REDRAWN) == REDRAWN_X
@@ -3401,31 +3410,7 @@ def test_set_x_follows_its_draw() -> None:
                 "val"])) not in {(c.counts_per_rev, _pairing(c)) for c in SET_X}
         else:
             assert first["delay_s"] not in {e.size for c in SET_X for e in c.effects}
-    two = d["two"]
-    (c,) = [c for c in SET_X if len(c.effects) == 2]
-    assert tuple(lib[e.key] for e in c.effects) == two["kinds"]
-    assert tuple(e.key for e in c.effects) == two["forms"]
-    assert tuple(e.setups for e in c.effects) == two["rigs"]
-    assert (c.counts_per_rev, _pairing(c)) == (two["counts"], (two["est"], two["val"]))
-    for key in ("pulse_late", "brs_late"):
-        (c,) = [c for c in SET_X if c.effects and c.effects[0].key == key]
-        assert c.effects[0].size == d[key]["delay_s"] and c.counts_per_rev == d[key]["counts"]
-        assert _pairing(c) == (d[key]["est"], d[key]["val"])
-    (sensor,) = [c for c in SET_X if c.expect_note]
-    assert sensor.expect_note.endswith(f"on {d['transducer']['output']}")
-    assert sensor.effects[0].key == d["transducer"]["form"]
-    assert d["transducer"]["form"] in draw_x.TRANSDUCER[d["transducer"]["output"]]
-    assert (sensor.counts_per_rev, _pairing(sensor)) == (
-        d["transducer"]["counts"], (d["transducer"]["est"], d["transducer"]["val"]))
-    (broken,) = [c for c in SET_X if c.expect_broken]
-    assert broken.expect_broken == (d["broken"]["test"],)
-    assert broken.effects[0].key == d["broken"]["form"]
-    assert d["broken"]["form"] in draw_x.BROKEN[d["broken"]["channel"]]
-    assert (broken.counts_per_rev, _pairing(broken)) == (
-        d["broken"]["counts"], (d["broken"]["est"], d["broken"]["val"]))
-    for n in (48, 96):
-        (c,) = [c for c in SET_X if not c.effects and c.counts_per_rev == n]
-        assert _pairing(c) == (d[f"clean{n}"]["est"], d[f"clean{n}"]["val"])
+    _the_rest_follows(d, SET_X, draw_x)
 
 
 def test_set_x_lab_side_is_as_drawn_and_unnamed() -> None:

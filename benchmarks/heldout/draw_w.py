@@ -29,6 +29,7 @@ from __future__ import annotations
 
 import argparse
 import sys
+from typing import Any
 
 import numpy as np
 
@@ -76,15 +77,24 @@ BROKEN = {
            "cr_reversed"),
     "cd": ("cd_dropout", "cd_rail", "cd_reversed", "cd_spikes", "cd_stuck_bit"),
 }
-__all__ = ["BROKEN", "BRS_GAIN", "KINDS", "REDRAWN", "SEED", "TRANSDUCER", "draw", "forms",
-           "scopes"]
+__all__ = ["BROKEN", "BRS_GAIN", "KINDS", "REDRAWN", "SEED", "TRANSDUCER", "draw", "drawn", "forms",
+           "scopes", "show"]
 
 
 def draw(seed: int = SEED) -> dict:
+    """Set W's choices: :func:`drawn` by ``seed``, after sets A-V, its redraws at its own seed."""
+    return drawn(seed, EARLIER, REDRAWN if seed == SEED else ())
+
+
+def drawn(seed: int, earlier: str, redrawn: tuple[tuple[str, int], ...] = ()) -> dict:
+    """A set's choices drawn by ``default_rng(seed)`` in the order the module docstring gives,
+    the (estimation, validation) pairings of the sets ``earlier`` (their letters) taken; then
+    each case of ``redrawn`` drawn again, whole, by its seed's generator, in that order (set
+    W's and set X's ``draw``: each its own seed, earlier sets and redraws)."""
     rng = np.random.default_rng(seed)
     used = {(tuple(c.est.count(r) for r in ALL), tuple(c.val.count(r) for r in ALL))
-            for s in EARLIER for c in case_set(s)}
-    used_delays = {e.size for s in EARLIER for c in case_set(s) for e in c.effects
+            for s in earlier for c in case_set(s)}
+    used_delays = {e.size for s in earlier for c in case_set(s) for e in c.effects
                    if ph.EFFECTS[e.key] == "input_delay"}
 
     def mix(effects: list[tuple[str, ...]], each: bool = False
@@ -123,10 +133,6 @@ def draw(seed: int = SEED) -> dict:
         two["est"], two["val"] = mix([sa, sb], each=True) or (None, None)
         return two
 
-    out: dict = {"seed": seed, "single": {}, "rejected": []}
-    for kind in KINDS:
-        out["single"][kind] = single(kind)
-    out["two"] = pair()
     def late() -> dict:
         while True:
             d = round(float(rng.uniform(0.001, 0.005)), 5)
@@ -136,25 +142,30 @@ def draw(seed: int = SEED) -> dict:
         est, val = mix([ALL]) or (None, None)
         return {"delay_s": d, "counts": counts(), "est": est, "val": val}
 
+    out: dict = {"seed": seed, "single": {}, "rejected": []}
+    for kind in KINDS:
+        out["single"][kind] = single(kind)
+    out["two"] = pair()
     for key in ("pulse_late", "brs_late"):
         out[key] = late()
     output = str(rng.choice(["cr", "cd"]))
-    out["transducer"] = {"output": output, "counts": counts()}
-    out["transducer"]["est"], out["transducer"]["val"] = mix([])
+    transducer: dict[str, Any] = {"output": output, "counts": counts()}
+    transducer["est"], transducer["val"] = mix([]) or (None, None)
+    out["transducer"] = transducer
     pool = TRANSDUCER[output]
-    out["transducer"]["form"] = pool[int(rng.integers(len(pool)))]
+    transducer["form"] = pool[int(rng.integers(len(pool)))]
     channel = str(rng.choice(["pulse", "brs", "cr", "cd"]))
-    broken = {"channel": channel, "counts": counts()}
-    broken["est"], broken["val"] = mix([])
+    broken: dict[str, Any] = {"channel": channel, "counts": counts()}
+    broken["est"], broken["val"] = mix([]) or (None, None)
     est_rigs = [r for r, n in zip(ALL, broken["est"], strict=True) for _ in range(n)]
     k = int(rng.integers(6))
     broken["test"] = f"{est_rigs[k]}_{1 + 2 * est_rigs[:k].count(est_rigs[k]):03d}"
     broken["form"] = BROKEN[channel][int(rng.integers(len(BROKEN[channel])))]
     out["broken"] = broken
     for n in (48, 96):
-        out[f"clean{n}"] = dict(zip(("est", "val"), mix([]), strict=True))
-    if seed == SEED:  # the draws found impossible, drawn again (in this order, after the rest)
-        for what, again in REDRAWN:
+        out[f"clean{n}"] = dict(zip(("est", "val"), mix([]) or (None, None), strict=True))
+    if redrawn:  # the draws found impossible, drawn again (in this order, after the rest)
+        for what, again in redrawn:
             rng = np.random.default_rng(again)
             if what == "two":
                 out["rejected"].append((what, again, out["two"]))
@@ -175,7 +186,12 @@ def main(argv: list[str] | None = None) -> int:
                                  description=__doc__.split("\n\n")[0])
     ap.add_argument("--seed", type=int, default=SEED)
     args = ap.parse_args(argv)
-    d = draw(args.seed)
+    show(draw(args.seed))
+    return 0
+
+
+def show(d: dict) -> None:
+    """Print a draw of :func:`drawn`, one line per case."""
     for kind, v in d["single"].items():
         print(f"{kind:<19} {v['form']:<18} {'+'.join(v['rigs']):<14} {v['counts']:>3} "
               f"est {v['est']} val {v['val']}")
@@ -186,7 +202,6 @@ def main(argv: list[str] | None = None) -> int:
         print(f"rejected, drawn again by {again}: {what} {v}")
     for key in ("pulse_late", "brs_late", "transducer", "broken", "clean48", "clean96"):
         print(key, d[key])
-    return 0
 
 
 if __name__ == "__main__":

@@ -55,15 +55,9 @@ from __future__ import annotations
 
 import argparse
 import sys
-from typing import Any
 
-import numpy as np
-
-from . import physics as ph
-from .cases import ALL
-from .draw_v import BRS_GAIN, EST_MIXES, KINDS, VAL_MIXES, _ok, forms, scopes
-from .draw_w import BROKEN, TRANSDUCER
-from .sets import case_set
+from .draw_v import BRS_GAIN, KINDS, forms, scopes
+from .draw_w import BROKEN, TRANSDUCER, drawn, show
 
 SEED = 33000
 # a case whose draw proved impossible, drawn again, whole, by the next seed's generator (one per
@@ -85,112 +79,16 @@ __all__ = ["BROKEN", "BRS_GAIN", "KINDS", "REDRAWN", "SEED", "TRANSDUCER", "draw
 
 
 def draw(seed: int = SEED) -> dict:
-    rng = np.random.default_rng(seed)
-    used = {(tuple(c.est.count(r) for r in ALL), tuple(c.val.count(r) for r in ALL))
-            for s in EARLIER for c in case_set(s)}
-    used_delays = {e.size for s in EARLIER for c in case_set(s) for e in c.effects
-                   if ph.EFFECTS[e.key] == "input_delay"}
-
-    def mix(effects: list[tuple[str, ...]], each: bool = False
-            ) -> tuple[tuple[int, ...], tuple[int, ...]] | None:
-        free = [(e, v) for e in EST_MIXES for v in VAL_MIXES
-                if (e, v) not in used and _ok(e, v, effects, each)]
-        if not free:  # every pairing the rules allow already run: impossible as drawn
-            return None
-        pick = free[int(rng.integers(len(free)))]
-        used.add(pick)
-        return pick
-
-    def counts() -> int:
-        return int(rng.choice([48, 64, 96, 128]))
-
-    def single(kind: str) -> dict:
-        f = forms(kind)
-        form = f[int(rng.integers(len(f)))]
-        sc = scopes(kind)
-        scope = sc[int(rng.integers(len(sc)))]
-        n = counts()
-        est, val = mix([scope]) or (None, None)
-        return {"form": form, "rigs": scope, "counts": n, "est": est, "val": val}
-
-    def pair() -> dict:  # the two-effect case: two kinds, their forms, disjoint rigs
-        while True:  # (no bag on R16)
-            ka, kb = (KINDS[i] for i in rng.choice(len(KINDS), 2, replace=False))
-            sa = scopes(ka)[int(rng.integers(len(scopes(ka))))]
-            sb = scopes(kb)[int(rng.integers(len(scopes(kb))))]
-            if not set(sa) & set(sb):
-                break
-        fa, fb = forms(ka), forms(kb)
-        two = {"kinds": (ka, kb), "forms": (fa[int(rng.integers(len(fa)))],
-                                             fb[int(rng.integers(len(fb)))]),
-               "rigs": (sa, sb), "counts": counts()}
-        two["est"], two["val"] = mix([sa, sb], each=True) or (None, None)
-        return two
-
-    def late() -> dict:
-        while True:
-            d = round(float(rng.uniform(0.001, 0.005)), 5)
-            if d not in used_delays:
-                break
-        used_delays.add(d)
-        est, val = mix([ALL]) or (None, None)
-        return {"delay_s": d, "counts": counts(), "est": est, "val": val}
-
-    out: dict = {"seed": seed, "single": {}, "rejected": []}
-    for kind in KINDS:
-        out["single"][kind] = single(kind)
-    out["two"] = pair()
-    for key in ("pulse_late", "brs_late"):
-        out[key] = late()
-    output = str(rng.choice(["cr", "cd"]))
-    transducer: dict[str, Any] = {"output": output, "counts": counts()}
-    transducer["est"], transducer["val"] = mix([]) or (None, None)
-    out["transducer"] = transducer
-    pool = TRANSDUCER[output]
-    transducer["form"] = pool[int(rng.integers(len(pool)))]
-    channel = str(rng.choice(["pulse", "brs", "cr", "cd"]))
-    broken: dict[str, Any] = {"channel": channel, "counts": counts()}
-    broken["est"], broken["val"] = mix([]) or (None, None)
-    est_rigs = [r for r, n in zip(ALL, broken["est"], strict=True) for _ in range(n)]
-    k = int(rng.integers(6))
-    broken["test"] = f"{est_rigs[k]}_{1 + 2 * est_rigs[:k].count(est_rigs[k]):03d}"
-    broken["form"] = BROKEN[channel][int(rng.integers(len(BROKEN[channel])))]
-    out["broken"] = broken
-    for n in (48, 96):
-        out[f"clean{n}"] = dict(zip(("est", "val"), mix([]) or (None, None), strict=True))
-    if seed == SEED:  # the draws found impossible, drawn again (in this order, after the rest)
-        for what, again in REDRAWN:
-            rng = np.random.default_rng(again)
-            if what == "two":
-                out["rejected"].append((what, again, out["two"]))
-                out["two"] = pair()
-            elif what in ("pulse_late", "brs_late"):
-                out["rejected"].append((what, again, out[what]))
-                out[what] = late()
-            else:
-                out["rejected"].append((what, again, out["single"][what]))
-                out["single"][what] = single(what)
-        if out["two"]["est"] is None:
-            raise RuntimeError("the two-effect case has no pairing left: draw it again")
-    return out
+    """Set X's choices: set W's process (:func:`~.draw_w.drawn`) by ``seed``, after sets A-W,
+    its redraws at its own seed."""
+    return drawn(seed, EARLIER, REDRAWN if seed == SEED else ())
 
 
 def main(argv: list[str] | None = None) -> int:
     ap = argparse.ArgumentParser(prog="python -m benchmarks.heldout.draw_x",
                                  description=__doc__.split("\n\n")[0])
     ap.add_argument("--seed", type=int, default=SEED)
-    args = ap.parse_args(argv)
-    d = draw(args.seed)
-    for kind, v in d["single"].items():
-        print(f"{kind:<19} {v['form']:<18} {'+'.join(v['rigs']):<14} {v['counts']:>3} "
-              f"est {v['est']} val {v['val']}")
-    t = d["two"]
-    print(f"two: {t['kinds']} {t['forms']} {t['rigs']} {t['counts']} est {t['est']} "
-          f"val {t['val']}")
-    for what, again, v in d["rejected"]:
-        print(f"rejected, drawn again by {again}: {what} {v}")
-    for key in ("pulse_late", "brs_late", "transducer", "broken", "clean48", "clean96"):
-        print(key, d[key])
+    show(draw(ap.parse_args(argv).seed))
     return 0
 
 
