@@ -3248,14 +3248,13 @@ def test_set_w_lab_side_is_as_drawn_and_unnamed() -> None:
                for e in sensor.effects)
 
 
-@pytest.mark.parametrize("case", sorted(ONE_PHYSICAL_W))
-def test_set_w_physics_moves_its_rigs_only(set_w: Path, case: str) -> None:
-    """Each physical case moves what its form moves on every test of its rigs and leaves the
-    tests of a rig it spares untouched to the bit: the chest's and belt's forms CR and CD (the
-    pulse untouched); the BRS's off-centre encoder the BRS alone, by about its error in counts."""
-    c = BY_NAME_W[case]
+def _moves_its_rigs_only(root: Path, c: cases.Case) -> None:
+    """A one-effect case's data (``root``/on against ``root``/off) move on its rigs only: the
+    tests of a rig it spares untouched to the bit, the pulse untouched, CR and CD moved (the
+    BRS's off-centre encoder: the BRS alone, by about its error in counts) (sets W, X)."""
+    case = c.name
     (e,) = c.effects
-    on, off = set_w / "on" / case, set_w / "off" / case
+    on, off = root / "on" / case, root / "off" / case
     seen = 0
     for folder in sorted(on.glob("*/*")):
         name = folder.name
@@ -3275,6 +3274,14 @@ def test_set_w_physics_moves_its_rigs_only(set_w: Path, case: str) -> None:
             change = float(np.abs(_channel(on, name, which) - _channel(off, name, which)).max())
             assert change > 0.3, (name, which, change)
     assert seen >= 4
+
+
+@pytest.mark.parametrize("case", sorted(ONE_PHYSICAL_W))
+def test_set_w_physics_moves_its_rigs_only(set_w: Path, case: str) -> None:
+    """Each physical case moves what its form moves on every test of its rigs and leaves the
+    tests of a rig it spares untouched to the bit: the chest's and belt's forms CR and CD (the
+    pulse untouched); the BRS's off-centre encoder the BRS alone, by about its error in counts."""
+    _moves_its_rigs_only(set_w, BY_NAME_W[case])
 
 
 def test_set_w_brs_reversed_counts_the_broken_test_the_other_way(set_w: Path) -> None:
@@ -3435,27 +3442,7 @@ def test_set_x_lab_side_is_as_drawn_and_unnamed() -> None:
 def test_set_x_physics_moves_its_rigs_only(set_x: Path, case: str) -> None:
     """Each physical case moves CR and CD on every test of its rigs (the pulse untouched) and
     leaves the tests of a rig it spares untouched to the bit."""
-    c = BY_NAME_X[case]
-    (e,) = c.effects
-    on, off = set_x / "on" / case, set_x / "off" / case
-    seen = 0
-    for folder in sorted(on.glob("*/*")):
-        name = folder.name
-        if name.split("_")[0] not in e.setups:
-            assert _files(folder) == _files(off / folder.parent.name / name)
-            continue
-        seen += 1
-        assert np.array_equal(_channel(on, name, "pulse"), _channel(off, name, "pulse"))
-        if e.key == "brs_eccentric":
-            for which in ("cr", "cd"):
-                assert np.array_equal(_channel(on, name, which), _channel(off, name, which))
-            ring = int(e.size * c.counts_per_rev / (2 * np.pi))
-            assert np.abs(_brs(on, name) - _brs(off, name)).max() >= max(ring, 1)
-            continue
-        for which in ("cr", "cd"):
-            change = float(np.abs(_channel(on, name, which) - _channel(off, name, which)).max())
-            assert change > 0.3, (name, which, change)
-    assert seen >= 4
+    _moves_its_rigs_only(set_x, BY_NAME_X[case])
 
 
 def test_set_x_pulse_sync_shifts_the_broken_tests_pulse_only(set_x: Path) -> None:
