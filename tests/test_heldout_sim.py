@@ -3110,23 +3110,30 @@ def set_w(tmp_path_factory: pytest.TempPathFactory) -> Path:
     return _generate(tmp_path_factory, "w", WATCHED_W)
 
 
+def _is_new_drawn(new: list[cases.Case], before: list[cases.Case], seed0: int) -> None:
+    """A drawn set's names, seeds (seed0..seed0+999), pairings and effect sizes (a switch's
+    aside, always 1) are none of the earlier sets'; its lab-side forms are drawn among every
+    set's, so may be an earlier set's (sets W, X; ``_is_new`` for the sets before)."""
+    assert len(new) == 14
+    names = [c.name for c in before + new]
+    assert len(set(names)) == len(names)
+    seeds = [c.seed for c in new]
+    assert len(set(seeds)) == 14 and all(seed0 <= s < seed0 + 1000 for s in seeds)
+    assert not {c.seed for c in before} & set(seeds)
+    pairings = [_pairing(c) for c in new]
+    assert len(set(pairings)) == 14 and not set(pairings) & {_pairing(c) for c in before}
+    sized = {(k, v) for k, v in _pairs(new) if k not in SWITCHES}
+    assert sized and not sized & _pairs(before)
+    assert all(v == 1.0 for k, v in _pairs(new) if k in SWITCHES)
+    for c in new:
+        est, _ = cases.test_names(c)
+        assert all(e.key in physics.EFFECTS and set(e.tests) <= set(est) for e in c.effects)
+
+
 def test_set_w_is_new() -> None:
     """Set W's names, seeds (32xxx), pairings and effect sizes (a switch's aside) are none of
     sets A-V's; its lab-side forms are drawn among every set's (so may be an earlier set's)."""
-    assert len(SET_W) == 14
-    names = [c.name for c in BEFORE_W + SET_W]
-    assert len(set(names)) == len(names)
-    seeds = [c.seed for c in SET_W]
-    assert len(set(seeds)) == 14 and all(32000 <= s < 33000 for s in seeds)
-    assert not {c.seed for c in BEFORE_W} & set(seeds)
-    pairings = [_pairing(c) for c in SET_W]
-    assert len(set(pairings)) == 14 and not set(pairings) & {_pairing(c) for c in BEFORE_W}
-    sized = {(k, v) for k, v in _pairs(SET_W) if k not in SWITCHES}
-    assert sized and not sized & _pairs(BEFORE_W)
-    assert all(v == 1.0 for k, v in _pairs(SET_W) if k in SWITCHES)
-    for c in SET_W:
-        est, _ = cases.test_names(c)
-        assert all(e.key in physics.EFFECTS and set(e.tests) <= set(est) for e in c.effects)
+    _is_new_drawn(SET_W, BEFORE_W, 32000)
 
 
 def test_set_w_covers_the_general_list() -> None:
@@ -3366,20 +3373,8 @@ def test_set_x_is_registered(tmp_path: Path) -> None:
 def test_set_x_is_new() -> None:
     """Set X's names, seeds (33xxx), pairings and effect sizes (a switch's aside) are none of
     sets A-W's; its forms are drawn among every set's (so may be an earlier set's)."""
-    assert len(SET_X) == 14
-    names = [c.name for c in BEFORE_X + SET_X]
-    assert len(set(names)) == len(names) and all(c.name.startswith("hx_") for c in SET_X)
-    seeds = [c.seed for c in SET_X]
-    assert len(set(seeds)) == 14 and all(33000 <= s < 34000 for s in seeds)
-    assert not {c.seed for c in BEFORE_X} & set(seeds)
-    pairings = [_pairing(c) for c in SET_X]
-    assert len(set(pairings)) == 14 and not set(pairings) & {_pairing(c) for c in BEFORE_X}
-    sized = {(k, v) for k, v in _pairs(SET_X) if k not in SWITCHES}
-    assert sized and not sized & _pairs(BEFORE_X)
-    assert all(v == 1.0 for k, v in _pairs(SET_X) if k in SWITCHES)
-    for c in SET_X:
-        est, _ = cases.test_names(c)
-        assert all(e.key in physics.EFFECTS and set(e.tests) <= set(est) for e in c.effects)
+    _is_new_drawn(SET_X, BEFORE_X, 33000)
+    assert all(c.name.startswith("hx_") for c in SET_X)
 
 
 def test_set_x_covers_the_general_list() -> None:
