@@ -79,11 +79,14 @@
   ``cases_x.py``: set X, the same again, on pairings no earlier case ran, by another engineer:
   set W's process at 33000 (``draw_x.py``), every choice drawn, the sizes set by costs by a
   rule written before the draw.
+  ``cases_y.py``: set Y, the same again, on pairings no earlier case ran, by another engineer:
+  set X's process at 34000 (``draw_y.py``), every choice drawn, the sizes set by costs by a
+  rule written before the draw.
   ``make_sets.py``: writes a set (``--no-effects``: the same tests with every effect off).
   ``costs.py``: what each case costs the thesis grey-box (project CLI).
 
     python -m benchmarks.heldout.make_sets --out /tmp/heldout
-        [--set a|b|c|d|e|f|g|h|i|j|k|l|m|n|o|p|q|r|s|t|u|v|w|x] [--case NAME ...]
+        [--set a|b|c|d|e|f|g|h|i|j|k|l|m|n|o|p|q|r|s|t|u|v|w|x|y] [--case NAME ...]
 
 Never tune the loop on these cases; report them apart from the tuned ones.
 """
