@@ -53,8 +53,12 @@ SEED = 34000
 # thirteen (by 34001-34013) had no pairing left (sets A-X, and Y's draws before them, ran every
 # pairing the rules allow for those rigs, each of either effect estimated twice or more);
 # 34014's, webbing_knee on FULL beside airbag_fabric on SLED, is the case's. Each rejected
-# draw is kept in ``draw()["rejected"]`` with the seed that drew it again (see ``cases_y.py``)
-REDRAWN: tuple[tuple[str, int], ...] = tuple(("two", s) for s in range(34001, 34015))
+# draw is kept in ``draw()["rejected"]`` with the seed that drew it again (see ``cases_y.py``);
+# belt_unloading's first draw, dring_capstan on FULL (128 counts), cost -0.65 points at the
+# rule's first size (0.59), and at its second (1.8, three times) the car's webbing ran away (a
+# channel past 1e6, overflow in the belt's force): impossible; 34015 drew webbing_set on FULL
+REDRAWN: tuple[tuple[str, int], ...] = (*(("two", s) for s in range(34001, 34015)),
+                                         ("belt_unloading", 34015))
 EARLIER = "abcdefghijklmnopqrstuvwx"
 __all__ = ["BROKEN", "BRS_GAIN", "KINDS", "REDRAWN", "SEED", "TRANSDUCER", "draw", "forms",
            "scopes"]
