@@ -28,7 +28,7 @@ Per case the loop runs blind at its defaults on 6 estimation + 6 validation test
 - at the end: how many cases are right, and how many named effects are there and not there,
   and how many refused or tied effects are there and not there.
 
-    python -m benchmarks.loop_heldout [--set a|b|...|v] [--cases NAME ...] [--sets DIR]
+    python -m benchmarks.loop_heldout [--set a|b|...|y] [--cases NAME ...] [--sets DIR]
                                       [--out DIR] [--workers N] [--json FILE]
 """
 
