@@ -353,23 +353,12 @@ def _added(c: Context, st: State, step: LoopStep, pick: _Pick,
                       f"{checked.val_fit.fit.total:.1f} %")
         return False
     if pick.told:
-        entry.warnings.append("named over a tie by the validation tests alone (its runner-up, "
-                              "below)")
-        # the last round's list, if no round follows: it is named, its rival refused
-        rival = pick.runner_up
-        st.possible = [
-            replace(p, why_not=f"{p.why_not}; the validation tests refuse it, and "
-                    f"{best.kind} is named") if rival and (p.kind, p.scope) ==
-            (rival.kind, rival.scope) else p for p in st.possible
-            if (p.kind, p.scope) != (best.kind, scope_label(best.setups))]
+        entry.warnings.append(f"named over a tie by the validation tests alone: {pick.tie_note}")
     st.accepted.append(entry)
     st.val_before = checked.val_fit.fit.total
-    accepted = f"accepted {best.kind} on {scope_label(best.setups)}" + (
+    step.decision = f"accepted {best.kind} on {scope_label(best.setups)}" + (
         f" (on {pick.narrower} only it fits no better beyond the scatter)"
-        if pick.narrower else "")
-    # the other side of a tie: the decision keeps why the first side was refused
-    step.decision = (f"{step.decision}; {accepted}, the other side: the validation tests "
-                     "told them apart" if pick.told else accepted)
+        if pick.narrower else "") + (f": {pick.tie_note}" if pick.told else "")
     c.prog.update(f"accepted {best.kind} on {scope_label(best.setups)}: validation fit "
                   f"{checked.val_fit.fit.total:.1f} %")
     return True
