@@ -113,15 +113,6 @@ class _Pick(NamedTuple):
     other_scope: OtherScope | None
     tie_note: str | None
     carrying: bool  # a tie neither side of which is named: the better one is carried
-    # the tie's other side, tried when the validation tests refuse this one (``told``: it is
-    # that side, named only if they rise with it)
-    other_side: _Pick | None = None
-    told: bool = False
-
-    @property
-    def not_added(self) -> str:
-        """How a refusal of a side of a tie reads in the step's decision."""
-        return "is not named either" if self.told else "is not carried"
 
 
 def one_round(c: Context, st: State) -> bool:
@@ -266,7 +257,6 @@ def _picked(c: Context, st: State, step: LoopStep, tried: list[Tried], passing: 
     tie = untold(best.kind, runner_up, len(ev_best.test_gain_points))
     tie_note: str | None = None
     carrying = False
-    other_side: _Pick | None = None
     if tie and runner_up is not None:
         rival = next(t for t in tried if t[1].kind == runner_up.kind
                      and scope_label(t[1].setups) == runner_up.scope)
@@ -291,7 +281,6 @@ def _picked(c: Context, st: State, step: LoopStep, tried: list[Tried], passing: 
             # effect must (set U: three ties left the model 2.2-4.2 points short of the true
             # structure's fit).
             carrying = True
-            other_side = _other_side(c, tried, passing, rival, on_judged, tie_note)
         # the side not named, when it acts on other setups: judged again beside it
         if past.apart and past.named in ("a", "b"):
             st.carry.append(rival[1] if past.named == "a" else best)
@@ -305,19 +294,7 @@ def _picked(c: Context, st: State, step: LoopStep, tried: list[Tried], passing: 
         elif past.named == "both":  # the other is tried again in the next round
             st.carry.append(rival[1])
     return _Pick(cv_best, best, ev_best, narrower, runner_up, margin_points, other_scope,
-                 tie_note, carrying, other_side)
-
-
-def _other_side(c: Context, tried: list[Tried], passing: list[Tried], rival: Tried,
-                on_judged: dict[int, dict[str, float]], tie_note: str) -> _Pick:
-    """The tie's side ranked second, on the scope the data defend, as a pick of its own."""
-    (cv, best, ev), narrower = defended_scope(
-        [rival, *(t for t in passing if t[1].kind == rival[1].kind and t[1] is not rival[1])],
-        on_judged, c.thin, c.est_setups)
-    runner_up, margin, other_scope = runner_up_of(
-        [(cv, best, ev), *(t for t in tried if t[1] is not best)], on_judged)
-    return _Pick(cv, best, ev, narrower, runner_up, margin, other_scope, tie_note,
-                 carrying=False, told=True)
+                 tie_note, carrying)
 
 
 def _added(c: Context, st: State, step: LoopStep, pick: _Pick,
@@ -331,10 +308,7 @@ def _added(c: Context, st: State, step: LoopStep, pick: _Pick,
     if _an_output_lag(c, st, step, pick, fit):
         return False
     checked = _checked(c, st, step, pick, fit)
-    if isinstance(checked, _Refused):
-        if checked.val_fell is not None and pick.other_side is not None:
-            return _added(c, st, step, _told_apart(pick, checked.val_fell, st.val_before),
-                          per_test)
+    if checked is None:
         return False
     entry = _entry(c, st, step, pick, fit, checked)
     st.base, st.effects, st.base_se = fit.base, fit.effects, fit.base_std_err
@@ -352,13 +326,11 @@ def _added(c: Context, st: State, step: LoopStep, pick: _Pick,
         c.prog.update(f"carried {best.kind} for its fit, not named: validation fit "
                       f"{checked.val_fit.fit.total:.1f} %")
         return False
-    if pick.told:
-        entry.warnings.append(f"named over a tie by the validation tests alone: {pick.tie_note}")
     st.accepted.append(entry)
     st.val_before = checked.val_fit.fit.total
     step.decision = f"accepted {best.kind} on {scope_label(best.setups)}" + (
         f" (on {pick.narrower} only it fits no better beyond the scatter)"
-        if pick.narrower else "") + (f": {pick.tie_note}" if pick.told else "")
+        if pick.narrower else "")
     c.prog.update(f"accepted {best.kind} on {scope_label(best.setups)}: validation fit "
                   f"{checked.val_fit.fit.total:.1f} %")
     return True
@@ -373,8 +345,8 @@ def _an_output_lag(c: Context, st: State, step: LoopStep, pick: _Pick, fit: Refi
     lag = output_lag(best.kind, fit.effects[-1]["parameters"], gains["cr"], gains["cd"])
     if lag is None:
         return False
-    if pick.carrying or pick.told:
-        step.decision += (f"; {best.kind} {pick.not_added}: it delays both inputs alike "
+    if pick.carrying:
+        step.decision += (f"; {best.kind} is not carried: it delays both inputs alike "
                           f"and helps {lag} alone")
         return True
     ms = 1000.0 * float(np.mean([fit.effects[-1]["parameters"][n]
@@ -392,26 +364,6 @@ def _an_output_lag(c: Context, st: State, step: LoopStep, pick: _Pick, fit: Refi
     return True
 
 
-def _told_apart(pick: _Pick, fell_to: float, val_before: float) -> _Pick:
-    """The other side of a tie whose first side the validation tests refused, to be checked
-    as a carried side must be (they rise with it) and then named. The estimation tests
-    cannot tell the two apart; the validation tests, which no fit has seen, can (set X: an
-    airbag tied with the webbing's stiffening on the full-scale rig, the validation tests
-    falling 88.8 -> 82.4 % with the airbag)."""
-    assert pick.other_side is not None
-    first = f"{pick.best.kind} on {scope_label(pick.best.setups)}"
-    note = (f"{pick.tie_note}; the validation tests told them apart: their fit_TOT falls "
-            f"from {val_before:.1f} to {fell_to:.1f} % with {first}")
-    return pick.other_side._replace(tie_note=note)
-
-
-class _Refused(NamedTuple):
-    """Why the refit's checks refused the pick (in the step's decision), and the validation
-    tests' fit_TOT [%] with it when that fell (None when something else refused it)."""
-
-    val_fell: float | None
-
-
 class _Checked(NamedTuple):
     """What the refit's checks measured, for the report."""
 
@@ -423,17 +375,15 @@ class _Checked(NamedTuple):
 
 
 def _checked(c: Context, st: State, step: LoopStep, pick: _Pick, fit: Refit
-             ) -> _Checked | _Refused:
+             ) -> _Checked | None:
     """The refit's checks: its signature explains less of the residual, its parameters are
-    inside their range, the validation tests do not fall (and, to carry a side of a tie or
-    name its other side, rise with no output falling). When refused, the step's decision
-    says why."""
+    inside their range, the validation tests do not fall (and, to carry a side of a tie,
+    rise with no output falling). None when refused, the step's decision saying why."""
     best = pick.best
     resid_old = residual(st.base, st.effects, c.est)
     resid_new = residual(fit.base, fit.effects, c.est)
     share_before, share_after = _signature_shares(best, st.effects, st.base, fit.effects,
                                                   fit.base, resid_old, resid_new, c.est)
-    tie_side = pick.carrying or pick.told
     # The input cross-correlation is reported, not decisive: on simulator data it rose for
     # true effects too (what remains is discretisation error correlated with the pulse).
     # Less correlated than before, or no longer worth mentioning (< 2 % of the residual).
@@ -442,26 +392,25 @@ def _checked(c: Context, st: State, step: LoopStep, pick: _Pick, fit: Refit
     if best.parameters and share_after >= share_before and share_after >= 0.02:
         why = (f"the refitted residual is not less correlated with its signature "
                f"({share_before:.3f} -> {share_after:.3f})")
-        step.decision = (f"{step.decision}; {best.kind} {pick.not_added}: {why}" if tie_side
+        step.decision = (f"{step.decision}; {best.kind} is not carried: {why}" if pick.carrying
                          else f"{best.kind}: {why}: not accepted")
-        return _Refused(None)
+        return None
     val_fit = score(fit.base, fit.effects, c.val)
-    fell = validation_refusal(st.val_before, val_fit.fit.total)
-    refused = at_the_edge(best.kind, fit.effects[-1]["parameters"], c.rate_hz) or fell
-    if tie_side:
+    refused = (at_the_edge(best.kind, fit.effects[-1]["parameters"], c.rate_hz)
+               or validation_refusal(st.val_before, val_fit.fit.total))
+    if pick.carrying:
         refused = refused or carry_refusal(Fits(**fit3(score(st.base, st.effects, c.val))),
                                            Fits(**fit3(val_fit)))
         if refused:
-            step.decision += f"; {best.kind} {pick.not_added}: {refused}"
-            return _Refused(val_fit.fit.total if fell else None)
-        if pick.carrying:
-            st.named_model = (st.base, st.effects)
+            step.decision += f"; {best.kind} is not carried: {refused}"
+            return None
+        st.named_model = (st.base, st.effects)
     if refused:
         st.possible.append(PossibleEffect(best.kind, scope_label(best.setups),
                                           [e["kind"] for e in st.effects], pick.ev, refused))
         step.decision = (f"{best.kind} on {scope_label(best.setups)} passes the rule on "
                          f"the estimation tests, but {refused}: not accepted")
-        return _Refused(None)
+        return None
     return _Checked(share_before, share_after, correlation_tests(resid_old, c.est),
                     correlation_tests(resid_new, c.est), val_fit)
 
