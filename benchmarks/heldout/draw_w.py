@@ -29,6 +29,7 @@ from __future__ import annotations
 
 import argparse
 import sys
+from collections.abc import Callable
 from typing import Any
 
 import numpy as np
@@ -182,11 +183,17 @@ def drawn(seed: int, earlier: str, redrawn: tuple[tuple[str, int], ...] = ()) ->
 
 
 def main(argv: list[str] | None = None) -> int:
-    ap = argparse.ArgumentParser(prog="python -m benchmarks.heldout.draw_w",
-                                 description=__doc__.split("\n\n")[0])
-    ap.add_argument("--seed", type=int, default=SEED)
-    args = ap.parse_args(argv)
-    show(draw(args.seed))
+    return cli("draw_w", __doc__ or "", draw, SEED, argv)
+
+
+def cli(module: str, doc: str, draw_: Callable[[int], dict], seed: int,
+        argv: list[str] | None) -> int:
+    """A set's draw as its command line prints it (sets W and after): ``--seed``, then
+    :func:`show`. ``doc``: the set's module docstring, whose first paragraph is the help."""
+    ap = argparse.ArgumentParser(prog=f"python -m benchmarks.heldout.{module}",
+                                 description=doc.split("\n\n")[0])
+    ap.add_argument("--seed", type=int, default=seed)
+    show(draw_(ap.parse_args(argv).seed))
     return 0
 
 

@@ -53,11 +53,10 @@ The rules for what the draw leaves open, written down before the first draw (``S
 
 from __future__ import annotations
 
-import argparse
 import sys
 
 from .draw_v import BRS_GAIN, KINDS, forms, scopes
-from .draw_w import BROKEN, TRANSDUCER, drawn, show
+from .draw_w import BROKEN, TRANSDUCER, cli, drawn
 
 SEED = 33000
 # a case whose draw proved impossible, drawn again, whole, by the next seed's generator (one per
@@ -85,11 +84,7 @@ def draw(seed: int = SEED) -> dict:
 
 
 def main(argv: list[str] | None = None) -> int:
-    ap = argparse.ArgumentParser(prog="python -m benchmarks.heldout.draw_x",
-                                 description=__doc__.split("\n\n")[0])
-    ap.add_argument("--seed", type=int, default=SEED)
-    show(draw(ap.parse_args(argv).seed))
-    return 0
+    return cli("draw_x", __doc__ or "", draw, SEED, argv)
 
 
 if __name__ == "__main__":

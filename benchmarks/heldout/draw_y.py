@@ -40,11 +40,10 @@ SIZING, written down before the first draw (set X's rule, with sets A-X as the e
 
 from __future__ import annotations
 
-import argparse
 import sys
 
 from .draw_v import BRS_GAIN, KINDS, forms, scopes
-from .draw_w import BROKEN, TRANSDUCER, drawn, show
+from .draw_w import BROKEN, TRANSDUCER, cli, drawn
 
 SEED = 34000
 # a case whose draw proved impossible, drawn again, whole, by the next seed's generator (one per
@@ -71,11 +70,7 @@ def draw(seed: int = SEED) -> dict:
 
 
 def main(argv: list[str] | None = None) -> int:
-    ap = argparse.ArgumentParser(prog="python -m benchmarks.heldout.draw_y",
-                                 description=__doc__.split("\n\n")[0])
-    ap.add_argument("--seed", type=int, default=SEED)
-    show(draw(ap.parse_args(argv).seed))
-    return 0
+    return cli("draw_y", __doc__ or "", draw, SEED, argv)
 
 
 if __name__ == "__main__":
