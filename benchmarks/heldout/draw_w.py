@@ -87,21 +87,32 @@ def draw(seed: int = SEED) -> dict:
     return drawn(seed, EARLIER, REDRAWN if seed == SEED else ())
 
 
-def drawn(seed: int, earlier: str, redrawn: tuple[tuple[str, int], ...] = ()) -> dict:
+def drawn(seed: int, earlier: str, redrawn: tuple[tuple[str, int], ...] = (),
+          reuse_two: bool = False) -> dict:
     """A set's choices drawn by ``default_rng(seed)`` in the order the module docstring gives,
     the (estimation, validation) pairings of the sets ``earlier`` (their letters) taken; then
     each case of ``redrawn`` drawn again, whole, by its seed's generator, in that order (set
-    W's and set X's ``draw``: each its own seed, earlier sets and redraws)."""
+    W's and set X's ``draw``: each its own seed, earlier sets and redraws).
+
+    ``reuse_two`` (set Z's rule; off for sets W-Y, whose draws it leaves as they were): when
+    no pairing is free for the two-effect case, its pairing is drawn by the same generator,
+    uniformly, among the pairings the ``earlier`` sets ran that its rules allow (every rig of
+    either effect estimated twice or more, and the rest), instead of none; the case then
+    carries ``"reused": True`` (``False`` when a free one was drawn)."""
     rng = np.random.default_rng(seed)
     used = {(tuple(c.est.count(r) for r in ALL), tuple(c.val.count(r) for r in ALL))
             for s in earlier for c in case_set(s)}
+    ran = frozenset(used)  # the earlier sets' pairings alone
     used_delays = {e.size for s in earlier for c in case_set(s) for e in c.effects
                    if ph.EFFECTS[e.key] == "input_delay"}
 
-    def mix(effects: list[tuple[str, ...]], each: bool = False
+    def mix(effects: list[tuple[str, ...]], each: bool = False, reuse: bool = False
             ) -> tuple[tuple[int, ...], tuple[int, ...]] | None:
         free = [(e, v) for e in EST_MIXES for v in VAL_MIXES
                 if (e, v) not in used and _ok(e, v, effects, each)]
+        if not free and reuse:  # none free: among those the earlier sets ran (reuse_two)
+            free = [(e, v) for e in EST_MIXES for v in VAL_MIXES
+                    if (e, v) in ran and _ok(e, v, effects, each)]
         if not free:  # every pairing the rules allow already run: impossible as drawn
             return None
         pick = free[int(rng.integers(len(free)))]
@@ -131,7 +142,9 @@ def drawn(seed: int, earlier: str, redrawn: tuple[tuple[str, int], ...] = ()) ->
         two = {"kinds": (ka, kb), "forms": (fa[int(rng.integers(len(fa)))],
                                              fb[int(rng.integers(len(fb)))]),
                "rigs": (sa, sb), "counts": counts()}
-        two["est"], two["val"] = mix([sa, sb], each=True) or (None, None)
+        two["est"], two["val"] = mix([sa, sb], each=True, reuse=reuse_two) or (None, None)
+        if reuse_two:
+            two["reused"] = (two["est"], two["val"]) in ran
         return two
 
     def late() -> dict:
@@ -204,7 +217,7 @@ def show(d: dict) -> None:
               f"est {v['est']} val {v['val']}")
     t = d["two"]
     print(f"two: {t['kinds']} {t['forms']} {t['rigs']} {t['counts']} est {t['est']} "
-          f"val {t['val']}")
+          f"val {t['val']}" + (" (an earlier set's pairing, reused)" if t.get("reused") else ""))
     for what, again, v in d["rejected"]:
         print(f"rejected, drawn again by {again}: {what} {v}")
     for key in ("pulse_late", "brs_late", "transducer", "broken", "clean48", "clean96"):

@@ -3,9 +3,27 @@ draws them by set W's process (``draw_w.drawn``, the order and pools its docstri
 each kind's form, rigs, counts and mix; the two-effect case; the late pulse's and late BRS's
 delays; the transducer error's output, counts, mix and form; the broken test's channel,
 counts, mix, test and form; the clean cases' mixes), the (estimation, validation) pairings of
-every case of sets A-Y taken; then, each by the next seed's generator (35001, 35002, ...), a
-case again where its first draw proved impossible (``REDRAWN``). The sizes are not drawn: they
-are set by costs, by the rule below (see ``cases_z.py``).
+every case of sets A-Y taken (the two-effect case's aside, below); then, each by the next
+seed's generator (35001, 35002, ...), a case again where its first draw proved impossible
+(``REDRAWN``). The sizes are not drawn: they are set by costs, by the rule below (see
+``cases_z.py``).
+
+The two-effect case may reuse a pairing an earlier set ran (``drawn(..., reuse_two=True)``),
+decided after the first draw, before any size, cost or loop run, and committed before drawing
+again: set W's rule that every rig of either effect is estimated twice or more (with the
+others: 6 + 6 tests, each rig estimated twice or none, an effect on some rigs on two or more
+estimation and validation tests of them beside an estimation test of a rig it spares) leaves
+12 pairings for a two-rig effect beside a one-rig effect and 24 for two one-rig effects, on
+each of the six rig splits, and sets A-Y ran every one of them (0 free on all six, counted;
+set Y's 14 redraws took the last; this set's first draw and 39 redraws by 35001-35039, under
+the old rule, found none), while 182 of the 364 pairings the clean and one-effect cases draw
+from were still free. So when no pairing is free for its rigs, the two-effect case's pairing
+is drawn by the same generator, uniformly, among the pairings the rules allow that sets A-Y
+ran; everything else about it (its kinds, forms, rigs, counts; every rig of either effect
+estimated twice or more) is as before, and every other case still takes only a free pairing.
+Sets W, X and Y draw as they did (the keyword is off for them). The draw at 35000 under this
+rule is the set's first under it; what the old rule's draw printed for the other cases does
+not hold (the generator draws once more, the two-effect case's pairing, before them).
 
 SIZING, written down before the first draw (set Y's rule, set X's, with sets A-Y as the
 earlier sets):
@@ -34,7 +52,7 @@ earlier sets):
 5. The broken test's size by 1 only, its cost written down, not banded (its verdict is a flag).
 6. An impossible draw is drawn again, the whole case, by the next seed of the family (35001,
    35002, ...) in the order found, after the rest, the pairings of everything drawn before
-   still taken (``REDRAWN``).
+   still taken (``REDRAWN``; the two-effect case, with none free, an earlier set's, above).
 
     python -m benchmarks.heldout.draw_z [--seed 35000]
 """
@@ -57,8 +75,9 @@ __all__ = ["BROKEN", "BRS_GAIN", "KINDS", "REDRAWN", "SEED", "TRANSDUCER", "draw
 
 def draw(seed: int = SEED) -> dict:
     """Set Z's choices: set W's process (:func:`~.draw_w.drawn`) by ``seed``, after sets A-Y,
-    its redraws at its own seed."""
-    return drawn(seed, EARLIER, REDRAWN if seed == SEED else ())
+    its redraws at its own seed; the two-effect case, with no pairing free, reuses one of
+    A-Y's (``reuse_two``)."""
+    return drawn(seed, EARLIER, REDRAWN if seed == SEED else (), reuse_two=True)
 
 
 def main(argv: list[str] | None = None) -> int:
