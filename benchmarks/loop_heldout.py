@@ -216,7 +216,7 @@ def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__,
                                  formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--set", dest="case_set", choices=SETS, default="a",
-                    help="set A (cases.py, default), or B ... Y (cases_b.py ... cases_y.py)")
+                    help="set A (cases.py, default), or B ... Z (cases_b.py ... cases_z.py)")
     ap.add_argument("--cases", nargs="+", metavar="NAME", help="only these cases of the set")
     ap.add_argument("--sets", type=Path, help="the generated sets (default: generate them "
                     "into a temporary folder with benchmarks.heldout.make_sets)")

@@ -82,11 +82,15 @@
   ``cases_y.py``: set Y, the same again, on pairings no earlier case ran, by another engineer:
   set X's process at 34000 (``draw_y.py``), every choice drawn, the sizes set by costs by a
   rule written before the draw.
+  ``cases_z.py``: set Z, the same again, by another engineer: set Y's process at 35000
+  (``draw_z.py``), every choice drawn, the sizes set by costs by a rule written before the
+  draw, on pairings no earlier case ran save the two-effect case's (none was left for it: it
+  reuses one of set O's, by a rule written before drawing again).
   ``make_sets.py``: writes a set (``--no-effects``: the same tests with every effect off).
   ``costs.py``: what each case costs the thesis grey-box (project CLI).
 
     python -m benchmarks.heldout.make_sets --out /tmp/heldout
-        [--set a|b|c|d|e|f|g|h|i|j|k|l|m|n|o|p|q|r|s|t|u|v|w|x|y] [--case NAME ...]
+        [--set a|b|c|d|e|f|g|h|i|j|k|l|m|n|o|p|q|r|s|t|u|v|w|x|y|z] [--case NAME ...]
 
 Never tune the loop on these cases; report them apart from the tuned ones.
 """

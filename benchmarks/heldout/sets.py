@@ -18,7 +18,8 @@ the same way), set U (``cases_u``, written after set T by another engineer, the 
 V (``cases_v``, written after set U by another engineer, its choices drawn, the same way), set W
 (``cases_w``, written after set V by another engineer, its choices drawn, the same way), set X
 (``cases_x``, written after set W by another engineer, its choices drawn, the same way), set Y
-(``cases_y``, written after set X by another engineer, its choices drawn, the same way)."""
+(``cases_y``, written after set X by another engineer, its choices drawn, the same way), set Z
+(``cases_z``, written after set Y by another engineer, its choices drawn, the same way)."""
 
 from __future__ import annotations
 
@@ -47,18 +48,19 @@ from .cases_v import SET_V
 from .cases_w import SET_W
 from .cases_x import SET_X
 from .cases_y import SET_Y
+from .cases_z import SET_Z
 
-# each set by its letter: set A is ``cases.CASES``, set Y ``cases_y.SET_Y``
+# each set by its letter: set A is ``cases.CASES``, set Z ``cases_z.SET_Z``
 _BY_NAME: dict[str, list[Case]] = {
     "a": CASES, "b": SET_B, "c": SET_C, "d": SET_D, "e": SET_E, "f": SET_F, "g": SET_G,
     "h": SET_H, "i": SET_I, "j": SET_J, "k": SET_K, "l": SET_L, "m": SET_M, "n": SET_N,
     "o": SET_O, "p": SET_P, "q": SET_Q, "r": SET_R, "s": SET_S, "t": SET_T, "u": SET_U,
-    "v": SET_V, "w": SET_W, "x": SET_X, "y": SET_Y}
+    "v": SET_V, "w": SET_W, "x": SET_X, "y": SET_Y, "z": SET_Z}
 SETS = tuple(_BY_NAME)
 
 
 def case_set(name: str) -> list[Case]:
-    """Set A (``cases``), or set B ... Y (``cases_b`` ... ``cases_y``) by its lower-case
+    """Set A (``cases``), or set B ... Z (``cases_b`` ... ``cases_z``) by its lower-case
     letter; ValueError for another name."""
     if name not in _BY_NAME:
         raise ValueError(f"unknown case set {name!r}; known: {', '.join(SETS)}")
