@@ -12,7 +12,17 @@ from types import ModuleType
 import numpy as np
 import pytest
 
-from benchmarks.heldout import cases, draw_v, draw_w, draw_x, draw_y, lab, make_sets, physics
+from benchmarks.heldout import (
+    cases,
+    draw_v,
+    draw_w,
+    draw_x,
+    draw_y,
+    draw_z,
+    lab,
+    make_sets,
+    physics,
+)
 from benchmarks.heldout import sets as heldout_sets
 from benchmarks.heldout.cases import BY_NAME
 from benchmarks.heldout.cases_p import BY_NAME_P
@@ -27,6 +37,8 @@ from benchmarks.heldout.cases_x import BY_NAME_X, ONE_PHYSICAL_X
 from benchmarks.heldout.cases_x import SET_X as SET_X_FILE
 from benchmarks.heldout.cases_y import BY_NAME_Y, ONE_PHYSICAL_Y
 from benchmarks.heldout.cases_y import SET_Y as SET_Y_FILE
+from benchmarks.heldout.cases_z import BY_NAME_Z, ONE_PHYSICAL_Z
+from benchmarks.heldout.cases_z import SET_Z as SET_Z_FILE
 from observer_node.data import load_tests
 from observer_node.data.isomme import read_isomme
 from observer_node.data.setups import assign_setups
@@ -643,9 +655,16 @@ def test_set_e_cr_reversed_reads_negative(set_e: Path) -> None:
 def test_set_e_cr_over_reads_cr_only(set_e: Path) -> None:
     """The transducer error is a static function of cr, in cr alone: high at the peak by the
     element's square law, right at small levels; CD and the pulse as without it."""
-    c = heldout_sets.select(["he_cr_progressive"], "e")[0]
+    _cr_over_reads(set_e, heldout_sets.select(["he_cr_progressive"], "e")[0])
+
+
+def _cr_over_reads(root: Path, c: cases.Case) -> int:
+    """``c``'s cr_progressive (``root``/on against ``root``/off): each test's CR high at its
+    peak by the element's square law, right at small levels; CD and the pulse as without it
+    (sets E, Z). Returns the tests seen."""
     (eff,) = c.effects
-    on, off = set_e / "on" / c.name, set_e / "off" / c.name
+    on, off = root / "on" / c.name, root / "off" / c.name
+    seen = 0
     for folder in sorted(on.glob("*/*")):
         for which in ("cd", "pulse"):
             assert np.array_equal(_channel(on, folder.name, which),
@@ -656,6 +675,8 @@ def test_set_e_cr_over_reads_cr_only(set_e: Path) -> None:
         assert cr[peak] > cr0[peak] + 1 and cr[peak] == pytest.approx(want, abs=0.5)
         small = np.abs(cr0) < 4
         assert np.allclose(cr[small], cr0[small], atol=0.2)
+        seen += 1
+    return seen
 
 
 
@@ -1317,17 +1338,26 @@ def test_set_j_brs_swap_crosses_two_tests(set_j: Path) -> None:
     phase: a count or two apart), far from their own; every other channel and test untouched."""
     c = heldout_sets.select(["hj_broken_brs_swap"], "j")[0]
     a, b = c.expect_broken
-    on, off = set_j / "on" / c.name, set_j / "off" / c.name
-    for mine, other in ((a, b), (b, a)):
+    _brs_is_the_others(set_j, c, ((a, b), (b, a)))
+
+
+def _brs_is_the_others(root: Path, c: cases.Case, crossed: tuple[tuple[str, str], ...]) -> None:
+    """For each (mine, other) of ``crossed``, ``c``'s test ``mine`` holds ``other``'s spool as
+    its BRS (``root``/on against ``root``/off; read at its own encoder's phase: a count or two
+    apart), far from its own, its CR, CD and pulse untouched; every test not a ``mine``
+    untouched (sets J, Z)."""
+    on, off = root / "on" / c.name, root / "off" / c.name
+    for mine, other in crossed:
         swapped, own, theirs = _brs(on, mine), _brs(off, mine), _brs(off, other)
         n = min(len(swapped), len(theirs))
         assert np.abs(swapped[:n] - theirs[:n]).max() <= 2
         assert np.abs(swapped - own).max() >= 8
         for which in ("cr", "cd", "pulse"):
             assert np.array_equal(_channel(on, mine, which), _channel(off, mine, which))
+    mine_ = {m for m, _ in crossed}
     for part in ("est", "val"):
         for folder in sorted((on / part).iterdir()):
-            if folder.name not in (a, b):
+            if folder.name not in mine_:
                 assert _files(folder) == _files(off / part / folder.name)
 
 
@@ -3112,10 +3142,12 @@ def set_w(tmp_path_factory: pytest.TempPathFactory) -> Path:
     return _generate(tmp_path_factory, "w", WATCHED_W)
 
 
-def _is_new_drawn(new: list[cases.Case], before: list[cases.Case], seed0: int) -> None:
+def _is_new_drawn(new: list[cases.Case], before: list[cases.Case], seed0: int,
+                  reused: tuple[str, ...] = ()) -> None:
     """A drawn set's names, seeds (seed0..seed0+999), pairings and effect sizes (a switch's
     aside, always 1) are none of the earlier sets'; its lab-side forms are drawn among every
-    set's, so may be an earlier set's (sets W, X; ``_is_new`` for the sets before)."""
+    set's, so may be an earlier set's (sets W, X; ``_is_new`` for the sets before). The cases
+    ``reused`` (set Z's two-effect case) run an earlier set's pairing, and no other case does."""
     assert len(new) == 14
     names = [c.name for c in before + new]
     assert len(set(names)) == len(names)
@@ -3123,7 +3155,8 @@ def _is_new_drawn(new: list[cases.Case], before: list[cases.Case], seed0: int) -
     assert len(set(seeds)) == 14 and all(seed0 <= s < seed0 + 1000 for s in seeds)
     assert not {c.seed for c in before} & set(seeds)
     pairings = [_pairing(c) for c in new]
-    assert len(set(pairings)) == 14 and not set(pairings) & {_pairing(c) for c in before}
+    assert len(set(pairings)) == 14
+    assert {c.name for c in new if _pairing(c) in {_pairing(c) for c in before}} == set(reused)
     sized = {(k, v) for k, v in _pairs(new) if k not in SWITCHES}
     assert sized and not sized & _pairs(before)
     assert all(v == 1.0 for k, v in _pairs(new) if k in SWITCHES)
@@ -3615,3 +3648,135 @@ def test_set_y_cr_crosstalk_adds_cd_to_cr_only(set_y: Path) -> None:
 
 def test_set_y_has_no_run_aways(set_y: Path) -> None:
     _no_run_aways(SET_Y, set_y)
+
+
+# ------------------------------------------------------------------ set Z (cases_z.py)
+
+SET_Z = heldout_sets.case_set("z")
+BEFORE_Z = _cases_of("abcdefghijklmnopqrstuvwxy")
+# the broken test, the transducer error, and every physical case of one effect (its rigs moved,
+# the others untouched)
+WATCHED_Z = ("hz_broken_brs_swap", "hz_cr_progressive", *ONE_PHYSICAL_Z)
+# the draws found impossible, drawn again by the next seeds in the order found (draw_z.REDRAWN)
+REDRAWN_Z: list[tuple[str, int]] = []
+# the two-effect case, on an earlier set's pairing (none free for it: draw_z's reuse rule)
+TWO_Z = "hz_two_lock_sled_set_full"
+
+
+@pytest.fixture(scope="module")
+def set_z(tmp_path_factory: pytest.TempPathFactory) -> Path:
+    return _generate(tmp_path_factory, "z", WATCHED_Z)
+
+
+def test_set_z_is_registered(tmp_path: Path) -> None:
+    """Set Z is ``cases_z.SET_Z`` under the letter z, for sets.select, make_sets and costs."""
+    assert "z" in heldout_sets.SETS and SET_Z == SET_Z_FILE
+    assert heldout_sets.select(["hz_clean48"], "z") == [BY_NAME_Z["hz_clean48"]]
+    assert make_sets.main(["--set", "z", "--case", "hz_clean48", "--out", str(tmp_path)]) == 0
+    truth = json.loads((tmp_path / "hz_clean48" / "truth.json").read_text())
+    assert truth["case"]["name"] == "hz_clean48" and len(truth["tests"]) == 12
+
+
+def test_set_z_is_new() -> None:
+    """Set Z's names, seeds (35xxx), pairings and effect sizes (a switch's aside) are none of
+    sets A-Y's, but the two-effect case's pairing (an earlier set's, by draw_z's rule); its
+    forms are drawn among every set's (so may be an earlier set's)."""
+    _is_new_drawn(SET_Z, BEFORE_Z, 35000, reused=(TWO_Z,))
+    assert all(c.name.startswith("hz_") for c in SET_Z)
+
+
+def test_set_z_covers_the_general_list() -> None:
+    """Set Z as its brief asks: clean cases at 48 and 96 counts; each kind of the library a loop
+    can name, as physics, once in a case of its own; two effects of different kinds on different
+    rigs in one case; a broken estimation test; a transducer error on CR alone (as drawn); a
+    late pulse and a late BRS at delays in 1-5 ms no earlier set used on any input; 6 + 6
+    tests, every rig an estimation part holds held twice or more; an effect on some rigs only
+    rests on two estimation and two validation tests of them beside an estimation test of a rig
+    it spares."""
+    _covers_the_general_list(SET_Z, BEFORE_Z, "cr", ONE_PHYSICAL_Z, draw_z.KINDS)
+
+
+def test_set_z_follows_its_draw() -> None:
+    """Set Z's designer's choices are numpy's default_rng(35000)'s (``draw_z.py``; the draws
+    found impossible drawn again by the next seeds, ``REDRAWN``), followed as drawn: each
+    kind's form, rigs, counts and mix; the two-effect case's kinds, forms, rigs, counts and mix;
+    the delays, their counts and mixes; the transducer error's output, form, counts and mix;
+    the broken test's channel, form, test, counts and mix; the clean cases' mixes. Set W's
+    process: its kinds, pools and mix rules, A-Y's pairings taken, but the two-effect case's:
+    none was free for its rigs (the old rule draws it none), so it reuses one A-Y ran, among
+    those its rules allow."""
+    d = draw_z.draw(35000)
+    assert d == draw_z.draw()  # reproducible from its seed
+    assert draw_z.EARLIER == "abcdefghijklmnopqrstuvwxy" and draw_z.SEED == 35000
+    assert (draw_z.KINDS, draw_z.BRS_GAIN) == (draw_w.KINDS, draw_w.BRS_GAIN)
+    assert (draw_z.TRANSDUCER, draw_z.BROKEN) == (draw_w.TRANSDUCER, draw_w.BROKEN)
+    _singles_follow(d, SET_Z, ONE_PHYSICAL_Z, draw_z)
+    assert [(w, s) for w, s, _ in d["rejected"]] == list(draw_z.REDRAWN) == REDRAWN_Z
+    for what, _, first in d["rejected"]:
+        if what in draw_z.KINDS:
+            assert first != d["single"][what] and (first["counts"], (first["est"], first[
+                "val"])) not in {(c.counts_per_rev, _pairing(c)) for c in SET_Z}
+        else:
+            assert first != d[what]
+    _the_rest_follows(d, SET_Z, draw_z)
+    # the two-effect case: every pairing its rules allow for its rigs was run by A-Y, and its
+    # own is one of them; the old rule (no reuse) draws it none
+    two, ran = d["two"], {_pairing(c) for c in BEFORE_Z}
+    allowed = {(e, v) for e in draw_v.EST_MIXES for v in draw_v.VAL_MIXES
+               if draw_v._ok(e, v, list(two["rigs"]), each=True)}
+    assert allowed and allowed <= ran and (two["est"], two["val"]) in allowed and two["reused"]
+    assert _pairing(BY_NAME_Z[TWO_Z]) == (two["est"], two["val"])
+    assert draw_w.drawn(35000, draw_z.EARLIER)["two"]["est"] is None
+
+
+def test_set_z_lab_side_is_as_drawn_and_unnamed() -> None:
+    """One broken estimation test, the only thing expected; one transducer error on CR on every
+    test, nothing physical named; Z's physics earlier sets' forms only."""
+    lib = physics.EFFECTS
+    (broken,) = [c for c in SET_Z if c.expect_broken]
+    (e,) = broken.effects
+    est, _ = cases.test_names(broken)
+    assert set(broken.expect_broken) == set(e.tests) and len(e.tests) == 1
+    assert set(e.tests) <= set(est)
+    assert lib[e.key] == "" and not broken.expect and not broken.expect_note
+    (sensor,) = [c for c in SET_Z if c.expect_note]
+    assert sensor.expect_note == "unexplained (or a sensor effect) on cr"
+    assert not sensor.expect and not sensor.expect_broken
+    assert all(lib[e.key] == "" and not e.tests and e.setups == cases.ALL
+               for e in sensor.effects)
+    assert {k for k in _keys(SET_Z) if lib[k]} <= _keys(BEFORE_Z)
+
+
+@pytest.mark.parametrize("case", sorted(ONE_PHYSICAL_Z))
+def test_set_z_physics_moves_its_rigs_only(set_z: Path, case: str) -> None:
+    """Each physical case moves what its form moves on every test of its rigs (the chest's,
+    belt's, bag's and pelvis's forms CR and CD, the pulse untouched; the BRS's off-centre
+    encoder the BRS alone) and leaves the tests of a rig it spares untouched to the bit."""
+    _moves_its_rigs_only(set_z, BY_NAME_Z[case])
+
+
+def test_set_z_brs_swap_reads_another_tests_spool(set_z: Path) -> None:
+    """The broken test's BRS channel is the test five places on's spool (set J's check: a
+    count or two apart, far from its own), its CR, CD and pulse untouched; every other test
+    untouched, the one whose spool it reads among them."""
+    c = BY_NAME_Z["hz_broken_brs_swap"]
+    (broken,), (e,) = c.expect_broken, c.effects
+    est, val = cases.test_names(c)
+    names = est + val
+    other = names[names.index(broken) + round(e.size)]
+    assert (broken, other) == ("SLED_005", "FULL_002")
+    _brs_is_the_others(set_z, c, ((broken, other),))
+
+
+def test_set_z_cr_progressive_over_reads_cr_only(set_z: Path) -> None:
+    """CR over-reads by the element's square law at its peak, right at small levels (set E's
+    check), every test; CD and the pulse untouched, the BRS too."""
+    c = BY_NAME_Z["hz_cr_progressive"]
+    assert _cr_over_reads(set_z, c) == 12
+    on, off = set_z / "on" / c.name, set_z / "off" / c.name
+    for folder in sorted(on.glob("*/*")):
+        assert np.array_equal(_brs(on, folder.name), _brs(off, folder.name))
+
+
+def test_set_z_has_no_run_aways(set_z: Path) -> None:
+    _no_run_aways(SET_Z, set_z)
