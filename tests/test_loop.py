@@ -12,6 +12,7 @@ import numpy as np
 import pytest
 
 from observer_node.daemon.core import ObserverCore
+from observer_node.ident.metrics import Fits, OutputFits
 from observer_node.loop.closed_loop import EVIDENCE_ROWS, _evidence_rounds, run_loop
 from observer_node.loop.report import LoopReport
 from observer_node.model import ModelFile
@@ -348,3 +349,53 @@ def test_a_tie_the_validation_tests_do_not_confirm_is_not_carried(tmp_path, twin
     assert "carried" not in json.loads((tmp_path / "report.json").read_text())
     md = (tmp_path / "report.md").read_text()
     assert "No effect was accepted" in md and "carried, not named" not in md
+
+
+@pytest.mark.parametrize("worse", [0, 1])
+def test_a_tie_the_validation_tests_tell_apart_test_by_test_is_named(
+        tmp_path, twin, monkeypatch, worse):
+    # The ribs harden on R16 and the estimation tests tie the stiffening with its twin. Here
+    # one side (the first scored on the validation tests, then the second: the ranking does
+    # not choose) fits every validation test 10 points worse: the validation tests tell the
+    # two apart test by test, so the other side is checked as a carried side must be (the
+    # validation fit rises) and named, its tie note and a warning saying how.
+    from observer_node.loop import rounds
+
+    real, seen = rounds.score, []
+
+    def score(base, effects, data):
+        t = real(base, effects, data)
+        kind = effects[-1]["kind"] if effects else None
+        if data.names[0].startswith("VAL") and kind in ("chest_stiffening", twin):
+            seen[:] = seen if kind in seen else [*seen, kind]
+            if seen.index(kind) == worse:
+                return dataclasses.replace(
+                    t, fit=Fits.of(t.fit.cr - 10.0, t.fit.cd - 10.0),
+                    tests={n: OutputFits(v.cr - 10.0, v.cd - 10.0) for n, v in t.tests.items()})
+        return t
+
+    monkeypatch.setattr(rounds, "score", score)
+    cfg = PlantConfig(effects={"chest_stiffening": 1.0})
+    est = simulate_campaign("R16", 6, seed=21, config=cfg, prefix="EST")
+    val = simulate_campaign("R16", 6, seed=22, config=cfg, prefix="VAL")
+    r = run_loop(est, val, tmp_path, verbose=False, plots=False, ratings=False, max_effects=1)
+    lost = seen[worse]
+    (won,) = {"chest_stiffening", twin} - {lost}
+    assert [e.kind for e in r.effects] == [won] and r.carried == [], r.history
+    step = next(s for s in r.history if f"; accepted {won} on all" in s.decision)
+    assert "neither is named" in step.decision and "carried" not in step.decision
+    assert step.decision.endswith("the validation tests told the tie apart, test by test")
+    e = r.effects[0]
+    assert e.evidence.tie is not None
+    assert (f"on the 6 validation tests of the judged rigs, {won} on all fits better than "
+            f"{lost} on all on 6, above the scatter") in e.evidence.tie
+    assert any(w.startswith("named over a tie by the validation tests, test by test")
+               for w in e.warnings)
+    md = (tmp_path / "report.md").read_text()
+    assert "test by test" in md
+    # no round follows (max_effects=1): the named side is not also possible, its rival is
+    assert [(p.kind, p.why_not.endswith(f"the validation tests tell it apart, and {won} is "
+                                        "named"))
+            for p in r.possible if "cannot tell it from" in p.why_not] == [(lost, True)]
+    assert e.fit.total > r.baseline.fit.total
+    assert [x["kind"] for x in ModelFile.load(tmp_path / "model.json").effects] == [won]

@@ -100,7 +100,9 @@ def _markdown_effect(e: AcceptedEffect, carried: bool = False) -> list[str]:
     if ev.runner_up is not None:
         ru = ev.runner_up
         rival = (f"- why this and not that: the runner-up, {ru.kind} on {ru.scope}, "
-                 f"cross-validated {ru.cv_fit:.1f} %, {ev.margin_points:.1f} points lower")
+                 f"cross-validated {ru.cv_fit:.1f} %, {abs(ev.margin_points or 0.0):.1f} "
+                 # the other side of a tie, named over it, may rank below its rival
+                 f"points {'higher' if (ev.margin_points or 0.0) < 0 else 'lower'}")
         if ru.told_apart is not None:
             n = len(ev.rule.test_gain_points)
             rival += (f"; {e.kind} fits better on {ru.tests_better} of {n} estimation tests, "

@@ -29,7 +29,7 @@ from .analysis import (
 )
 from .cluster import Runner
 from .diagnosis import SHAPES, Unexplained, sensor_fold_scores, without_static
-from .evidence import POSSIBLE_MIN, Evidence, PastTheTie, judge, past_the_tie
+from .evidence import POSSIBLE_MIN, Evidence, PastTheTie, beats, judge, past_the_tie
 from .refit import Refit, fold_scores, fold_scores_by_output, model, refit, score
 from .report import (
     AcceptedEffect,
@@ -113,6 +113,15 @@ class _Pick(NamedTuple):
     other_scope: OtherScope | None
     tie_note: str | None
     carrying: bool  # a tie neither side of which is named: the better one is carried
+    # the tie's other side, for the validation tests to judge beside this one (``told``: the
+    # side they told apart, named only if they rise with it)
+    other_side: _Pick | None = None
+    told: bool = False
+
+    @property
+    def not_added(self) -> str:
+        """How a refusal of a side of a tie reads in the step's decision."""
+        return "is not named" if self.told else "is not carried"
 
 
 def one_round(c: Context, st: State) -> bool:
@@ -257,6 +266,7 @@ def _picked(c: Context, st: State, step: LoopStep, tried: list[Tried], passing: 
     tie = untold(best.kind, runner_up, len(ev_best.test_gain_points))
     tie_note: str | None = None
     carrying = False
+    other_side: _Pick | None = None
     if tie and runner_up is not None:
         rival = next(t for t in tried if t[1].kind == runner_up.kind
                      and scope_label(t[1].setups) == runner_up.scope)
@@ -281,6 +291,7 @@ def _picked(c: Context, st: State, step: LoopStep, tried: list[Tried], passing: 
             # effect must (set U: three ties left the model 2.2-4.2 points short of the true
             # structure's fit).
             carrying = True
+            other_side = _other_side(c, tried, passing, rival, on_judged, tie_note)
         # the side not named, when it acts on other setups: judged again beside it
         if past.apart and past.named in ("a", "b"):
             st.carry.append(rival[1] if past.named == "a" else best)
@@ -294,17 +305,43 @@ def _picked(c: Context, st: State, step: LoopStep, tried: list[Tried], passing: 
         elif past.named == "both":  # the other is tried again in the next round
             st.carry.append(rival[1])
     return _Pick(cv_best, best, ev_best, narrower, runner_up, margin_points, other_scope,
-                 tie_note, carrying)
+                 tie_note, carrying, other_side)
+
+
+def _other_side(c: Context, tried: list[Tried], passing: list[Tried], rival: Tried,
+                on_judged: dict[int, dict[str, float]], tie_note: str) -> _Pick:
+    """The tie's side ranked second, on the scope the data defend, as a pick of its own."""
+    (cv, best, ev), narrower = defended_scope(
+        [rival, *(t for t in passing if t[1].kind == rival[1].kind and t[1] is not rival[1])],
+        on_judged, c.thin, c.est_setups)
+    runner_up, margin, other_scope = runner_up_of(
+        [(cv, best, ev), *(t for t in tried if t[1] is not best)], on_judged)
+    return _Pick(cv, best, ev, narrower, runner_up, margin, other_scope, tie_note,
+                 carrying=False, told=True)
 
 
 def _added(c: Context, st: State, step: LoopStep, pick: _Pick,
            per_test: dict[int, dict[str, float]]) -> bool:
     """The pick refitted on all estimation tests and checked (a lag of one output, its
     signature, its parameters' range, the validation tests), then named (True: another round
-    follows) or carried; else refused, the step's decision saying why."""
+    follows) or carried; else refused, the step's decision saying why. A tie neither side of
+    which is named may first be told apart by the validation tests (:func:`_told`)."""
     best = pick.best
     c.prog.update(f"refitting with {best.kind} on all estimation tests")
     fit = refit(st.base, [*st.effects, best.effect()], c.est, max_nfev=120)
+    if pick.carrying and pick.other_side is not None:
+        told = _told(c, st, pick, fit)
+        if told is not None:
+            named = _settled(c, st, step, *told, per_test)
+            if named or told[0].best is best:  # refused as named, it is refused as carried
+                return named
+    return _settled(c, st, step, pick, fit, per_test)
+
+
+def _settled(c: Context, st: State, step: LoopStep, pick: _Pick, fit: Refit,
+             per_test: dict[int, dict[str, float]]) -> bool:
+    """The refitted pick checked, then named, carried or refused (see :func:`_added`)."""
+    best = pick.best
     if _an_output_lag(c, st, step, pick, fit):
         return False
     checked = _checked(c, st, step, pick, fit)
@@ -326,14 +363,68 @@ def _added(c: Context, st: State, step: LoopStep, pick: _Pick,
         c.prog.update(f"carried {best.kind} for its fit, not named: validation fit "
                       f"{checked.val_fit.fit.total:.1f} %")
         return False
+    if pick.told:
+        entry.warnings.append("named over a tie by the validation tests, test by test (its "
+                              "runner-up, below): the estimation tests could not tell them "
+                              "apart")
+        # the last round's list, if no round follows: it is named, its rival refused
+        rival = pick.runner_up
+        st.possible = [
+            replace(p, why_not=f"{p.why_not}; the validation tests tell it apart, and "
+                    f"{best.kind} is named") if rival and (p.kind, p.scope) ==
+            (rival.kind, rival.scope) else p for p in st.possible
+            if (p.kind, p.scope) != (best.kind, scope_label(best.setups))]
     st.accepted.append(entry)
     st.val_before = checked.val_fit.fit.total
-    step.decision = f"accepted {best.kind} on {scope_label(best.setups)}" + (
+    accepted = f"accepted {best.kind} on {scope_label(best.setups)}" + (
         f" (on {pick.narrower} only it fits no better beyond the scatter)"
         if pick.narrower else "")
+    # a side of a tie: the decision keeps the tie and how the validation tests told it
+    step.decision = (f"{step.decision}; {accepted}: the validation tests told the tie apart, "
+                     "test by test" if pick.told else accepted)
     c.prog.update(f"accepted {best.kind} on {scope_label(best.setups)}: validation fit "
                   f"{checked.val_fit.fit.total:.1f} %")
     return True
+
+
+#: validation tests on the judged rigs a tie needs before they may tell its sides apart: with
+#: fewer, no sign test reaches ``evidence.SIGN_P``
+MIN_TELLING = 4
+
+
+def _told(c: Context, st: State, pick: _Pick, fit: Refit) -> tuple[_Pick, Refit] | None:
+    """The side of a tie neither side of which is named that the validation tests tell
+    apart: both sides refitted on all estimation tests, each one's fit_TOT per validation
+    test, on the rigs the estimation tests hold enough of to judge (a rig no estimation test
+    holds speaks for the base parameters all rigs share, not for the effect), and the side
+    that beats the other there test by test above the scatter (:func:`~.evidence.beats`,
+    the bar on which the rule tells two effects apart), to be checked as a carried side must
+    be, then named. Both sides are judged alike, whichever ranked first. None when neither
+    beats the other, or too few validation tests are on judged rigs."""
+    other = pick.other_side
+    judged = set(c.test_setup.values())
+    names = [n for n, s in zip(c.val.names, c.val.setups, strict=True) if s in judged]
+    if other is None or len(names) < MIN_TELLING:
+        return None
+    c.prog.update(f"refitting with {other.best.kind}, the tie's other side")
+    fit_b = refit(st.base, [*st.effects, other.best.effect()], c.est, max_nfev=120)
+    on_a, on_b = ({n: _finite_total(t.total) for n, t in score(f.base, f.effects, c.val)
+                   .tests.items() if n in names} for f in (fit, fit_b))
+    for won, won_fit, lost, x, y in ((pick, fit, other, on_a, on_b),
+                                     (other, fit_b, pick, on_b, on_a)):
+        above, better = beats(x, y)
+        if above:
+            note = (f"{pick.tie_note}; on the {len(names)} validation tests of the judged "
+                    f"rigs, {won.best.kind} on {scope_label(won.best.setups)} fits better "
+                    f"than {lost.best.kind} on {scope_label(lost.best.setups)} on {better}, "
+                    "above the scatter")
+            return won._replace(carrying=False, told=True, other_side=None,
+                                tie_note=note), won_fit
+    return None
+
+
+def _finite_total(v: float) -> float:
+    return float(v) if np.isfinite(v) else -1e3
 
 
 def _an_output_lag(c: Context, st: State, step: LoopStep, pick: _Pick, fit: Refit) -> bool:
@@ -345,8 +436,8 @@ def _an_output_lag(c: Context, st: State, step: LoopStep, pick: _Pick, fit: Refi
     lag = output_lag(best.kind, fit.effects[-1]["parameters"], gains["cr"], gains["cd"])
     if lag is None:
         return False
-    if pick.carrying:
-        step.decision += (f"; {best.kind} is not carried: it delays both inputs alike "
+    if pick.carrying or pick.told:
+        step.decision += (f"; {best.kind} {pick.not_added}: it delays both inputs alike "
                           f"and helps {lag} alone")
         return True
     ms = 1000.0 * float(np.mean([fit.effects[-1]["parameters"][n]
@@ -377,13 +468,15 @@ class _Checked(NamedTuple):
 def _checked(c: Context, st: State, step: LoopStep, pick: _Pick, fit: Refit
              ) -> _Checked | None:
     """The refit's checks: its signature explains less of the residual, its parameters are
-    inside their range, the validation tests do not fall (and, to carry a side of a tie,
-    rise with no output falling). None when refused, the step's decision saying why."""
+    inside their range, the validation tests do not fall (and, to carry a side of a tie or
+    name one the validation tests told apart, rise with no output falling). None when
+    refused, the step's decision saying why."""
     best = pick.best
     resid_old = residual(st.base, st.effects, c.est)
     resid_new = residual(fit.base, fit.effects, c.est)
     share_before, share_after = _signature_shares(best, st.effects, st.base, fit.effects,
                                                   fit.base, resid_old, resid_new, c.est)
+    tie_side = pick.carrying or pick.told
     # The input cross-correlation is reported, not decisive: on simulator data it rose for
     # true effects too (what remains is discretisation error correlated with the pulse).
     # Less correlated than before, or no longer worth mentioning (< 2 % of the residual).
@@ -392,19 +485,20 @@ def _checked(c: Context, st: State, step: LoopStep, pick: _Pick, fit: Refit
     if best.parameters and share_after >= share_before and share_after >= 0.02:
         why = (f"the refitted residual is not less correlated with its signature "
                f"({share_before:.3f} -> {share_after:.3f})")
-        step.decision = (f"{step.decision}; {best.kind} is not carried: {why}" if pick.carrying
+        step.decision = (f"{step.decision}; {best.kind} {pick.not_added}: {why}" if tie_side
                          else f"{best.kind}: {why}: not accepted")
         return None
     val_fit = score(fit.base, fit.effects, c.val)
     refused = (at_the_edge(best.kind, fit.effects[-1]["parameters"], c.rate_hz)
                or validation_refusal(st.val_before, val_fit.fit.total))
-    if pick.carrying:
+    if tie_side:
         refused = refused or carry_refusal(Fits(**fit3(score(st.base, st.effects, c.val))),
                                            Fits(**fit3(val_fit)))
         if refused:
-            step.decision += f"; {best.kind} is not carried: {refused}"
+            step.decision += f"; {best.kind} {pick.not_added}: {refused}"
             return None
-        st.named_model = (st.base, st.effects)
+        if pick.carrying:
+            st.named_model = (st.base, st.effects)
     if refused:
         st.possible.append(PossibleEffect(best.kind, scope_label(best.setups),
                                           [e["kind"] for e in st.effects], pick.ev, refused))
