@@ -117,6 +117,8 @@ class _Pick(NamedTuple):
     # side they told apart, named only if they rise with it)
     other_side: _Pick | None = None
     told: bool = False
+    # the tie's two sides (kind, scope) as the possible list holds them, the named side first
+    tie_sides: tuple[tuple[str, str], tuple[str, str]] | None = None
 
     @property
     def not_added(self) -> str:
@@ -331,10 +333,8 @@ def _added(c: Context, st: State, step: LoopStep, pick: _Pick,
     fit = refit(st.base, [*st.effects, best.effect()], c.est, max_nfev=120)
     if pick.carrying and pick.other_side is not None:
         told = _told(c, st, pick, fit)
-        if told is not None:
-            named = _settled(c, st, step, *told, per_test)
-            if named or told[0].best is best:  # refused as named, it is refused as carried
-                return named
+        if told is not None:  # named, or nothing: the other side lost on the validation tests
+            return _settled(c, st, step, *told, per_test)
     return _settled(c, st, step, pick, fit, per_test)
 
 
@@ -363,63 +363,81 @@ def _settled(c: Context, st: State, step: LoopStep, pick: _Pick, fit: Refit,
         c.prog.update(f"carried {best.kind} for its fit, not named: validation fit "
                       f"{checked.val_fit.fit.total:.1f} %")
         return False
-    if pick.told:
+    if pick.told and pick.tie_sides is not None:
         entry.warnings.append("named over a tie by the validation tests, test by test (its "
                               "runner-up, below): the estimation tests could not tell them "
-                              "apart")
-        # the last round's list, if no round follows: it is named, its rival refused
-        rival = pick.runner_up
+                              "apart, and the validation fit that chose it is no longer "
+                              "independent evidence for it")
+        # the last round's list, if no round follows: it is named, its rival told apart
+        won, lost = pick.tie_sides
+        here = (best.kind, scope_label(best.setups))
         st.possible = [
             replace(p, why_not=f"{p.why_not}; the validation tests tell it apart, and "
-                    f"{best.kind} is named") if rival and (p.kind, p.scope) ==
-            (rival.kind, rival.scope) else p for p in st.possible
-            if (p.kind, p.scope) != (best.kind, scope_label(best.setups))]
+                    f"{best.kind} is named") if (p.kind, p.scope) == lost else p
+            for p in st.possible if (p.kind, p.scope) not in (won, here)]
     st.accepted.append(entry)
     st.val_before = checked.val_fit.fit.total
     accepted = f"accepted {best.kind} on {scope_label(best.setups)}" + (
         f" (on {pick.narrower} only it fits no better beyond the scatter)"
         if pick.narrower else "")
     # a side of a tie: the decision keeps the tie and how the validation tests told it
-    step.decision = (f"{step.decision}; {accepted}: the validation tests told the tie apart, "
+    step.decision = (f"{step.decision.removesuffix(': neither is named')}: the estimation "
+                     f"tests name neither; {accepted}: the validation tests told the tie apart, "
                      "test by test" if pick.told else accepted)
     c.prog.update(f"accepted {best.kind} on {scope_label(best.setups)}: validation fit "
                   f"{checked.val_fit.fit.total:.1f} %")
     return True
 
 
-#: validation tests on the judged rigs a tie needs before they may tell its sides apart: with
-#: fewer, no sign test reaches ``evidence.SIGN_P``
+#: validation tests a tie needs, on the judged rigs either side acts on, before they may tell
+#: its sides apart: with fewer, no sign test reaches ``evidence.SIGN_P``
 MIN_TELLING = 4
 
 
 def _told(c: Context, st: State, pick: _Pick, fit: Refit) -> tuple[_Pick, Refit] | None:
     """The side of a tie neither side of which is named that the validation tests tell
-    apart: both sides refitted on all estimation tests, each one's fit_TOT per validation
-    test, on the rigs the estimation tests hold enough of to judge (a rig no estimation test
-    holds speaks for the base parameters all rigs share, not for the effect), and the side
-    that beats the other there test by test above the scatter (:func:`~.evidence.beats`,
-    the bar on which the rule tells two effects apart), to be checked as a carried side must
-    be, then named. Both sides are judged alike, whichever ranked first. None when neither
-    beats the other, or too few validation tests are on judged rigs."""
+    apart, to be named if it passes a carried side's checks. Both sides are refitted on all
+    estimation tests and scored per validation test, on the tests of the judged rigs (a rig
+    too few estimation tests hold speaks for the base parameters all rigs share, not for the
+    effect) that either side acts on. A side is told apart when it passes the rule against
+    the other there (:func:`~.evidence.judge`: at least ``margin`` points better on the mean,
+    above the scatter, no setup lower), the bar on which the loop names an effect at all;
+    both sides are judged alike, whichever ranked first. None when neither passes, or fewer
+    than ``MIN_TELLING`` tests are left; a side told apart and refused by the checks leaves
+    nothing carried (the validation tests have just preferred its rival)."""
     other = pick.other_side
-    judged = set(c.test_setup.values())
-    names = [n for n, s in zip(c.val.names, c.val.setups, strict=True) if s in judged]
-    if other is None or len(names) < MIN_TELLING:
+    judged = set(c.est_setups) - c.thin
+    if other is None or not judged:
+        return None
+    scopes = [pick.best.setups, other.best.setups]
+    acts = None if None in scopes else {s for sc in scopes for s in sc or ()}
+    val_setup = {n: s for n, s in zip(c.val.names, c.val.setups, strict=True)
+                 if s in judged and (acts is None or s in acts)}
+    if len(val_setup) < MIN_TELLING:
         return None
     c.prog.update(f"refitting with {other.best.kind}, the tie's other side")
     fit_b = refit(st.base, [*st.effects, other.best.effect()], c.est, max_nfev=120)
     on_a, on_b = ({n: _finite_total(t.total) for n, t in score(f.base, f.effects, c.val)
-                   .tests.items() if n in names} for f in (fit, fit_b))
-    for won, won_fit, lost, x, y in ((pick, fit, other, on_a, on_b),
-                                     (other, fit_b, pick, on_b, on_a)):
-        above, better = beats(x, y)
-        if above:
-            note = (f"{pick.tie_note}; on the {len(names)} validation tests of the judged "
-                    f"rigs, {won.best.kind} on {scope_label(won.best.setups)} fits better "
-                    f"than {lost.best.kind} on {scope_label(lost.best.setups)} on {better}, "
+                   .tests.items() if n in val_setup} for f in (fit, fit_b))
+    sides = ((pick.best.kind, scope_label(pick.best.setups)),
+             (pick.runner_up.kind, pick.runner_up.scope) if pick.runner_up else ("", ""))
+    for won, won_fit, lost, x, y, recorded in ((pick, fit, other, on_a, on_b, sides),
+                                               (other, fit_b, pick, on_b, on_a, sides[::-1])):
+        ev = judge(y, x, val_setup, None, c.margin)
+        if ev.accepted:
+            note = (f"{pick.tie_note}; on the {ev.tests} validation tests of the judged rigs "
+                    f"either acts on, {won.best.kind} on {scope_label(won.best.setups)} fits "
+                    f"{ev.gain_points:.2f} points better than {lost.best.kind} on "
+                    f"{scope_label(lost.best.setups)} (better on {ev.tests_improved}), "
                     "above the scatter")
-            return won._replace(carrying=False, told=True, other_side=None,
-                                tie_note=note), won_fit
+            # on the estimation tests, as any runner-up (their gains share the model before)
+            apart, better = beats(won.ev.test_gain_points, lost.ev.test_gain_points)
+            runner_up = RunnerUp(lost.best.kind, scope_label(lost.best.setups),
+                                 round(lost.cv, 2), apart, better, True)
+            return won._replace(carrying=False, told=True, other_side=None, tie_note=note,
+                                runner_up=runner_up,
+                                margin_points=round(won.cv - lost.cv, 2),
+                                tie_sides=recorded), won_fit
     return None
 
 
