@@ -333,7 +333,9 @@ def _added(c: Context, st: State, step: LoopStep, pick: _Pick,
     fit = refit(st.base, [*st.effects, best.effect()], c.est, max_nfev=120)
     if pick.carrying and pick.other_side is not None:
         told = _told(c, st, pick, fit)
-        if told is not None:  # named, or nothing: the other side lost on the validation tests
+        if isinstance(told, str):
+            step.decision += f"; {told}"
+        elif told is not None:  # named, or nothing: the other lost on the validation tests
             return _settled(c, st, step, *told, per_test)
     return _settled(c, st, step, pick, fit, per_test)
 
@@ -394,7 +396,8 @@ def _settled(c: Context, st: State, step: LoopStep, pick: _Pick, fit: Refit,
 MIN_TELLING = 4
 
 
-def _told(c: Context, st: State, pick: _Pick, fit: Refit) -> tuple[_Pick, Refit] | None:
+def _told(c: Context, st: State, pick: _Pick, fit: Refit
+          ) -> tuple[_Pick, Refit] | str | None:
     """The side of a tie neither side of which is named that the validation tests tell
     apart, to be named if it passes a carried side's checks. Both sides are refitted on all
     estimation tests and scored per validation test, on the tests of the judged rigs (a rig
@@ -402,9 +405,10 @@ def _told(c: Context, st: State, pick: _Pick, fit: Refit) -> tuple[_Pick, Refit]
     effect) that either side acts on. A side is told apart when it passes the rule against
     the other there (:func:`~.evidence.judge`: at least ``margin`` points better on the mean,
     above the scatter, no setup lower), the bar on which the loop names an effect at all;
-    both sides are judged alike, whichever ranked first. None when neither passes, or fewer
-    than ``MIN_TELLING`` tests are left; a side told apart and refused by the checks leaves
-    nothing carried (the validation tests have just preferred its rival)."""
+    both sides are judged alike, whichever ranked first. When neither passes, what the
+    validation tests said, for the step's decision; None when fewer than ``MIN_TELLING``
+    tests are left. A side told apart and refused by the checks leaves nothing carried (the
+    validation tests have just preferred its rival)."""
     other = pick.other_side
     judged = set(c.est_setups) - c.thin
     if other is None or not judged:
@@ -438,7 +442,10 @@ def _told(c: Context, st: State, pick: _Pick, fit: Refit) -> tuple[_Pick, Refit]
                                 runner_up=runner_up,
                                 margin_points=round(won.cv - lost.cv, 2),
                                 tie_sides=recorded), won_fit
-    return None
+    d = np.array([on_a[n] - on_b[n] for n in val_setup])
+    return (f"the validation tests of the judged rigs either acts on do not tell them apart "
+            f"either ({pick.best.kind} {float(np.mean(d)):+.2f} points against "
+            f"{other.best.kind}, better on {int(np.sum(d > 0))} of {len(d)})")
 
 
 def _finite_total(v: float) -> float:
