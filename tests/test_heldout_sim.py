@@ -3273,21 +3273,27 @@ def test_set_w_pools_are_every_lab_side_form() -> None:
     assert {k for k in _keys(SET_W) if lib[k]} <= _keys(BEFORE_W)
 
 
-def test_set_w_lab_side_is_as_drawn_and_unnamed() -> None:
-    """One broken estimation test, the only thing expected; one transducer error on CD on every
-    test, nothing physical named."""
+def _lab_side_as_drawn(case_set: list[cases.Case], output: str) -> None:
+    """One broken estimation test, the only thing expected; one transducer error on
+    ``output`` on every test, nothing physical named (sets W-Z's lab side)."""
     lib = physics.EFFECTS
-    (broken,) = [c for c in SET_W if c.expect_broken]
+    (broken,) = [c for c in case_set if c.expect_broken]
     (e,) = broken.effects
     est, _ = cases.test_names(broken)
     assert set(broken.expect_broken) == set(e.tests) and len(e.tests) == 1
     assert set(e.tests) <= set(est)
     assert lib[e.key] == "" and not broken.expect and not broken.expect_note
-    (sensor,) = [c for c in SET_W if c.expect_note]
-    assert sensor.expect_note == "unexplained (or a sensor effect) on cd"
+    (sensor,) = [c for c in case_set if c.expect_note]
+    assert sensor.expect_note == f"unexplained (or a sensor effect) on {output}"
     assert not sensor.expect and not sensor.expect_broken
     assert all(lib[e.key] == "" and not e.tests and e.setups == cases.ALL
                for e in sensor.effects)
+
+
+def test_set_w_lab_side_is_as_drawn_and_unnamed() -> None:
+    """One broken estimation test, the only thing expected; one transducer error on CD on every
+    test, nothing physical named."""
+    _lab_side_as_drawn(SET_W, "cd")
 
 
 def _moves_its_rigs_only(root: Path, c: cases.Case) -> None:
@@ -3453,19 +3459,8 @@ def test_set_x_follows_its_draw() -> None:
 def test_set_x_lab_side_is_as_drawn_and_unnamed() -> None:
     """One broken estimation test, the only thing expected; one transducer error on CR on every
     test, nothing physical named; X's physics earlier sets' forms only."""
-    lib = physics.EFFECTS
-    (broken,) = [c for c in SET_X if c.expect_broken]
-    (e,) = broken.effects
-    est, _ = cases.test_names(broken)
-    assert set(broken.expect_broken) == set(e.tests) and len(e.tests) == 1
-    assert set(e.tests) <= set(est)
-    assert lib[e.key] == "" and not broken.expect and not broken.expect_note
-    (sensor,) = [c for c in SET_X if c.expect_note]
-    assert sensor.expect_note == "unexplained (or a sensor effect) on cr"
-    assert not sensor.expect and not sensor.expect_broken
-    assert all(lib[e.key] == "" and not e.tests and e.setups == cases.ALL
-               for e in sensor.effects)
-    assert {k for k in _keys(SET_X) if lib[k]} <= _keys(BEFORE_X) | set(draw_x.BRS_GAIN)
+    _lab_side_as_drawn(SET_X, "cr")
+    assert {k for k in _keys(SET_X) if physics.EFFECTS[k]} <= _keys(BEFORE_X) | set(draw_x.BRS_GAIN)
 
 
 @pytest.mark.parametrize("case", sorted(ONE_PHYSICAL_X))
@@ -3587,19 +3582,8 @@ def test_set_y_follows_its_draw() -> None:
 def test_set_y_lab_side_is_as_drawn_and_unnamed() -> None:
     """One broken estimation test, the only thing expected; one transducer error on CR on every
     test, nothing physical named; Y's physics earlier sets' forms only."""
-    lib = physics.EFFECTS
-    (broken,) = [c for c in SET_Y if c.expect_broken]
-    (e,) = broken.effects
-    est, _ = cases.test_names(broken)
-    assert set(broken.expect_broken) == set(e.tests) and len(e.tests) == 1
-    assert set(e.tests) <= set(est)
-    assert lib[e.key] == "" and not broken.expect and not broken.expect_note
-    (sensor,) = [c for c in SET_Y if c.expect_note]
-    assert sensor.expect_note == "unexplained (or a sensor effect) on cr"
-    assert not sensor.expect and not sensor.expect_broken
-    assert all(lib[e.key] == "" and not e.tests and e.setups == cases.ALL
-               for e in sensor.effects)
-    assert {k for k in _keys(SET_Y) if lib[k]} <= _keys(BEFORE_Y)
+    _lab_side_as_drawn(SET_Y, "cr")
+    assert {k for k in _keys(SET_Y) if physics.EFFECTS[k]} <= _keys(BEFORE_Y)
 
 
 @pytest.mark.parametrize("case", sorted(ONE_PHYSICAL_Y))
@@ -3732,19 +3716,8 @@ def test_set_z_follows_its_draw() -> None:
 def test_set_z_lab_side_is_as_drawn_and_unnamed() -> None:
     """One broken estimation test, the only thing expected; one transducer error on CR on every
     test, nothing physical named; Z's physics earlier sets' forms only."""
-    lib = physics.EFFECTS
-    (broken,) = [c for c in SET_Z if c.expect_broken]
-    (e,) = broken.effects
-    est, _ = cases.test_names(broken)
-    assert set(broken.expect_broken) == set(e.tests) and len(e.tests) == 1
-    assert set(e.tests) <= set(est)
-    assert lib[e.key] == "" and not broken.expect and not broken.expect_note
-    (sensor,) = [c for c in SET_Z if c.expect_note]
-    assert sensor.expect_note == "unexplained (or a sensor effect) on cr"
-    assert not sensor.expect and not sensor.expect_broken
-    assert all(lib[e.key] == "" and not e.tests and e.setups == cases.ALL
-               for e in sensor.effects)
-    assert {k for k in _keys(SET_Z) if lib[k]} <= _keys(BEFORE_Z)
+    _lab_side_as_drawn(SET_Z, "cr")
+    assert {k for k in _keys(SET_Z) if physics.EFFECTS[k]} <= _keys(BEFORE_Z)
 
 
 @pytest.mark.parametrize("case", sorted(ONE_PHYSICAL_Z))
