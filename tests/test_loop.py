@@ -436,6 +436,19 @@ def test_a_tie_the_validation_tests_prefer_by_little_is_carried_not_named(
             f"{seen[0]} on all, the side ranked first, is carried") in decision
 
 
+def test_a_tie_with_too_few_validation_tests_is_not_judged_by_them(tmp_path, twin):
+    # Three validation tests cannot tell a tie apart (no sign test on three reaches the
+    # rule's bar): the decision says so, and the first side is carried as before.
+    cfg = PlantConfig(effects={"chest_stiffening": 1.0})
+    est = simulate_campaign("R16", 6, seed=21, config=cfg, prefix="EST")
+    val = simulate_campaign("R16", 3, seed=22, config=cfg, prefix="VAL")
+    r = run_loop(est, val, tmp_path, verbose=False, plots=False, ratings=False, max_effects=1)
+    assert r.effects == [] and len(r.carried) == 1, r.history
+    assert ("; the validation tests cannot judge the tie: 3 on the judged rigs either acts on, "
+            f"fewer than 4; {r.carried[0].kind} on all, the side ranked first, is carried"
+            ) in r.history[-1].decision
+
+
 def test_a_tie_side_told_apart_but_refused_leaves_nothing_carried(tmp_path, twin, monkeypatch):
     # The second side fits every validation test 10 points worse, so the first is told apart;
     # but its validation total falls 10 points: refused as a carried side would be, and the

@@ -405,10 +405,10 @@ def _told(c: Context, st: State, pick: _Pick, fit: Refit
     effect) that either side acts on. A side is told apart when it passes the rule against
     the other there (:func:`~.evidence.judge`: at least ``margin`` points better on the mean,
     above the scatter, no setup lower), the bar on which the loop names an effect at all;
-    both sides are judged alike, whichever ranked first. When neither passes, what the
-    validation tests said, for the step's decision; None when fewer than ``MIN_TELLING``
-    tests are left. A side told apart and refused by the checks leaves nothing carried (the
-    validation tests have just preferred its rival)."""
+    both sides are judged alike, whichever ranked first. When neither passes, or fewer than
+    ``MIN_TELLING`` tests are left, why not, for the step's decision. A side told apart and
+    refused by the checks leaves nothing carried (the validation tests have just preferred
+    its rival)."""
     other = pick.other_side
     judged = set(c.est_setups) - c.thin
     if other is None or not judged:
@@ -418,7 +418,8 @@ def _told(c: Context, st: State, pick: _Pick, fit: Refit
     val_setup = {n: s for n, s in zip(c.val.names, c.val.setups, strict=True)
                  if s in judged and (acts is None or s in acts)}
     if len(val_setup) < MIN_TELLING:
-        return None
+        return (f"the validation tests cannot judge the tie: {len(val_setup)} on the judged "
+                f"rigs either acts on, fewer than {MIN_TELLING}")
     c.prog.update(f"refitting with {other.best.kind}, the tie's other side")
     fit_b = refit(st.base, [*st.effects, other.best.effect()], c.est, max_nfev=120)
     on_a, on_b = ({n: _finite_total(t.total) for n, t in score(f.base, f.effects, c.val)
