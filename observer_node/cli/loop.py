@@ -18,7 +18,11 @@ def add_subparser(subparsers: argparse._SubParsersAction[argparse.ArgumentParser
         "refit, and name it only if it beats test-to-test scatter: each estimation test's "
         "cross-validated fit with and without it, paired, must gain --margin points on average "
         "with a 95 % interval above zero (or a sign test, p <= 0.0625), and no setup may lose; "
-        "repeat; report fits before and after on the validation tests. Tests that look broken "
+        "repeat; report fits before and after on the validation tests, which are never fitted "
+        "on and refuse an effect whose fit they lower. Two effects the estimation tests cannot "
+        "tell apart (a tie) are both listed, neither named, the better carried in model.json "
+        "for its fit, unless the validation tests tell them apart by the same rule. Tests that "
+        "look broken "
         "(missing, frozen, saturated or spiking channels, a fit far below the others') are "
         "named and left out; a one-output static error is reported as a sensor effect; what "
         "nothing explains is reported as unexplained. Tests are grouped in "
@@ -29,7 +33,8 @@ def add_subparser(subparsers: argparse._SubParsersAction[argparse.ArgumentParser
     s.add_argument("--estimate", nargs="+", required=True, metavar="TEST",
                    help="tests to identify and cross-validate effects on: " + _data.TESTS_HELP)
     s.add_argument("--validate", nargs="+", required=True, metavar="TEST",
-                   help="held-out tests the report scores before and after (never fitted on)")
+                   help="held-out tests the report scores before and after (never fitted on; "
+                   "they refuse an effect whose fit they lower and may tell a tie apart)")
     s.add_argument("--out", required=True, help="output folder")
     s.add_argument("--margin", type=float, default=1.0,
                    help="mean paired fit_TOT points an effect must add in cross-validation "
