@@ -183,7 +183,7 @@ def score(base: dict, effects: list[dict], data: Dataset) -> FitTable:
         y_hat = model(base, effects, data).simulate(data.pulse_g, data.brs_rad)
     t = fit_table(data.names, data.y[:, data.win], y_hat[:, data.win])
     f = t.fit
-    return replace(t, fit=Fits(_finite(f.cr), _finite(f.cd), _finite(f.total)))
+    return replace(t, fit=Fits(finite(f.cr), finite(f.cd), finite(f.total)))
 
 
 #: leave one test out up to this many estimation tests; beyond, this many folds
@@ -214,7 +214,7 @@ def fold_scores(base: dict, effects: list[dict], data: Dataset, train: list[int]
     cross-validation, one task for the cluster."""
     r = refit_from(base, effects, data.subset(train), max_nfev)
     t = score(r.base, r.effects, data.subset(test)).tests
-    return {n: _finite(v.total) for n, v in t.items()}
+    return {n: finite(v.total) for n, v in t.items()}
 
 
 def fold_scores_by_output(base: dict, effects: list[dict], data: Dataset, train: list[int],
@@ -223,9 +223,10 @@ def fold_scores_by_output(base: dict, effects: list[dict], data: Dataset, train:
     """As :func:`fold_scores`, each output's fit [%] apart: {"cr": {test: fit}, "cd": ...}."""
     r = refit_from(base, effects, data.subset(train), max_nfev)
     t = score(r.base, r.effects, data.subset(test)).tests
-    return {"cr": {n: _finite(v.cr) for n, v in t.items()},
-            "cd": {n: _finite(v.cd) for n, v in t.items()}}
+    return {"cr": {n: finite(v.cr) for n, v in t.items()},
+            "cd": {n: finite(v.cd) for n, v in t.items()}}
 
 
-def _finite(v: float) -> float:
+def finite(v: float) -> float:
+    """A fit [%] as scored, a run-away's (not finite) as -1000 %."""
     return float(v) if np.isfinite(v) else -1e3

@@ -30,7 +30,7 @@ from .analysis import (
 from .cluster import Runner
 from .diagnosis import SHAPES, Unexplained, sensor_fold_scores, without_static
 from .evidence import POSSIBLE_MIN, Evidence, PastTheTie, beats, judge, past_the_tie
-from .refit import Refit, fold_scores, fold_scores_by_output, model, refit, score
+from .refit import Refit, finite, fold_scores, fold_scores_by_output, model, refit, score
 from .report import (
     AcceptedEffect,
     EffectEvidence,
@@ -293,7 +293,7 @@ def _picked(c: Context, st: State, step: LoopStep, tried: list[Tried], passing: 
             # effect must (set U: three ties left the model 2.2-4.2 points short of the true
             # structure's fit).
             carrying = True
-            other_side = _other_side(c, tried, passing, rival, on_judged, tie_note)
+            other_side = _other_side(c, tried, passing, rival, on_judged)
         # the side not named, when it acts on other setups: judged again beside it
         if past.apart and past.named in ("a", "b"):
             st.carry.append(rival[1] if past.named == "a" else best)
@@ -311,15 +311,14 @@ def _picked(c: Context, st: State, step: LoopStep, tried: list[Tried], passing: 
 
 
 def _other_side(c: Context, tried: list[Tried], passing: list[Tried], rival: Tried,
-                on_judged: dict[int, dict[str, float]], tie_note: str) -> _Pick:
+                on_judged: dict[int, dict[str, float]]) -> _Pick:
     """The tie's side ranked second, on the scope the data defend, as a pick of its own."""
     (cv, best, ev), narrower = defended_scope(
         [rival, *(t for t in passing if t[1].kind == rival[1].kind and t[1] is not rival[1])],
         on_judged, c.thin, c.est_setups)
     runner_up, margin, other_scope = runner_up_of(
         [(cv, best, ev), *(t for t in tried if t[1] is not best)], on_judged)
-    return _Pick(cv, best, ev, narrower, runner_up, margin, other_scope, tie_note,
-                 carrying=False, told=True)
+    return _Pick(cv, best, ev, narrower, runner_up, margin, other_scope, None, carrying=False)
 
 
 def _added(c: Context, st: State, step: LoopStep, pick: _Pick,
@@ -422,7 +421,7 @@ def _told(c: Context, st: State, pick: _Pick, fit: Refit
                 f"rigs either acts on, fewer than {MIN_TELLING}")
     c.prog.update(f"refitting with {other.best.kind}, the tie's other side")
     fit_b = refit(st.base, [*st.effects, other.best.effect()], c.est, max_nfev=120)
-    on_a, on_b = ({n: _finite_total(t.total) for n, t in score(f.base, f.effects, c.val)
+    on_a, on_b = ({n: finite(t.total) for n, t in score(f.base, f.effects, c.val)
                    .tests.items() if n in val_setup} for f in (fit, fit_b))
     sides = ((pick.best.kind, scope_label(pick.best.setups)),
              (pick.runner_up.kind, pick.runner_up.scope) if pick.runner_up else ("", ""))
@@ -447,10 +446,6 @@ def _told(c: Context, st: State, pick: _Pick, fit: Refit
     return (f"the validation tests of the judged rigs either acts on do not tell them apart "
             f"either ({pick.best.kind} {float(np.mean(d)):+.2f} points against "
             f"{other.best.kind}, better on {int(np.sum(d > 0))} of {len(d)})")
-
-
-def _finite_total(v: float) -> float:
-    return float(v) if np.isfinite(v) else -1e3
 
 
 def _an_output_lag(c: Context, st: State, step: LoopStep, pick: _Pick, fit: Refit) -> bool:
