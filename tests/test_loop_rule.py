@@ -656,3 +656,26 @@ def test_a_scoped_carried_effect_runs_on_its_setups_bench_only_with_its_note():
     for one in (sled, r16):
         y = one.observer().simulate(np.ones((1, 50)), np.zeros((1, 50)))
         assert y.shape == (1, 50, 2) and np.isfinite(y).all()
+
+
+def test_a_refit_with_its_jacobian_run_as_one_simulation_is_the_refit_run_one_by_one(
+        campaign, monkeypatch):
+    """The refits hand scipy's finite-difference Jacobian its trial points as one simulation
+    (``simulate_many``); the fit must be the one the trials simulated one by one give, to the
+    bit (and so the loop's verdicts those of the loop before the change)."""
+    from observer_node.ident import greybox
+    from observer_node.loop import refit as refit_module
+
+    data = make_dataset([t for t in campaign if t.name in ("R16_001", "R16_003", "FULL_001")])
+    base = greybox.fit_greybox(data).params
+    effects = [{"kind": "belt_unloading", "parameters": {}},
+               {"kind": "airbag_contact", "parameters": {"kab": 3e4, "gap": 0.1, "cab": 300.0},
+                "setups": ["FULL"]}]
+    batched = refit_module.refit_from(base, effects, data, max_nfev=8)
+    scipy_own = refit_module.optimize.least_squares  # scipy's map over the residual
+    monkeypatch.setattr(refit_module.optimize, "least_squares",
+                        lambda *a, workers=None, **k: scipy_own(*a, **k))
+    one_by_one = refit_module.refit_from(base, effects, data, max_nfev=8)
+    assert batched.cost == one_by_one.cost
+    assert batched.base == one_by_one.base and batched.effects == one_by_one.effects
+    assert batched.effects[1]["parameters"] != effects[1]["parameters"]  # it did fit

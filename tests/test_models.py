@@ -169,3 +169,63 @@ def test_the_output_is_the_state_after_the_ticks_input_and_old_files_keep_theirs
     before = NonlinearGreyBox(p, effects, 1000.0, after_input=False).simulate(data.pulse_g,
                                                                               data.brs_rad)
     np.testing.assert_allclose(after[:, :-1], before[:, 1:], atol=1e-9)
+
+
+# one parameter set per effect kind (the formula: two terms on the rib, one on the belt)
+_EFFECT_CASES = {
+    "chest_stiffening": {"k3": 3e8}, "chest_rate_damping": {"c3": 300.0},
+    "belt_unloading": {}, "belt_stiffening": {"kb3": 2e8},
+    "airbag_contact": {"kab": 5e4, "gap": 0.05, "cab": 600.0},
+    "pelvis_coupling": {"kp": 2e4, "cp": 400.0},
+    "input_delay": {"n_pulse": 2.3, "n_brs": 0.7}, "input_gain": {"g": 0.02},
+    "sensor_offset": {"cr_g": 1.0, "cd_mm": 1.5},
+    "other": {"rib": {"d^3": 1e8, "d'|d'|": 500.0}, "belt": {"e^2": 1e6}},
+}
+
+
+def _scaled(params: dict, f: float) -> dict:
+    return {k: _scaled(v, f) if isinstance(v, dict) else v * f for k, v in params.items()}
+
+
+def test_every_effect_has_a_case_for_simulate_many():
+    from observer_node.model.effects import EFFECTS
+
+    assert set(_EFFECT_CASES) == set(EFFECTS)
+
+
+@pytest.mark.parametrize("after_input", [True, False])
+@pytest.mark.parametrize("kind", sorted(_EFFECT_CASES))
+def test_simulate_many_gives_each_models_own_outputs_to_the_bit(clean_r16, kind, after_input):
+    """The fits' Jacobians run their trial parameters as one simulation: each model's outputs
+    must be exactly those it gives alone (scoped to one setup, beside a one-sided belt, with
+    another model's parameters, delays included, differing)."""
+    from observer_node.model.nonlinear import NonlinearGreyBox, simulate_many
+
+    tests = clean_r16[:3]
+    data = make_dataset(tests, 1000.0)
+    setups = ["R16", "SLED", "R16"]
+    p = TRUTH.as_dict()
+    models = [NonlinearGreyBox({**p, "k2": p["k2"] * s}, [
+        {"kind": kind, "parameters": _scaled(_EFFECT_CASES[kind], s), "setups": ["R16"]},
+        {"kind": "belt_unloading", "parameters": {}}] if kind != "belt_unloading" else
+        [{"kind": kind, "parameters": {}, "setups": ["SLED"]}], 1000.0, setups,
+        after_input=after_input) for s in (1.0, 1.3, 0.8)]
+    many = simulate_many(models, data.pulse_g, data.brs_rad)
+    assert many.shape == (3, 3, data.pulse_g.shape[1], 2)
+    assert np.isfinite(many).all()  # none ran away here (a fit's trial may: NaN matches NaN)
+    for m, y in zip(models, many, strict=True):
+        alone = m.simulate(data.pulse_g, data.brs_rad)
+        assert np.array_equal(y, alone, equal_nan=True)
+    # the parameters changed the outputs (the check is not of three copies of one model)
+    assert not np.array_equal(many[0], many[1])
+
+
+def test_simulate_many_refuses_models_of_different_structure(clean_r16):
+    from observer_node.model.nonlinear import NonlinearGreyBox, simulate_many
+
+    data = make_dataset(clean_r16[:2], 1000.0)
+    p = TRUTH.as_dict()
+    a = NonlinearGreyBox(p, [], 1000.0)
+    b = NonlinearGreyBox(p, [{"kind": "chest_stiffening", "parameters": {"k3": 3e8}}], 1000.0)
+    with pytest.raises(ValueError, match="differ in structure"):
+        simulate_many([a, b], data.pulse_g, data.brs_rad)

@@ -13,7 +13,7 @@
 
 from __future__ import annotations
 
-from collections.abc import Callable
+from collections.abc import Callable, Iterable
 from dataclasses import dataclass
 from typing import Any
 
@@ -23,7 +23,7 @@ from scipy import optimize
 from ..ident.dataset import Dataset
 from ..ident.greybox import FREE
 from ..model.effects import EFFECTS, OTHER_TERMS, effect_forces, other_term
-from ..model.nonlinear import NonlinearGreyBox
+from ..model.nonlinear import NonlinearGreyBox, simulate_many
 from ..model.observer import transform_inputs
 
 MAX_LAG = 25
@@ -221,13 +221,10 @@ def _regress(r: np.ndarray, sigs: list[np.ndarray], w: np.ndarray,
 def base_sensitivities(model: NonlinearGreyBox, data: Dataset, y_hat: np.ndarray
                        ) -> list[np.ndarray]:
     """Output change (tests, n, 2) per 1 % change of each free base parameter."""
-    out = []
-    for name in FREE:
-        b = {**model.base, name: model.base[name] * 1.01}
-        m = NonlinearGreyBox(b, model.effects, model.fs_hz, model.test_setups,
-                             after_input=model.after_input)
-        out.append(m.simulate(data.pulse_g, data.brs_rad) - y_hat)
-    return out
+    models = [NonlinearGreyBox({**model.base, name: model.base[name] * 1.01}, model.effects,
+                               model.fs_hz, model.test_setups, after_input=model.after_input)
+              for name in FREE]
+    return list(simulate_many(models, data.pulse_g, data.brs_rad) - y_hat)
 
 
 def candidates(model: NonlinearGreyBox, data: Dataset, present: set[str],
@@ -405,17 +402,23 @@ class _Scorer:
         S = np.stack([(x[:, data.win] * w[:, None, :]).ravel() for x in sens], axis=1)
         self.Q = np.linalg.qr(S)[0]
 
-    def _rest(self, kind: str, p: dict, scope: list[str] | None = None
-              ) -> tuple[np.ndarray, np.ndarray]:
+    def _trial(self, kind: str, p: dict, scope: list[str] | None) -> NonlinearGreyBox:
         m = self.model
         effect = {"kind": kind, "parameters": p, **({"setups": scope} if scope else {})}
-        trial = NonlinearGreyBox(m.base, [*m.effects, effect], m.fs_hz, m.test_setups,
-                                 after_input=m.after_input)
-        with np.errstate(all="ignore"):
-            sig = trial.simulate(self.data.pulse_g, self.data.brs_rad) - self.y_hat
+        return NonlinearGreyBox(m.base, [*m.effects, effect], m.fs_hz, m.test_setups,
+                                after_input=m.after_input)
+
+    def _rest_of(self, y_trial: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        sig = y_trial - self.y_hat
         v = self.rw - (sig[:, self.data.win] * self.w[:, None, :]).ravel()
         v = v - self.Q @ (self.Q.T @ v)
         return np.where(np.isfinite(v), v, 1e3), sig
+
+    def _rest(self, kind: str, p: dict, scope: list[str] | None = None
+              ) -> tuple[np.ndarray, np.ndarray]:
+        with np.errstate(all="ignore"):
+            return self._rest_of(self._trial(kind, p, scope).simulate(self.data.pulse_g,
+                                                                      self.data.brs_rad))
 
     def share(self, kind: str, p: dict, scope: list[str] | None = None
               ) -> tuple[float, np.ndarray]:
@@ -440,8 +443,16 @@ class _Scorer:
         th0 = np.array([within_free(r, start[n]) if r is not None
                         else 0.0 if ps else np.sign(start[n]) or 1.0
                         for n, ps, r in zip(names, pos, rng, strict=True)])
+        def jacobian_points(_: object, ths: Iterable[np.ndarray]) -> list[np.ndarray]:
+            """The rests at the finite-difference Jacobian's points, as one simulation."""
+            trials = [self._trial(kind, unpack(th), scope) for th in ths]
+            with np.errstate(all="ignore"):
+                return [self._rest_of(y)[0] for y in
+                        simulate_many(trials, self.data.pulse_g, self.data.brs_rad)]
+
         res = optimize.least_squares(lambda th: self._rest(kind, unpack(th), scope)[0], th0,
-                                     max_nfev=max_nfev, diff_step=1e-3)
+                                     max_nfev=max_nfev, diff_step=1e-3,
+                                     workers=jacobian_points)
         p = unpack(res.x)
         ex, sig = self.share(kind, p, scope)
         return ex, p, sig

@@ -6,6 +6,7 @@ own setup (``Dataset.setups``)."""
 
 from __future__ import annotations
 
+from collections.abc import Iterable
 from dataclasses import dataclass, replace
 from typing import NamedTuple
 
@@ -16,7 +17,7 @@ from ..ident.dataset import Dataset
 from ..ident.greybox import FREE, STARTS
 from ..ident.metrics import Fits, FitTable, fit_table
 from ..model.effects import EFFECTS
-from ..model.nonlinear import NonlinearGreyBox
+from ..model.nonlinear import NonlinearGreyBox, simulate_many
 from .analysis import weights, within_free, within_value
 
 
@@ -135,19 +136,31 @@ def refit_from(base: dict, effects: list[dict], data: Dataset, max_nfev: int = 6
             _set(effects, slot.i, slot.name, slot.value(v))
         return b, effects
 
-    def residual(theta: np.ndarray) -> np.ndarray:
-        b, eff = unpack(theta)
-        with np.errstate(all="ignore"):
-            y_hat = model(b, eff, data).simulate(data.pulse_g, data.brs_rad)
+    def misfit(y_hat: np.ndarray) -> np.ndarray:
         r = ((y_hat[:, data.win] - y) * w[:, None, :]).ravel()
         # a trial that ran away scores as a constant large misfit, not as an overflow
         return np.where(np.isfinite(r) & (np.abs(r) < 1e3), r, 1e3)
+
+    def residual(theta: np.ndarray) -> np.ndarray:
+        b, eff = unpack(theta)
+        with np.errstate(all="ignore"):
+            return misfit(model(b, eff, data).simulate(data.pulse_g, data.brs_rad))
+
+    def jacobian_points(_: object, thetas: Iterable[np.ndarray]) -> list[np.ndarray]:
+        """The residuals at the finite-difference Jacobian's points (scipy asks for them
+        as a map), as one simulation: each the same as ``residual``'s, to the bit."""
+        models = [model(b, [_copy_effect(e) for e in eff], data)
+                  for b, eff in map(unpack, thetas)]
+        with np.errstate(all="ignore"):
+            return [misfit(y_hat) for y_hat in
+                    simulate_many(models, data.pulse_g, data.brs_rad)]
 
     # a fit may have driven a parameter below exp(-745), to 0.0 (no damping): start from the
     # smallest positive float, not log(0) = -inf, on which the optimiser's SVD meets NaN
     theta0 = np.concatenate([np.log(np.maximum([base[n] for n in FREE], _TINY)),
                              [sl.free(_get(effects, sl.i, sl.name)) for sl in layout]])
-    res = optimize.least_squares(residual, theta0, method="trf", max_nfev=max_nfev)
+    res = optimize.least_squares(residual, theta0, method="trf", max_nfev=max_nfev,
+                                 workers=jacobian_points)
     b, eff = unpack(res.x)
     se = _std_errors(res.jac, res.fun)
     base_se = {n: float(b[n] * s) for n, s in zip(FREE, se[:len(FREE)], strict=True)}

@@ -12,7 +12,9 @@ is not a force but a switch: in a tick that starts with the belt force k2 e + c2
 state moves with the belt-free matrices (k2 = c2 = 0), which is exact within the tick, where
 cancelling the belt force with a held force lags a stiff spring by a tick.
 ``simulate`` runs many tests at once (numpy over the test axis); ``step`` is the daemon's
-per-tick call.
+per-tick call. :func:`simulate_many` runs several models of one structure (a fit's trial
+parameters) as one simulation: a simulation of a few tests spends its time on numpy's
+per-call overhead, tick by tick, which the models then share.
 
 An input delay may be a fraction of a tick: the delayed input is interpolated linearly between
 the two samples around it (a sensor ECU's filter lag is rarely a whole tick).
@@ -26,6 +28,8 @@ tests at once with each test's setup, and a scoped effect acts where its mask is
 from __future__ import annotations
 
 import math
+from collections.abc import Mapping, Sequence
+from typing import Any
 
 import numpy as np
 
@@ -195,79 +199,138 @@ class NonlinearGreyBox:
 
     def belt_slack(self, z: np.ndarray, u1: Num, u2: Num) -> Num:
         """True where the belt would push (force k2 e + c2 e' < 0): float or array."""
-        return self._k2 * (z[4] - z[3]) + self._c2 * (u1 + self._R * u2 - z[2]) < 0.0
+        return _pushes(self._k2, self._c2, self._R, z, u1, u2)
 
     # ------------------------------------------------------------------ whole records
     def simulate(self, pulse_g: np.ndarray, brs_rad: np.ndarray) -> np.ndarray:
         """From rest, (n,) or (tests, n) -> (..., n, 2)."""
-        squeeze = pulse_g.ndim == 1
-        P = np.atleast_2d(pulse_g).astype(float)
-        T = np.atleast_2d(brs_rad).astype(float)
-        self._check_tests(P.shape[0])
-        if self.n_pulse:
-            P = _shift(P, self.n_pulse, np.zeros((P.shape[0], 1)), self.delay_mask)
-        if self.n_brs:
-            T = _shift(T, self.n_brs, T[:, :1], self.delay_mask)
-        u = transform_inputs("velocity_brs_rate", P, T, self.fs_hz)
-        y = self.run_transformed(u[..., 0], u[..., 1], T)
-        return y[0] if squeeze else y
+        y = simulate_many([self], np.atleast_2d(pulse_g), np.atleast_2d(brs_rad))[0]
+        return y[0] if pulse_g.ndim == 1 else y
 
     def run_transformed(self, u1: np.ndarray, u2: np.ndarray, theta: np.ndarray,
-             states: np.ndarray | None = None) -> np.ndarray:
+                        states: np.ndarray | None = None) -> np.ndarray:
         """Outputs (tests, n, 2); the states (6, tests, n) go into ``states`` if given."""
-        ntest, n = u1.shape
-        z = np.zeros((6, ntest))
-        y = np.empty((ntest, n, 2))
-        Ad, Bd, Gd, C, Df = self.Ad, self.Bd, self.Gd, self.C, self.Df
-        # each tick's inputs as contiguous rows over the tests, laid out once: a tick reads
-        # views (the layout stacking them per tick made, so the same products)
-        inputs = np.ascontiguousarray(np.stack([u1, u2]).transpose(2, 0, 1))
-        theta_t = np.ascontiguousarray(theta.T)
-        # without force effects the force is zero at every tick: one array, read only
-        no_force = None if self._force_fns else np.zeros((2, ntest))
-        for k in range(n):
-            if states is not None:
-                states[:, :, k] = z
-            ab = inputs[k]
-            a, b, th = ab[0], ab[1], theta_t[k]
-            f = self._forces_all(z, a, b, th) if no_force is None else no_force
-            if not self.after_input:
-                y[:, k] = (C @ z + Df @ f).T
-            zn = Ad @ z + Bd @ ab + Gd @ f
-            if self.unloading:
-                slack = self.belt_slack(z, a, b)
-                if self.unloading_mask is not None:
-                    slack = slack & self.unloading_mask
-                if slack.any():
-                    z_slack = self.Ad_slack @ z + self.Bd_slack @ ab + self.Gd_slack @ f
-                    zn = np.where(slack, z_slack, zn)
-            z = zn
-            if self.after_input:
-                f = self._forces_all(z, a, b, th) if no_force is None else no_force
-                y[:, k] = (C @ z + Df @ f).T
-        if self.offset_mask is not None:
-            return y + self.offset_mask[:, None, None] * self.offset
-        return y + self.offset
-
-    def _forces_all(self, z: np.ndarray, a: np.ndarray, b: np.ndarray,
-                    th: np.ndarray) -> np.ndarray:
-        """Forces (2, tests) of the effects at states z (6, tests), scoped by their masks."""
-        f = np.zeros((2, a.shape[0]))
-        if not self._force_fns:
-            return f
-        k = kinematics(z, a, b, th, self.base)
-        for force, p, mask in self._force_fns:
-            s1, s2 = force(p, k, self.base)
-            if mask is not None:
-                s1, s2 = s1 * mask, s2 * mask
-            f[0] += s1
-            f[1] += s2
-        return f
+        return _run([self], u1[None], u2[None], theta[None], states)[0]
 
     def _check_tests(self, ntest: int) -> None:
         if self.test_setups is not None and len(self.test_setups) != ntest:
             raise ScopeError(f"{ntest} tests simulated, setups given for "
                              f"{len(self.test_setups)}")
+
+
+def simulate_many(models: Sequence[NonlinearGreyBox], pulse_g: np.ndarray,
+                  brs_rad: np.ndarray) -> np.ndarray:
+    """Models of one structure (the same effects, scopes and tests; parameters may differ) on
+    the same records (tests, n), from rest -> (models, tests, n, 2). Each model's outputs are
+    those it gives alone, to the bit (each product is the same product, each force the same
+    elementwise arithmetic); the ticks' numpy calls are shared."""
+    first = models[0]
+    for m in models[1:]:
+        if _structure(m) != _structure(first):
+            raise ValueError("simulate_many: the models differ in structure")
+    P = np.asarray(pulse_g, float)
+    T = np.asarray(brs_rad, float)
+    first._check_tests(P.shape[0])
+    inputs: dict[tuple[float, float], tuple[np.ndarray, np.ndarray, np.ndarray]] = {}
+    for m in models:  # the inputs each delay gives, worked out once per delay
+        key = (m.n_pulse, m.n_brs)
+        if key not in inputs:
+            Pm = _shift(P, m.n_pulse, np.zeros((P.shape[0], 1)), m.delay_mask) \
+                if m.n_pulse else P
+            Tm = _shift(T, m.n_brs, T[:, :1], m.delay_mask) if m.n_brs else T
+            u = transform_inputs("velocity_brs_rate", Pm, Tm, m.fs_hz)
+            inputs[key] = (u[..., 0], u[..., 1], Tm)
+    u1, u2, th = (np.stack([inputs[(m.n_pulse, m.n_brs)][i] for m in models])
+                  for i in range(3))
+    return _run(models, u1, u2, th)
+
+
+def _structure(m: NonlinearGreyBox) -> tuple:
+    return ([e["kind"] for e in m.effects], [None if k is None else k.tolist()
+                                            for k in m.masks], m.after_input, m.fs_hz)
+
+
+def _pushes(k2: Num, c2: Num, R: Num, z: Any, u1: Num, u2: Num) -> Num:
+    """Whether the belt force k2 e + c2 e' would be negative (it would push) at states z."""
+    return k2 * (z[4] - z[3]) + c2 * (u1 + R * u2 - z[2]) < 0.0
+
+
+def _stacked(values: Sequence[Any]) -> Any:
+    """One parameter (or base) value per model -> a column (models, 1) broadcasting over the
+    tests; nested dicts (the formula's terms) leaf by leaf."""
+    if isinstance(values[0], Mapping):
+        return {k: _stacked([v[k] for v in values]) for k in values[0]}
+    return np.array(values, float)[:, None]
+
+
+def _run(models: Sequence[NonlinearGreyBox], u1: np.ndarray, u2: np.ndarray,
+         theta: np.ndarray, states: np.ndarray | None = None) -> np.ndarray:
+    """The models (of one structure) on transformed inputs (models, tests, n) -> outputs
+    (models, tests, n, 2); ``states`` (6, tests, n): the one model's states.
+
+    One model runs on arrays without the models' axis (a tick's products are then plain
+    matrix products, a third cheaper than stacked ones of one); several on stacked matrices
+    and parameter columns. The same code serves both: the models' axis, when there, leads."""
+    first = models[0]
+    nm, ntest, n = u1.shape
+    lead = () if nm == 1 else (nm,)
+
+    def per_model(values: list[Any]) -> Any:
+        return values[0] if nm == 1 else _stacked(values)
+
+    Ad, Bd, Gd, C, Df, Ad_s, Bd_s, Gd_s = (
+        getattr(first, a) if nm == 1 else np.stack([getattr(m, a) for m in models])
+        for a in ("Ad", "Bd", "Gd", "C", "Df", "Ad_slack", "Bd_slack", "Gd_slack"))
+    base = per_model([m.base for m in models])
+    # the forces: one formula each, its parameters (a column per model), its scope's mask
+    forces = [(fn, per_model([m._force_fns[j][1] for m in models]), mask)
+              for j, (fn, _, mask) in enumerate(first._force_fns)]
+    z = np.zeros((*lead, 6, ntest))
+    y = np.empty((*lead, ntest, n, 2))
+    # each tick's inputs as contiguous ([models,] 2, tests), laid out once: a tick reads views
+    inputs = np.ascontiguousarray(np.stack([u1, u2], axis=1).transpose(3, 0, 1, 2))
+    theta_t = np.ascontiguousarray(theta.transpose(2, 0, 1))
+    if nm == 1:
+        inputs, theta_t = inputs[:, 0], theta_t[:, 0]
+    # without force effects the force is zero at every tick: one array, read only
+    no_force = None if forces else np.zeros((*lead, 2, ntest))
+
+    def forces_at(z: np.ndarray, a: np.ndarray, b: np.ndarray, th: np.ndarray) -> np.ndarray:
+        f = np.zeros((*lead, 2, ntest))
+        k = kinematics(z.swapaxes(0, -2), a, b, th, base)  # the state's rows first
+        for force, p, mask in forces:
+            s1, s2 = force(p, k, base)
+            if mask is not None:
+                s1, s2 = s1 * mask, s2 * mask
+            f[..., 0, :] += s1
+            f[..., 1, :] += s2
+        return f
+
+    for k in range(n):
+        if states is not None:
+            states[:, :, k] = z
+        ab = inputs[k]
+        a, b, th = ab[..., 0, :], ab[..., 1, :], theta_t[k]
+        f = forces_at(z, a, b, th) if no_force is None else no_force
+        if not first.after_input:
+            y[..., k, :] = (C @ z + Df @ f).swapaxes(-1, -2)
+        zn = Ad @ z + Bd @ ab + Gd @ f
+        if first.unloading:
+            slack = _pushes(base["k2"], base["c2"], base["R"], z.swapaxes(0, -2), a, b)
+            if first.unloading_mask is not None:
+                slack = slack & first.unloading_mask
+            if slack.any():
+                zn = np.where(slack[..., None, :], Ad_s @ z + Bd_s @ ab + Gd_s @ f, zn)
+        z = zn
+        if first.after_input:
+            f = forces_at(z, a, b, th) if no_force is None else no_force
+            y[..., k, :] = (C @ z + Df @ f).swapaxes(-1, -2)
+    offset = first.offset if nm == 1 else np.stack([m.offset for m in models])[:, None, None]
+    if first.offset_mask is not None:
+        y = y + first.offset_mask[:, None, None] * offset
+    else:
+        y = y + offset
+    return y[None] if nm == 1 else y
 
 
 def _force_of(kind: str) -> Force:
