@@ -338,8 +338,8 @@ def _candidate(kind: str, scope: list[str] | None, mask: np.ndarray, scorer: _Sc
             # short fit starts from the best of the regression's size and half decades
             # around the typical one
             sizes = [start[names[0]], *(unit[names[0]] * 10.0 ** (k / 2) for k in range(-4, 5))]
-            best = max(sizes, key=lambda v: scorer.share(kind, {names[0]: v}, scope)[0])
-            start = {names[0]: float(best)}
+            got = scorer.shares(kind, [{names[0]: v} for v in sizes], scope)
+            start = {names[0]: float(sizes[int(np.argmax(got))])}
     ex, p, sig = scorer.fit(kind, start, scope)
     return Candidate(kind, ex, p, sig, setups=scope)
 
@@ -358,7 +358,7 @@ def _search_delay(scorer: _Scorer, kind: str, fs_hz: float, scope: list[str] | N
         return scorer.share(kind, p, scope)[0]
 
     def best_along(which: str, fixed: dict) -> tuple[float, dict]:
-        vals = [share({**fixed, which: n}) for n in grid]
+        vals = scorer.shares(kind, [{**fixed, which: float(n)} for n in grid], scope)
         n0 = float(grid[int(np.argmax(vals))])
         res = optimize.minimize_scalar(lambda n: -share({**fixed, which: n}),
                                        bounds=(max(0.0, n0 - h), min(grid[-1], n0 + h)),
@@ -424,6 +424,15 @@ class _Scorer:
               ) -> tuple[float, np.ndarray]:
         v, sig = self._rest(kind, p, scope)
         return float(1 - v @ v / (self.rw @ self.rw)), sig
+
+    def shares(self, kind: str, ps: list[dict], scope: list[str] | None = None
+               ) -> list[float]:
+        """:meth:`share` of each parameter set (a search's grid), as one simulation."""
+        trials = [self._trial(kind, p, scope) for p in ps]
+        with np.errstate(all="ignore"):
+            rests = [self._rest_of(y)[0] for y in
+                     simulate_many(trials, self.data.pulse_g, self.data.brs_rad)]
+        return [float(1 - v @ v / (self.rw @ self.rw)) for v in rests]
 
     def fit(self, kind: str, start: dict, scope: list[str] | None = None,
             max_nfev: int = 12) -> tuple[float, dict, np.ndarray]:
