@@ -679,3 +679,24 @@ def test_a_refit_with_its_jacobian_run_as_one_simulation_is_the_refit_run_one_by
     assert batched.cost == one_by_one.cost
     assert batched.base == one_by_one.base and batched.effects == one_by_one.effects
     assert batched.effects[1]["parameters"] != effects[1]["parameters"]  # it did fit
+
+
+def test_a_search_grid_scored_as_one_simulation_scores_each_point_as_alone(campaign):
+    """The delay grid and a size's half decades are scored in one simulation
+    (``_Scorer.shares``): each share must be the one the point scores alone."""
+    from observer_node.ident import greybox
+    from observer_node.loop.analysis import _Scorer, base_sensitivities, weights
+    from observer_node.model.nonlinear import NonlinearGreyBox
+
+    data = make_dataset([t for t in campaign if t.name in ("R16_001", "R16_003", "FULL_001")])
+    m = NonlinearGreyBox(greybox.fit_greybox(data).params, [], data.fs_hz, list(data.setups))
+    y_hat = m.simulate(data.pulse_g, data.brs_rad)
+    scorer = _Scorer(m, data, (data.y - y_hat)[:, data.win], weights(data),
+                     base_sensitivities(m, data, y_hat), y_hat)
+    for kind, ps, scope in (
+            ("input_delay", [{"n_pulse": n, "n_brs": 1.5} for n in (0.0, 0.5, 2.0, 7.25)],
+             None),
+            ("chest_stiffening", [{"k3": v} for v in (1e7, 1e8, 1e9)], ["R16"])):
+        together = scorer.shares(kind, ps, scope)
+        alone = [scorer.share(kind, p, scope)[0] for p in ps]
+        assert together == alone and len(set(alone)) == len(ps), kind
