@@ -685,6 +685,7 @@ def test_a_search_grid_scored_as_one_simulation_scores_each_point_as_alone(campa
     """The delay grid and a size's half decades are scored in one simulation
     (``_Scorer.shares``): each share must be the one the point scores alone."""
     from observer_node.ident import greybox
+    from observer_node.loop import analysis
     from observer_node.loop.analysis import _Scorer, base_sensitivities, weights
     from observer_node.model.nonlinear import NonlinearGreyBox
 
@@ -700,3 +701,14 @@ def test_a_search_grid_scored_as_one_simulation_scores_each_point_as_alone(campa
         together = scorer.shares(kind, ps, scope)
         alone = [scorer.share(kind, p, scope)[0] for p in ps]
         assert together == alone and len(set(alone)) == len(ps), kind
+    # and an effect's short fit, its Jacobian's points as one simulation, is scipy's own
+    batched = scorer.fit("airbag_contact", {"kab": 3e4, "gap": 0.1, "cab": 300.0}, ["FULL"])
+    scipy_own = analysis.optimize.least_squares
+    analysis.optimize.least_squares = lambda *a, workers=None, **k: scipy_own(*a, **k)
+    try:
+        one_by_one = scorer.fit("airbag_contact", {"kab": 3e4, "gap": 0.1, "cab": 300.0},
+                                ["FULL"])
+    finally:
+        analysis.optimize.least_squares = scipy_own
+    assert batched[:2] == one_by_one[:2] and np.array_equal(batched[2], one_by_one[2])
+    assert batched[1] != {"kab": 3e4, "gap": 0.1, "cab": 300.0}  # it did fit

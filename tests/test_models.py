@@ -220,12 +220,39 @@ def test_simulate_many_gives_each_models_own_outputs_to_the_bit(clean_r16, kind,
     assert not np.array_equal(many[0], many[1])
 
 
-def test_simulate_many_refuses_models_of_different_structure(clean_r16):
+def test_simulate_many_keeps_a_run_away_apart_and_runs_one_test(clean_r16):
+    """A fit's trial may run away (NaN): the models beside it keep their own outputs."""
+    from observer_node.model.nonlinear import NonlinearGreyBox, simulate_many
+
+    data = make_dataset(clean_r16[:1], 1000.0)
+    p = TRUTH.as_dict()
+    models = [NonlinearGreyBox(p, [{"kind": "chest_stiffening", "parameters": {"k3": k3}}],
+                               1000.0) for k3 in (3e8, -1e14, 1e8)]
+    with np.errstate(all="ignore"):
+        many = simulate_many(models, data.pulse_g, data.brs_rad)
+        alone = [m.simulate(data.pulse_g, data.brs_rad) for m in models]
+    assert not np.isfinite(many[1]).all() and np.isfinite(many[[0, 2]]).all()
+    for y, y_alone in zip(many, alone, strict=True):
+        assert np.array_equal(y, y_alone, equal_nan=True)
+
+
+@pytest.mark.parametrize("second", [
+    [{"kind": "chest_stiffening", "parameters": {"k3": 3e8}}],  # another effect
+    [{"kind": "airbag_contact", "parameters": {"kab": 5e4, "gap": 0.05}}],  # without cab
+    [{"kind": "airbag_contact", "parameters": {"gap": 0.05, "kab": 5e4, "cab": 600.0}}],
+    [{"kind": "airbag_contact", "parameters": {"kab": 5e4, "gap": 0.05, "cab": 600.0},
+      "setups": ["SLED"]}],  # another scope
+])
+def test_simulate_many_refuses_models_of_different_structure(clean_r16, second):
+    """Values are stacked by the first model's parameter names: a model with other names
+    (an optional one left out, the same in another order) or another scope is refused,
+    never run with the first model's."""
     from observer_node.model.nonlinear import NonlinearGreyBox, simulate_many
 
     data = make_dataset(clean_r16[:2], 1000.0)
     p = TRUTH.as_dict()
-    a = NonlinearGreyBox(p, [], 1000.0)
-    b = NonlinearGreyBox(p, [{"kind": "chest_stiffening", "parameters": {"k3": 3e8}}], 1000.0)
+    a = NonlinearGreyBox(p, [{"kind": "airbag_contact", "parameters": {
+        "kab": 5e4, "gap": 0.05, "cab": 600.0}}], 1000.0, ["R16", "SLED"])
+    b = NonlinearGreyBox(p, second, 1000.0, ["R16", "SLED"])
     with pytest.raises(ValueError, match="differ in structure"):
         simulate_many([a, b], data.pulse_g, data.brs_rad)

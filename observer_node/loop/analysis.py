@@ -425,14 +425,18 @@ class _Scorer:
         v, sig = self._rest(kind, p, scope)
         return float(1 - v @ v / (self.rw @ self.rw)), sig
 
+    def rests(self, kind: str, ps: Iterable[dict], scope: list[str] | None = None
+              ) -> list[np.ndarray]:
+        """What :meth:`_rest` leaves of each parameter set, as one simulation."""
+        trials = [self._trial(kind, p, scope) for p in ps]
+        with np.errstate(all="ignore"):
+            return [self._rest_of(y)[0] for y in
+                    simulate_many(trials, self.data.pulse_g, self.data.brs_rad)]
+
     def shares(self, kind: str, ps: list[dict], scope: list[str] | None = None
                ) -> list[float]:
         """:meth:`share` of each parameter set (a search's grid), as one simulation."""
-        trials = [self._trial(kind, p, scope) for p in ps]
-        with np.errstate(all="ignore"):
-            rests = [self._rest_of(y)[0] for y in
-                     simulate_many(trials, self.data.pulse_g, self.data.brs_rad)]
-        return [float(1 - v @ v / (self.rw @ self.rw)) for v in rests]
+        return [float(1 - v @ v / (self.rw @ self.rw)) for v in self.rests(kind, ps, scope)]
 
     def fit(self, kind: str, start: dict, scope: list[str] | None = None,
             max_nfev: int = 12) -> tuple[float, dict, np.ndarray]:
@@ -452,12 +456,10 @@ class _Scorer:
         th0 = np.array([within_free(r, start[n]) if r is not None
                         else 0.0 if ps else np.sign(start[n]) or 1.0
                         for n, ps, r in zip(names, pos, rng, strict=True)])
+
         def jacobian_points(_: object, ths: Iterable[np.ndarray]) -> list[np.ndarray]:
             """The rests at the finite-difference Jacobian's points, as one simulation."""
-            trials = [self._trial(kind, unpack(th), scope) for th in ths]
-            with np.errstate(all="ignore"):
-                return [self._rest_of(y)[0] for y in
-                        simulate_many(trials, self.data.pulse_g, self.data.brs_rad)]
+            return self.rests(kind, map(unpack, ths), scope)
 
         res = optimize.least_squares(lambda th: self._rest(kind, unpack(th), scope)[0], th0,
                                      max_nfev=max_nfev, diff_step=1e-3,

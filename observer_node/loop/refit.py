@@ -149,6 +149,8 @@ def refit_from(base: dict, effects: list[dict], data: Dataset, max_nfev: int = 6
     def jacobian_points(_: object, thetas: Iterable[np.ndarray]) -> list[np.ndarray]:
         """The residuals at the finite-difference Jacobian's points (scipy asks for them
         as a map), as one simulation: each the same as ``residual``'s, to the bit."""
+        # copies: unpack() rewrites one list of effects in place, and a model holds its
+        # effects' parameter dicts, not copies of them
         models = [model(b, [_copy_effect(e) for e in eff], data)
                   for b, eff in map(unpack, thetas)]
         with np.errstate(all="ignore"):

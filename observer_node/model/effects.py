@@ -12,7 +12,10 @@ Forces act on the spine (m1) and/or the sternum (m2), computed from the state
 z = (xdot, x, sdot, s, w, p) [SI; p = vehicle displacement, the double integral of the pulse],
 the transformed inputs u1 = vehicle velocity change [m/s], u2 = BRS rate [rad/s], the BRS angle
 theta [rad], and the base parameters (k2, c2, R). The formulas work on floats (the daemon, per
-tick) and on numpy arrays (identification, vectorised over tests).
+tick) and on numpy arrays (identification, vectorised over tests); there the effect's and
+base parameters may be columns (models, 1) too (a fit's trial parameter sets run as one
+simulation), so a formula uses numpy's arithmetic on them: no ``float()``, ``math`` or
+``if``.
 
 Knows nothing about how an effect is fitted: ``search`` names a method the loop implements.
 """

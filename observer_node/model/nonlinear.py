@@ -220,16 +220,26 @@ class NonlinearGreyBox:
 
 def simulate_many(models: Sequence[NonlinearGreyBox], pulse_g: np.ndarray,
                   brs_rad: np.ndarray) -> np.ndarray:
-    """Models of one structure (the same effects, scopes and tests; parameters may differ) on
-    the same records (tests, n), from rest -> (models, tests, n, 2). Each model's outputs are
-    those it gives alone, to the bit (each product is the same product, each force the same
-    elementwise arithmetic); the ticks' numpy calls are shared."""
+    """Models of one structure (the same effects with the same parameter names, scopes, tests
+    and output timing; the parameter values may differ) on the same records (tests, n), from
+    rest -> (models, tests, n, 2). ValueError for models of different structures.
+
+    Each model's outputs are those it gives alone, to the bit: the forces are the same
+    elementwise arithmetic, and each stacked matrix product equals the product alone on
+    OpenBLAS, which packs its operands (tests/test_models.py checks every effect). The
+    ticks' numpy calls are shared, which is where a simulation of a few tests spends its
+    time."""
+    if not models:
+        raise ValueError("simulate_many: no models")
     first = models[0]
-    for m in models[1:]:
-        if _structure(m) != _structure(first):
-            raise ValueError("simulate_many: the models differ in structure")
+    shape = _structure(first)
+    if any(_structure(m) != shape for m in models[1:]):
+        raise ValueError("simulate_many: the models differ in structure (effects, parameter "
+                         "names, scopes, tests or output timing)")
     P = np.asarray(pulse_g, float)
     T = np.asarray(brs_rad, float)
+    if P.ndim != 2 or P.shape != T.shape:
+        raise ValueError("simulate_many: records as (tests, n), the pulse's and BRS's alike")
     first._check_tests(P.shape[0])
     inputs: dict[tuple[float, float], tuple[np.ndarray, np.ndarray, np.ndarray]] = {}
     for m in models:  # the inputs each delay gives, worked out once per delay
@@ -245,9 +255,18 @@ def simulate_many(models: Sequence[NonlinearGreyBox], pulse_g: np.ndarray,
     return _run(models, u1, u2, th)
 
 
-def _structure(m: NonlinearGreyBox) -> tuple:
-    return ([e["kind"] for e in m.effects], [None if k is None else k.tolist()
-                                            for k in m.masks], m.after_input, m.fs_hz)
+def _names(p: Mapping[str, Any]) -> tuple[object, ...]:
+    """A parameter dict's names in order, nested dicts (the formula's terms) as their own."""
+    return tuple((k, _names(v)) if isinstance(v, Mapping) else k for k, v in p.items())
+
+
+def _structure(m: NonlinearGreyBox) -> tuple[object, ...]:
+    """What models run together must share: values are stacked by the first model's names,
+    and a formula sums its terms in their order."""
+    return (tuple((e["kind"], _names(e.get("parameters", {}))) for e in m.effects),
+            tuple(None if k is None else tuple(k.tolist()) for k in m.masks),
+            None if m.test_setups is None else tuple(m.test_setups),
+            _names(m.base), m.after_input, m.fs_hz)
 
 
 def _pushes(k2: Num, c2: Num, R: Num, z: Any, u1: Num, u2: Num) -> Num:
@@ -257,7 +276,8 @@ def _pushes(k2: Num, c2: Num, R: Num, z: Any, u1: Num, u2: Num) -> Num:
 
 def _stacked(values: Sequence[Any]) -> Any:
     """One parameter (or base) value per model -> a column (models, 1) broadcasting over the
-    tests; nested dicts (the formula's terms) leaf by leaf."""
+    tests; nested dicts (the formula's terms) leaf by leaf, by the first model's names (the
+    same in every model: :func:`_structure`)."""
     if isinstance(values[0], Mapping):
         return {k: _stacked([v[k] for v in values]) for k in values[0]}
     return np.array(values, float)[:, None]
@@ -273,6 +293,8 @@ def _run(models: Sequence[NonlinearGreyBox], u1: np.ndarray, u2: np.ndarray,
     and parameter columns. The same code serves both: the models' axis, when there, leads."""
     first = models[0]
     nm, ntest, n = u1.shape
+    if states is not None and nm != 1:
+        raise ValueError("the states are kept for one model only")
     lead = () if nm == 1 else (nm,)
 
     def per_model(values: list[Any]) -> Any:
@@ -306,14 +328,14 @@ def _run(models: Sequence[NonlinearGreyBox], u1: np.ndarray, u2: np.ndarray,
             f[..., 1, :] += s2
         return f
 
-    for k in range(n):
+    for tick in range(n):
         if states is not None:
-            states[:, :, k] = z
-        ab = inputs[k]
-        a, b, th = ab[..., 0, :], ab[..., 1, :], theta_t[k]
+            states[:, :, tick] = z
+        ab = inputs[tick]
+        a, b, th = ab[..., 0, :], ab[..., 1, :], theta_t[tick]
         f = forces_at(z, a, b, th) if no_force is None else no_force
         if not first.after_input:
-            y[..., k, :] = (C @ z + Df @ f).swapaxes(-1, -2)
+            y[..., tick, :] = (C @ z + Df @ f).swapaxes(-1, -2)
         zn = Ad @ z + Bd @ ab + Gd @ f
         if first.unloading:
             slack = _pushes(base["k2"], base["c2"], base["R"], z.swapaxes(0, -2), a, b)
@@ -324,7 +346,7 @@ def _run(models: Sequence[NonlinearGreyBox], u1: np.ndarray, u2: np.ndarray,
         z = zn
         if first.after_input:
             f = forces_at(z, a, b, th) if no_force is None else no_force
-            y[..., k, :] = (C @ z + Df @ f).swapaxes(-1, -2)
+            y[..., tick, :] = (C @ z + Df @ f).swapaxes(-1, -2)
     offset = first.offset if nm == 1 else np.stack([m.offset for m in models])[:, None, None]
     if first.offset_mask is not None:
         y = y + first.offset_mask[:, None, None] * offset
