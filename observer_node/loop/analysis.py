@@ -420,10 +420,14 @@ class _Scorer:
             return self._rest_of(self._trial(kind, p, scope).simulate(self.data.pulse_g,
                                                                       self.data.brs_rad))
 
+    def _explained(self, v: np.ndarray) -> float:
+        """Share of the residual explained when ``v`` is what is left of it."""
+        return float(1 - v @ v / (self.rw @ self.rw))
+
     def share(self, kind: str, p: dict, scope: list[str] | None = None
               ) -> tuple[float, np.ndarray]:
         v, sig = self._rest(kind, p, scope)
-        return float(1 - v @ v / (self.rw @ self.rw)), sig
+        return self._explained(v), sig
 
     def rests(self, kind: str, ps: Iterable[dict], scope: list[str] | None = None
               ) -> list[np.ndarray]:
@@ -436,7 +440,7 @@ class _Scorer:
     def shares(self, kind: str, ps: list[dict], scope: list[str] | None = None
                ) -> list[float]:
         """:meth:`share` of each parameter set (a search's grid), as one simulation."""
-        return [float(1 - v @ v / (self.rw @ self.rw)) for v in self.rests(kind, ps, scope)]
+        return [self._explained(v) for v in self.rests(kind, ps, scope)]
 
     def fit(self, kind: str, start: dict, scope: list[str] | None = None,
             max_nfev: int = 12) -> tuple[float, dict, np.ndarray]:

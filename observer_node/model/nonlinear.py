@@ -241,17 +241,16 @@ def simulate_many(models: Sequence[NonlinearGreyBox], pulse_g: np.ndarray,
     if P.ndim != 2 or P.shape != T.shape:
         raise ValueError("simulate_many: records as (tests, n), the pulse's and BRS's alike")
     first._check_tests(P.shape[0])
+    keys = [(m.n_pulse, m.n_brs) for m in models]
     inputs: dict[tuple[float, float], tuple[np.ndarray, np.ndarray, np.ndarray]] = {}
-    for m in models:  # the inputs each delay gives, worked out once per delay
-        key = (m.n_pulse, m.n_brs)
+    for m, key in zip(models, keys, strict=True):  # each delay's inputs, worked out once
         if key not in inputs:
             Pm = _shift(P, m.n_pulse, np.zeros((P.shape[0], 1)), m.delay_mask) \
                 if m.n_pulse else P
             Tm = _shift(T, m.n_brs, T[:, :1], m.delay_mask) if m.n_brs else T
             u = transform_inputs("velocity_brs_rate", Pm, Tm, m.fs_hz)
             inputs[key] = (u[..., 0], u[..., 1], Tm)
-    u1, u2, th = (np.stack([inputs[(m.n_pulse, m.n_brs)][i] for m in models])
-                  for i in range(3))
+    u1, u2, th = (np.stack([inputs[key][i] for key in keys]) for i in range(3))
     return _run(models, u1, u2, th)
 
 
@@ -316,6 +315,10 @@ def _run(models: Sequence[NonlinearGreyBox], u1: np.ndarray, u2: np.ndarray,
         inputs, theta_t = inputs[:, 0], theta_t[:, 0]
     # without force effects the force is zero at every tick: one array, read only
     no_force = None if forces else np.zeros((*lead, 2, ntest))
+    # what every tick reads, looked up once
+    after_input, unloading, unloading_mask = first.after_input, first.unloading, \
+        first.unloading_mask
+    k2, c2, R = base["k2"], base["c2"], base["R"]
 
     def forces_at(z: np.ndarray, a: np.ndarray, b: np.ndarray, th: np.ndarray) -> np.ndarray:
         f = np.zeros((*lead, 2, ntest))
@@ -334,17 +337,17 @@ def _run(models: Sequence[NonlinearGreyBox], u1: np.ndarray, u2: np.ndarray,
         ab = inputs[tick]
         a, b, th = ab[..., 0, :], ab[..., 1, :], theta_t[tick]
         f = forces_at(z, a, b, th) if no_force is None else no_force
-        if not first.after_input:
+        if not after_input:
             y[..., tick, :] = (C @ z + Df @ f).swapaxes(-1, -2)
         zn = Ad @ z + Bd @ ab + Gd @ f
-        if first.unloading:
-            slack = _pushes(base["k2"], base["c2"], base["R"], z.swapaxes(0, -2), a, b)
-            if first.unloading_mask is not None:
-                slack = slack & first.unloading_mask
+        if unloading:
+            slack = _pushes(k2, c2, R, z.swapaxes(0, -2), a, b)
+            if unloading_mask is not None:
+                slack = slack & unloading_mask
             if slack.any():
                 zn = np.where(slack[..., None, :], Ad_s @ z + Bd_s @ ab + Gd_s @ f, zn)
         z = zn
-        if first.after_input:
+        if after_input:
             f = forces_at(z, a, b, th) if no_force is None else no_force
             y[..., tick, :] = (C @ z + Df @ f).swapaxes(-1, -2)
     offset = first.offset if nm == 1 else np.stack([m.offset for m in models])[:, None, None]
