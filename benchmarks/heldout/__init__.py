@@ -86,11 +86,15 @@
   (``draw_z.py``), every choice drawn, the sizes set by costs by a rule written before the
   draw, on pairings no earlier case ran save the two-effect case's (none was left for it: it
   reuses one of set O's, by a rule written before drawing again).
+  ``cases_aa.py``: set AA, the same again, by another engineer: set Z's process at 36000
+  (``draw_aa.py``), every choice drawn, the sizes set by costs by a rule written before the
+  draw, on pairings no earlier case ran save the two-effect case's (none was left for it: it
+  reuses one of set J's, by set Z's rule, written into draw_aa.py before the draw).
   ``make_sets.py``: writes a set (``--no-effects``: the same tests with every effect off).
   ``costs.py``: what each case costs the thesis grey-box (project CLI).
 
     python -m benchmarks.heldout.make_sets --out /tmp/heldout
-        [--set a|b|c|d|e|f|g|h|i|j|k|l|m|n|o|p|q|r|s|t|u|v|w|x|y|z] [--case NAME ...]
+        [--set a|b|c|d|e|f|g|h|i|j|k|l|m|n|o|p|q|r|s|t|u|v|w|x|y|z|aa] [--case NAME ...]
 
 Never tune the loop on these cases; report them apart from the tuned ones.
 """

@@ -2,7 +2,8 @@
 ``observer-node identify --model greybox`` + ``evaluate`` (the project's CLI, nothing else)
 on each case, and on its twin with every effect off (same dummies, pulses and noise).
 
-    python -m benchmarks.heldout.costs [--set a|b|c|d|e|f|g|h|i|j|k|l|m|n|o|p|q|r|s|t|u|v|w|x|y|z]
+    python -m benchmarks.heldout.costs
+        [--set a|b|c|d|e|f|g|h|i|j|k|l|m|n|o|p|q|r|s|t|u|v|w|x|y|z|aa]
         [--case NAME ...] [--work DIR]
 
 About 40 s per case on this machine (two identifications, two evaluations).

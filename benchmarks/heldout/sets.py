@@ -19,11 +19,13 @@ V (``cases_v``, written after set U by another engineer, its choices drawn, the 
 (``cases_w``, written after set V by another engineer, its choices drawn, the same way), set X
 (``cases_x``, written after set W by another engineer, its choices drawn, the same way), set Y
 (``cases_y``, written after set X by another engineer, its choices drawn, the same way), set Z
-(``cases_z``, written after set Y by another engineer, its choices drawn, the same way)."""
+(``cases_z``, written after set Y by another engineer, its choices drawn, the same way), set
+AA (``cases_aa``, written after set Z by another engineer, its choices drawn, the same way)."""
 
 from __future__ import annotations
 
 from .cases import CASES, Case
+from .cases_aa import SET_AA
 from .cases_b import SET_B
 from .cases_c import SET_C
 from .cases_d import SET_D
@@ -50,18 +52,19 @@ from .cases_x import SET_X
 from .cases_y import SET_Y
 from .cases_z import SET_Z
 
-# each set by its letter: set A is ``cases.CASES``, set Z ``cases_z.SET_Z``
+# each set by its letters: set A is ``cases.CASES``, set AA ``cases_aa.SET_AA``
 _BY_NAME: dict[str, list[Case]] = {
     "a": CASES, "b": SET_B, "c": SET_C, "d": SET_D, "e": SET_E, "f": SET_F, "g": SET_G,
     "h": SET_H, "i": SET_I, "j": SET_J, "k": SET_K, "l": SET_L, "m": SET_M, "n": SET_N,
     "o": SET_O, "p": SET_P, "q": SET_Q, "r": SET_R, "s": SET_S, "t": SET_T, "u": SET_U,
-    "v": SET_V, "w": SET_W, "x": SET_X, "y": SET_Y, "z": SET_Z}
+    "v": SET_V, "w": SET_W, "x": SET_X, "y": SET_Y, "z": SET_Z,
+    "aa": SET_AA}
 SETS = tuple(_BY_NAME)
 
 
 def case_set(name: str) -> list[Case]:
-    """Set A (``cases``), or set B ... Z (``cases_b`` ... ``cases_z``) by its lower-case
-    letter; ValueError for another name."""
+    """Set A (``cases``), or set B ... Z, AA (``cases_b`` ... ``cases_z``, ``cases_aa``) by its
+    lower-case letters; ValueError for another name."""
     if name not in _BY_NAME:
         raise ValueError(f"unknown case set {name!r}; known: {', '.join(SETS)}")
     return list(_BY_NAME[name])
