@@ -61,7 +61,8 @@ from .draw_w import BROKEN, TRANSDUCER, cli, drawn
 
 SEED = 36000
 # a case whose draw proved impossible, drawn again, whole, by the next seed's generator (one per
-# redraw, in this order, after the rest), the pairings of everything drawn before still taken
+# redraw, in this order, after the rest), the pairings of everything drawn before still taken:
+# none, every draw found a size in band within the rule's four (see ``cases_aa.py``)
 REDRAWN: tuple[tuple[str, int], ...] = ()
 EARLIER = "abcdefghijklmnopqrstuvwxyz"
 __all__ = ["BROKEN", "BRS_GAIN", "KINDS", "REDRAWN", "SEED", "TRANSDUCER", "draw", "forms",
