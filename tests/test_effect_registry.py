@@ -9,7 +9,7 @@ import pytest
 from observer_node.data import bundled_campaign, read_isomme
 from observer_node.ident.dataset import make_dataset
 from observer_node.model.chest import PARAM_NAMES, model_matrices
-from observer_node.model.effects import EFFECTS, Effect, Param, register, registered
+from observer_node.model.effects import EFFECTS, Effect, Param, kinematics, register, registered
 from observer_node.model.modelfile import ModelFile, ModelFileError
 from observer_node.model.nonlinear import NonlinearGreyBox
 
@@ -129,3 +129,26 @@ def test_a_parameter_with_a_physical_range_is_fitted_and_filed_within_it(data):
     assert why is not None and "held at the edge of what input_gain can be" in why
     assert at_the_edge("input_gain", {"g": 0.02}) is None
     assert at_the_edge("chest_stiffening", {"k3": 1e12}) is None  # no range: the warnings'
+
+
+def test_kinematics_read_in_any_order_give_their_formulas() -> None:
+    """A formula reads the kinematics it needs, in any order, and gets the same numbers
+    (worked out on first reading); on arrays, NaN where a state ran away stays in ``zero``."""
+    z = np.array([[0.5, 0.2], [0.01, 0.03], [1.5, np.nan], [0.04, 0.05], [0.06, 0.02],
+                  [0.1, 0.2]])
+    u1, u2, theta = np.array([2.0, 3.0]), np.array([10.0, 20.0]), np.array([0.3, 0.4])
+    first = kinematics(z, u1, u2, theta, BASE)
+    fields = (first.ed, first.zero, first.e, first.dd, first.d)
+    again = kinematics(z, u1, u2, theta, BASE)
+    np.testing.assert_array_equal(again.d, z[3] - z[1])
+    np.testing.assert_array_equal(again.dd, z[2] - z[0])
+    np.testing.assert_array_equal(again.e, z[4] - z[3])
+    np.testing.assert_array_equal(again.ed, u1 + BASE["R"] * u2 - z[2])
+    for a, b in zip(fields, (again.ed, again.zero, again.e, again.dd, again.d), strict=True):
+        np.testing.assert_array_equal(a, b)
+    assert again.zero[0] == 0.0 and not np.isnan(again.zero[0])
+    # d is finite in both columns here; a NaN spine displacement runs into d and zero
+    z[1, 1] = np.nan
+    ran_away = kinematics(z, u1, u2, theta, BASE)
+    assert np.isnan(ran_away.zero[1]) and ran_away.zero[0] == 0.0
+    assert (ran_away.pos == z[5]).all() and (ran_away.theta == theta).all()

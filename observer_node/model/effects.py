@@ -27,7 +27,7 @@ from collections.abc import Callable, Iterator, Mapping, Sequence
 from contextlib import contextmanager
 from dataclasses import dataclass
 from types import MappingProxyType
-from typing import Any, Literal, NamedTuple, TypeAlias
+from typing import Any, Literal, TypeAlias
 
 import numpy as np
 
@@ -36,28 +36,72 @@ import numpy as np
 Num: TypeAlias = Any
 
 
-class Kinematics(NamedTuple):
-    """What a force formula may read, at one state (floats or arrays over tests)."""
+class Kinematics:
+    """What a force formula may read, at one state (floats or arrays over tests).
 
+    The derived quantities (d, dd, e, ed, zero) are worked out when a formula first reads
+    them: a tick then pays only for what its effects read (a simulation spends its time in
+    these few numpy calls per tick)."""
+
+    __slots__ = ("_R", "_d", "_dd", "_e", "_ed", "_s", "_sd", "_w", "_zero", "pos", "theta",
+                 "u1", "u2", "x", "xd")
     xd: Num  # spine velocity [m/s]
     x: Num  # spine displacement [m]
     pos: Num  # vehicle displacement p [m]
-    d: Num  # chest compression s - x [m]
-    dd: Num  # its rate [m/s]
-    e: Num  # belt penetration w - s [m]
-    ed: Num  # its rate u1 + R u2 - sdot [m/s]
     u1: Num  # vehicle velocity change [m/s]
     u2: Num  # BRS rate [rad/s]
     theta: Num  # BRS angle [rad]
-    zero: Num  # 0 shaped like d (NaN where d is: a trial that ran away stays visible)
+
+    def __init__(self, z: np.ndarray | Sequence[Num], u1: Num, u2: Num, theta: Num,
+                 R: Num) -> None:
+        self.xd, self.x, self._sd, self._s, self._w, self.pos = z
+        self.u1, self.u2, self.theta, self._R = u1, u2, theta, R
+        self._d: Num = None
+        self._dd: Num = None
+        self._e: Num = None
+        self._ed: Num = None
+        self._zero: Num = None
+
+    @property
+    def d(self) -> Num:
+        """Chest compression s - x [m]."""
+        if self._d is None:
+            self._d = self._s - self.x
+        return self._d
+
+    @property
+    def dd(self) -> Num:
+        """Its rate [m/s]."""
+        if self._dd is None:
+            self._dd = self._sd - self.xd
+        return self._dd
+
+    @property
+    def e(self) -> Num:
+        """Belt penetration w - s [m]."""
+        if self._e is None:
+            self._e = self._w - self._s
+        return self._e
+
+    @property
+    def ed(self) -> Num:
+        """Its rate u1 + R u2 - sdot [m/s]."""
+        if self._ed is None:
+            self._ed = self.u1 + self._R * self.u2 - self._sd
+        return self._ed
+
+    @property
+    def zero(self) -> Num:
+        """0 shaped like d (NaN where d is: a trial that ran away stays visible)."""
+        if self._zero is None:
+            self._zero = 0.0 * self.d
+        return self._zero
 
 
 def kinematics(z: np.ndarray | Sequence[Num], u1: Num, u2: Num, theta: Num,
-               base: Mapping[str, float]) -> Kinematics:
-    xd, x, sd, s, w, p = z
-    d = s - x
-    return Kinematics(xd, x, p, d, sd - xd, w - s, u1 + base["R"] * u2 - sd, u1, u2, theta,
-                      0.0 * d)
+               base: Mapping[str, Any]) -> Kinematics:
+    """The kinematics at state z = (xdot, x, sdot, s, w, p) and inputs u1, u2, theta."""
+    return Kinematics(z, u1, u2, theta, base["R"])
 
 
 # (parameters, kinematics, base parameters) -> (force on the spine, on the sternum) [N],

@@ -35,7 +35,7 @@ import numpy as np
 
 from ..units import STANDARD_GRAVITY
 from .chest import discrete
-from .effects import EFFECTS, Force, Num, kinematics
+from .effects import EFFECTS, Force, Kinematics, Num, kinematics
 from .observer import transform_inputs
 
 G0 = STANDARD_GRAVITY
@@ -307,7 +307,7 @@ def _run(models: Sequence[NonlinearGreyBox], u1: np.ndarray, u2: np.ndarray,
     forces = [(fn, per_model([m._force_fns[j][1] for m in models]), mask)
               for j, (fn, _, mask) in enumerate(first._force_fns)]
     z = np.zeros((*lead, 6, ntest))
-    y = np.empty((*lead, ntest, n, 2))
+    yt = np.empty((n, *lead, 2, ntest))  # by tick, as the products come; turned once at the end
     # each tick's inputs as contiguous ([models,] 2, tests), laid out once: a tick reads views
     inputs = np.ascontiguousarray(np.stack([u1, u2], axis=1).transpose(3, 0, 1, 2))
     theta_t = np.ascontiguousarray(theta.transpose(2, 0, 1))
@@ -318,17 +318,24 @@ def _run(models: Sequence[NonlinearGreyBox], u1: np.ndarray, u2: np.ndarray,
     # what every tick reads, looked up once
     after_input, unloading, unloading_mask = first.after_input, first.unloading, \
         first.unloading_mask
-    k2, c2, R = base["k2"], base["c2"], base["R"]
+    k2, c2 = base["k2"], base["c2"]
+    reads_state = no_force is None or unloading
 
-    def forces_at(z: np.ndarray, a: np.ndarray, b: np.ndarray, th: np.ndarray) -> np.ndarray:
-        f = np.zeros((*lead, 2, ntest))
-        k = kinematics(z.swapaxes(0, -2), a, b, th, base)  # the state's rows first
-        for force, p, mask in forces:
+    f_now = np.zeros((*lead, 2, ntest))  # the forces of the tick, rewritten each time
+
+    def forces_at(k: Kinematics) -> np.ndarray:
+        f = f_now
+        for j, (force, p, mask) in enumerate(forces):
             s1, s2 = force(p, k, base)
-            if mask is not None:
-                s1, s2 = s1 * mask, s2 * mask
-            f[..., 0, :] += s1
-            f[..., 1, :] += s2
+            if mask is not None:  # k.zero stays itself under a mask: not multiplied
+                s1 = s1 if s1 is k.zero else s1 * mask
+                s2 = s2 if s2 is k.zero else s2 * mask
+            if j:
+                f[..., 0, :] += s1
+                f[..., 1, :] += s2
+            else:  # 0 + s: what adding to zeros gives, to the bit (-0 becomes +0)
+                np.add(s1, 0.0, out=f[..., 0, :])
+                np.add(s2, 0.0, out=f[..., 1, :])
         return f
 
     for tick in range(n):
@@ -336,25 +343,29 @@ def _run(models: Sequence[NonlinearGreyBox], u1: np.ndarray, u2: np.ndarray,
             states[:, :, tick] = z
         ab = inputs[tick]
         a, b, th = ab[..., 0, :], ab[..., 1, :], theta_t[tick]
-        f = forces_at(z, a, b, th) if no_force is None else no_force
+        # the state's rows first; read by the forces and the belt switch alike
+        k = kinematics(z.swapaxes(0, -2), a, b, th, base) if reads_state else None
+        f = no_force if no_force is not None or k is None else forces_at(k)
         if not after_input:
-            y[..., tick, :] = (C @ z + Df @ f).swapaxes(-1, -2)
+            np.add(C @ z, Df @ f, out=yt[tick])
         zn = Ad @ z + Bd @ ab + Gd @ f
-        if unloading:
-            slack = _pushes(k2, c2, R, z.swapaxes(0, -2), a, b)
+        if unloading and k is not None:
+            slack = k2 * k.e + c2 * k.ed < 0.0  # the belt would push: _pushes, read off k
             if unloading_mask is not None:
                 slack = slack & unloading_mask
             if slack.any():
                 zn = np.where(slack[..., None, :], Ad_s @ z + Bd_s @ ab + Gd_s @ f, zn)
         z = zn
         if after_input:
-            f = forces_at(z, a, b, th) if no_force is None else no_force
-            y[..., tick, :] = (C @ z + Df @ f).swapaxes(-1, -2)
+            if no_force is None:
+                f = forces_at(kinematics(z.swapaxes(0, -2), a, b, th, base))
+            np.add(C @ z, Df @ f, out=yt[tick])
+    y = np.moveaxis(yt, (0, -2, -1), (-2, -1, -3))  # ([models,] tests, n, 2), a view
     offset = first.offset if nm == 1 else np.stack([m.offset for m in models])[:, None, None]
     if first.offset_mask is not None:
-        y = y + first.offset_mask[:, None, None] * offset
+        y = np.add(y, first.offset_mask[:, None, None] * offset, order="C")
     else:
-        y = y + offset
+        y = np.add(y, offset, order="C")
     return y[None] if nm == 1 else y
 
 
