@@ -48,10 +48,10 @@ import numpy as np
 from benchmarks.heldout.cases import Case
 from benchmarks.heldout.sets import SETS, select
 from observer_node.data import load_tests
-from observer_node.ident.dataset import make_dataset
+from observer_node.ident.dataset import Dataset, make_dataset
 from observer_node.loop.closed_loop import run_loop
-from observer_node.loop.evidence import judge
-from observer_node.loop.refit import fold_scores, folds, refit, score
+from observer_node.loop.evidence import Evidence, judge
+from observer_node.loop.refit import Refit, fold_scores, folds, refit, score
 from observer_node.loop.report import LoopReport
 from observer_node.model.effects import EFFECTS
 
@@ -166,19 +166,26 @@ def _truth_by_the_rule(case: Case, r: LoopReport, est_tests: list) -> dict | Non
         return None
     keep = [t for t in est_tests if t.name not in case.expect_broken]
     est = make_dataset(keep, r.settings.rate_hz)
+    ev, _ = by_the_rule(dict(r.baseline.parameters), effects, est, r.settings.margin)
+    return {"passes": ev.accepted, "gain": ev.gain_points, "improved": ev.tests_improved,
+            "tests": ev.tests, "reason": ev.reason}
+
+
+def by_the_rule(base: dict, effects: list[dict], est: Dataset, margin: float
+                ) -> tuple[Evidence, Refit]:
+    """``effects`` judged by the loop's rule against the grey-box ``base``: both refitted on
+    the estimation tests and cross-validated leave-one-test-out as the loop does, the rule
+    reading the setups held by at least two tests; and the effects' refit."""
     held = {s: est.setups.count(s) for s in est.setups}
     setup_of = ({n: s for n, s in zip(est.names, est.setups, strict=True) if held[s] >= 2}
                 or dict(zip(est.names, est.setups, strict=True)))
     cv = []
     with np.errstate(all="ignore"):
-        for base, eff in ((dict(r.baseline.parameters), []),
-                          (dict(r.baseline.parameters), effects)):
+        for eff in ([], effects):
             fit = refit(base, eff, est, max_nfev=150 if eff else 60)
             cv.append({n: v for tr, te in folds(est)
                        for n, v in fold_scores(fit.base, fit.effects, est, tr, te).items()})
-    ev = judge(cv[0], cv[1], setup_of, None, r.settings.margin)
-    return {"passes": ev.accepted, "gain": ev.gain_points, "improved": ev.tests_improved,
-            "tests": ev.tests, "reason": ev.reason}
+    return judge(cv[0], cv[1], setup_of, None, margin), fit
 
 
 def _truth_cell(t: dict | None) -> str:

@@ -1,0 +1,122 @@
+"""Screen a trial effect form before building it: does the held-out cases' truth pass the
+loop's rule with it, where the library's form of the same kind does not?
+
+For each case (of the independent held-out sets), the thesis grey-box is identified on its
+estimation tests; then the expected structure is judged by the loop's rule against it
+(``loop_heldout.by_the_rule``: refitted, cross-validated leave-one-test-out, judged at the
+loop's margin of 1 point) twice: with the library's form of the expected kind, and with the
+trial form in its place, on the same scope. Printed per form: passes or fails, the mean gain
+[points] and tests improved, the validation fit_TOT [%] of the refit, and the trial form's
+fitted parameters. Run on cases already seen, a screen says only whether a form is worth
+building; held-out sets judge it once built.
+
+Trial forms (registered for the run only, never in the library):
+
+- ``brs_ring``: belt travel R (theta + g theta^2/2 + a sin theta + b (1 - cos theta)): the
+  spool's gain with a once-per-revolution error of the BRS ring (an eccentric code ring reads
+  the angle off by e/r sin(theta + phi); a, b within +-0.1), for ``input_gain`` cases;
+- ``belt_unload_drop``: the one-sided belt whose force also drops by a fraction h (0..0.95)
+  while the webbing shortens (a memoryless webbing hysteresis), for ``belt_unloading`` cases.
+
+    python -m benchmarks.form_screen --form brs_ring --set z --case hz_eccentric_r16_sled \\
+        [--sets DIR]
+"""
+
+from __future__ import annotations
+
+import argparse
+import sys
+import tempfile
+from collections.abc import Mapping
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from benchmarks.heldout.sets import SETS, select
+from benchmarks.loop_heldout import by_the_rule, generate
+from observer_node.data import load_tests
+from observer_node.ident import greybox
+from observer_node.ident.dataset import make_dataset
+from observer_node.loop.refit import score
+from observer_node.model.effects import Effect, Kinematics, Param, registered
+
+MARGIN = 1.0  # the loop's default margin [points]
+
+
+def _ring(p: Mapping[str, Any], k: Kinematics, b: Mapping[str, float]) -> tuple[Any, Any]:
+    th = k.theta
+    dw = b["R"] * (p["g"] * th * th / 2 + p["a"] * np.sin(th) + p["b"] * (1 - np.cos(th)))
+    dwd = b["R"] * (p["g"] * th + p["a"] * np.cos(th) + p["b"] * np.sin(th)) * k.u2
+    return k.zero, b["k2"] * dw + b["c2"] * dwd
+
+
+def _unload_drop(p: Mapping[str, Any], k: Kinematics, b: Mapping[str, float]) -> tuple[Any, Any]:
+    f = b["k2"] * k.e + b["c2"] * k.ed
+    return k.zero, -np.minimum(f, 0.0) - p["h"] * np.maximum(f, 0.0) * (k.ed < 0)
+
+
+# trial form -> (the library kind it stands in for, its definition, its starting parameters)
+FORMS: dict[str, tuple[str, Effect, dict[str, float]]] = {
+    "brs_ring": ("input_gain", Effect(
+        "trial_brs_ring", "physical", "spool gain with a once-per-revolution BRS ring error",
+        (Param("g", "1/rad", 0.02, within=(-0.04, 0.04)),
+         Param("a", "1", 0.02, within=(-0.1, 0.1)), Param("b", "1", 0.02, within=(-0.1, 0.1))),
+        force=_ring), {"g": 0.0, "a": 0.0, "b": 0.0}),
+    "belt_unload_drop": ("belt_unloading", Effect(
+        "trial_belt_unload_drop", "physical", "one-sided belt, force lower while unloading",
+        (Param("h", "1", 0.3, within=(0.0, 0.95)),), force=_unload_drop), {"h": 0.3}),
+}
+
+
+def screen(form: str, case_set: str, names: list[str], sets: Path) -> None:
+    kind, trial, start = FORMS[form]
+    print(f"{'case':<28}{'form':<24}{'rule':<18}{'val %':>7}  parameters", flush=True)
+    for case in select(names, case_set):
+        expected = [(k, s) for k, s in case.expect if k == kind]
+        if not expected:
+            print(f"{case.name:<28}expects no {kind}: skipped", flush=True)
+            continue
+        est = make_dataset([t for t in load_tests([sets / case.name / "est"])
+                            if t.name not in case.expect_broken], 1000.0)
+        val = make_dataset(load_tests([sets / case.name / "val"]), 1000.0)
+        base = dict(greybox.fit_greybox(est).params)
+        rig_setup = dict(zip([n.split("_")[0] for n in est.names], est.setups, strict=True))
+        scope = expected[0][1]
+        where = {} if scope == "all" else {
+            "setups": sorted({rig_setup[r] for r in scope.split("+") if r in rig_setup})}
+        with registered(trial):
+            for label, effect in ((kind, {"kind": kind, "parameters": {}, **where}),
+                                  (form, {"kind": trial.kind, "parameters": start, **where})):
+                if kind != "belt_unloading" and label == kind:
+                    effect["parameters"] = {"g": 0.02}
+                ev, fit = by_the_rule(base, [effect], est, MARGIN)
+                with np.errstate(all="ignore"):
+                    val_fit = score(fit.base, fit.effects, val).fit.total
+                rule = ("passes" if ev.accepted else "fails") + \
+                    f" {ev.gain_points:+.1f} {ev.tests_improved}/{ev.tests}"
+                params = {k: round(v, 4) for k, v in fit.effects[0]["parameters"].items()}
+                print(f"{case.name:<28}{label:<24}{rule:<18}{val_fit:7.1f}  {params or ''}",
+                      flush=True)
+
+
+def main() -> None:
+    ap = argparse.ArgumentParser(description=__doc__,
+                                 formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("--form", choices=FORMS, required=True, help="the trial form")
+    ap.add_argument("--set", dest="case_set", choices=SETS, required=True)
+    ap.add_argument("--case", dest="cases", action="append", metavar="NAME", required=True)
+    ap.add_argument("--sets", type=Path, help="the generated sets (default: generated into a "
+                    "temporary folder)")
+    a = ap.parse_args()
+    try:
+        cases = select(a.cases, a.case_set)
+    except ValueError as e:
+        print(f"form_screen: {e}", file=sys.stderr)
+        sys.exit(2)
+    sets = a.sets or generate(a.case_set, cases, Path(tempfile.mkdtemp()) / "sets")
+    screen(a.form, a.case_set, a.cases, sets)
+
+
+if __name__ == "__main__":
+    main()
