@@ -327,7 +327,7 @@ def _run(models: Sequence[NonlinearGreyBox], u1: np.ndarray, u2: np.ndarray,
         f = f_now
         for j, (force, p, mask) in enumerate(forces):
             s1, s2 = force(p, k, base)
-            if mask is not None:  # k.zero stays itself under a mask: not multiplied
+            if mask is not None:  # k.zero times a mask is k.zero (0 stays 0, NaN NaN): skipped
                 s1 = s1 if s1 is k.zero else s1 * mask
                 s2 = s2 if s2 is k.zero else s2 * mask
             if j:
