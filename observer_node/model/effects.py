@@ -15,7 +15,9 @@ theta [rad], and the base parameters (k2, c2, R). The formulas work on floats (t
 tick) and on numpy arrays (identification, vectorised over tests); there the effect's and
 base parameters may be columns (models, 1) too (a fit's trial parameter sets run as one
 simulation), so a formula uses numpy's arithmetic on them: no ``float()``, ``math`` or
-``if``.
+``if``. A formula reads the kinematics by name (``k.d``), never writes into them or its
+parameters (no ``+=`` or ``out=`` on what it reads): every formula of a tick, and the belt's
+switch, read the same arrays.
 
 Knows nothing about how an effect is fitted: ``search`` names a method the loop implements.
 """
@@ -40,8 +42,8 @@ class Kinematics:
     """What a force formula may read, at one state (floats or arrays over tests).
 
     The derived quantities (d, dd, e, ed, zero) are worked out when a formula first reads
-    them: a tick then pays only for what its effects read (a simulation spends its time in
-    these few numpy calls per tick)."""
+    them, once per state: a tick then pays only for what its effects read (a simulation
+    spends its time in these few numpy calls per tick). Read by name; not a tuple."""
 
     __slots__ = ("_R", "_d", "_dd", "_e", "_ed", "_s", "_sd", "_w", "_zero", "pos", "theta",
                  "u1", "u2", "x", "xd")

@@ -199,7 +199,7 @@ class NonlinearGreyBox:
 
     def belt_slack(self, z: np.ndarray, u1: Num, u2: Num) -> Num:
         """True where the belt would push (force k2 e + c2 e' < 0): float or array."""
-        return _pushes(self._k2, self._c2, self._R, z, u1, u2)
+        return _pushes(self._k2, self._c2, z[4] - z[3], u1 + self._R * u2 - z[2])
 
     # ------------------------------------------------------------------ whole records
     def simulate(self, pulse_g: np.ndarray, brs_rad: np.ndarray) -> np.ndarray:
@@ -268,9 +268,10 @@ def _structure(m: NonlinearGreyBox) -> tuple[object, ...]:
             _names(m.base), m.after_input, m.fs_hz)
 
 
-def _pushes(k2: Num, c2: Num, R: Num, z: Any, u1: Num, u2: Num) -> Num:
-    """Whether the belt force k2 e + c2 e' would be negative (it would push) at states z."""
-    return k2 * (z[4] - z[3]) + c2 * (u1 + R * u2 - z[2]) < 0.0
+def _pushes(k2: Num, c2: Num, e: Num, ed: Num) -> Num:
+    """Whether the belt force k2 e + c2 e' would be negative (it would push), at belt
+    penetrations e = w - s [m] and their rates e' = u1 + R u2 - sdot [m/s]."""
+    return k2 * e + c2 * ed < 0.0
 
 
 def _stacked(values: Sequence[Any]) -> Any:
@@ -327,9 +328,8 @@ def _run(models: Sequence[NonlinearGreyBox], u1: np.ndarray, u2: np.ndarray,
         f = f_now
         for j, (force, p, mask) in enumerate(forces):
             s1, s2 = force(p, k, base)
-            if mask is not None:  # k.zero times a mask is k.zero (0 stays 0, NaN NaN): skipped
-                s1 = s1 if s1 is k.zero else s1 * mask
-                s2 = s2 if s2 is k.zero else s2 * mask
+            if mask is not None:
+                s1, s2 = s1 * mask, s2 * mask
             if j:
                 f[..., 0, :] += s1
                 f[..., 1, :] += s2
@@ -345,16 +345,17 @@ def _run(models: Sequence[NonlinearGreyBox], u1: np.ndarray, u2: np.ndarray,
         a, b, th = ab[..., 0, :], ab[..., 1, :], theta_t[tick]
         # the state's rows first; read by the forces and the belt switch alike
         k = kinematics(z.swapaxes(0, -2), a, b, th, base) if reads_state else None
+        slack = None
+        if unloading and k is not None:  # before the forces, which read the same k
+            slack = _pushes(k2, c2, k.e, k.ed)
+            if unloading_mask is not None:
+                slack = slack & unloading_mask
         f = no_force if no_force is not None or k is None else forces_at(k)
         if not after_input:
             np.add(C @ z, Df @ f, out=yt[tick])
         zn = Ad @ z + Bd @ ab + Gd @ f
-        if unloading and k is not None:
-            slack = k2 * k.e + c2 * k.ed < 0.0  # the belt would push: _pushes, read off k
-            if unloading_mask is not None:
-                slack = slack & unloading_mask
-            if slack.any():
-                zn = np.where(slack[..., None, :], Ad_s @ z + Bd_s @ ab + Gd_s @ f, zn)
+        if slack is not None and slack.any():
+            zn = np.where(slack[..., None, :], Ad_s @ z + Bd_s @ ab + Gd_s @ f, zn)
         z = zn
         if after_input:
             if no_force is None:
