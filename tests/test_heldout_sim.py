@@ -3683,6 +3683,37 @@ def test_set_z_covers_the_general_list() -> None:
     _covers_the_general_list(SET_Z, BEFORE_Z, "cr", ONE_PHYSICAL_Z, draw_z.KINDS)
 
 
+def _follows_a_reusing_draw(draw_mod: ModuleType, seed: int, earlier: str,
+                            cs: list[cases.Case], one_physical: tuple[str, ...],
+                            redrawn: list[tuple[str, int]], before: list[cases.Case],
+                            two_case: cases.Case) -> None:
+    """A set drawn by set W's process from ``seed`` after the sets ``earlier``, its two-effect
+    case reusing a pairing those sets ran (sets Z and AA): the cases follow the draw, and the
+    reused pairing is one the rules allow that no free pairing could replace."""
+    d = draw_mod.draw(seed)
+    assert d == draw_mod.draw()  # reproducible from its seed
+    assert earlier == draw_mod.EARLIER and seed == draw_mod.SEED
+    assert (draw_mod.KINDS, draw_mod.BRS_GAIN) == (draw_w.KINDS, draw_w.BRS_GAIN)
+    assert (draw_mod.TRANSDUCER, draw_mod.BROKEN) == (draw_w.TRANSDUCER, draw_w.BROKEN)
+    _singles_follow(d, cs, one_physical, draw_mod)
+    assert [(w, s) for w, s, _ in d["rejected"]] == list(draw_mod.REDRAWN) == redrawn
+    for what, _, first in d["rejected"]:
+        if what in draw_mod.KINDS:
+            assert first != d["single"][what] and (first["counts"], (first["est"], first[
+                "val"])) not in {(c.counts_per_rev, _pairing(c)) for c in cs}
+        else:
+            assert first != d[what]
+    _the_rest_follows(d, cs, draw_mod)
+    # the two-effect case: every pairing its rules allow for its rigs was run before, and its
+    # own is one of them; the old rule (no reuse) draws it none
+    two, ran = d["two"], {_pairing(c) for c in before}
+    allowed = {(e, v) for e in draw_v.EST_MIXES for v in draw_v.VAL_MIXES
+               if draw_v._ok(e, v, list(two["rigs"]), each=True)}
+    assert allowed and allowed <= ran and (two["est"], two["val"]) in allowed and two["reused"]
+    assert _pairing(two_case) == (two["est"], two["val"])
+    assert draw_w.drawn(seed, draw_mod.EARLIER)["two"]["est"] is None
+
+
 def test_set_z_follows_its_draw() -> None:
     """Set Z's designer's choices are numpy's default_rng(35000)'s (``draw_z.py``; the draws
     found impossible drawn again by the next seeds, ``REDRAWN``), followed as drawn: each
@@ -3692,28 +3723,8 @@ def test_set_z_follows_its_draw() -> None:
     process: its kinds, pools and mix rules, A-Y's pairings taken, but the two-effect case's:
     none was free for its rigs (the old rule draws it none), so it reuses one A-Y ran, among
     those its rules allow."""
-    d = draw_z.draw(35000)
-    assert d == draw_z.draw()  # reproducible from its seed
-    assert draw_z.EARLIER == "abcdefghijklmnopqrstuvwxy" and draw_z.SEED == 35000
-    assert (draw_z.KINDS, draw_z.BRS_GAIN) == (draw_w.KINDS, draw_w.BRS_GAIN)
-    assert (draw_z.TRANSDUCER, draw_z.BROKEN) == (draw_w.TRANSDUCER, draw_w.BROKEN)
-    _singles_follow(d, SET_Z, ONE_PHYSICAL_Z, draw_z)
-    assert [(w, s) for w, s, _ in d["rejected"]] == list(draw_z.REDRAWN) == REDRAWN_Z
-    for what, _, first in d["rejected"]:
-        if what in draw_z.KINDS:
-            assert first != d["single"][what] and (first["counts"], (first["est"], first[
-                "val"])) not in {(c.counts_per_rev, _pairing(c)) for c in SET_Z}
-        else:
-            assert first != d[what]
-    _the_rest_follows(d, SET_Z, draw_z)
-    # the two-effect case: every pairing its rules allow for its rigs was run by A-Y, and its
-    # own is one of them; the old rule (no reuse) draws it none
-    two, ran = d["two"], {_pairing(c) for c in BEFORE_Z}
-    allowed = {(e, v) for e in draw_v.EST_MIXES for v in draw_v.VAL_MIXES
-               if draw_v._ok(e, v, list(two["rigs"]), each=True)}
-    assert allowed and allowed <= ran and (two["est"], two["val"]) in allowed and two["reused"]
-    assert _pairing(BY_NAME_Z[TWO_Z]) == (two["est"], two["val"])
-    assert draw_w.drawn(35000, draw_z.EARLIER)["two"]["est"] is None
+    _follows_a_reusing_draw(draw_z, 35000, "abcdefghijklmnopqrstuvwxy", SET_Z, ONE_PHYSICAL_Z,
+                            REDRAWN_Z, BEFORE_Z, BY_NAME_Z[TWO_Z])
 
 
 def test_set_z_lab_side_is_as_drawn_and_unnamed() -> None:
@@ -3816,28 +3827,9 @@ def test_set_aa_follows_its_draw() -> None:
     process: set W's kinds, pools and mix rules, A-Z's pairings taken, but the two-effect
     case's: none was free for its rigs (the old rule draws it none), so it reuses one A-Z ran,
     among those its rules allow."""
-    d = draw_aa.draw(36000)
-    assert d == draw_aa.draw()  # reproducible from its seed
-    assert draw_aa.EARLIER == "abcdefghijklmnopqrstuvwxyz" and draw_aa.SEED == 36000
-    assert (draw_aa.KINDS, draw_aa.BRS_GAIN) == (draw_w.KINDS, draw_w.BRS_GAIN)
-    assert (draw_aa.TRANSDUCER, draw_aa.BROKEN) == (draw_w.TRANSDUCER, draw_w.BROKEN)
-    _singles_follow(d, SET_AA, ONE_PHYSICAL_AA, draw_aa)
-    assert [(w, s) for w, s, _ in d["rejected"]] == list(draw_aa.REDRAWN) == REDRAWN_AA
-    for what, _, first in d["rejected"]:
-        if what in draw_aa.KINDS:
-            assert first != d["single"][what] and (first["counts"], (first["est"], first[
-                "val"])) not in {(c.counts_per_rev, _pairing(c)) for c in SET_AA}
-        else:
-            assert first != d[what]
-    _the_rest_follows(d, SET_AA, draw_aa)
-    # the two-effect case: every pairing its rules allow for its rigs was run by A-Z, and its
-    # own is one of them; the old rule (no reuse) draws it none
-    two, ran = d["two"], {_pairing(c) for c in BEFORE_AA}
-    allowed = {(e, v) for e in draw_v.EST_MIXES for v in draw_v.VAL_MIXES
-               if draw_v._ok(e, v, list(two["rigs"]), each=True)}
-    assert allowed and allowed <= ran and (two["est"], two["val"]) in allowed and two["reused"]
-    assert _pairing(BY_NAME_AA[TWO_AA]) == (two["est"], two["val"]) == ((2, 2, 2), (3, 0, 3))
-    assert draw_w.drawn(36000, draw_aa.EARLIER)["two"]["est"] is None
+    _follows_a_reusing_draw(draw_aa, 36000, "abcdefghijklmnopqrstuvwxyz", SET_AA,
+                            ONE_PHYSICAL_AA, REDRAWN_AA, BEFORE_AA, BY_NAME_AA[TWO_AA])
+    assert _pairing(BY_NAME_AA[TWO_AA]) == ((2, 2, 2), (3, 0, 3))
 
 
 def test_set_aa_lab_side_is_as_drawn_and_unnamed() -> None:
