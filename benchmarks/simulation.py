@@ -58,10 +58,13 @@ def _best_ms(models: list[NonlinearGreyBox], pulse_g: np.ndarray, brs_rad: np.nd
 
 
 def main() -> None:
-    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    ap = argparse.ArgumentParser(description=__doc__,
+                                 formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--batch", type=int, default=20, help="models in a batch (default 20)")
     ap.add_argument("--repeat", type=int, default=15, help="runs of each, the best kept")
     args = ap.parse_args()
+    if args.batch < 2 or args.repeat < 1:
+        ap.error("--batch must be at least 2 and --repeat at least 1")
     tests = load_tests([bundled_campaign()])
     est = make_dataset([t for t in tests if int(t.name[-1]) % 2 == 1], 1000.0)
     base = dict(greybox.fit_greybox(est).params)
