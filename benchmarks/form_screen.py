@@ -25,8 +25,6 @@ Trial forms (registered for the run only, never in the library):
 from __future__ import annotations
 
 import argparse
-import sys
-import tempfile
 from collections.abc import Mapping
 from pathlib import Path
 from typing import Any
@@ -34,12 +32,12 @@ from typing import Any
 import numpy as np
 
 from benchmarks.heldout.sets import SETS, select
-from benchmarks.loop_heldout import by_the_rule, generate
+from benchmarks.loop_heldout import by_the_rule, cases_and_sets
 from observer_node.data import load_tests
 from observer_node.ident import greybox
 from observer_node.ident.dataset import make_dataset
 from observer_node.loop.refit import score
-from observer_node.model.effects import Effect, Kinematics, Param, registered
+from observer_node.model.effects import EFFECTS, Effect, Kinematics, Param, registered
 
 MARGIN = 1.0  # the loop's default margin [points]
 
@@ -86,10 +84,9 @@ def screen(form: str, case_set: str, names: list[str], sets: Path) -> None:
         where = {} if scope == "all" else {
             "setups": sorted({rig_setup[r] for r in scope.split("+") if r in rig_setup})}
         with registered(trial):
-            for label, effect in ((kind, {"kind": kind, "parameters": {}, **where}),
+            for label, effect in ((kind, {"kind": kind, "parameters": dict(EFFECTS[kind].typical),
+                                          **where}),
                                   (form, {"kind": trial.kind, "parameters": start, **where})):
-                if kind != "belt_unloading" and label == kind:
-                    effect["parameters"] = {"g": 0.02}
                 ev, fit = by_the_rule(base, [effect], est, MARGIN)
                 with np.errstate(all="ignore"):
                     val_fit = score(fit.base, fit.effects, val).fit.total
@@ -109,12 +106,7 @@ def main() -> None:
     ap.add_argument("--sets", type=Path, help="the generated sets (default: generated into a "
                     "temporary folder)")
     a = ap.parse_args()
-    try:
-        cases = select(a.cases, a.case_set)
-    except ValueError as e:
-        print(f"form_screen: {e}", file=sys.stderr)
-        sys.exit(2)
-    sets = a.sets or generate(a.case_set, cases, Path(tempfile.mkdtemp()) / "sets")
+    _, sets = cases_and_sets("form_screen", a.case_set, a.cases, a.sets)
     screen(a.form, a.case_set, a.cases, sets)
 
 

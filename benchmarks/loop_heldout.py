@@ -219,6 +219,18 @@ def generate(case_set: str, cases: list[Case], out: Path) -> Path:
     return out
 
 
+def cases_and_sets(prog: str, case_set: str, names: list[str] | None, sets: Path | None
+                   ) -> tuple[list[Case], Path]:
+    """The cases named from ``case_set`` and the folder of their generated tests (``sets``,
+    else generated into a temporary folder); an unknown case: one line naming it, exit 2."""
+    try:
+        cases = select(names, case_set)
+    except ValueError as e:
+        print(f"{prog}: {e}", file=sys.stderr)
+        sys.exit(2)
+    return cases, sets or generate(case_set, cases, Path(tempfile.mkdtemp()) / "sets")
+
+
 def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__,
                                  formatter_class=argparse.RawDescriptionHelpFormatter)
@@ -232,12 +244,7 @@ def main() -> None:
     ap.add_argument("--workers", type=int, help="Dask workers per loop (default: one per core)")
     ap.add_argument("--json", type=Path, help="also write the rows as JSON")
     a = ap.parse_args()
-    try:
-        cases = select(a.cases, a.case_set)
-    except ValueError as e:
-        print(f"loop_heldout: {e}", file=sys.stderr)
-        sys.exit(2)
-    sets = a.sets or generate(a.case_set, cases, Path(tempfile.mkdtemp()) / "sets")
+    cases, sets = cases_and_sets("loop_heldout", a.case_set, a.cases, a.sets)
     work = a.out or Path(tempfile.mkdtemp())
     print(f"loop reports in {work}/CASE/report.md", flush=True)
     print(f"{'case':<20}{'named (kind@scope)':<46}{'flagged':<10}{'right':>6}{'judged':>7}"
