@@ -16,7 +16,20 @@ Trial forms (registered for the run only, never in the library):
   spool's gain with a once-per-revolution error of the BRS ring (an eccentric code ring reads
   the angle off by e/r sin(theta + phi); a, b within +-0.1), for ``input_gain`` cases;
 - ``belt_unload_drop``: the one-sided belt whose force also drops by a fraction h (0..0.95)
-  while the webbing shortens (a memoryless webbing hysteresis), for ``belt_unloading`` cases.
+  while the webbing shortens (a memoryless webbing hysteresis), for ``belt_unloading`` cases;
+- ``belt_set_memory``: a webbing with memory: below the largest penetration so far, e_peak,
+  the belt's spring follows an unloading line from (e_peak, k2 e_peak) down to zero force at
+  the permanent set h e_peak (h 0..0.9), k2 (e - h e_peak) / (1 - h); the belt force (that
+  spring plus c2 e') never pushes. For ``belt_unloading`` cases;
+- ``belt_set_memory_push``: the same unloading line, the belt force not clipped (a
+  diagnostic: does the clip or the memory cost the fit?);
+- ``belt_off_chest``: the belt leaves the chest: its whole force k2 e + c2 e' is gone where
+  the penetration e < 0 (the webbing off the sternum), whatever its sign where e > 0 (the
+  flesh under the belt damps either way while in contact). For ``belt_unloading`` cases.
+
+The memory forms keep e_peak across a simulation's ticks in the screen's own closure, reset
+where a simulation starts (the state at rest): the library's forces have no memory, so these
+run in this process only (the loop's rule runs its folds one after another here).
 
     python -m benchmarks.form_screen --form brs_ring --set z --case hz_eccentric_r16_sled \\
         [--sets DIR]
@@ -37,7 +50,7 @@ from observer_node.data import load_tests
 from observer_node.ident import greybox
 from observer_node.ident.dataset import make_dataset
 from observer_node.loop.refit import score
-from observer_node.model.effects import EFFECTS, Effect, Kinematics, Param, registered
+from observer_node.model.effects import EFFECTS, Effect, Kinematics, Param, Search, registered
 
 MARGIN = 1.0  # the loop's default margin [points]
 
@@ -54,6 +67,41 @@ def _unload_drop(p: Mapping[str, Any], k: Kinematics, b: Mapping[str, float]) ->
     return k.zero, -np.minimum(f, 0.0) - p["h"] * np.maximum(f, 0.0) * (k.ed < 0)
 
 
+class _Peak:
+    """The largest belt penetration e [m] so far in the simulation under way (0 at rest):
+    read at every state a tick evaluates, twice the same state changes nothing."""
+
+    def __init__(self) -> None:
+        self.peak: Any = None
+
+    def __call__(self, k: Kinematics) -> Any:
+        e = k.e
+        at_rest = not (np.any(k.xd) or np.any(k.x) or np.any(k.pos) or np.any(k.d)
+                       or np.any(k.dd) or np.any(e))
+        if at_rest or self.peak is None or np.shape(self.peak) != np.shape(e):
+            self.peak = np.zeros(np.shape(e))
+        self.peak = np.maximum(self.peak, e)
+        return self.peak
+
+
+def _set_memory(clip: bool) -> Any:
+    peak_of = _Peak()
+
+    def force(p: Mapping[str, Any], k: Kinematics, b: Mapping[str, float]) -> tuple[Any, Any]:
+        peak, e, h = peak_of(k), k.e, p["h"]
+        spring = np.where(e < peak, (e - h * peak) / (1 - h), e)
+        f = b["k2"] * spring + b["c2"] * k.ed
+        if clip:
+            f = np.maximum(f, 0.0)
+        return k.zero, f - (b["k2"] * e + b["c2"] * k.ed)
+    return force
+
+
+def _off_chest(p: Mapping[str, Any], k: Kinematics, b: Mapping[str, float]
+               ) -> tuple[Any, Any]:
+    return k.zero, -(b["k2"] * k.e + b["c2"] * k.ed) * (k.e < 0.0)
+
+
 # trial form -> (the library kind it stands in for, its definition, its starting parameters)
 FORMS: dict[str, tuple[str, Effect, dict[str, float]]] = {
     "brs_ring": ("input_gain", Effect(
@@ -64,6 +112,16 @@ FORMS: dict[str, tuple[str, Effect, dict[str, float]]] = {
     "belt_unload_drop": ("belt_unloading", Effect(
         "trial_belt_unload_drop", "physical", "one-sided belt, force lower while unloading",
         (Param("h", "1", 0.3, within=(0.0, 0.95)),), force=_unload_drop), {"h": 0.3}),
+    "belt_set_memory": ("belt_unloading", Effect(
+        "trial_belt_set_memory", "physical", "webbing unloading to a permanent set, one-sided",
+        (Param("h", "1", 0.3, within=(0.0, 0.9)),), force=_set_memory(clip=True)), {"h": 0.3}),
+    "belt_set_memory_push": ("belt_unloading", Effect(
+        "trial_belt_set_memory_push", "physical", "webbing unloading to a permanent set",
+        (Param("h", "1", 0.3, within=(0.0, 0.9)),), force=_set_memory(clip=False)),
+        {"h": 0.3}),
+    "belt_off_chest": ("belt_unloading", Effect(
+        "trial_belt_off_chest", "physical", "no belt force while the belt is off the chest",
+        force=_off_chest, search=Search("switch")), {}),
 }
 
 
