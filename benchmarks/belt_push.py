@@ -7,15 +7,16 @@ not even where the simulator's webbing has a hysteresis or a permanent set; this
 why, case by case (cases already seen: a diagnosis, not evidence):
 
 1. per estimation test, the grey-box identified on the case's estimation tests: the belt's
-   peak force [N], how long it pushes [ms] and by how much at most [N], and how many of the
-   pushing milliseconds fall in each 10 ms window of the record (so when: loading or rebound);
+   peak force [N], how long it pushes [ms of the record's 151 samples] and by how much at most
+   [N], and how many of the pushing milliseconds fall in each 10 ms of the record (the last
+   window holding 11 samples), so when: loading or rebound;
 2. each one-sided belt judged by the loop's rule against the grey-box (refitted, cross-validated
-   leave-one-test-out, margin 1 point) on every setup, alone and beside a rebound path on the
-   spine: the mean gain [points], tests improved, the validation fit_TOT [%]. The forms: the
-   library's switch (``belt_unloading``), form_screen's trial forms (``belt_off_chest``,
-   ``belt_set_memory``), and beside a ``seat_back`` (a one-sided spine-vehicle spring and
-   damper acting only rearward of the start: what stops a rebound) or the library's
-   ``pelvis_coupling``.
+   leave-one-test-out, margin 1 point) on every setup (``form_screen`` judges a form on the
+   truth's scope instead), alone and beside the library's ``pelvis_coupling`` (a two-sided
+   spine-vehicle path that could hold a rebound in the belt's place): the mean gain [points],
+   tests improved, the validation fit_TOT [%]. The forms: the library's switch
+   (``belt_unloading``) and form_screen's trial forms of that kind (``belt_off_chest``,
+   ``belt_set_memory``, ``belt_set_memory_push``, ``belt_unload_drop``).
 
     python -m benchmarks.belt_push CASE_DIR [CASE_DIR ...] [--forms belt_unloading,...]
 
@@ -28,18 +29,19 @@ import argparse
 import sys
 from collections.abc import Mapping
 from contextlib import ExitStack
+from itertools import pairwise
 from pathlib import Path
-from typing import Any
+from typing import NoReturn
 
 import numpy as np
 
 from benchmarks.form_screen import FORMS
 from benchmarks.loop_heldout import by_the_rule
-from observer_node.data import load_tests
+from observer_node.data import CrashDataError, load_tests
 from observer_node.ident import greybox
 from observer_node.ident.dataset import Dataset, make_dataset
 from observer_node.loop.refit import score
-from observer_node.model.effects import Effect, Kinematics, Param, registered
+from observer_node.model.effects import registered
 from observer_node.model.nonlinear import NonlinearGreyBox
 from observer_node.model.observer import transform_inputs
 
@@ -47,20 +49,8 @@ RATE_HZ = 1000.0
 MARGIN = 1.0  # the loop's default margin [points]
 
 
-def _seat_back(p: Mapping[str, Any], k: Kinematics, b: Mapping[str, float]
-               ) -> tuple[Any, Any]:
-    rel = k.pos - k.x  # the spine's forward excursion in the vehicle [m]
-    f = p["ksb"] * rel + p["csb"] * (k.u1 - k.xd)
-    return np.minimum(f, 0.0) * (rel < 0.0), k.zero
-
-
-SEAT_BACK = Effect(
-    "trial_seat_back", "physical", "seat back: pushes the spine forward once it is rearward "
-    "of its start", (Param("ksb", "N/m", 2e4, positive=True),
-                     Param("csb", "N s/m", 300.0, positive=True)), force=_seat_back)
-BESIDE = {"seat_back": {"kind": SEAT_BACK.kind, "parameters": {"ksb": 2e4, "csb": 300.0}},
-          "pelvis_coupling": {"kind": "pelvis_coupling",
-                              "parameters": {"kp": 1e4, "cp": 300.0}}}
+BESIDE = {"pelvis_coupling": {"kind": "pelvis_coupling", "parameters": {"kp": 1e4, "cp": 300.0}}}
+BELTS = ["belt_unloading", *(f for f, (kind, _, _) in FORMS.items() if kind == "belt_unloading")]
 
 
 def _entry(form: str) -> dict:
@@ -80,8 +70,10 @@ def pushes(base: Mapping[str, float], est: Dataset) -> None:
     force_n = base["k2"] * e + base["c2"] * (u[..., 0] + base["R"] * u[..., 1] - states[2])
     win = round(0.010 * est.fs_hz)
     for name, f in zip(est.names, force_n, strict=True):
-        by_window = " ".join(f"{int(np.sum(f[j:j + win] < 0)):2d}"
-                             for j in range(0, len(f) - win + 1, win))
+        # whole windows, the last one taking the samples left over (151: 10 ms + 1)
+        edges = [*range(0, len(f) - win + 1, win), len(f)]
+        by_window = " ".join(f"{int(np.sum(f[a:b] < 0)):2d}"
+                             for a, b in pairwise(edges))
         print(f"  {name:<10} peak {f.max():6.0f} N; pushes {int(np.sum(f < 0)):3d} ms, at most "
               f"{-f.min():5.0f} N; pushing ms per 10 ms: {by_window}", flush=True)
 
@@ -107,26 +99,34 @@ def main() -> None:
                                  formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("cases", nargs="+", type=Path, metavar="CASE_DIR")
     ap.add_argument("--forms", default="belt_unloading,belt_off_chest,belt_set_memory",
-                    help="one-sided belts to judge, comma-separated: belt_unloading and "
-                         "form_screen's trial forms (default: %(default)s; empty: none)")
+                    help="one-sided belts to judge, comma-separated, of: " + ", ".join(BELTS)
+                    + " (default: %(default)s; empty: none)")
     a = ap.parse_args()
     names = [f for f in a.forms.split(",") if f]
-    bad = [f for f in names if f != "belt_unloading" and f not in FORMS]
-    missing = [c for c in a.cases if not (c / "est").is_dir() or not (c / "val").is_dir()]
-    if bad or missing:
-        print("belt_push: " + (f"unknown form {bad[0]!r}" if bad else
-                               f"{missing[0]}: no est/ and val/ folders"), file=sys.stderr)
-        sys.exit(2)
+    bad = [f for f in names if f not in BELTS]
+    if bad:
+        _refuse(f"unknown belt form {bad[0]!r} (one of {', '.join(BELTS)})")
+    cases = []
+    for case in a.cases:  # all read before any fit: a bad folder is said before minutes of work
+        try:
+            cases.append((case, make_dataset(load_tests([case / "est"]), RATE_HZ),
+                          make_dataset(load_tests([case / "val"]), RATE_HZ)))
+        except (CrashDataError, OSError) as e:
+            _refuse(f"{case}: {e}")
     with ExitStack() as stack:
-        for eff in {SEAT_BACK, *(FORMS[f][1] for f in names if f in FORMS)}:
-            stack.enter_context(registered(eff))
-        for case in a.cases:
-            est = make_dataset(load_tests([case / "est"]), RATE_HZ)
-            val = make_dataset(load_tests([case / "val"]), RATE_HZ)
+        for f in names:
+            if f in FORMS:
+                stack.enter_context(registered(FORMS[f][1]))
+        for case, est, val in cases:
             base = dict(greybox.fit_greybox(est).params)
             print(case.name, flush=True)
             pushes(base, est)
             forms(base, est, val, names)
+
+
+def _refuse(why: str) -> NoReturn:
+    print(f"belt_push: {why}", file=sys.stderr)
+    sys.exit(2)
 
 
 if __name__ == "__main__":

@@ -27,9 +27,15 @@ Trial forms (registered for the run only, never in the library):
   the penetration e < 0 (the webbing off the sternum), whatever its sign where e > 0 (the
   flesh under the belt damps either way while in contact). For ``belt_unloading`` cases.
 
-The memory forms keep e_peak across a simulation's ticks in the screen's own closure, reset
-where a simulation starts (the state at rest): the library's forces have no memory, so these
-run in this process only (the loop's rule runs its folds one after another here).
+The memory forms keep e_peak across a simulation's ticks in the screen's own closure (one
+per form), reset where a simulation starts (the state at rest): the library's forces have no
+memory. That holds only where the force is evaluated tick by tick, one simulation at a time,
+in one thread: the rule's refits and folds here (``model.nonlinear``'s simulation and
+``step``). The loop's candidate signature reads a whole trajectory at once and would see no
+memory, and two models stepped side by side would share one peak: these forms are for this
+screen, never the loop's rounds. ``belt_set_memory_push`` is not the memory form without its
+clip alone: below the peak its spring lies under the grey-box's k2 e by k2 h (e_peak - e) /
+(1 - h), so it also pulls less there.
 
     python -m benchmarks.form_screen --form brs_ring --set z --case hz_eccentric_r16_sled \\
         [--sets DIR]
@@ -69,7 +75,8 @@ def _unload_drop(p: Mapping[str, Any], k: Kinematics, b: Mapping[str, float]) ->
 
 class _Peak:
     """The largest belt penetration e [m] so far in the simulation under way (0 at rest):
-    read at every state a tick evaluates, twice the same state changes nothing."""
+    read at every state a tick evaluates, twice the same state changes nothing. Tick by tick
+    only (see the module's docstring)."""
 
     def __init__(self) -> None:
         self.peak: Any = None
