@@ -13,6 +13,7 @@ from ..data.setups import Setup
 from ..ident.metrics import Fits, OutputFits
 from ..iso18571 import IsoRatings
 from .analysis import CorrelationTests
+from .belt_check import BeltPush
 from .diagnosis import Unexplained
 from .evidence import Evidence
 from .screening import BrokenTest
@@ -373,6 +374,8 @@ class LoopReport:
     # In the model for its fit, not named: the better side of a tie neither side of which
     # the data defend as a finding (absent from report.json when none).
     carried: list[AcceptedEffect] = field(default_factory=list)
+    # Setups where the final model's belt pushes the chest (absent from report.json when none)
+    belt_pushes: list[BeltPush] = field(default_factory=list)
 
     def as_dict(self) -> dict[str, Any]:
         return {
@@ -381,6 +384,8 @@ class LoopReport:
             "possible": [p.as_dict() for p in self.possible],
             "sensor_effects": [s.as_dict() for s in self.sensor_effects],
             "unexplained": [u.as_dict() for u in self.unexplained],
+            **({"belt_pushes": [b.as_dict() for b in self.belt_pushes]}
+               if self.belt_pushes else {}),
             "warnings": [w.as_dict() for w in self.warnings],
             "left_out": self.left_out.as_dict() if self.left_out is not None else {},
             "final": self.final.as_dict(),

@@ -5,6 +5,7 @@ from __future__ import annotations
 
 from ..ident.metrics import Fits
 from ..scores import mean_abs_errors
+from .belt_check import BeltPush
 from .report import AcceptedEffect, LoopReport, LoopStep
 
 
@@ -175,6 +176,8 @@ def _markdown_findings(r: LoopReport) -> list[str]:
                   f"it looks like {u.looks_like}",
                   f"- a correction of that shape would add (fit points per setup): {gains}; "
                   f"the same in the other output: {u.other_output_gain_points:+.1f}", ""]
+    if r.belt_pushes:
+        lines += _markdown_belt(r.belt_pushes)
     if r.possible:
         lines += ["## Possible, not accepted", "",
                   "| effect | scope | after | gain (95 % CI), tests improved | why not |",
@@ -187,6 +190,24 @@ def _markdown_findings(r: LoopReport) -> list[str]:
                          f"{ev.tests_improved}/{ev.tests} | {p.why_not} |")
         lines.append("")
     return lines
+
+
+def _markdown_belt(pushes: list[BeltPush]) -> list[str]:
+    """Where the model's belt pushes the chest, and what the slack belt scored."""
+    lines = ["## The model's belt pushes the chest", "",
+             "Its force k2 e + c2 e' is negative for part of each test: the belt pushes the "
+             "sternum back, which a belt cannot do. The model follows these tests' rebound "
+             "with it; read its CR and CD after the peak with care. A slack belt "
+             "(belt_unloading) would stop it; where it was tried, its cross-validated gain "
+             "is below.", "",
+             "| setup | tests | pushing, ms per test | largest push [N] | largest pull [N] | "
+             "after the pull's peak | slack belt's gain [points] |",
+             "|---|---|---|---|---|---|---|"]
+    lines += [f"| {b.setup} | {b.tests} | {b.pushing_ms:.0f} | {b.push_n:.0f} | "
+              f"{b.pull_n:.0f} | {b.rebound_share:.0%} | "
+              f"{'not tried' if b.slack_gain_points is None else f'{b.slack_gain_points:+.2f}'}"
+              " |" for b in pushes]
+    return [*lines, ""]
 
 
 def _pct(f: Fits | str) -> str:

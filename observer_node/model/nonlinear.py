@@ -245,13 +245,33 @@ def simulate_many(models: Sequence[NonlinearGreyBox], pulse_g: np.ndarray,
     inputs: dict[tuple[float, float], tuple[np.ndarray, np.ndarray, np.ndarray]] = {}
     for m, key in zip(models, keys, strict=True):  # each delay's inputs, worked out once
         if key not in inputs:
-            Pm = _shift(P, m.n_pulse, np.zeros((P.shape[0], 1)), m.delay_mask) \
-                if m.n_pulse else P
-            Tm = _shift(T, m.n_brs, T[:, :1], m.delay_mask) if m.n_brs else T
-            u = transform_inputs("velocity_brs_rate", Pm, Tm, m.fs_hz)
-            inputs[key] = (u[..., 0], u[..., 1], Tm)
+            inputs[key] = _inputs_of(m, P, T)
     u1, u2, th = (np.stack([inputs[key][i] for key in keys]) for i in range(3))
     return _run(models, u1, u2, th)
+
+
+def _inputs_of(m: NonlinearGreyBox, P: np.ndarray, T: np.ndarray
+               ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """The inputs the model's state equations see, (tests, n) each: u1, u2 and theta after
+    the model's input delays."""
+    Pm = _shift(P, m.n_pulse, np.zeros((P.shape[0], 1)), m.delay_mask) if m.n_pulse else P
+    Tm = _shift(T, m.n_brs, T[:, :1], m.delay_mask) if m.n_brs else T
+    u = transform_inputs("velocity_brs_rate", Pm, Tm, m.fs_hz)
+    return u[..., 0], u[..., 1], Tm
+
+
+def belt_force_n(m: NonlinearGreyBox, pulse_g: np.ndarray, brs_rad: np.ndarray) -> np.ndarray:
+    """The belt's force k2 e + c2 e' [N] (+ = the belt pulls the sternum; e = w - s) along the
+    model's simulation of records (tests, n), from rest -> (tests, n): the linear belt's
+    force, whether or not a slack belt (``belt_unloading``) switches it off there."""
+    P = np.atleast_2d(np.asarray(pulse_g, float))
+    T = np.atleast_2d(np.asarray(brs_rad, float))
+    m._check_tests(P.shape[0])
+    u1, u2, th = _inputs_of(m, P, T)
+    states = np.zeros((6, *P.shape))
+    _run([m], u1[None], u2[None], th[None], states)
+    k = kinematics(states, u1, u2, th, m.base)
+    return np.asarray(m.base["k2"] * k.e + m.base["c2"] * k.ed)
 
 
 def _names(p: Mapping[str, Any]) -> tuple[object, ...]:
