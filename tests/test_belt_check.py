@@ -75,23 +75,56 @@ def test_a_belt_that_only_pulls_is_not_reported(two_rigs: tuple[dict, Dataset]) 
     assert belt_pushes(base, [], held, {}) == []
 
 
-def test_the_slack_belts_gain_is_its_best_over_the_rounds_per_setup() -> None:
-    def tried(kind: str, scope: str, gain: float) -> SimpleNamespace:
-        return SimpleNamespace(kind=kind, scope=scope,
-                               evidence=SimpleNamespace(gain_points=gain))
-    history = [SimpleNamespace(tried=[tried("belt_unloading", "all", -12.3),
-                                      tried("chest_stiffening", "all", 4.0)]),
-               SimpleNamespace(tried=[tried("belt_unloading", "FULL+SLED", -2.0)])]
-    assert slack_gains(history, ["FULL", "R16", "SLED"]) == {  # type: ignore[arg-type]
-        "FULL": -2.0, "R16": -12.3, "SLED": -2.0}
+def test_the_slack_belts_gain_is_its_best_per_setup_over_scopes_and_rounds() -> None:
+    """Each setup's own mean gain (not the mean over all tests, which a narrow scope pulls
+    towards zero), the best of every scope and round, whichever comes first."""
+    def tried(kind: str, scope: str, per_setup: dict[str, float]) -> SimpleNamespace:
+        mean = float(np.mean(list(per_setup.values())))
+        return SimpleNamespace(kind=kind, scope=scope, evidence=SimpleNamespace(
+            gain_points=mean, setup_gain_points=per_setup))
+    history = [SimpleNamespace(tried=[tried("belt_unloading", "SLED",
+                                            {"R16": -1.3, "SLED": -13.3}),
+                                      tried("chest_stiffening", "all",
+                                            {"R16": 4.0, "SLED": 4.0})]),
+               SimpleNamespace(tried=[tried("belt_unloading", "all",
+                                            {"R16": -20.47, "SLED": -12.7})])]
+    assert slack_gains(history) == {"R16": -1.3, "SLED": -12.7}  # type: ignore[arg-type]
+
+
+def test_a_setup_not_judged_or_run_away_is_left_out(two_rigs: tuple[dict, Dataset]) -> None:
+    base, data = two_rigs
+    assert [b.setup for b in belt_pushes(base, [], data, {}, skip={"SLED"})] == ["R16"]
+    broken = Dataset(data.names, data.setups, data.fs_hz, data.pulse_g.copy(),
+                     data.brs_rad.copy(), data.y, data.win, data.window_s)
+    broken.brs_rad[4, 60] = np.nan  # a SLED test
+    assert [b.setup for b in belt_pushes(base, [], broken, {})] == ["R16"]
+
+
+def test_the_numbers_are_read_in_the_fit_window_per_test(two_rigs: tuple[dict, Dataset]
+                                                         ) -> None:
+    """The pushing time is the mean over a setup's tests, in the fit window; the largest push
+    and pull are over its tests there."""
+    base, data = two_rigs
+    force = belt_force_n(NonlinearGreyBox(base, [], 1000.0, list(data.setups)),
+                         data.pulse_g, data.brs_rad)[:3, data.win]
+    r16 = belt_pushes(base, [], data, {})[0]
+    assert r16.pushing_ms == round(float(np.mean(np.sum(force < 0, axis=1))), 1)
+    assert r16.push_n == round(float(-force.min())) and r16.pull_n == round(float(force.max()))
+    # a window that ends before the rebound: no push to report, though the record has one
+    early = Dataset(data.names, data.setups, data.fs_hz, data.pulse_g, data.brs_rad, data.y,
+                    slice(10, 60), data.window_s)
+    assert belt_pushes(base, [], early, {}) == []
 
 
 def test_report_md_tables_each_setup_the_belt_pushes_on() -> None:
     lines = _markdown_belt([BeltPush("FULL", 3, 38.2, 3186.0, 10862.0, 0.96, -19.89),
                             BeltPush("R16", 3, 50.0, 3070.0, 10144.0, 0.97, None)])
     assert lines[0] == "## The model's belt pushes the chest"
+    assert "Most of it comes after the pull's peak" in lines[2]
     assert "| FULL | 3 | 38 | 3186 | 10862 | 96% | -19.89 |" in lines
     assert "| R16 | 3 | 50 | 3070 | 10144 | 97% | not tried |" in lines
+    early = _markdown_belt([BeltPush("FULL", 3, 38.2, 3186.0, 10862.0, 0.3, None)])
+    assert "after the pull's peak" not in early[2]
     b = BeltPush("FULL", 3, 38.2, 3186.0, 10862.0, 0.96, None)
     assert list(b.as_dict()) == ["setup", "tests", "pushing_ms", "push_n", "pull_n",
                                  "rebound_share", "slack_gain_points"]

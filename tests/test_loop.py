@@ -38,7 +38,13 @@ def test_clean_data_accepts_no_effect(tmp_path):
     assert r.final.fit == r.baseline.fit
     assert (tmp_path / "report.md").read_text().count("No effect was accepted") == 1
     assert r.carried == []
-    assert "carried" not in json.loads((tmp_path / "report.json").read_text())
+    report = json.loads((tmp_path / "report.json").read_text())
+    assert "carried" not in report
+    # the simulator's clean belt is linear: it pushes in the rebound, which the report says
+    # (the slack belt, tried, refused)
+    assert [b["setup"] for b in report["belt_pushes"]] == [r.setups[0].name]
+    assert report["belt_pushes"][0]["slack_gain_points"] < 0
+    assert "## The model's belt pushes the chest" in (tmp_path / "report.md").read_text()
 
 
 @pytest.mark.parametrize("draw", [0, 1])

@@ -3,10 +3,12 @@
 The thesis grey-box's belt force k2 e + c2 e' (e = w - s) is linear: fitted to a crash whose
 rebound it cannot otherwise follow, it may push the chest back by kilonewtons after the peak.
 The library's slack belt (``belt_unloading``) stops that; where the loop did not accept it,
-this check says how far the model leans on a pushing belt, per setup, and what the slack
-belt scored when it was tried, so an engineer reads the model's rebound with care. On the
-independent held-out sets the identified belt pushed for 25-59 ms of 150, by 1.5-3.3 kN,
-most of it in the rebound, and every belt that cannot push cost 4-24 points (docs/loop.md).
+this check says how far the model leans on a pushing belt, per judged setup, and what the
+slack belt scored there when it was tried, so an engineer reads the model's rebound with
+care. It reads the linear belt's force, as the slack belt's switch does: a belt stiffening or
+a spool's gain adds to it and is not counted. On the independent held-out sets the identified
+belt pushed for 25-59 of a test's 151 ms, by 1.5-3.3 kN, most of it in the rebound, and the
+slack belt cost 4-23 points (docs/loop.md).
 """
 
 from __future__ import annotations
@@ -53,11 +55,13 @@ class BeltPush:
 
 
 def belt_pushes(base: dict, effects: list[dict], data: Dataset,
-                slack_gains: dict[str, float]) -> list[BeltPush]:
-    """The setups of ``data`` where the model (``base`` and ``effects``) has no slack belt and
-    its belt pushes at least ``MIN_PUSH_SHARE`` of its largest pull for at least
-    ``MIN_PUSHING_MS`` per test. ``slack_gains``: the slack belt's best cross-validated gain
-    [points] per setup its tried scopes covered."""
+                slack_gains: dict[str, float], skip: set[str] | None = None) -> list[BeltPush]:
+    """The setups of ``data`` (but those in ``skip``: the setups the loop does not judge)
+    where the model (``base`` and ``effects``) has no slack belt and its belt pushes at least
+    ``MIN_PUSH_SHARE`` of its largest pull for at least ``MIN_PUSHING_MS`` per test on
+    average, in the fit window. ``slack_gains``: the slack belt's best cross-validated gain
+    [points] on each setup's tests. A setup whose simulation ran away is left out (the fits
+    say so). The force at sample k is the one acting over tick k, at the state before it."""
     slack = [e for e in effects if e["kind"] == SLACK]
     with np.errstate(all="ignore"):
         force = belt_force_n(model(base, effects, data), data.pulse_g, data.brs_rad)
@@ -65,7 +69,7 @@ def belt_pushes(base: dict, effects: list[dict], data: Dataset,
     ms = 1000.0 / data.fs_hz
     out = []
     for setup in dict.fromkeys(data.setups):
-        if any(applies(e, setup) for e in slack):
+        if setup in (skip or set()) or any(applies(e, setup) for e in slack):
             continue
         rows = [i for i, s in enumerate(data.setups) if s == setup]
         f = win[rows]
@@ -83,15 +87,14 @@ def belt_pushes(base: dict, effects: list[dict], data: Dataset,
     return out
 
 
-def slack_gains(history: list[LoopStep], setups: list[str]) -> dict[str, float]:
-    """The slack belt's best cross-validated gain [points] over the loop's rounds, for each
-    setup a scope it was tried on covers ("all": every setup)."""
+def slack_gains(history: list[LoopStep]) -> dict[str, float]:
+    """The slack belt's best cross-validated gain [points] on each setup's judged tests (the
+    mean over that setup's tests, not over all), over every scope and round it was tried."""
     best: dict[str, float] = {}
     for step in history:
         for t in step.tried:
             if t.kind != SLACK:
                 continue
-            on = setups if t.scope == "all" else t.scope.split("+")
-            for s in on:
-                best[s] = max(best.get(s, -np.inf), round(t.evidence.gain_points, 2))
+            for s, g in t.evidence.setup_gain_points.items():
+                best[s] = max(best.get(s, -np.inf), round(g, 2))
     return best

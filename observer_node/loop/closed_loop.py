@@ -280,7 +280,7 @@ def _run(est_tests: list[CrashTest], val_tests: list[CrashTest], out: Path, rate
         iso18571=iso if len(iso) == len(judged) else None,
         seconds=round(time.monotonic() - t_start, 1),
         carried=carried,
-        belt_pushes=belt_pushes(base, effects, est, slack_gains(st.history, est_setups)),
+        belt_pushes=belt_pushes(base, effects, est, slack_gains(st.history), thin),
     )
     as_json = report.as_dict()
     (out / "report.json").write_text(json.dumps(as_json, indent=1, default=float) + "\n")

@@ -194,12 +194,16 @@ def _markdown_findings(r: LoopReport) -> list[str]:
 
 def _markdown_belt(pushes: list[BeltPush]) -> list[str]:
     """Where the model's belt pushes the chest, and what the slack belt scored."""
+    rebound = all(b.rebound_share >= 0.5 for b in pushes)
     lines = ["## The model's belt pushes the chest", "",
-             "Its force k2 e + c2 e' is negative for part of each test: the belt pushes the "
-             "sternum back, which a belt cannot do. The model follows these tests' rebound "
-             "with it; read its CR and CD after the peak with care. A slack belt "
-             "(belt_unloading) would stop it; where it was tried, its cross-validated gain "
-             "is below.", "",
+             "The linear belt's force k2 e + c2 e' goes negative in these setups' estimation "
+             "tests (on average as long as below): the belt pushes the sternum back, which a "
+             "belt cannot do."
+             + (" Most of it comes after the pull's peak: the model follows these tests' "
+                "rebound with it; read its CR and CD after the peak with care." if rebound
+                else "")
+             + " A slack belt (belt_unloading) would stop it; where the loop tried it, its "
+             "best cross-validated gain on the setup's tests is below.", "",
              "| setup | tests | pushing, ms per test | largest push [N] | largest pull [N] | "
              "after the pull's peak | slack belt's gain [points] |",
              "|---|---|---|---|---|---|---|"]
