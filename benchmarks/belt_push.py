@@ -42,8 +42,7 @@ from observer_node.ident import greybox
 from observer_node.ident.dataset import Dataset, make_dataset
 from observer_node.loop.refit import score
 from observer_node.model.effects import registered
-from observer_node.model.nonlinear import NonlinearGreyBox
-from observer_node.model.observer import transform_inputs
+from observer_node.model.nonlinear import NonlinearGreyBox, belt_force_n
 
 RATE_HZ = 1000.0
 MARGIN = 1.0  # the loop's default margin [points]
@@ -62,12 +61,8 @@ def _entry(form: str) -> dict:
 
 def pushes(base: Mapping[str, float], est: Dataset) -> None:
     """Part 1: the grey-box belt's force per estimation test."""
-    model = NonlinearGreyBox(dict(base), [], est.fs_hz)
-    u = transform_inputs("velocity_brs_rate", est.pulse_g, est.brs_rad, est.fs_hz)
-    states = np.zeros((6, *est.pulse_g.shape))
-    model.run_transformed(u[..., 0], u[..., 1], est.brs_rad, states)
-    e = states[4] - states[3]
-    force_n = base["k2"] * e + base["c2"] * (u[..., 0] + base["R"] * u[..., 1] - states[2])
+    force_n = belt_force_n(NonlinearGreyBox(dict(base), [], est.fs_hz), est.pulse_g,
+                           est.brs_rad)
     win = round(0.010 * est.fs_hz)
     for name, f in zip(est.names, force_n, strict=True):
         # whole windows, the last one taking the samples left over (151: 10 ms + 1)
