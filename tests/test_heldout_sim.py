@@ -1269,8 +1269,8 @@ def set_j(tmp_path_factory: pytest.TempPathFactory) -> Path:
     return _generate(tmp_path_factory, "j", WATCHED_J)
 
 
-def _cases_of(sets: str) -> list[cases.Case]:
-    """Every case of these sets ("abc": sets A, B and C), in order."""
+def _cases_of(sets: tuple[str, ...]) -> list[cases.Case]:
+    """Every case of these sets (``("a", "b")``: sets A and B), in order."""
     return [c for s in sets for c in heldout_sets.case_set(s)]
 
 
@@ -1297,7 +1297,7 @@ def _is_new(new: list[cases.Case], before: list[cases.Case], seed0: int, lab_sid
 def test_set_j_is_new() -> None:
     """Set J's are none of sets A-I's: its mixes validate on two of the three rigs, which no
     earlier set did."""
-    _is_new(SET_J, _cases_of("abcdefghi"), 19000, 3)
+    _is_new(SET_J, _cases_of(heldout_sets.before("j")), 19000, 3)
 
 
 def test_set_j_rib_fung_is_exponential() -> None:
@@ -1391,7 +1391,7 @@ def set_k(tmp_path_factory: pytest.TempPathFactory) -> Path:
 
 
 def test_set_k_is_new() -> None:
-    _is_new(SET_K, _cases_of("abcdefghij"), 20000, 2)
+    _is_new(SET_K, _cases_of(heldout_sets.before("k")), 20000, 2)
 
 
 def test_set_k_pulse_from_is_the_other_tests_pulse(set_k: Path) -> None:
@@ -1452,7 +1452,7 @@ def set_l(tmp_path_factory: pytest.TempPathFactory) -> Path:
 
 
 def test_set_l_is_new() -> None:
-    _is_new(SET_L, _cases_of("abcdefghijk"), 21000, 2)
+    _is_new(SET_L, _cases_of(heldout_sets.before("l")), 21000, 2)
 
 
 def test_set_l_pulse_rate_stretches_the_pulse_in_time(set_l: Path) -> None:
@@ -1537,7 +1537,7 @@ def set_m(tmp_path_factory: pytest.TempPathFactory) -> Path:
 
 
 def test_set_m_is_new() -> None:
-    _is_new(SET_M, _cases_of("abcdefghijkl"), 22000, 2)
+    _is_new(SET_M, _cases_of(heldout_sets.before("m")), 22000, 2)
 
 
 def _scope(c: cases.Case) -> set[str]:
@@ -1691,7 +1691,7 @@ def set_n(tmp_path_factory: pytest.TempPathFactory) -> Path:
 
 
 def test_set_n_is_new() -> None:
-    _is_new(SET_N, _cases_of("abcdefghijklm"), 23000, 2,
+    _is_new(SET_N, _cases_of(heldout_sets.before("n")), 23000, 2,
             size=12)
 
 
@@ -1743,7 +1743,8 @@ def test_set_n_judges_scope_on_thinly_held_rigs() -> None:
     assert all(_thin(c, every) for c in delays)
 
 
-def _lab_side_is_new_and_unnamed(new: list[cases.Case], before_sets: str, output: str) -> None:
+def _lab_side_is_new_and_unnamed(new: list[cases.Case], before_sets: tuple[str, ...],
+                                 output: str) -> None:
     """One broken estimation test, of a form no earlier set used, the only thing expected; one
     transducer error on ``output``, of a form no earlier set used, nothing physical named."""
     before = _cases_of(before_sets)
@@ -1763,7 +1764,7 @@ def _lab_side_is_new_and_unnamed(new: list[cases.Case], before_sets: str, output
 def test_set_n_lab_side_is_new_and_unnamed() -> None:
     """6. one broken estimation test, of a form no earlier set used, the only thing expected;
     7. one transducer error on CD, of a form no earlier set used, nothing physical named."""
-    _lab_side_is_new_and_unnamed(SET_N, "abcdefghijklm", "cd")
+    _lab_side_is_new_and_unnamed(SET_N, heldout_sets.before("n"), "cd")
 
 
 @pytest.mark.parametrize(("kelvin", "damp", "stiff"), [(12.0, 1.822, 1.197),
@@ -1832,7 +1833,7 @@ def set_o(tmp_path_factory: pytest.TempPathFactory) -> Path:
 
 
 def test_set_o_is_new() -> None:
-    _is_new(SET_O, _cases_of("abcdefghijklmn"), 24000, 2,
+    _is_new(SET_O, _cases_of(heldout_sets.before("o")), 24000, 2,
             size=13)
 
 
@@ -1882,7 +1883,7 @@ def test_set_o_judges_two_effects_apart_and_none_invented() -> None:
         assert 1 <= len(e.setups) <= 2
         assert any(c.est.count(r) >= 2 for r in _held(c.est) - set(e.setups))
     # 4. both delays, on every rig, 1-5 ms, at sizes no earlier set used on either input
-    before = _cases_of("abcdefghijklmn")
+    before = _cases_of(heldout_sets.before("o"))
     used = {e.size for c in before for e in c.effects if lib[e.key] == "input_delay"}
     delays = [c for c in SET_O if c.expect == (("input_delay", "all"),)]
     assert sorted(c.effects[0].key for c in delays) == ["brs_late", "pulse_late"]
@@ -1895,7 +1896,7 @@ def test_set_o_judges_two_effects_apart_and_none_invented() -> None:
 def test_set_o_lab_side_is_new_and_unnamed() -> None:
     """One broken estimation test, of a form no earlier set used, the only thing expected; one
     transducer error on CR, of a form no earlier set used, nothing physical named."""
-    _lab_side_is_new_and_unnamed(SET_O, "abcdefghijklmn", "cr")
+    _lab_side_is_new_and_unnamed(SET_O, heldout_sets.before("o"), "cr")
 
 
 def test_set_o_rib_friction_is_coulomb_in_the_ribs() -> None:
@@ -1999,7 +2000,7 @@ def set_p(tmp_path_factory: pytest.TempPathFactory) -> Path:
 
 
 def test_set_p_is_new() -> None:
-    _is_new(SET_P, _cases_of("abcdefghijklmn"), 25000, 0,
+    _is_new(SET_P, _cases_of(heldout_sets.before("o")), 25000, 0,
             size=8)
 
 
@@ -2116,7 +2117,7 @@ def test_set_p_scoped_unloading_moves_its_rigs_only(set_p: Path, case: str) -> N
 SET_Q = heldout_sets.case_set("q")
 # the lagging outputs: CR alone, CD alone, both on the dummy's recorder
 WATCHED_Q = ("hq_cr_late", "hq_cd_rc_filter", "hq_dummy_late")
-BEFORE_Q = _cases_of("abcdefghijklmnop")
+BEFORE_Q = _cases_of(heldout_sets.before("q"))
 
 
 @pytest.fixture(scope="module")
@@ -2256,7 +2257,7 @@ def test_set_q_dummy_late_moves_both_outputs_alike(set_q: Path) -> None:
 SET_R = heldout_sets.case_set("r")
 # the new physical form, the broken test, the transducer error
 WATCHED_R = ("hr_rib_foam_all", "hr_broken_cd_reversed", "hr_cd_slew")
-BEFORE_R = _cases_of("abcdefghijklmnopq")
+BEFORE_R = _cases_of(heldout_sets.before("r"))
 
 
 @pytest.fixture(scope="module")
@@ -2347,7 +2348,7 @@ def test_set_r_covers_the_general_list() -> None:
 def test_set_r_lab_side_is_new_and_unnamed() -> None:
     """One broken estimation test, of a form no earlier set used, the only thing expected; one
     transducer error on CD, of a form no earlier set used, nothing physical named."""
-    _lab_side_is_new_and_unnamed(SET_R, "abcdefghijklmnopq", "cd")
+    _lab_side_is_new_and_unnamed(SET_R, heldout_sets.before("r"), "cd")
 
 
 def test_set_r_rib_foam_damps_in_proportion_to_compression() -> None:
@@ -2433,7 +2434,7 @@ def test_set_r_cd_slew_lags_cd_only(set_r: Path) -> None:
 SET_S = heldout_sets.case_set("s")
 # the new physical form, the broken test, the transducer error
 WATCHED_S = ("hs_rib_loss_all", "hs_broken_brs_wrap", "hs_cr_creep")
-BEFORE_S = _cases_of("abcdefghijklmnopqr")
+BEFORE_S = _cases_of(heldout_sets.before("s"))
 
 
 @pytest.fixture(scope="module")
@@ -2461,7 +2462,7 @@ def test_set_s_covers_the_general_list() -> None:
 def test_set_s_lab_side_is_new_and_unnamed() -> None:
     """One broken estimation test, of a form no earlier set used, the only thing expected; one
     transducer error on CR, of a form no earlier set used, nothing physical named."""
-    _lab_side_is_new_and_unnamed(SET_S, "abcdefghijklmnopqr", "cr")
+    _lab_side_is_new_and_unnamed(SET_S, heldout_sets.before("s"), "cr")
 
 
 def test_set_s_new_forms_are_no_earlier_sets() -> None:
@@ -2577,7 +2578,7 @@ SET_T = heldout_sets.case_set("t")
 # the new physical form and the other cases mostly in one output, the broken test, the two
 # transducer errors
 WATCHED_T = (*MOSTLY_ONE_OUTPUT, "ht_broken_pulse_ms2", "ht_cd_arm_ring", "ht_cr_drift")
-BEFORE_T = _cases_of("abcdefghijklmnopqrs")
+BEFORE_T = _cases_of(heldout_sets.before("t"))
 
 
 @pytest.fixture(scope="module")
@@ -2772,7 +2773,7 @@ SET_U = heldout_sets.case_set("u")
 # the broken test, the transducer error, and every physical case of one effect (its rigs moved,
 # the others untouched)
 WATCHED_U = ("hu_broken_pulse_cable", "hu_cd_pot_loading", *ONE_PHYSICAL_U)
-BEFORE_U = _cases_of("abcdefghijklmnopqrst")
+BEFORE_U = _cases_of(heldout_sets.before("u"))
 
 
 @pytest.fixture(scope="module")
@@ -2815,7 +2816,7 @@ def test_set_u_is_the_ordinary_forms_on_two_or_three_rigs() -> None:
 def test_set_u_lab_side_is_new_and_unnamed() -> None:
     """One broken estimation test, of a form no earlier set used, the only thing expected; one
     transducer error on CD, of a form no earlier set used, nothing physical named."""
-    _lab_side_is_new_and_unnamed(SET_U, "abcdefghijklmnopqrst", "cd")
+    _lab_side_is_new_and_unnamed(SET_U, heldout_sets.before("u"), "cd")
 
 
 def test_set_u_new_forms_are_no_earlier_sets() -> None:
@@ -2943,7 +2944,7 @@ SET_V = heldout_sets.case_set("v")
 # the broken test, the transducer error, and every physical case of one effect (its rigs moved,
 # the others untouched)
 WATCHED_V = ("hv_broken_cr_rail", "hv_cr_clock", *ONE_PHYSICAL_V)
-BEFORE_V = _cases_of("abcdefghijklmnopqrstu")
+BEFORE_V = _cases_of(heldout_sets.before("v"))
 
 
 @pytest.fixture(scope="module")
@@ -3032,7 +3033,7 @@ def test_set_v_follows_its_draw() -> None:
 def test_set_v_lab_side_is_new_and_unnamed() -> None:
     """One broken estimation test, of a form no earlier set used, the only thing expected; one
     transducer error on CR, of a form no earlier set used, nothing physical named."""
-    _lab_side_is_new_and_unnamed(SET_V, "abcdefghijklmnopqrstu", "cr")
+    _lab_side_is_new_and_unnamed(SET_V, heldout_sets.before("v"), "cr")
 
 
 def test_set_v_new_forms_are_no_earlier_sets() -> None:
@@ -3134,7 +3135,7 @@ SET_W = heldout_sets.case_set("w")
 # the broken test, the transducer error, and every physical case of one effect (its rigs moved,
 # the others untouched)
 WATCHED_W = ("hw_broken_brs_reversed", "hw_cd_sag", *ONE_PHYSICAL_W)
-BEFORE_W = _cases_of("abcdefghijklmnopqrstuv")
+BEFORE_W = _cases_of(heldout_sets.before("w"))
 # forms that are switches (size 1 = on): their (key, size) cannot be new
 SWITCHES = {"webbing_slack", "brs_reversed", "cr_reversed", "cd_reversed", "brs_counts",
             "pulse_ms2"}
@@ -3391,7 +3392,7 @@ def test_set_w_has_no_run_aways(set_w: Path) -> None:
 # ------------------------------------------------------------------ set X (cases_x.py)
 
 SET_X = heldout_sets.case_set("x")
-BEFORE_X = _cases_of("abcdefghijklmnopqrstuvw")
+BEFORE_X = _cases_of(heldout_sets.before("x"))
 # the broken test, the transducer error, and every physical case of one effect (its rigs moved,
 # the others untouched)
 WATCHED_X = ("hx_broken_pulse_sync", "hx_cr_creep", *ONE_PHYSICAL_X)
@@ -3441,7 +3442,7 @@ def test_set_x_follows_its_draw() -> None:
     process: its kinds, pools and mix rules, A-W's pairings taken."""
     d = draw_x.draw(33000)
     assert d == draw_x.draw()  # reproducible from its seed
-    assert draw_x.EARLIER == "abcdefghijklmnopqrstuvw" and draw_x.SEED == 33000
+    assert tuple("abcdefghijklmnopqrstuvw") == draw_x.EARLIER and draw_x.SEED == 33000
     assert (draw_x.KINDS, draw_x.BRS_GAIN) == (draw_w.KINDS, draw_w.BRS_GAIN)
     assert (draw_x.TRANSDUCER, draw_x.BROKEN) == (draw_w.TRANSDUCER, draw_w.BROKEN)
     _singles_follow(d, SET_X, ONE_PHYSICAL_X, draw_x)
@@ -3516,7 +3517,7 @@ def test_set_x_has_no_run_aways(set_x: Path) -> None:
 # ------------------------------------------------------------------ set Y (cases_y.py)
 
 SET_Y = heldout_sets.case_set("y")
-BEFORE_Y = _cases_of("abcdefghijklmnopqrstuvwx")
+BEFORE_Y = _cases_of(heldout_sets.before("y"))
 # the broken test, the transducer error, and every physical case of one effect (its rigs moved,
 # the others untouched)
 WATCHED_Y = ("hy_broken_brs_freeze", "hy_cr_crosstalk", *ONE_PHYSICAL_Y)
@@ -3565,7 +3566,7 @@ def test_set_y_follows_its_draw() -> None:
     process: its kinds, pools and mix rules, A-X's pairings taken."""
     d = draw_y.draw(34000)
     assert d == draw_y.draw()  # reproducible from its seed
-    assert draw_y.EARLIER == "abcdefghijklmnopqrstuvwx" and draw_y.SEED == 34000
+    assert tuple("abcdefghijklmnopqrstuvwx") == draw_y.EARLIER and draw_y.SEED == 34000
     assert (draw_y.KINDS, draw_y.BRS_GAIN) == (draw_w.KINDS, draw_w.BRS_GAIN)
     assert (draw_y.TRANSDUCER, draw_y.BROKEN) == (draw_w.TRANSDUCER, draw_w.BROKEN)
     _singles_follow(d, SET_Y, ONE_PHYSICAL_Y, draw_y)
@@ -3640,7 +3641,7 @@ def test_set_y_has_no_run_aways(set_y: Path) -> None:
 # ------------------------------------------------------------------ set Z (cases_z.py)
 
 SET_Z = heldout_sets.case_set("z")
-BEFORE_Z = _cases_of("abcdefghijklmnopqrstuvwxy")
+BEFORE_Z = _cases_of(heldout_sets.before("z"))
 # the broken test, the transducer error, and every physical case of one effect (its rigs moved,
 # the others untouched)
 WATCHED_Z = ("hz_broken_brs_swap", "hz_cr_progressive", *ONE_PHYSICAL_Z)
@@ -3683,7 +3684,7 @@ def test_set_z_covers_the_general_list() -> None:
     _covers_the_general_list(SET_Z, BEFORE_Z, "cr", ONE_PHYSICAL_Z, draw_z.KINDS)
 
 
-def _follows_a_reusing_draw(draw_mod: ModuleType, seed: int, earlier: str,
+def _follows_a_reusing_draw(draw_mod: ModuleType, seed: int, earlier: tuple[str, ...],
                             cs: list[cases.Case], one_physical: tuple[str, ...],
                             redrawn: list[tuple[str, int]], before: list[cases.Case],
                             two_case: cases.Case) -> None:
@@ -3723,8 +3724,8 @@ def test_set_z_follows_its_draw() -> None:
     process: its kinds, pools and mix rules, A-Y's pairings taken, but the two-effect case's:
     none was free for its rigs (the old rule draws it none), so it reuses one A-Y ran, among
     those its rules allow."""
-    _follows_a_reusing_draw(draw_z, 35000, "abcdefghijklmnopqrstuvwxy", SET_Z, ONE_PHYSICAL_Z,
-                            REDRAWN_Z, BEFORE_Z, BY_NAME_Z[TWO_Z])
+    _follows_a_reusing_draw(draw_z, 35000, tuple("abcdefghijklmnopqrstuvwxy"), SET_Z,
+                            ONE_PHYSICAL_Z, REDRAWN_Z, BEFORE_Z, BY_NAME_Z[TWO_Z])
 
 
 def test_set_z_lab_side_is_as_drawn_and_unnamed() -> None:
@@ -3772,7 +3773,7 @@ def test_set_z_has_no_run_aways(set_z: Path) -> None:
 # ------------------------------------------------------------------ set AA (cases_aa.py)
 
 SET_AA = heldout_sets.case_set("aa")
-BEFORE_AA = _cases_of("abcdefghijklmnopqrstuvwxyz")
+BEFORE_AA = _cases_of(heldout_sets.before("aa"))
 # the broken test, the transducer error, and every physical case of one effect (its rigs moved,
 # the others untouched)
 WATCHED_AA = ("haa_broken_pulse_rail", "haa_cr_zero_shift", *ONE_PHYSICAL_AA)
@@ -3797,6 +3798,23 @@ def test_set_aa_is_registered(tmp_path: Path) -> None:
     assert truth["case"]["name"] == "haa_clean48" and len(truth["tests"]) == 12
     assert make_sets.main(["--set", "AA", "--case", "haa_clean48",
                            "--out", str(tmp_path / "upper")]) == 0
+
+
+def test_sets_before_are_names_not_letters() -> None:
+    """The sets a draw takes its pairings from are named, so the set after AA reads AA as one
+    set (read letter by letter it would be set A twice, and AA's pairings free again)."""
+    after_aa = (*heldout_sets.before("aa"), "aa")
+    assert heldout_sets.before("c") == ("a", "b") and heldout_sets.before("a") == ()
+    assert after_aa == heldout_sets.SETS[:27] and after_aa.count("a") == 1
+    assert _cases_of(after_aa)[-len(SET_AA):] == SET_AA
+    with pytest.raises(ValueError, match="unknown case set 'ab'"):
+        heldout_sets.before("ab")
+    # a draw after AA takes AA's pairings; at this seed, without AA one single draws one of them
+    aa = {_pairing(c) for c in SET_AA}
+
+    def singles(earlier: tuple[str, ...]) -> set:
+        return {(s["est"], s["val"]) for s in draw_w.drawn(37003, earlier)["single"].values()}
+    assert singles(heldout_sets.before("aa")) & aa and not singles(after_aa) & aa
 
 
 def test_set_aa_is_new() -> None:
@@ -3827,7 +3845,7 @@ def test_set_aa_follows_its_draw() -> None:
     process: set W's kinds, pools and mix rules, A-Z's pairings taken, but the two-effect
     case's: none was free for its rigs (the old rule draws it none), so it reuses one A-Z ran,
     among those its rules allow."""
-    _follows_a_reusing_draw(draw_aa, 36000, "abcdefghijklmnopqrstuvwxyz", SET_AA,
+    _follows_a_reusing_draw(draw_aa, 36000, tuple("abcdefghijklmnopqrstuvwxyz"), SET_AA,
                             ONE_PHYSICAL_AA, REDRAWN_AA, BEFORE_AA, BY_NAME_AA[TWO_AA])
     assert _pairing(BY_NAME_AA[TWO_AA]) == ((2, 2, 2), (3, 0, 3))
 

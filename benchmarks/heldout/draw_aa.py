@@ -58,13 +58,14 @@ import sys
 
 from .draw_v import BRS_GAIN, KINDS, forms, scopes
 from .draw_w import BROKEN, TRANSDUCER, cli, drawn
+from .sets import before
 
 SEED = 36000
 # a case whose draw proved impossible, drawn again, whole, by the next seed's generator (one per
 # redraw, in this order, after the rest), the pairings of everything drawn before still taken:
 # none, every draw found a size in band within the rule's four (see ``cases_aa.py``)
 REDRAWN: tuple[tuple[str, int], ...] = ()
-EARLIER = "abcdefghijklmnopqrstuvwxyz"
+EARLIER = before("aa")
 __all__ = ["BROKEN", "BRS_GAIN", "KINDS", "REDRAWN", "SEED", "TRANSDUCER", "draw", "forms",
            "scopes"]
 

@@ -30,7 +30,7 @@ import numpy as np
 
 from . import physics as ph
 from .cases import ALL
-from .sets import case_set
+from .sets import before, case_set
 
 SEED = 31000
 # a kind's single case whose draw proved impossible (its form cannot be brought into the cost
@@ -41,7 +41,7 @@ REDRAWN = {"belt_unloading": 31001}
 KINDS = ("chest_stiffening", "chest_rate_damping", "belt_unloading", "belt_stiffening",
          "airbag_contact", "pelvis_coupling", "input_gain")
 BRS_GAIN = ("spool_buildup", "brs_eccentric")  # input_gain: the BRS's forms only
-EARLIER = "abcdefghijklmnopqrstu"
+EARLIER = before("v")
 SCOPES = [s for n in (3, 2, 1) for s in itertools.combinations(ALL, n)]
 EST_MIXES = [m for m in itertools.product(range(7), repeat=3)
              if sum(m) == 6 and all(x == 0 or x >= 2 for x in m)]

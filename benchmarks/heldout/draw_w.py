@@ -37,7 +37,7 @@ import numpy as np
 from . import physics as ph
 from .cases import ALL
 from .draw_v import BRS_GAIN, EST_MIXES, KINDS, VAL_MIXES, _ok, forms, scopes
-from .sets import case_set
+from .sets import before, case_set
 
 SEED = 32000
 # a case whose draw proved impossible, drawn again, whole, by the next seed's generator (one per
@@ -56,7 +56,7 @@ SEED = 32000
 REDRAWN: tuple[tuple[str, int], ...] = (("two", 32001), ("belt_unloading", 32002),
                                          ("two", 32003), ("two", 32004), ("two", 32005),
                                          ("brs_late", 32006), ("pulse_late", 32007))
-EARLIER = "abcdefghijklmnopqrstuv"
+EARLIER = before("w")
 # the lab-side forms the simulator has (``physics.EFFECTS``, named nothing physical), by what
 # they are and the channel they act on: a transducer error on every test of one output, or a
 # broken channel on one test. Not in the pools: ``zero_offset`` (a named kind, sensor_offset),
@@ -87,10 +87,10 @@ def draw(seed: int = SEED) -> dict:
     return drawn(seed, EARLIER, REDRAWN if seed == SEED else ())
 
 
-def drawn(seed: int, earlier: str, redrawn: tuple[tuple[str, int], ...] = (),
+def drawn(seed: int, earlier: tuple[str, ...], redrawn: tuple[tuple[str, int], ...] = (),
           reuse_two: bool = False) -> dict:
     """A set's choices drawn by ``default_rng(seed)`` in the order the module docstring gives,
-    the (estimation, validation) pairings of the sets ``earlier`` (their letters) taken; then
+    the (estimation, validation) pairings of the sets ``earlier`` (their names) taken; then
     each case of ``redrawn`` drawn again, whole, by its seed's generator, in that order (set
     W's and set X's ``draw``: each its own seed, earlier sets and redraws).
 

@@ -44,6 +44,7 @@ import sys
 
 from .draw_v import BRS_GAIN, KINDS, forms, scopes
 from .draw_w import BROKEN, TRANSDUCER, cli, drawn
+from .sets import before
 
 SEED = 34000
 # a case whose draw proved impossible, drawn again, whole, by the next seed's generator (one per
@@ -58,7 +59,7 @@ SEED = 34000
 # channel past 1e6, overflow in the belt's force): impossible; 34015 drew webbing_set on FULL
 REDRAWN: tuple[tuple[str, int], ...] = (*(("two", s) for s in range(34001, 34015)),
                                          ("belt_unloading", 34015))
-EARLIER = "abcdefghijklmnopqrstuvwx"
+EARLIER = before("y")
 __all__ = ["BROKEN", "BRS_GAIN", "KINDS", "REDRAWN", "SEED", "TRANSDUCER", "draw", "forms",
            "scopes"]
 

@@ -62,6 +62,15 @@ _BY_NAME: dict[str, list[Case]] = {
 SETS = tuple(_BY_NAME)
 
 
+def before(name: str) -> tuple[str, ...]:
+    """The names of the sets written before set ``name``, in order (``before("c")`` is
+    ``("a", "b")``; before set AA, ``"a"`` to ``"z"``); ValueError for an unknown name.
+    Names, not letters: set AA is one set, not set A twice."""
+    if name not in _BY_NAME:
+        raise ValueError(f"unknown case set {name!r}; known: {', '.join(SETS)}")
+    return SETS[:SETS.index(name)]
+
+
 def case_set(name: str) -> list[Case]:
     """Set A (``cases``), or set B ... Z, AA (``cases_b`` ... ``cases_z``, ``cases_aa``) by its
     lower-case letters; ValueError for another name."""
