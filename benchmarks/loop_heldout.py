@@ -6,7 +6,8 @@ quantisation, CFC filters, per-test scatter of the dummy), written without the l
 library in view; its cases (`benchmarks/heldout/cases.py`) were committed with their expected
 verdicts before the loop ran on them. Nothing in the loop is tuned on them.
 
-Per case the loop runs blind at its defaults on 6 estimation + 6 validation tests. Printed:
+Per case the loop runs blind at its defaults on 6 estimation + 6 validation tests (with
+``--est-times K``, K times the estimation tests, drawn from other seeds). Printed:
 
 - what it named (kind@scope, scopes as the simulator's setups), what passed the rule but the
   validation tests refused ("refused:"), the pair that passed the rule but the data cannot
@@ -30,6 +31,7 @@ Per case the loop runs blind at its defaults on 6 estimation + 6 validation test
 
     python -m benchmarks.loop_heldout [--set a|b|...|z|aa] [--cases NAME ...] [--sets DIR]
                                       [--out DIR] [--workers N] [--json FILE]
+                                      [--est-times K]
 """
 
 from __future__ import annotations
@@ -45,7 +47,7 @@ from pathlib import Path
 
 import numpy as np
 
-from benchmarks.heldout.cases import Case
+from benchmarks.heldout.cases import Case, more_tests
 from benchmarks.heldout.sets import SETS, select
 from observer_node.data import load_tests
 from observer_node.ident.dataset import Dataset, make_dataset
@@ -211,24 +213,28 @@ def _reachable(case: Case, r: LoopReport, est_tests: list, val_tests: list, same
     return float(best)
 
 
-def generate(case_set: str, cases: list[Case], out: Path) -> Path:
-    """The cases' crash tests, simulated into ``out`` by ``benchmarks.heldout.make_sets``."""
+def generate(case_set: str, cases: list[Case], out: Path, est_times: int = 1) -> Path:
+    """The cases' crash tests (named as written; ``est_times``: see ``cases.more_tests``),
+    simulated into ``out`` by ``benchmarks.heldout.make_sets``."""
     subprocess.run([sys.executable, "-m", "benchmarks.heldout.make_sets", "--out", str(out),
-                    "--set", case_set, *[x for c in cases for x in ("--case", c.name)]],
-                   check=True)
+                    "--set", case_set, "--est-times", str(est_times),
+                    *[x for c in cases for x in ("--case", c.name)]], check=True)
     return out
 
 
-def cases_and_sets(prog: str, case_set: str, names: list[str] | None, sets: Path | None
-                   ) -> tuple[list[Case], Path]:
-    """The cases named from ``case_set`` and the folder of their generated tests (``sets``,
-    else generated into a temporary folder); an unknown case: one line naming it, exit 2."""
+def cases_and_sets(prog: str, case_set: str, names: list[str] | None, sets: Path | None,
+                   est_times: int = 1) -> tuple[list[Case], Path]:
+    """The cases named from ``case_set`` (on ``est_times`` as many estimation tests:
+    ``cases.more_tests``) and the folder of their generated tests (``sets``, else generated
+    into a temporary folder); an unknown case or a bad count: one line, exit 2."""
     try:
-        cases = select(names, case_set)
+        written = select(names, case_set)
+        cases = [more_tests(c, est_times) for c in written]
     except ValueError as e:
         print(f"{prog}: {e}", file=sys.stderr)
         sys.exit(2)
-    return cases, sets or generate(case_set, cases, Path(tempfile.mkdtemp()) / "sets")
+    return cases, sets or generate(case_set, written, Path(tempfile.mkdtemp()) / "sets",
+                                   est_times)
 
 
 def main() -> None:
@@ -243,8 +249,12 @@ def main() -> None:
     ap.add_argument("--out", type=Path, help="keep each case's loop report in OUT/CASE")
     ap.add_argument("--workers", type=int, help="Dask workers per loop (default: one per core)")
     ap.add_argument("--json", type=Path, help="also write the rows as JSON")
+    ap.add_argument("--est-times", type=int, default=1, metavar="K",
+                    help="each case on K times its estimation tests of each rig, drawn from "
+                         "another seed (cases.more_tests; --sets must then hold "
+                         "make_sets --est-times K); default 1: as written")
     a = ap.parse_args()
-    cases, sets = cases_and_sets("loop_heldout", a.case_set, a.cases, a.sets)
+    cases, sets = cases_and_sets("loop_heldout", a.case_set, a.cases, a.sets, a.est_times)
     work = a.out or Path(tempfile.mkdtemp())
     print(f"loop reports in {work}/CASE/report.md", flush=True)
     print(f"{'case':<20}{'named (kind@scope)':<46}{'flagged':<10}{'right':>6}{'judged':>7}"

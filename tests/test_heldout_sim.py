@@ -3905,3 +3905,26 @@ def test_set_aa_cr_zero_shift_steps_cr_only(set_aa: Path) -> None:
 
 def test_set_aa_has_no_run_aways(set_aa: Path) -> None:
     _no_run_aways(SET_AA, set_aa)
+
+
+def test_more_tests_doubles_the_estimation_tests_only(tmp_path: Path) -> None:
+    """``more_tests``: K times each rig's estimation tests, the validation tests and the
+    effects as written, another seed (new crashes), a name that says so; the broken test's name
+    kept, so it is still the one broken; make_sets writes them, a count under 1 is one line."""
+    case = BY_NAME_AA["haa_broken_pulse_rail"]
+    assert cases.more_tests(case, 1) is case
+    more = cases.more_tests(case, 2)
+    assert more.name == f"{case.name}_est12" and len(more.est) == 12 and more.val == case.val
+    assert all(more.est.count(r) == 2 * case.est.count(r) for r in cases.ALL)
+    assert more.effects == case.effects and more.expect_broken == case.expect_broken
+    assert more.seed != case.seed and more.seed not in {c.seed for c in _cases_of(
+        (*heldout_sets.before("aa"), "aa"))}
+    assert set(case.expect_broken) <= set(cases.test_names(more)[0])
+    with pytest.raises(ValueError, match="times must be 1 or more"):
+        cases.more_tests(case, 0)
+    assert make_sets.main(["--set", "aa", "--case", case.name, "--est-times", "2",
+                           "--out", str(tmp_path)]) == 0
+    truth = json.loads((tmp_path / more.name / "truth.json").read_text())
+    assert len(truth["tests"]) == 18 and truth["case"]["est"] == list(more.est)
+    assert len(list((tmp_path / more.name / "est").iterdir())) == 12
+    assert make_sets.main(["--set", "aa", "--est-times", "0", "--out", str(tmp_path)]) == 2

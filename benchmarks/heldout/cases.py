@@ -8,7 +8,7 @@ setups they act on, and the verdict expected in the loop library's terms.
 
 from __future__ import annotations
 
-from dataclasses import asdict, dataclass
+from dataclasses import asdict, dataclass, replace
 
 ALL = ("R16", "SLED", "FULL")
 
@@ -112,6 +112,19 @@ CASES: list[Case] = [
 ]
 
 BY_NAME = {c.name: c for c in CASES}
+
+
+def more_tests(case: Case, times: int) -> Case:
+    """``case`` on ``times`` as many estimation tests of each rig (the validation tests as
+    they were), its tests drawn from another seed, named ``<case>_est<N>``: the same effects,
+    sizes and scopes on more crashes, to see what more tests defend. ``times`` 1: ``case``."""
+    if times == 1:
+        return case
+    if times < 1:
+        raise ValueError(f"times must be 1 or more, not {times}")
+    est = mix(*(times * case.est.count(r) for r in ALL))
+    return replace(case, name=f"{case.name}_est{len(est)}", est=est,
+                   seed=case.seed + 1_000_000 * (times - 1))
 
 
 def test_names(case: Case) -> tuple[list[str], list[str]]:

@@ -4,7 +4,7 @@ Deterministic from each case's seed.
 
     python -m benchmarks.heldout.make_sets --out DIR
         [--set a|b|c|d|e|f|g|h|i|j|k|l|m|n|o|p|q|r|s|t|u|v|w|x|y|z|aa] [--case NAME ...]
-        [--no-effects]
+        [--est-times K] [--no-effects]
 """
 
 from __future__ import annotations
@@ -19,7 +19,7 @@ import numpy as np
 
 from . import lab
 from . import physics as ph
-from .cases import CASES, Case
+from .cases import CASES, Case, more_tests
 from .iso_mme import write_test
 from .sets import SETS, select
 
@@ -45,7 +45,7 @@ def make(cases: list[Case], out: Path, log: bool = True, effects_on: bool = True
     for c in cases:
         rng = np.random.default_rng([c.seed, 1])  # the lab's noise, apart from the draw
         truths = []
-        for d in drawn[i:i + 12]:
+        for d in drawn[i:i + len(c.est) + len(c.val)]:
             test, truth = lab.record(d, i, sim, c.counts_per_rev, rng)
             write_test(test, out / c.name / d.part)
             truths.append(truth)
@@ -55,7 +55,8 @@ def make(cases: list[Case], out: Path, log: bool = True, effects_on: bool = True
                "tests": truths}
         (out / c.name / "truth.json").write_text(json.dumps(doc, indent=1) + "\n")
         if log:
-            print(f"  {c.name}: 6 est + 6 val -> {out / c.name}", flush=True)
+            print(f"  {c.name}: {len(c.est)} est + {len(c.val)} val -> {out / c.name}",
+                  flush=True)
     if log:
         print(f"done in {time.perf_counter() - t_start:.1f} s")
 
@@ -78,6 +79,10 @@ def main(argv: list[str] | None = None) -> int:
     ap.add_argument("--case", action="append", metavar="NAME",
                     help="only this case of the set (repeatable); default all, in set A: "
                          + ", ".join(c.name for c in CASES))
+    ap.add_argument("--est-times", type=int, default=1, metavar="K",
+                    help="each case on K times its estimation tests of each rig, drawn from "
+                         "another seed, named CASE_estN (cases.more_tests; default 1: as "
+                         "written)")
     ap.add_argument("--no-effects", action="store_true",
                     help="the same tests with every effect off (what the effects cost)")
     try:
@@ -85,7 +90,7 @@ def main(argv: list[str] | None = None) -> int:
     except SystemExit as e:
         return int(e.code or 0)
     try:
-        cases = select(args.case, args.case_set)
+        cases = [more_tests(c, args.est_times) for c in select(args.case, args.case_set)]
     except ValueError as e:
         print(f"error: {e}", file=sys.stderr)
         return 2
