@@ -9,12 +9,13 @@ import sys
 
 import numpy as np
 import pytest
+from scipy import stats
 
 from observer_node.data.filters import cfc_filter
 from observer_node.data.setups import assign_setups
 from observer_node.ident.dataset import make_dataset
 from observer_node.loop.diagnosis import shape_gains, unexplained, without_static
-from observer_node.loop.evidence import judge
+from observer_node.loop.evidence import MAX_TESTS, Evidence, judge, needed_tests
 from observer_node.loop.screening import (
     judged_fits,
     payout_outliers,
@@ -43,6 +44,39 @@ def test_a_gain_carried_by_one_test_is_only_possible():
     ev = judge(*_cv([9.0, -0.5, 0.2, -0.3, 0.1, -0.2]), SETUPS, None, 1.0)
     assert not ev.accepted and "scatter" in ev.reason
     assert ev.gain_points > 1.0
+
+
+def _interval_above_zero(mean: float, sd: float, n: int) -> bool:
+    return mean - stats.t.ppf(0.975, n - 1) * sd / np.sqrt(n) > 0
+
+
+def test_an_effect_failing_on_the_scatter_says_how_many_tests_would_defend_it():
+    # set AA's bilinear ribs as a SLED rib stiffening: +3.4 points on 5 of 6 tests, one -3.3
+    gains = [-3.26, 5.19, 6.73, 9.41, 1.02, 1.06]
+    ev = judge(*_cv(gains), SETUPS, None, 1.0)
+    n = ev.tests_to_defend
+    assert not ev.accepted and n is not None and f"about {n} estimation tests" in ev.reason
+    mean, sd = float(np.mean(gains)), float(np.std(gains, ddof=1))
+    assert _interval_above_zero(mean, sd, n) and not _interval_above_zero(mean, sd, n - 1)
+    assert n > len(gains)
+    # the number round-trips through report.json; a report written before it reads as None
+    d = ev.as_dict()
+    assert Evidence.from_dict(d).tests_to_defend == n
+    assert Evidence.from_dict({k: v for k, v in d.items() if k != "tests_to_defend"}
+                              ).tests_to_defend is None
+
+
+def test_only_a_gain_failing_on_the_scatter_gets_a_number_of_tests():
+    accepted = judge(*_cv([1.4, 1.2, 1.6, 1.1, 1.5, 1.3]), SETUPS, None, 1.0)
+    small = judge(*_cv([0.5, 0.6, 0.4, 0.5, 0.6, 0.5]), SETUPS, None, 1.0)
+    lowers = judge(*_cv([3.0, 3.2, 2.9, 3.1, -0.8, -0.6]), SETUPS, None, 1.0)
+    assert accepted.tests_to_defend is small.tests_to_defend is lowers.tests_to_defend is None
+    # a mean over the margin in a far wider scatter: beyond any campaign, said so
+    hopeless = judge(*_cv([40.0, -36.0, 41.0, -37.0, 39.0, -38.4]), SETUPS, None, 1.0)
+    assert hopeless.tests_to_defend is None
+    assert f"more than {MAX_TESTS} tests" in hopeless.reason
+    assert needed_tests(np.array([-1.0, -2.0])) is None
+    assert needed_tests(np.array([3.0])) is None
 
 
 def test_a_gain_that_lowers_one_setup_is_refused():

@@ -37,6 +37,7 @@ from scipy import stats
 SETUP_TOLERANCE = 0.3  # fit points: refit noise on setups an effect does not act on
 SIGN_P = 0.0625  # one-sided sign test: 4 of 4, 5 of 5, 6 of 6 (0.016), 8 of 9, 10 of 12...
 POSSIBLE_MIN = 0.25  # fit points: smaller mean gains are not worth listing
+MAX_TESTS = 200  # needed_tests looks no further: beyond it, "more than"
 
 
 @dataclass
@@ -53,6 +54,9 @@ class Evidence:
     setup_gain_points: dict[str, float]  # mean paired gain per setup, over all its tests
     accepted: bool
     reason: str  # why not, when not accepted
+    # failed on the scatter alone: the estimation tests that, scattering as these did, would
+    # put the 95 % interval above zero (:func:`needed_tests`); None otherwise
+    tests_to_defend: int | None = None
 
     def as_dict(self) -> dict:
         d = asdict(self)
@@ -91,6 +95,25 @@ def above_scatter(d: np.ndarray) -> tuple[bool, float, float, int, float]:
     return mean - half > 0 or sign_p <= SIGN_P, mean, half, improved, sign_p
 
 
+def needed_tests(d: np.ndarray) -> int | None:
+    """How many tests, gaining on average and scattering as the per-test gains ``d`` [fit
+    points] do, would put the 95 % t-interval of the mean gain above zero: the smallest n with
+    mean > t(0.975, n - 1) sd / sqrt(n), up to ``MAX_TESTS`` (``Evidence.tests_to_defend``).
+    None when the mean is not above zero, there is no spread to judge (fewer than two tests)
+    or n exceeds ``MAX_TESTS``.
+
+    A planning figure for the engineer, not evidence: it assumes that new crashes gain and
+    scatter as these did (a small sample's spread is itself uncertain), and the sign test may
+    pass sooner where nearly every test improves."""
+    mean = float(np.mean(d)) if len(d) else 0.0
+    if len(d) < 2 or mean <= 0:
+        return None
+    sd = float(np.std(d, ddof=1))
+    n = np.arange(2, MAX_TESTS + 1)
+    enough = mean > stats.t.ppf(0.975, n - 1) * sd / np.sqrt(n)
+    return int(n[np.argmax(enough)]) if enough.any() else None
+
+
 def beats(a: dict[str, float], b: dict[str, float]) -> tuple[bool, int]:
     """Whether per-test fits ``a`` beat ``b`` test by test above the scatter
     (:func:`above_scatter` on the paired differences), and on how many tests ``a`` is better."""
@@ -116,9 +139,14 @@ def judge(before: dict[str, float], after: dict[str, float], setups: dict[str, s
     elif per_setup[worst] < -SETUP_TOLERANCE:
         reason = f"lowers setup {worst}'s cross-validated fit by {-per_setup[worst]:.2f} points"
     elif not above:
+        more = needed_tests(np.array([gain[n] for n in names], float))
         reason = (f"gains {mean:.2f} points but the 95 % interval reaches "
                   f"{mean - half:+.2f} and only {improved} of {len(names)} tests improve: not "
-                  "above test-to-test scatter")
+                  "above test-to-test scatter; "
+                  + (f"about {more} estimation tests scattering as these would defend it"
+                     if more else f"more than {MAX_TESTS} tests scattering as these would not"))
+        return Evidence(mean, (mean - half, mean + half), float(np.mean(inside)), gain,
+                        improved, len(names), sign_p, per_setup, False, reason, more)
     else:
         reason = ""
     return Evidence(mean, (mean - half, mean + half), float(np.mean(inside)), gain, improved,
