@@ -7,7 +7,7 @@ library in view; its cases (`benchmarks/heldout/cases.py`) were committed with t
 verdicts before the loop ran on them. Nothing in the loop is tuned on them.
 
 Per case the loop runs blind at its defaults on 6 estimation + 6 validation tests (with
-``--est-times K``, K times the estimation tests, drawn from other seeds). Printed:
+``--est-times K``, K times the estimation tests, every crash drawn from another seed). Printed:
 
 - what it named (kind@scope, scopes as the simulator's setups), what passed the rule but the
   validation tests refused ("refused:"), the pair that passed the rule but the data cannot
@@ -31,7 +31,7 @@ Per case the loop runs blind at its defaults on 6 estimation + 6 validation test
 
     python -m benchmarks.loop_heldout [--set a|b|...|z|aa] [--cases NAME ...] [--sets DIR]
                                       [--out DIR] [--workers N] [--json FILE]
-                                      [--est-times K]
+                                      [--est-times K] [--new-crashes]
 """
 
 from __future__ import annotations
@@ -213,28 +213,39 @@ def _reachable(case: Case, r: LoopReport, est_tests: list, val_tests: list, same
     return float(best)
 
 
-def generate(case_set: str, cases: list[Case], out: Path, est_times: int = 1) -> Path:
-    """The cases' crash tests (named as written; ``est_times``: see ``cases.more_tests``),
-    simulated into ``out`` by ``benchmarks.heldout.make_sets``."""
+def generate(case_set: str, cases: list[Case], out: Path, est_times: int = 1,
+             new_crashes: bool = False) -> Path:
+    """The cases' crash tests (named as written; ``est_times``, ``new_crashes``: see
+    ``cases.more_tests``), simulated into ``out`` by ``benchmarks.heldout.make_sets``."""
     subprocess.run([sys.executable, "-m", "benchmarks.heldout.make_sets", "--out", str(out),
                     "--set", case_set, "--est-times", str(est_times),
+                    *(["--new-crashes"] if new_crashes else []),
                     *[x for c in cases for x in ("--case", c.name)]], check=True)
     return out
 
 
 def cases_and_sets(prog: str, case_set: str, names: list[str] | None, sets: Path | None,
-                   est_times: int = 1) -> tuple[list[Case], Path]:
-    """The cases named from ``case_set`` (on ``est_times`` as many estimation tests:
-    ``cases.more_tests``) and the folder of their generated tests (``sets``, else generated
-    into a temporary folder); an unknown case or a bad count: one line, exit 2."""
+                   est_times: int = 1, new_crashes: bool = False) -> tuple[list[Case], Path]:
+    """The cases named from ``case_set`` (on ``est_times`` as many estimation tests, on new
+    crashes: ``cases.more_tests``) and the folder of their generated tests (``sets``, else
+    generated into a temporary folder); an unknown case, a bad count, or a case ``sets`` does
+    not hold: one line, exit 2."""
     try:
         written = select(names, case_set)
-        cases = [more_tests(c, est_times) for c in written]
+        cases = [more_tests(c, est_times, new_crashes) for c in written]
     except ValueError as e:
         print(f"{prog}: {e}", file=sys.stderr)
         sys.exit(2)
-    return cases, sets or generate(case_set, written, Path(tempfile.mkdtemp()) / "sets",
-                                   est_times)
+    if sets is None:
+        return cases, generate(case_set, written, Path(tempfile.mkdtemp()) / "sets",
+                               est_times, new_crashes)
+    missing = [c.name for c in cases if not (sets / c.name / "est").is_dir()]
+    if missing:
+        print(f"{prog}: {sets} holds no tests of {missing[0]} (make them with python -m "
+              f"benchmarks.heldout.make_sets --set {case_set} --out {sets}, and the same "
+              "--est-times and --new-crashes)", file=sys.stderr)
+        sys.exit(2)
+    return cases, sets
 
 
 def main() -> None:
@@ -253,11 +264,16 @@ def main() -> None:
                     help="each case on K times its estimation tests of each rig, drawn from "
                          "another seed (cases.more_tests; --sets must then hold "
                          "make_sets --est-times K); default 1: as written")
+    ap.add_argument("--new-crashes", action="store_true",
+                    help="every crash drawn again from another seed (cases.more_tests; with "
+                         "--est-times 1, the control for what more tests change)")
     a = ap.parse_args()
-    cases, sets = cases_and_sets("loop_heldout", a.case_set, a.cases, a.sets, a.est_times)
+    cases, sets = cases_and_sets("loop_heldout", a.case_set, a.cases, a.sets, a.est_times,
+                                 a.new_crashes)
+    w = max(20, *(len(c.name) + 1 for c in cases))
     work = a.out or Path(tempfile.mkdtemp())
     print(f"loop reports in {work}/CASE/report.md", flush=True)
-    print(f"{'case':<20}{'named (kind@scope)':<46}{'flagged':<10}{'right':>6}{'judged':>7}"
+    print(f"{'case':<{w}}{'named (kind@scope)':<46}{'flagged':<10}{'right':>6}{'judged':>7}"
           f"{'before':>8}"
           f"{'after':>7}{'reach':>7}{'gap':>6}{'time s':>8}  truth", flush=True)
     rows = []
@@ -276,13 +292,13 @@ def main() -> None:
             named += f"; sensor: {','.join(row['sensor'])}"
         if row["unexplained"]:
             named += f"; unexplained: {','.join(row['unexplained'])}"
-        print(f"{case.name:<20}{named:<46}{','.join(row['flagged']) or '-':<10}"
+        print(f"{case.name:<{w}}{named:<46}{','.join(row['flagged']) or '-':<10}"
               f"{'yes' if row['right'] else 'NO':>6}{'yes' if row['right_judged'] else 'NO':>7}"
               f"{row['before']:8.1f}{row['after']:7.1f}"
               f"{reach:7.1f}{reach - row['after']:6.1f}{row['seconds']:8.1f}  "
               f"{_truth_cell(row['truth'])}", flush=True)
         if not row["right"] or not row["right_judged"]:
-            print(f"{'':<20}expected: {', '.join(row['expected']) or '(none)'}"
+            print(f"{'':<{w}}expected: {', '.join(row['expected']) or '(none)'}"
                   + (f" (on the rigs held at least twice, {'+'.join(row['judged_rigs'])}: "
                      f"{', '.join(row['expected_judged']) or '(none)'})"
                      if row["expected_judged"] != row["expected"] else "")

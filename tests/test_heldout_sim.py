@@ -5,6 +5,8 @@ and the broken test really broken."""
 from __future__ import annotations
 
 import json
+import subprocess
+import sys
 from collections.abc import Iterator
 from pathlib import Path
 from types import ModuleType
@@ -3928,3 +3930,33 @@ def test_more_tests_doubles_the_estimation_tests_only(tmp_path: Path) -> None:
     assert len(truth["tests"]) == 18 and truth["case"]["est"] == list(more.est)
     assert len(list((tmp_path / more.name / "est").iterdir())) == 12
     assert make_sets.main(["--set", "aa", "--est-times", "0", "--out", str(tmp_path)]) == 2
+    # the control: the same design on new crashes, and a third draw beside the doubled one
+    same = cases.more_tests(case, 1, new_crashes=True)
+    assert same.name == f"{case.name}_est6_new" and same.est == case.est
+    assert len({case.seed, more.seed, same.seed, cases.more_tests(case, 2, True).seed}) == 4
+
+
+def test_more_tests_refuses_a_fault_that_pairs_tests_by_their_place() -> None:
+    """A swapped channel is taken from the test so many places away: on more (or redrawn)
+    tests that place holds another test, so the case is refused, not silently changed."""
+    swap = heldout_sets.select(["hj_broken_brs_swap"], "j")[0]
+    for times, new in ((2, False), (1, True)):
+        with pytest.raises(ValueError, match="hj_broken_brs_swap: its brs_swap"):
+            cases.more_tests(swap, times, new)
+    assert cases.more_tests(swap, 1) is swap
+
+
+def test_a_draw_refuses_the_sets_as_a_string_of_letters() -> None:
+    with pytest.raises(TypeError, match="not a string of letters"):
+        draw_w.drawn(37003, "abcdefghijklmnopqrstuvwxyzaa")  # type: ignore[arg-type]
+
+
+def test_loop_heldout_on_a_folder_without_the_case_is_one_line(tmp_path: Path) -> None:
+    """--sets made without --est-times, the loop asked for --est-times 2: one line naming
+    the case and how to make it, exit 2, before any loop runs."""
+    assert make_sets.main(["--set", "aa", "--case", "haa_clean48", "--out", str(tmp_path)]) == 0
+    r = subprocess.run([sys.executable, "-m", "benchmarks.loop_heldout", "--set", "aa",
+                        "--cases", "haa_clean48", "--sets", str(tmp_path), "--est-times", "2"],
+                       capture_output=True, text=True, timeout=120, check=False)
+    assert r.returncode == 2 and len(r.stderr.strip().splitlines()) == 1, r.stderr
+    assert "haa_clean48_est12" in r.stderr and "Traceback" not in r.stderr

@@ -114,17 +114,31 @@ CASES: list[Case] = [
 BY_NAME = {c.name: c for c in CASES}
 
 
-def more_tests(case: Case, times: int) -> Case:
-    """``case`` on ``times`` as many estimation tests of each rig (the validation tests as
-    they were), its tests drawn from another seed, named ``<case>_est<N>``: the same effects,
-    sizes and scopes on more crashes, to see what more tests defend. ``times`` 1: ``case``."""
-    if times == 1:
-        return case
+# broken-test faults that take a channel from the test so many places away in the case
+# (lab.record): on more estimation tests that place holds another test, so another fault
+BY_PLACE = ("pulse_from", "brs_swap")
+
+
+def more_tests(case: Case, times: int, new_crashes: bool = False) -> Case:
+    """``case`` on ``times`` as many estimation tests of each rig, the same effects, sizes,
+    scopes and validation rigs, every crash drawn again from another seed (the validation
+    tests' too), named ``<case>_est<N>``; ``new_crashes`` draws them from yet another seed,
+    named ``<case>_est<N>_new`` (at ``times`` 1: the same design on new crashes, the control
+    for what more tests change). ``times`` 1 without ``new_crashes``: ``case`` itself.
+    ValueError for ``times`` under 1, or a case whose fault pairs tests by their place
+    (``BY_PLACE``), which more tests would turn into another fault."""
     if times < 1:
         raise ValueError(f"times must be 1 or more, not {times}")
+    if times == 1 and not new_crashes:
+        return case
+    placed = sorted({e.key for e in case.effects if e.key in BY_PLACE})
+    if placed:
+        raise ValueError(f"{case.name}: its {placed[0]} takes a channel from the test so many "
+                         "places away, which more or redrawn tests would make another fault")
     est = mix(*(times * case.est.count(r) for r in ALL))
-    return replace(case, name=f"{case.name}_est{len(est)}", est=est,
-                   seed=case.seed + 1_000_000 * (times - 1))
+    return replace(case, name=f"{case.name}_est{len(est)}" + ("_new" if new_crashes else ""),
+                   est=est, seed=case.seed + 1_000_000 * (times - 1)
+                   + (500_000 if new_crashes else 0))
 
 
 def test_names(case: Case) -> tuple[list[str], list[str]]:

@@ -99,6 +99,8 @@ def drawn(seed: int, earlier: tuple[str, ...], redrawn: tuple[tuple[str, int], .
     uniformly, among the pairings the ``earlier`` sets ran that its rules allow (every rig of
     either effect estimated twice or more, and the rest), instead of none; the case then
     carries ``"reused": True`` (``False`` when a free one was drawn)."""
+    if isinstance(earlier, str):  # "abc...zaa" would read set AA as set A twice
+        raise TypeError("earlier: the sets' names (sets.before), not a string of letters")
     rng = np.random.default_rng(seed)
     used = {(tuple(c.est.count(r) for r in ALL), tuple(c.val.count(r) for r in ALL))
             for s in earlier for c in case_set(s)}

@@ -4,7 +4,7 @@ Deterministic from each case's seed.
 
     python -m benchmarks.heldout.make_sets --out DIR
         [--set a|b|c|d|e|f|g|h|i|j|k|l|m|n|o|p|q|r|s|t|u|v|w|x|y|z|aa] [--case NAME ...]
-        [--est-times K] [--no-effects]
+        [--est-times K] [--new-crashes] [--no-effects]
 """
 
 from __future__ import annotations
@@ -83,6 +83,9 @@ def main(argv: list[str] | None = None) -> int:
                     help="each case on K times its estimation tests of each rig, drawn from "
                          "another seed, named CASE_estN (cases.more_tests; default 1: as "
                          "written)")
+    ap.add_argument("--new-crashes", action="store_true",
+                    help="every crash drawn again from another seed, named CASE_estN_new (with "
+                         "--est-times 1: the same design on new crashes)")
     ap.add_argument("--no-effects", action="store_true",
                     help="the same tests with every effect off (what the effects cost)")
     try:
@@ -90,7 +93,8 @@ def main(argv: list[str] | None = None) -> int:
     except SystemExit as e:
         return int(e.code or 0)
     try:
-        cases = [more_tests(c, args.est_times) for c in select(args.case, args.case_set)]
+        cases = [more_tests(c, args.est_times, args.new_crashes)
+                 for c in select(args.case, args.case_set)]
     except ValueError as e:
         print(f"error: {e}", file=sys.stderr)
         return 2
