@@ -14,6 +14,7 @@ from scipy import stats
 from observer_node.data.filters import cfc_filter
 from observer_node.data.setups import assign_setups
 from observer_node.ident.dataset import make_dataset
+from observer_node.loop import evidence
 from observer_node.loop.diagnosis import shape_gains, unexplained, without_static
 from observer_node.loop.evidence import MAX_TESTS, Evidence, judge, needed_tests
 from observer_node.loop.screening import (
@@ -46,24 +47,42 @@ def test_a_gain_carried_by_one_test_is_only_possible():
     assert ev.gain_points > 1.0
 
 
-def _interval_above_zero(mean: float, sd: float, n: int) -> bool:
-    return mean - stats.t.ppf(0.975, n - 1) * sd / np.sqrt(n) > 0
+def _passes_interval(mean: float, sd: float, n: int, reps: int = 200_000) -> float:
+    """How often n tests drawn normal(mean, sd) put the 95 % t-interval above zero (by
+    simulation, apart from the formula under test)."""
+    x = np.random.default_rng(1).normal(mean, sd, (reps, n))
+    low = x.mean(1) - stats.t.ppf(0.975, n - 1) * x.std(1, ddof=1) / np.sqrt(n)
+    return float(np.mean(low > 0))
 
 
-def test_an_effect_failing_on_the_scatter_says_how_many_tests_would_defend_it():
-    # set AA's bilinear ribs as a SLED rib stiffening: +3.4 points on 5 of 6 tests, one -3.3
-    gains = [-3.26, 5.19, 6.73, 9.41, 1.02, 1.06]
+@pytest.mark.parametrize("gains", [
+    [-3.26, 5.19, 6.73, 9.41, 1.02, 1.06],  # set AA's bilinear ribs as a SLED rib stiffening
+    [3.0, -1.0, 2.5, -0.5, 1.5, 2.0]])
+def test_an_effect_failing_on_the_scatter_says_how_many_tests_would_pass_it(gains):
     ev = judge(*_cv(gains), SETUPS, None, 1.0)
     n = ev.tests_to_defend
-    assert not ev.accepted and n is not None and f"about {n} estimation tests" in ev.reason
+    assert not ev.accepted and n is not None and n > len(gains)
+    assert f"about {n} judged estimation tests would pass this test 4 times in 5" in ev.reason
+    assert "; " not in ev.reason  # the loop joins candidates' reasons with "; "
     mean, sd = float(np.mean(gains)), float(np.std(gains, ddof=1))
-    assert _interval_above_zero(mean, sd, n) and not _interval_above_zero(mean, sd, n - 1)
-    assert n > len(gains)
+    assert _passes_interval(mean, sd, n) > 0.8 > _passes_interval(mean, sd, n - 1)
     # the number round-trips through report.json; a report written before it reads as None
     d = ev.as_dict()
     assert Evidence.from_dict(d).tests_to_defend == n
     assert Evidence.from_dict({k: v for k, v in d.items() if k != "tests_to_defend"}
                               ).tests_to_defend is None
+
+
+def test_the_number_of_tests_stops_at_its_ceiling_and_says_so(monkeypatch):
+    gains = np.array([3.0, -1.0, 2.5, -0.5, 1.5, 2.0])
+    n = needed_tests(gains)
+    assert n is not None
+    monkeypatch.setattr(evidence, "MAX_TESTS", n)
+    assert needed_tests(gains) == n
+    monkeypatch.setattr(evidence, "MAX_TESTS", n - 1)
+    assert needed_tests(gains) is None
+    ev = judge(*_cv(list(gains)), SETUPS, None, 1.0)
+    assert ev.tests_to_defend is None and f"even {n - 1} judged estimation tests" in ev.reason
 
 
 def test_only_a_gain_failing_on_the_scatter_gets_a_number_of_tests():
@@ -74,9 +93,16 @@ def test_only_a_gain_failing_on_the_scatter_gets_a_number_of_tests():
     # a mean over the margin in a far wider scatter: beyond any campaign, said so
     hopeless = judge(*_cv([40.0, -36.0, 41.0, -37.0, 39.0, -38.4]), SETUPS, None, 1.0)
     assert hopeless.tests_to_defend is None
-    assert f"more than {MAX_TESTS} tests" in hopeless.reason
-    assert needed_tests(np.array([-1.0, -2.0])) is None
-    assert needed_tests(np.array([3.0])) is None
+    assert f"even {MAX_TESTS} judged estimation tests" in hopeless.reason
+    # nothing to say: one test, no spread, a mean not above zero, a gain not finite
+    for d in ([3.0], [2.0, 2.0, 2.0], [-1.0, -2.0], [2.0, np.nan, 3.0]):
+        assert needed_tests(np.array(d)) is None
+    one = {"T0": "A"}
+    alone = judge({"T0": 90.0}, {"T0": 95.0}, one, None, 1.0)
+    flat = judge({"T0": 90.0, "T1": 90.0}, {"T0": 92.0, "T1": 92.0}, {"T0": "A", "T1": "A"},
+                 None, 1.0)
+    for ev in (alone, flat):
+        assert not ev.accepted and ev.reason.endswith("not above test-to-test scatter"), ev.reason
 
 
 def test_a_gain_that_lowers_one_setup_is_refused():

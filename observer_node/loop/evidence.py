@@ -37,7 +37,8 @@ from scipy import stats
 SETUP_TOLERANCE = 0.3  # fit points: refit noise on setups an effect does not act on
 SIGN_P = 0.0625  # one-sided sign test: 4 of 4, 5 of 5, 6 of 6 (0.016), 8 of 9, 10 of 12...
 POSSIBLE_MIN = 0.25  # fit points: smaller mean gains are not worth listing
-MAX_TESTS = 200  # needed_tests looks no further: beyond it, "more than"
+MAX_TESTS = 200  # needed_tests looks no further: beyond it, "even 200 would not"
+POWER = 0.8  # needed_tests: the chance of passing it plans for (the usual 4 in 5)
 
 
 @dataclass
@@ -54,8 +55,8 @@ class Evidence:
     setup_gain_points: dict[str, float]  # mean paired gain per setup, over all its tests
     accepted: bool
     reason: str  # why not, when not accepted
-    # failed on the scatter alone: the estimation tests that, scattering as these did, would
-    # put the 95 % interval above zero (:func:`needed_tests`); None otherwise
+    # failed on the scatter alone: the judged estimation tests that, gaining and scattering as
+    # these did, would pass the interval test 4 times in 5 (:func:`needed_tests`); else None
     tests_to_defend: int | None = None
 
     def as_dict(self) -> dict:
@@ -96,22 +97,41 @@ def above_scatter(d: np.ndarray) -> tuple[bool, float, float, int, float]:
 
 
 def needed_tests(d: np.ndarray) -> int | None:
-    """How many tests, gaining on average and scattering as the per-test gains ``d`` [fit
-    points] do, would put the 95 % t-interval of the mean gain above zero: the smallest n with
-    mean > t(0.975, n - 1) sd / sqrt(n), up to ``MAX_TESTS`` (``Evidence.tests_to_defend``).
-    None when the mean is not above zero, there is no spread to judge (fewer than two tests)
-    or n exceeds ``MAX_TESTS``.
+    """How many tests it would take for the t-interval half of the rule to pass 4 times in 5,
+    if tests gained and scattered as the per-test gains ``d`` [fit points] do: the smallest n,
+    up to ``MAX_TESTS``, at which the 95 % t-interval of the mean lies above zero with
+    probability ``POWER`` (Student's t, non-central by mean sqrt(n) / sd). None when that
+    cannot be said (fewer than two tests, gains not finite, a mean not above zero, no spread)
+    or n exceeds ``MAX_TESTS``; ``Evidence.tests_to_defend``.
 
-    A planning figure for the engineer, not evidence: it assumes that new crashes gain and
-    scatter as these did (a small sample's spread is itself uncertain), and the sign test may
-    pass sooner where nearly every test improves."""
-    mean = float(np.mean(d)) if len(d) else 0.0
-    if len(d) < 2 or mean <= 0:
+    A planning figure for the engineer, not evidence: a small sample's mean and spread are
+    themselves uncertain (and a candidate judged because it gained is likelier to have been
+    lucky than not), the sign test may pass sooner, and the rule's other checks still apply."""
+    if not _estimable(d):
         return None
-    sd = float(np.std(d, ddof=1))
+    mean, sd = float(np.mean(d)), float(np.std(d, ddof=1))
     n = np.arange(2, MAX_TESTS + 1)
-    enough = mean > stats.t.ppf(0.975, n - 1) * sd / np.sqrt(n)
+    power = stats.nct.sf(stats.t.ppf(0.975, n - 1), n - 1, mean * np.sqrt(n) / sd)
+    enough = power >= POWER
     return int(n[np.argmax(enough)]) if enough.any() else None
+
+
+def _estimable(d: np.ndarray) -> bool:
+    return (len(d) >= 2 and bool(np.all(np.isfinite(d))) and float(np.mean(d)) > 0
+            and float(np.std(d, ddof=1)) > 0)
+
+
+def _more_tests(d: np.ndarray) -> tuple[int | None, str]:
+    """:func:`needed_tests` and its words for the reason ("" when nothing can be said)."""
+    n = needed_tests(d)
+    if n is not None:
+        return n, (f" (if more tests gained and scattered as these did, about {n} judged "
+                   "estimation tests would pass this test 4 times in 5, the rule's other "
+                   "checks still apply)")
+    if _estimable(d):
+        return None, (f" (even {MAX_TESTS} judged estimation tests gaining and scattering as "
+                      "these did would pass this test less than 4 times in 5)")
+    return None, ""
 
 
 def beats(a: dict[str, float], b: dict[str, float]) -> tuple[bool, int]:
@@ -139,12 +159,10 @@ def judge(before: dict[str, float], after: dict[str, float], setups: dict[str, s
     elif per_setup[worst] < -SETUP_TOLERANCE:
         reason = f"lowers setup {worst}'s cross-validated fit by {-per_setup[worst]:.2f} points"
     elif not above:
-        more = needed_tests(np.array([gain[n] for n in names], float))
+        more, words = _more_tests(np.array([gain[n] for n in names], float))
         reason = (f"gains {mean:.2f} points but the 95 % interval reaches "
                   f"{mean - half:+.2f} and only {improved} of {len(names)} tests improve: not "
-                  "above test-to-test scatter; "
-                  + (f"about {more} estimation tests scattering as these would defend it"
-                     if more else f"more than {MAX_TESTS} tests scattering as these would not"))
+                  f"above test-to-test scatter{words}")
         return Evidence(mean, (mean - half, mean + half), float(np.mean(inside)), gain,
                         improved, len(names), sign_p, per_setup, False, reason, more)
     else:
