@@ -239,11 +239,15 @@ def cases_and_sets(prog: str, case_set: str, names: list[str] | None, sets: Path
     if sets is None:
         return cases, generate(case_set, written, Path(tempfile.mkdtemp()) / "sets",
                                est_times, new_crashes)
-    missing = [c.name for c in cases if not (sets / c.name / "est").is_dir()]
+    missing = [(w, c) for w, c in zip(written, cases, strict=True)
+               if not all((sets / c.name / part).is_dir() for part in ("est", "val"))]
     if missing:
-        print(f"{prog}: {sets} holds no tests of {missing[0]} (make them with python -m "
-              f"benchmarks.heldout.make_sets --set {case_set} --out {sets}, and the same "
-              "--est-times and --new-crashes)", file=sys.stderr)
+        w, c = missing[0]
+        flags = (f" --est-times {est_times}" if est_times != 1 else "") + (
+            " --new-crashes" if new_crashes else "")
+        print(f"{prog}: {sets} holds no tests of {c.name} (make them with python -m "
+              f"benchmarks.heldout.make_sets --set {case_set} --case {w.name}{flags} "
+              f"--out {sets})", file=sys.stderr)
         sys.exit(2)
     return cases, sets
 

@@ -3960,3 +3960,4 @@ def test_loop_heldout_on_a_folder_without_the_case_is_one_line(tmp_path: Path) -
                        capture_output=True, text=True, timeout=120, check=False)
     assert r.returncode == 2 and len(r.stderr.strip().splitlines()) == 1, r.stderr
     assert "haa_clean48_est12" in r.stderr and "Traceback" not in r.stderr
+    assert "--case haa_clean48 --est-times 2 --out" in r.stderr

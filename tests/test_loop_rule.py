@@ -62,7 +62,9 @@ def test_an_effect_failing_on_the_scatter_says_how_many_tests_would_pass_it(gain
     ev = judge(*_cv(gains), SETUPS, None, 1.0)
     n = ev.tests_to_defend
     assert not ev.accepted and n is not None and n > len(gains)
-    assert f"about {n} judged estimation tests would pass this test 4 times in 5" in ev.reason
+    assert (f"about {n} judged estimation tests in all, 6 now, gaining and scattering as these "
+            "did, would put the 95 % interval above zero 4 times in 5, the 1-point bar and the "
+            "rule's other checks aside") in ev.reason
     assert "; " not in ev.reason  # the loop joins candidates' reasons with "; "
     mean, sd = float(np.mean(gains)), float(np.std(gains, ddof=1))
     assert _passes_interval(mean, sd, n) > 0.8 > _passes_interval(mean, sd, n - 1)
@@ -101,8 +103,17 @@ def test_only_a_gain_failing_on_the_scatter_gets_a_number_of_tests():
     alone = judge({"T0": 90.0}, {"T0": 95.0}, one, None, 1.0)
     flat = judge({"T0": 90.0, "T1": 90.0}, {"T0": 92.0, "T1": 92.0}, {"T0": "A", "T1": "A"},
                  None, 1.0)
-    for ev in (alone, flat):
+    # a run-away fit's stand-in score (-1000 %) makes a gain of a thousand points: no figure
+    before, after = _cv([0.0, 0.2, 0.2, -0.1, 0.2, -0.1], base=85.0)
+    run_away = judge({**before, "T0": -1000.0}, {**after, "T0": 88.0}, SETUPS, None, 1.0)
+    for ev in (alone, flat, run_away):
         assert not ev.accepted and ev.reason.endswith("not above test-to-test scatter"), ev.reason
+        assert ev.tests_to_defend is None
+
+
+def test_a_gain_that_is_not_a_number_is_never_accepted():
+    ev = judge(*_cv([2.0, np.nan, 3.0, 1.0, 4.0, 5.0]), SETUPS, None, 1.0)
+    assert not ev.accepted and ev.reason == "a test's gain is not a number"
 
 
 def test_a_gain_that_lowers_one_setup_is_refused():

@@ -126,7 +126,7 @@ def more_tests(case: Case, times: int, new_crashes: bool = False) -> Case:
     named ``<case>_est<N>_new`` (at ``times`` 1: the same design on new crashes, the control
     for what more tests change). ``times`` 1 without ``new_crashes``: ``case`` itself.
     ValueError for ``times`` under 1, or a case whose fault pairs tests by their place
-    (``BY_PLACE``), which more tests would turn into another fault."""
+    (``BY_PLACE``), which on more or redrawn tests may pair other crashes than described."""
     if times < 1:
         raise ValueError(f"times must be 1 or more, not {times}")
     if times == 1 and not new_crashes:
@@ -134,7 +134,8 @@ def more_tests(case: Case, times: int, new_crashes: bool = False) -> Case:
     placed = sorted({e.key for e in case.effects if e.key in BY_PLACE})
     if placed:
         raise ValueError(f"{case.name}: its {placed[0]} takes a channel from the test so many "
-                         "places away, which more or redrawn tests would make another fault")
+                         "places away, which on more or redrawn tests may be another crash "
+                         "than the case describes")
     est = mix(*(times * case.est.count(r) for r in ALL))
     return replace(case, name=f"{case.name}_est{len(est)}" + ("_new" if new_crashes else ""),
                    est=est, seed=case.seed + 1_000_000 * (times - 1)

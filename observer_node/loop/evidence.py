@@ -117,20 +117,23 @@ def needed_tests(d: np.ndarray) -> int | None:
 
 
 def _estimable(d: np.ndarray) -> bool:
-    return (len(d) >= 2 and bool(np.all(np.isfinite(d))) and float(np.mean(d)) > 0
-            and float(np.std(d, ddof=1)) > 0)
+    # a gain past 100 points is a run-away fit's stand-in score (refit.finite), not a gain
+    return (len(d) >= 2 and bool(np.all(np.isfinite(d))) and bool(np.all(np.abs(d) <= 100))
+            and float(np.mean(d)) > 0 and float(np.std(d, ddof=1)) > 0)
 
 
-def _more_tests(d: np.ndarray) -> tuple[int | None, str]:
+def _more_tests(d: np.ndarray, margin: float) -> tuple[int | None, str]:
     """:func:`needed_tests` and its words for the reason ("" when nothing can be said)."""
     n = needed_tests(d)
+    aside = f"the {margin:g}-point bar and the rule's other checks aside"
     if n is not None:
-        return n, (f" (if more tests gained and scattered as these did, about {n} judged "
-                   "estimation tests would pass this test 4 times in 5, the rule's other "
-                   "checks still apply)")
+        return n, (f" (about {n} judged estimation tests in all, {len(d)} now, gaining and "
+                   "scattering as these did, would put the 95 % interval above zero 4 times "
+                   f"in 5, {aside})")
     if _estimable(d):
         return None, (f" (even {MAX_TESTS} judged estimation tests gaining and scattering as "
-                      "these did would pass this test less than 4 times in 5)")
+                      "these did would put the 95 % interval above zero less than 4 times in "
+                      f"5, {aside})")
     return None, ""
 
 
@@ -154,12 +157,14 @@ def judge(before: dict[str, float], after: dict[str, float], setups: dict[str, s
     per_setup = {s: float(np.mean([gain[n] for n in names if setups[n] == s]))
                  for s in dict.fromkeys(setups[n] for n in names)}
     worst = min(per_setup, key=lambda s: per_setup[s])
-    if mean < margin:
+    if not np.all(np.isfinite(list(gain.values()))):  # never passed by the loop: refit.finite
+        reason = "a test's gain is not a number"
+    elif mean < margin:
         reason = f"gains {mean:.2f} < {margin:g} points"
     elif per_setup[worst] < -SETUP_TOLERANCE:
         reason = f"lowers setup {worst}'s cross-validated fit by {-per_setup[worst]:.2f} points"
     elif not above:
-        more, words = _more_tests(np.array([gain[n] for n in names], float))
+        more, words = _more_tests(np.array([gain[n] for n in names], float), margin)
         reason = (f"gains {mean:.2f} points but the 95 % interval reaches "
                   f"{mean - half:+.2f} and only {improved} of {len(names)} tests improve: not "
                   f"above test-to-test scatter{words}")
