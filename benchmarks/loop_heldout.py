@@ -48,6 +48,7 @@ from pathlib import Path
 import numpy as np
 
 from benchmarks.heldout.cases import Case, more_tests
+from benchmarks.heldout.make_sets import more_tests_options
 from benchmarks.heldout.sets import SETS, select
 from observer_node.data import load_tests
 from observer_node.ident.dataset import Dataset, make_dataset
@@ -264,13 +265,7 @@ def main() -> None:
     ap.add_argument("--out", type=Path, help="keep each case's loop report in OUT/CASE")
     ap.add_argument("--workers", type=int, help="Dask workers per loop (default: one per core)")
     ap.add_argument("--json", type=Path, help="also write the rows as JSON")
-    ap.add_argument("--est-times", type=int, default=1, metavar="K",
-                    help="each case on K times its estimation tests of each rig, drawn from "
-                         "another seed (cases.more_tests; --sets must then hold "
-                         "make_sets --est-times K); default 1: as written")
-    ap.add_argument("--new-crashes", action="store_true",
-                    help="every crash drawn again from another seed (cases.more_tests; with "
-                         "--est-times 1, the control for what more tests change)")
+    more_tests_options(ap)  # --sets must then hold make_sets run with the same two
     a = ap.parse_args()
     cases, sets = cases_and_sets("loop_heldout", a.case_set, a.cases, a.sets, a.est_times,
                                  a.new_crashes)

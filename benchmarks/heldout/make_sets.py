@@ -61,6 +61,18 @@ def make(cases: list[Case], out: Path, log: bool = True, effects_on: bool = True
         print(f"done in {time.perf_counter() - t_start:.1f} s")
 
 
+def more_tests_options(ap: argparse.ArgumentParser) -> None:
+    """--est-times and --new-crashes (``cases.more_tests``), here and in loop_heldout."""
+    ap.add_argument("--est-times", type=int, default=1, metavar="K",
+                    help="each case on K times its estimation tests of each rig, every crash "
+                         "drawn from another seed, named CASE_estN (cases.more_tests; "
+                         "default 1: as written)")
+    ap.add_argument("--new-crashes", action="store_true",
+                    help="every crash drawn again from yet another seed, named CASE_estN_new "
+                         "(with --est-times 1: the same design on new crashes, the control "
+                         "for what more tests change)")
+
+
 def main(argv: list[str] | None = None) -> int:
     ap = argparse.ArgumentParser(prog="python -m benchmarks.heldout.make_sets",
                                  description=__doc__.split("\n\n")[0])
@@ -79,13 +91,7 @@ def main(argv: list[str] | None = None) -> int:
     ap.add_argument("--case", action="append", metavar="NAME",
                     help="only this case of the set (repeatable); default all, in set A: "
                          + ", ".join(c.name for c in CASES))
-    ap.add_argument("--est-times", type=int, default=1, metavar="K",
-                    help="each case on K times its estimation tests of each rig, drawn from "
-                         "another seed, named CASE_estN (cases.more_tests; default 1: as "
-                         "written)")
-    ap.add_argument("--new-crashes", action="store_true",
-                    help="every crash drawn again from another seed, named CASE_estN_new (with "
-                         "--est-times 1: the same design on new crashes)")
+    more_tests_options(ap)
     ap.add_argument("--no-effects", action="store_true",
                     help="the same tests with every effect off (what the effects cost)")
     try:
