@@ -66,17 +66,20 @@ def before(name: str) -> tuple[str, ...]:
     """The names of the sets written before set ``name``, in order (``before("c")`` is
     ``("a", "b")``; before set AA, ``"a"`` to ``"z"``); ValueError for an unknown name.
     Names, not letters: set AA is one set, not set A twice."""
-    if name not in _BY_NAME:
-        raise ValueError(f"unknown case set {name!r}; known: {', '.join(SETS)}")
+    _known(name)
     return SETS[:SETS.index(name)]
 
 
 def case_set(name: str) -> list[Case]:
     """Set A (``cases``), or set B ... Z, AA (``cases_b`` ... ``cases_z``, ``cases_aa``) by its
     lower-case letters; ValueError for another name."""
+    _known(name)
+    return list(_BY_NAME[name])
+
+
+def _known(name: str) -> None:
     if name not in _BY_NAME:
         raise ValueError(f"unknown case set {name!r}; known: {', '.join(SETS)}")
-    return list(_BY_NAME[name])
 
 
 def select(names: list[str] | None, case_set_name: str = "a") -> list[Case]:

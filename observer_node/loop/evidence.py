@@ -124,17 +124,17 @@ def _estimable(d: np.ndarray) -> bool:
 
 def _more_tests(d: np.ndarray, margin: float) -> tuple[int | None, str]:
     """:func:`needed_tests` and its words for the reason ("" when nothing can be said)."""
+    if not _estimable(d):
+        return None, ""
     n = needed_tests(d)
     aside = f"the {margin:g}-point bar and the rule's other checks aside"
     if n is not None:
         return n, (f" (about {n} judged estimation tests in all, {len(d)} now, gaining and "
                    "scattering as these did, would put the 95 % interval above zero 4 times "
                    f"in 5, {aside})")
-    if _estimable(d):
-        return None, (f" (even {MAX_TESTS} judged estimation tests gaining and scattering as "
-                      "these did would put the 95 % interval above zero less than 4 times in "
-                      f"5, {aside})")
-    return None, ""
+    return None, (f" (even {MAX_TESTS} judged estimation tests gaining and scattering as "
+                  "these did would put the 95 % interval above zero less than 4 times in "
+                  f"5, {aside})")
 
 
 def beats(a: dict[str, float], b: dict[str, float]) -> tuple[bool, int]:
@@ -157,6 +157,7 @@ def judge(before: dict[str, float], after: dict[str, float], setups: dict[str, s
     per_setup = {s: float(np.mean([gain[n] for n in names if setups[n] == s]))
                  for s in dict.fromkeys(setups[n] for n in names)}
     worst = min(per_setup, key=lambda s: per_setup[s])
+    more: int | None = None
     if not np.all(np.isfinite(list(gain.values()))):  # never passed by the loop: refit.finite
         reason = "a test's gain is not a number"
     elif mean < margin:
@@ -168,12 +169,10 @@ def judge(before: dict[str, float], after: dict[str, float], setups: dict[str, s
         reason = (f"gains {mean:.2f} points but the 95 % interval reaches "
                   f"{mean - half:+.2f} and only {improved} of {len(names)} tests improve: not "
                   f"above test-to-test scatter{words}")
-        return Evidence(mean, (mean - half, mean + half), float(np.mean(inside)), gain,
-                        improved, len(names), sign_p, per_setup, False, reason, more)
     else:
         reason = ""
     return Evidence(mean, (mean - half, mean + half), float(np.mean(inside)), gain, improved,
-                    len(names), sign_p, per_setup, not reason, reason)
+                    len(names), sign_p, per_setup, not reason, reason, more)
 
 
 @dataclass
