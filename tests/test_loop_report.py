@@ -25,6 +25,7 @@ from observer_node.loop.report import (
     RankedCandidate,
     RunnerUp,
     SensorEffect,
+    SetupValidation,
     TriedCandidate,
 )
 
@@ -92,7 +93,14 @@ def test_an_accepted_effect_reads_back_from_report_json_unchanged():
 def test_possible_sensor_and_unexplained_entries_keep_their_keys():
     rule = _rule()
     p = PossibleEffect("input_delay", "all", ["belt_unloading"], rule, "gains 0.43 < 1 points")
-    assert list(p.as_dict()) == ["kind", "scope", "after", "evidence", "why_not"]
+    assert list(p.as_dict()) == ["kind", "scope", "after", "evidence", "why_not",
+                                 "validation_by_setup"]
+    assert p.as_dict()["validation_by_setup"] is None
+    refused = PossibleEffect("chest_stiffening", "SLED", [], rule, "the validation tests ...",
+                             [SetupValidation("FULL", 3, 88.14, 80.21, False, False)])
+    assert refused.as_dict()["validation_by_setup"] == [
+        {"setup": "FULL", "tests": 3, "before": 88.14, "after": 80.21, "judged": False,
+         "in_scope": False}]
     assert list(p.as_dict()["evidence"]) == RULE_KEYS
     s = SensorEffect("cd", [], "a static function of CD", rule).as_dict()
     assert list(s) == ["output", "family", "after", "looks_like", "evidence", "confidence"]

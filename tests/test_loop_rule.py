@@ -14,6 +14,7 @@ from scipy import stats
 from observer_node.data.filters import cfc_filter
 from observer_node.data.setups import assign_setups
 from observer_node.ident.dataset import make_dataset
+from observer_node.ident.metrics import Fits, FitTable, OutputFits
 from observer_node.loop import evidence
 from observer_node.loop.diagnosis import shape_gains, unexplained, without_static
 from observer_node.loop.evidence import MAX_TESTS, Evidence, judge, needed_tests
@@ -488,6 +489,44 @@ def test_an_effect_the_validation_tests_do_not_confirm_is_refused():
     assert "88.5 to 87.5" in (validation_refusal(88.5, 87.5) or "")
     assert validation_refusal(88.5, 88.3) is None  # refit noise
     assert validation_refusal(88.5, 92.0) is None
+
+
+def _val_table(fits: dict[str, tuple[float, float]]) -> FitTable:
+    tests = {n: OutputFits(cr, cd) for n, (cr, cd) in fits.items()}
+    return FitTable(Fits.of(float(np.mean([t.cr for t in tests.values()])),
+                            float(np.mean([t.cd for t in tests.values()]))), tests)
+
+
+def test_a_validation_refusal_says_on_which_setups_the_fit_fell():
+    from observer_node.loop.verdicts import validation_by_setup, validation_refusal
+    setup_of = {"FULL_002": "FULL", "FULL_004": "FULL", "R16_002": "R16", "R16_004": "R16"}
+    before = _val_table({"FULL_002": (90, 86), "FULL_004": (88, 84),
+                         "R16_002": (92, 88), "R16_004": (91, 87)})
+    after = _val_table({"FULL_002": (85, 80), "FULL_004": (84, 78),
+                        "R16_002": (92, 88.2), "R16_004": (91, 87)})
+    # an effect on SLED alone; FULL has no estimation test, R16 is judged
+    rows = validation_by_setup(before, after, setup_of, ["SLED"], {"FULL"})
+    assert [(v.setup, v.tests, v.judged, v.in_scope) for v in rows] == [
+        ("FULL", 2, False, False), ("R16", 2, True, False)]  # the largest fall first
+    assert rows[0].before == pytest.approx(87.0) and rows[0].after == pytest.approx(81.75)
+    assert rows[1].after - rows[1].before == pytest.approx(0.05)
+    why = validation_refusal(before.fit.total, after.fit.total, rows) or ""
+    assert why.startswith("the validation tests do not confirm it: their fit_TOT falls from "
+                          "88.2 to 85.7 %, per setup FULL 87.0 -> 81.8 % (2 tests, not judged),"
+                          " R16 89.5 -> 89.5 % (2 tests)")
+    assert "all of the fall on FULL, which no estimation test judges" in why
+    assert "; " not in why and "|" not in why  # joined with "; " in a round's decision
+    # a fall on a judged setup, or where the effect acts, is the effect's own: no such words
+    on_judged = validation_by_setup(before, after, setup_of, ["SLED"], set())
+    assert "all of the fall" not in (validation_refusal(88.2, 85.6, on_judged) or "")
+    acts = validation_by_setup(before, after, setup_of, None, {"FULL"})
+    assert all(v.in_scope for v in acts)
+    assert "the effect acts there" in (validation_refusal(88.2, 85.6, acts) or "")
+    assert "all of the fall" not in (validation_refusal(88.2, 85.6, acts) or "")
+    # a run-away validation test scores -1000 %, as the total does
+    nan = _val_table({**{n: (90, 86) for n in setup_of}, "R16_004": (float("nan"), 80)})
+    worst = validation_by_setup(before, nan, setup_of, ["SLED"], {"FULL"})[0]
+    assert worst.setup == "R16" and worst.after == pytest.approx((88 - 1000) / 2)
 
 
 @pytest.mark.parametrize("setups", [["R16"] * 3 + ["SLED"] * 3,

@@ -174,6 +174,25 @@ class ModelFit:
 
 
 @dataclass(frozen=True)
+class SetupValidation:
+    """One setup's validation tests with an effect the validation tests refused and without
+    it: where their fit fell, and whether the estimation tests judge the setup and the effect
+    acts there (a fall on a setup neither holds says little of the effect itself)."""
+
+    setup: str
+    tests: int
+    before: float  # their mean fit_TOT [%] without the effect
+    after: float  # and with it
+    judged: bool  # estimation tests enough to judge an effect there
+    in_scope: bool  # the effect acts on the setup
+
+    def as_dict(self) -> dict[str, Any]:
+        return {"setup": self.setup, "tests": self.tests, "before": round(self.before, 2),
+                "after": round(self.after, 2), "judged": self.judged,
+                "in_scope": self.in_scope}
+
+
+@dataclass(frozen=True)
 class PossibleEffect:
     """A candidate that gained something but failed the rule: reported, never a finding."""
 
@@ -182,10 +201,15 @@ class PossibleEffect:
     after: list[str]  # the effects the model had when it was tried
     evidence: Evidence
     why_not: str
+    # refused by the validation tests: their fit per setup, without and with it
+    validation_by_setup: list[SetupValidation] | None = None
 
     def as_dict(self) -> dict[str, Any]:
+        by_setup = self.validation_by_setup
         return {"kind": self.kind, "scope": self.scope, "after": self.after,
-                "evidence": self.evidence.as_dict(), "why_not": self.why_not}
+                "evidence": self.evidence.as_dict(), "why_not": self.why_not,
+                "validation_by_setup": (None if by_setup is None
+                                        else [v.as_dict() for v in by_setup])}
 
 
 @dataclass(frozen=True)

@@ -52,6 +52,7 @@ from .verdicts import (
     tie_verdict,
     untold,
     untold_from_sensor,
+    validation_by_setup,
     validation_refusal,
 )
 
@@ -510,11 +511,15 @@ def _checked(c: Context, st: State, step: LoopStep, pick: _Pick, fit: Refit
                          else f"{best.kind}: {why}: not accepted")
         return None
     val_fit = score(fit.base, fit.effects, c.val)
-    refused = (at_the_edge(best.kind, fit.effects[-1]["parameters"], c.rate_hz)
-               or validation_refusal(st.val_before, val_fit.fit.total))
+    val_now = score(st.base, st.effects, c.val)
+    by_setup = validation_by_setup(val_now, val_fit, dict(zip(c.val.names, c.val.setups,
+                                                              strict=True)),
+                                   best.setups, c.thin)
+    edge = at_the_edge(best.kind, fit.effects[-1]["parameters"], c.rate_hz)
+    val_why = validation_refusal(st.val_before, val_fit.fit.total, by_setup)
+    refused = edge or val_why
     if tie_side:
-        refused = refused or carry_refusal(Fits(**fit3(score(st.base, st.effects, c.val))),
-                                           Fits(**fit3(val_fit)))
+        refused = refused or carry_refusal(Fits(**fit3(val_now)), Fits(**fit3(val_fit)))
         if refused:
             step.decision += f"; {best.kind} {pick.not_added}: {refused}"
             return None
@@ -522,7 +527,8 @@ def _checked(c: Context, st: State, step: LoopStep, pick: _Pick, fit: Refit
             st.named_model = (st.base, st.effects)
     if refused:
         st.possible.append(PossibleEffect(best.kind, scope_label(best.setups),
-                                          [e["kind"] for e in st.effects], pick.ev, refused))
+                                          [e["kind"] for e in st.effects], pick.ev, refused,
+                                          None if edge else by_setup))
         step.decision = (f"{best.kind} on {scope_label(best.setups)} passes the rule on "
                          f"the estimation tests, but {refused}: not accepted")
         return None

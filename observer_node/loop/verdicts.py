@@ -10,11 +10,12 @@ from collections.abc import Set as AbstractSet
 
 import numpy as np
 
-from ..ident.metrics import Fits
+from ..ident.metrics import Fits, FitTable
 from ..model.effects import EFFECTS
 from .analysis import DELAY_MAX_S, Candidate, scope_label
 from .evidence import Evidence, PastTheTie, beats
-from .report import OtherScope, RunnerUp
+from .refit import finite
+from .report import OtherScope, RunnerUp, SetupValidation
 
 
 def defended_scope(passing: list[tuple[float, Candidate, Evidence]],
@@ -184,15 +185,57 @@ def at_the_edge(kind: str, params: dict, rate_hz: float = 1000.0) -> str | None:
 VALIDATION_TOLERANCE = 0.3  # fit points: as SETUP_TOLERANCE, refit noise
 
 
-def validation_refusal(fit_before: float, fit_after: float) -> str | None:
+def validation_refusal(fit_before: float, fit_after: float,
+                       by_setup: list[SetupValidation] | None = None) -> str | None:
     """Why an effect that passed the rule on the estimation tests is still not named: the
     validation tests' fit_TOT [%] falls with it. They never choose an effect, they can only
     refuse one: a finding about the dummy must hold on the tests it was not fitted to (on
-    every benchmark set before 2026-11-25, only wrong effects lowered it)."""
+    every benchmark set before 2026-11-25, only wrong effects lowered it). ``by_setup``
+    (:func:`validation_by_setup`) says where it fell."""
     if fit_after >= fit_before - VALIDATION_TOLERANCE:
         return None
-    return (f"the validation tests do not confirm it: their fit_TOT falls from "
-            f"{fit_before:.1f} to {fit_after:.1f} %")
+    why = (f"the validation tests do not confirm it: their fit_TOT falls from "
+           f"{fit_before:.1f} to {fit_after:.1f} %")
+    return why if not by_setup else f"{why}, {where_it_falls(by_setup)}"
+
+
+def validation_by_setup(before: FitTable, after: FitTable, setup_of: dict[str, str],
+                        scope: list[str] | None, thin: AbstractSet[str]
+                        ) -> list[SetupValidation]:
+    """The validation tests' mean fit_TOT [%] per setup without an effect (``before``) and
+    with it (``after``), largest fall first; ``setup_of``: validation test -> its setup,
+    ``scope``: the setups the effect acts on (None: all), ``thin``: setups the estimation
+    tests do not judge. A run-away test scores -1000 %, as :func:`~.refit.score` does."""
+    rows = []
+    for s in dict.fromkeys(setup_of.values()):
+        names = [n for n, t in setup_of.items() if t == s]
+        fits = [float(np.mean([finite(t.tests[n].total) for n in names]))
+                for t in (before, after)]
+        rows.append(SetupValidation(s, len(names), fits[0], fits[1], s not in thin,
+                                    scope is None or s in scope))
+    return sorted(rows, key=lambda v: v.after - v.before)
+
+
+def where_it_falls(by_setup: list[SetupValidation]) -> str:
+    """The refusal's words on where the validation fit fell, per setup; and, when it fell
+    only on setups the estimation tests do not judge and the effect does not act on, that
+    their tests cannot tell the effect from a mimic (sets T, W, AA: right effects refused so;
+    set X: a mimic refused so)."""
+    def label(v: SetupValidation) -> str:
+        notes = [f"{v.tests} test{'s' if v.tests != 1 else ''}",
+                 *(["not judged"] if not v.judged else []),
+                 *(["the effect acts there"] if v.in_scope else [])]
+        return f"{v.setup} {v.before:.1f} -> {v.after:.1f} % ({', '.join(notes)})"
+
+    parts = ["per setup " + ", ".join(label(v) for v in by_setup)]
+    fell = [v for v in by_setup if v.after < v.before - VALIDATION_TOLERANCE]
+    if fell and all(not v.judged and not v.in_scope for v in fell):
+        names = " and ".join(v.setup for v in fell)
+        parts.append(f"all of the fall on {names}, which no estimation test judges and the "
+                     f"effect does not act on: {names} may have the effect too, which the "
+                     f"shared base parameters stood in for there, or it is a mimic: "
+                     f"estimation tests of {names} would tell")
+    return ", ".join(parts)
 
 
 def carry_refusal(before: Fits, after: Fits) -> str | None:
