@@ -112,9 +112,10 @@ def test_only_a_gain_failing_on_the_scatter_gets_a_number_of_tests():
         assert ev.tests_to_defend is None
 
 
-def test_a_gain_that_is_not_a_number_is_never_accepted():
-    ev = judge(*_cv([2.0, np.nan, 3.0, 1.0, 4.0, 5.0]), SETUPS, None, 1.0)
-    assert not ev.accepted and ev.reason == "a test's gain is not a number"
+@pytest.mark.parametrize("bad", [np.nan, np.inf, -np.inf])
+def test_a_gain_that_is_not_finite_is_never_accepted(bad):
+    ev = judge(*_cv([2.0, bad, 3.0, 1.0, 4.0, 5.0]), SETUPS, None, 1.0)
+    assert not ev.accepted and ev.reason == "a test's gain is not finite (a fit that ran away)"
 
 
 def test_a_gain_that_lowers_one_setup_is_refused():

@@ -159,7 +159,7 @@ def judge(before: dict[str, float], after: dict[str, float], setups: dict[str, s
     worst = min(per_setup, key=lambda s: per_setup[s])
     more: int | None = None
     if not np.all(np.isfinite(list(gain.values()))):  # never passed by the loop: refit.finite
-        reason = "a test's gain is not a number"
+        reason = "a test's gain is not finite (a fit that ran away)"
     elif mean < margin:
         reason = f"gains {mean:.2f} < {margin:g} points"
     elif per_setup[worst] < -SETUP_TOLERANCE:
