@@ -348,6 +348,11 @@ def test_a_tie_the_validation_tests_do_not_confirm_is_not_carried(tmp_path, twin
     assert r.effects == [] and r.carried == [], r.history
     tied = [p for p in r.possible if "cannot tell it from" in p.why_not]
     assert {p.kind for p in tied} == {"chest_stiffening", twin}, r.possible
+    # both sides carry the same planning figure, in report.json and in their words
+    (n_tell,) = {p.tests_to_tell_apart for p in tied}
+    for p in tied:
+        assert (f"(about {n_tell} judged estimation tests" in p.why_not if n_tell
+                else "(about " not in p.why_not.split("cannot tell it from")[1])
     assert not any("carried" in p.why_not for p in r.possible)
     assert " is not carried: the validation tests " in r.history[-1].decision
     assert ModelFile.load(tmp_path / "model.json").effects == []

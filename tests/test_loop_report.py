@@ -94,8 +94,8 @@ def test_possible_sensor_and_unexplained_entries_keep_their_keys():
     rule = _rule()
     p = PossibleEffect("input_delay", "all", ["belt_unloading"], rule, "gains 0.43 < 1 points")
     assert list(p.as_dict()) == ["kind", "scope", "after", "evidence", "why_not",
-                                 "validation_by_setup"]
-    assert p.as_dict()["validation_by_setup"] is None
+                                 "validation_by_setup", "tests_to_tell_apart"]
+    assert p.as_dict()["validation_by_setup"] is p.as_dict()["tests_to_tell_apart"] is None
     refused = PossibleEffect("chest_stiffening", "SLED", [], rule, "the validation tests ...",
                              [SetupValidation("FULL", 3, 88.14, 80.21, False, False)])
     assert refused.as_dict()["validation_by_setup"] == [

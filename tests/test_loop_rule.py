@@ -98,7 +98,8 @@ def test_only_a_gain_failing_on_the_scatter_gets_a_number_of_tests():
     assert hopeless.tests_to_defend is None
     assert f"even {MAX_TESTS} judged estimation tests" in hopeless.reason
     # nothing to say: one test, no spread, a mean not above zero, a gain not finite
-    for d in ([3.0], [2.0, 2.0, 2.0], [-1.0, -2.0], [2.0, np.nan, 3.0]):
+    # (equal gains of 0.4 summed in floats spread by 7e-17: rounding, not scatter)
+    for d in ([3.0], [2.0, 2.0, 2.0], [0.4, 0.4, 0.4], [-1.0, -2.0], [2.0, np.nan, 3.0]):
         assert needed_tests(np.array(d)) is None
     one = {"T0": "A"}
     alone = judge({"T0": 90.0}, {"T0": 95.0}, one, None, 1.0)
@@ -589,6 +590,21 @@ def test_an_effect_the_data_cannot_tell_from_a_passing_rival_is_not_named():
     assert untold("airbag_contact", dataclasses.replace(tie, told_apart=True), 6) is None
     assert untold("airbag_contact", dataclasses.replace(tie, passes_rule=False), 6) is None
     assert untold("airbag_contact", None, 6) is None
+
+
+def test_a_tie_says_how_many_tests_would_tell_its_sides_apart():
+    d = np.array([0.9, -0.4, 1.6, 0.2, 1.1, -0.2])  # the first side fits better on 4 of 6
+    n, words = evidence.tell_apart(d)
+    assert n == needed_tests(d) and n is not None and n > len(d)
+    assert words == (f" (about {n} judged estimation tests in all, 6 now, differing as these "
+                     "did, would put the 95 % interval of the difference above zero 4 times "
+                     "in 5)")
+    # two sides that predict alike on these tests: more of them would not tell
+    n, words = evidence.tell_apart(np.array([0.05, -0.9, 1.0, -0.8, 0.9, -0.2]))
+    assert n is None and "more tests like these would not tell the two apart" in words
+    for nothing in ([0.5], [0.4, 0.4, 0.4], [-0.5, 0.1, -0.2], [np.nan, 1.0, 2.0]):
+        assert evidence.tell_apart(np.array(nothing)) == (None, "")
+    assert "; " not in words and "|" not in words  # a reason is joined with "; "
 
 
 def _fits(gains: list[float], base: float = 90.0) -> dict[str, float]:

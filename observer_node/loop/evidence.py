@@ -117,9 +117,13 @@ def needed_tests(d: np.ndarray) -> int | None:
 
 
 def _estimable(d: np.ndarray) -> bool:
-    # a gain past 100 points is a run-away fit's stand-in score (refit.finite), not a gain
-    return (len(d) >= 2 and bool(np.all(np.isfinite(d))) and bool(np.all(np.abs(d) <= 100))
-            and float(np.mean(d)) > 0 and float(np.std(d, ddof=1)) > 0)
+    # a gain past 100 points is a run-away fit's stand-in score (refit.finite), not a gain;
+    # a spread of rounding alone (equal gains summed in floats) is none: scipy's non-central
+    # t gives NaN past a non-centrality of about 1e12
+    if len(d) < 2 or not np.all(np.isfinite(d)) or not np.all(np.abs(d) <= 100):
+        return False
+    mean, sd = float(np.mean(d)), float(np.std(d, ddof=1))
+    return mean > 0 and sd > 1e-9 * max(1.0, mean)
 
 
 def _more_tests(d: np.ndarray, margin: float) -> tuple[int | None, str]:
@@ -135,6 +139,23 @@ def _more_tests(d: np.ndarray, margin: float) -> tuple[int | None, str]:
     return None, (f" (even {MAX_TESTS} judged estimation tests gaining and scattering as "
                   "these did would put the 95 % interval above zero less than 4 times in "
                   f"5, {aside})")
+
+
+def tell_apart(d: np.ndarray) -> tuple[int | None, str]:
+    """For a tie: :func:`needed_tests` on the paired differences [fit points] between its
+    two sides' per-test cross-validated fits (the side ranked first minus the other), and
+    its words for the reason ("" when nothing can be said). Past ``MAX_TESTS`` the words say
+    that more tests like these would not tell the two apart: the two predict alike on them."""
+    if not _estimable(d):
+        return None, ""
+    n = needed_tests(d)
+    if n is not None:
+        return n, (f" (about {n} judged estimation tests in all, {len(d)} now, differing as "
+                   "these did, would put the 95 % interval of the difference above zero 4 "
+                   "times in 5)")
+    return None, (f" (even {MAX_TESTS} judged estimation tests differing as these did would "
+                  "put the 95 % interval of the difference above zero less than 4 times in 5: "
+                  "more tests like these would not tell the two apart)")
 
 
 def beats(a: dict[str, float], b: dict[str, float]) -> tuple[bool, int]:

@@ -203,13 +203,17 @@ class PossibleEffect:
     why_not: str
     # refused by the validation tests: their fit per setup, without and with it
     validation_by_setup: list[SetupValidation] | None = None
+    # a side of a tie: the judged estimation tests that would tell the two apart, a planning
+    # figure (evidence.tell_apart; None: past its ceiling, or nothing can be said)
+    tests_to_tell_apart: int | None = None
 
     def as_dict(self) -> dict[str, Any]:
         by_setup = self.validation_by_setup
         return {"kind": self.kind, "scope": self.scope, "after": self.after,
                 "evidence": self.evidence.as_dict(), "why_not": self.why_not,
                 "validation_by_setup": (None if by_setup is None
-                                        else [v.as_dict() for v in by_setup])}
+                                        else [v.as_dict() for v in by_setup]),
+                "tests_to_tell_apart": self.tests_to_tell_apart}
 
 
 @dataclass(frozen=True)

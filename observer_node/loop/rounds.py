@@ -29,7 +29,15 @@ from .analysis import (
 )
 from .cluster import Runner
 from .diagnosis import SHAPES, Unexplained, sensor_fold_scores, without_static
-from .evidence import POSSIBLE_MIN, Evidence, PastTheTie, beats, judge, past_the_tie
+from .evidence import (
+    POSSIBLE_MIN,
+    Evidence,
+    PastTheTie,
+    beats,
+    judge,
+    past_the_tie,
+    tell_apart,
+)
 from .refit import Refit, finite, fold_scores, fold_scores_by_output, model, refit, score
 from .report import (
     AcceptedEffect,
@@ -280,13 +288,15 @@ def _picked(c: Context, st: State, step: LoopStep, tried: list[Tried], passing: 
         if not past.named:
             # two explanations the data defend equally are not a finding: both possible
             kinds = [e["kind"] for e in st.effects]
+            a, b = on_judged[id(best)], on_judged[id(rival[1])]
+            n_tell, more = tell_apart(np.array([a[n] - b[n] for n in a if n in b], float))
             st.possible += [
                 PossibleEffect(best.kind, scope_label(best.setups), kinds, ev_best,
-                               f"{tie}; {tie_note}"),
+                               f"{tie}{more}; {tie_note}", tests_to_tell_apart=n_tell),
                 PossibleEffect(runner_up.kind, runner_up.scope, kinds, rival[2],
                                f"the data cannot tell it from {best.kind} on "
-                               f"{scope_label(best.setups)}, which passes the rule too; "
-                               f"{tie_note}")]
+                               f"{scope_label(best.setups)}, which passes the rule too{more}; "
+                               f"{tie_note}", tests_to_tell_apart=n_tell)]
             step.decision = (f"{best.kind} on {scope_label(best.setups)} passes the rule, "
                              f"but {tie}; {tie_note}: neither is named")
             # Neither is a finding, but either predicts CR and CD better than none: the
