@@ -10,9 +10,9 @@ Per case the loop runs blind at its defaults on 6 estimation + 6 validation test
 ``--est-times K``, K times the estimation tests, every crash drawn from another seed). Printed:
 
 - what it named (kind@scope, scopes as the simulator's setups), what passed the rule but the
-  validation tests refused ("refused:"; "fell on unjudged rigs" when all of their fall was on
-  setups no estimation test judges and the effect does not act on, ``refused_unjudged`` in
-  the JSON), the pair that passed the rule but the data cannot
+  validation tests refused ("refused:"; "fell on unjudged rigs" when their fit fell on
+  setups no estimation test judges and the effect does not act on, the rest holding,
+  ``refused_unjudged`` in the JSON), the pair that passed the rule but the data cannot
   tell apart, so neither is named ("tied:"), the side of it carried in the model for its
   fit ("carried:"; not a name, the model's better observer), the tests it flagged, and
   whether that is the expected verdict (for the transducer case: nothing physical named and
@@ -127,11 +127,13 @@ def run_case(case: Case, sets: Path, work: Path, workers: int | None) -> dict:
     # passed the rule, refused because the validation tests do not confirm it
     refused = sorted(f"{p.kind}@{_sim_scope([] if p.scope == 'all' else p.scope.split('+'), r)}"
                      for p in r.possible if "do not confirm" in p.why_not)
-    # of those, the ones whose validation fit fell only on setups no estimation test judges
-    # and the effect does not act on (the loop's report: "all of the fall on ...")
+    # of those, the ones whose validation fit fell on setups no estimation test judges and
+    # the effect does not act on, the rest holding (report: "..., which no estimation test
+    # judges")
     refused_unjudged = sorted(
         f"{p.kind}@{_sim_scope([] if p.scope == 'all' else p.scope.split('+'), r)}"
-        for p in r.possible if "do not confirm" in p.why_not and "all of the fall" in p.why_not)
+        for p in r.possible
+        if "do not confirm" in p.why_not and "which no estimation test judges" in p.why_not)
     expected = sorted(f"{k}@{'+'.join(sorted(s.split('+')))}" for k, s in case.expect)
     # in the model for its fit, not named (the better side of a tie)
     carried = sorted(f"{e.kind}@{_sim_scope(e.setups or [], r)}" for e in r.carried)

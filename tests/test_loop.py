@@ -469,3 +469,38 @@ def test_a_tie_side_told_apart_but_refused_leaves_nothing_carried(tmp_path, twin
     assert r.effects == [] and r.carried == [], r.history
     assert f"; {seen[0]} is not named: the validation tests " in r.history[-1].decision
     assert ModelFile.load(tmp_path / "model.json").effects == []
+
+
+def test_an_effect_the_validation_tests_refuse_says_where_their_fit_fell(tmp_path, monkeypatch):
+    # The slack belt passes the rule on R16 (raising the validation fit by some 30 points);
+    # the validation tests are made to fall 40 points on every test with any effect in the
+    # model: refused, listed as possible with the fall per setup (R16, judged, the effect
+    # acting there), and no setup blamed in its place.
+    from observer_node.loop import rounds
+
+    real = rounds.score
+
+    def score(base, effects, data):
+        t = real(base, effects, data)
+        if effects and data.names[0].startswith("VAL"):
+            t = dataclasses.replace(t, fit=Fits.of(t.fit.cr - 40.0, t.fit.cd - 40.0),
+                                    tests={n: OutputFits(v.cr - 40.0, v.cd - 40.0)
+                                           for n, v in t.tests.items()})
+        return t
+
+    monkeypatch.setattr(rounds, "score", score)
+    r = _run({"belt_unloading": 1.0}, "R16", tmp_path)
+    assert r.effects == [], r.history
+    (p,) = [p for p in r.possible if "do not confirm" in p.why_not]
+    (v,) = p.validation_by_setup or []
+    assert (v.setup, v.tests, v.judged, v.in_scope, v.ran_away) == (r.setups[0].name, 6, True,
+                                                                     True, False)
+    # without the effect: the grey-box's validation fit; with it: lower (not the rise)
+    assert v.before == pytest.approx(r.baseline.fit.total, abs=0.01)
+    assert v.after < v.before - 0.3
+    words = f"per setup {v.setup} {v.before:.1f} -> {v.after:.1f} % (6 tests, the effect acts"
+    assert f"{words} there)" in p.why_not
+    assert "which no estimation test judges" not in p.why_not
+    saved = json.loads((tmp_path / "report.json").read_text())["possible"]
+    assert [x["validation_by_setup"] for x in saved if "do not confirm" in x["why_not"]] == [
+        [v.as_dict()]]

@@ -100,7 +100,7 @@ def test_possible_sensor_and_unexplained_entries_keep_their_keys():
                              [SetupValidation("FULL", 3, 88.14, 80.21, False, False)])
     assert refused.as_dict()["validation_by_setup"] == [
         {"setup": "FULL", "tests": 3, "before": 88.14, "after": 80.21, "judged": False,
-         "in_scope": False}]
+         "in_scope": False, "ran_away": False}]
     assert list(p.as_dict()["evidence"]) == RULE_KEYS
     s = SensorEffect("cd", [], "a static function of CD", rule).as_dict()
     assert list(s) == ["output", "family", "after", "looks_like", "evidence", "confidence"]

@@ -185,11 +185,12 @@ class SetupValidation:
     after: float  # and with it
     judged: bool  # estimation tests enough to judge an effect there
     in_scope: bool  # the effect acts on the setup
+    ran_away: bool = False  # a test's fit was not finite (counted -1000 % in the means)
 
     def as_dict(self) -> dict[str, Any]:
         return {"setup": self.setup, "tests": self.tests, "before": round(self.before, 2),
                 "after": round(self.after, 2), "judged": self.judged,
-                "in_scope": self.in_scope}
+                "in_scope": self.in_scope, "ran_away": self.ran_away}
 
 
 @dataclass(frozen=True)
