@@ -3809,8 +3809,9 @@ def test_sets_before_are_names_not_letters() -> None:
     assert heldout_sets.before("c") == ("a", "b") and heldout_sets.before("a") == ()
     assert after_aa == heldout_sets.SETS[:27] and after_aa.count("a") == 1
     assert _cases_of(after_aa)[-len(SET_AA):] == SET_AA
-    with pytest.raises(ValueError, match="unknown case set 'ab'"):
-        heldout_sets.before("ab")
+    assert heldout_sets.before("ab") == after_aa  # set AB's earlier sets: A-AA, by name
+    with pytest.raises(ValueError, match="unknown case set 'ac'"):
+        heldout_sets.before("ac")
     # a draw after AA takes AA's pairings; at this seed, without AA one single draws one of them
     aa = {_pairing(c) for c in SET_AA}
 
