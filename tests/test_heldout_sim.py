@@ -17,6 +17,7 @@ import pytest
 from benchmarks.heldout import (
     cases,
     draw_aa,
+    draw_ab,
     draw_v,
     draw_w,
     draw_x,
@@ -30,6 +31,8 @@ from benchmarks.heldout import sets as heldout_sets
 from benchmarks.heldout.cases import BY_NAME
 from benchmarks.heldout.cases_aa import BY_NAME_AA, ONE_PHYSICAL_AA
 from benchmarks.heldout.cases_aa import SET_AA as SET_AA_FILE
+from benchmarks.heldout.cases_ab import BY_NAME_AB, ONE_PHYSICAL_AB
+from benchmarks.heldout.cases_ab import SET_AB as SET_AB_FILE
 from benchmarks.heldout.cases_p import BY_NAME_P
 from benchmarks.heldout.cases_q import BY_NAME_Q
 from benchmarks.heldout.cases_r import BY_NAME_R
@@ -3691,7 +3694,7 @@ def _follows_a_reusing_draw(draw_mod: ModuleType, seed: int, earlier: tuple[str,
                             redrawn: list[tuple[str, int]], before: list[cases.Case],
                             two_case: cases.Case) -> None:
     """A set drawn by set W's process from ``seed`` after the sets ``earlier``, its two-effect
-    case reusing a pairing those sets ran (sets Z and AA): the cases follow the draw, and the
+    case reusing a pairing those sets ran (sets Z, AA and AB): the cases follow the draw, and the
     reused pairing is one the rules allow that no free pairing could replace."""
     d = draw_mod.draw(seed)
     assert d == draw_mod.draw()  # reproducible from its seed
@@ -3809,8 +3812,9 @@ def test_sets_before_are_names_not_letters() -> None:
     assert heldout_sets.before("c") == ("a", "b") and heldout_sets.before("a") == ()
     assert after_aa == heldout_sets.SETS[:27] and after_aa.count("a") == 1
     assert _cases_of(after_aa)[-len(SET_AA):] == SET_AA
-    with pytest.raises(ValueError, match="unknown case set 'ab'"):
-        heldout_sets.before("ab")
+    assert heldout_sets.before("ab") == after_aa  # set AB's earlier sets: A-AA, by name
+    with pytest.raises(ValueError, match="unknown case set 'ac'"):
+        heldout_sets.before("ac")
     # a draw after AA takes AA's pairings; at this seed, without AA one single draws one of them
     aa = {_pairing(c) for c in SET_AA}
 
@@ -3907,6 +3911,119 @@ def test_set_aa_cr_zero_shift_steps_cr_only(set_aa: Path) -> None:
 
 def test_set_aa_has_no_run_aways(set_aa: Path) -> None:
     _no_run_aways(SET_AA, set_aa)
+
+
+# ------------------------------------------------------------------ set AB (cases_ab.py)
+
+SET_AB = heldout_sets.case_set("ab")
+BEFORE_AB = _cases_of(heldout_sets.before("ab"))
+# the broken test, the transducer error, and every physical case of one effect (its rigs moved,
+# the others untouched)
+WATCHED_AB = ("hab_broken_pulse_sync", "hab_cr_progressive", *ONE_PHYSICAL_AB)
+# the draws found impossible, drawn again by the next seeds in the order found (draw_ab.REDRAWN)
+REDRAWN_AB: list[tuple[str, int]] = [("pulse_late", 37001)]
+# the two-effect case, on an earlier set's pairing (none free for it: draw_ab's reuse rule)
+TWO_AB = "hab_two_pelvis_knee_sled_toe_r16_full"
+
+
+@pytest.fixture(scope="module")
+def set_ab(tmp_path_factory: pytest.TempPathFactory) -> Path:
+    return _generate(tmp_path_factory, "ab", WATCHED_AB)
+
+
+def test_set_ab_is_registered(tmp_path: Path) -> None:
+    """Set AB is ``cases_ab.SET_AB`` under the letters ab, for sets.select, make_sets and
+    costs, after set AA (its earlier sets A-AA, by name)."""
+    assert "ab" in heldout_sets.SETS and SET_AB == SET_AB_FILE
+    assert heldout_sets.SETS[-2:] == ("aa", "ab")
+    assert heldout_sets.before("ab") == (*"abcdefghijklmnopqrstuvwxyz", "aa")
+    assert heldout_sets.select(["hab_clean48"], "ab") == [BY_NAME_AB["hab_clean48"]]
+    assert make_sets.main(["--set", "ab", "--case", "hab_clean48", "--out", str(tmp_path)]) == 0
+    truth = json.loads((tmp_path / "hab_clean48" / "truth.json").read_text())
+    assert truth["case"]["name"] == "hab_clean48" and len(truth["tests"]) == 12
+    assert make_sets.main(["--set", "AB", "--case", "hab_clean48",
+                           "--out", str(tmp_path / "upper")]) == 0
+
+
+def test_set_ab_is_new() -> None:
+    """Set AB's names, seeds (37xxx), pairings and effect sizes (a switch's aside) are none of
+    sets A-AA's, but the two-effect case's pairing (an earlier set's, by draw_ab's rule); its
+    forms are drawn among every set's (so may be an earlier set's)."""
+    _is_new_drawn(SET_AB, BEFORE_AB, 37000, reused=(TWO_AB,))
+    assert all(c.name.startswith("hab_") for c in SET_AB)
+
+
+def test_set_ab_covers_the_general_list() -> None:
+    """Set AB as its brief asks: clean cases at 48 and 96 counts; each kind of the library a
+    loop can name, as physics, once in a case of its own; two effects of different kinds on
+    different rigs in one case; a broken estimation test; a transducer error on CR alone (as
+    drawn); a late pulse and a late BRS at delays in 1-5 ms no earlier set used on any input;
+    6 + 6 tests, every rig an estimation part holds held twice or more; an effect on some rigs
+    only rests on two estimation and two validation tests of them beside an estimation test of
+    a rig it spares."""
+    _covers_the_general_list(SET_AB, BEFORE_AB, "cr", ONE_PHYSICAL_AB, draw_ab.KINDS)
+
+
+def test_set_ab_follows_its_draw() -> None:
+    """Set AB's designer's choices are numpy's default_rng(37000)'s (``draw_ab.py``; the draws
+    found impossible drawn again by the next seeds, ``REDRAWN``), followed as drawn: each
+    kind's form, rigs, counts and mix; the two-effect case's kinds, forms, rigs, counts and mix;
+    the delays, their counts and mixes; the transducer error's output, form, counts and mix;
+    the broken test's channel, form, test, counts and mix; the clean cases' mixes. Set AA's
+    process: set W's kinds, pools and mix rules, A-AA's pairings taken, but the two-effect
+    case's: none was free for its rigs (the old rule draws it none), so it reuses one A-AA ran,
+    among those its rules allow."""
+    _follows_a_reusing_draw(draw_ab, 37000, (*"abcdefghijklmnopqrstuvwxyz", "aa"), SET_AB,
+                            ONE_PHYSICAL_AB, REDRAWN_AB, BEFORE_AB, BY_NAME_AB[TWO_AB])
+    assert _pairing(BY_NAME_AB[TWO_AB]) == ((2, 2, 2), (2, 2, 2))
+
+
+def test_set_ab_lab_side_is_as_drawn_and_unnamed() -> None:
+    """One broken estimation test, the only thing expected; one transducer error on CR on every
+    test, nothing physical named; AB's physics earlier sets' forms only."""
+    _lab_side_as_drawn(SET_AB, "cr")
+    assert {k for k in _keys(SET_AB) if physics.EFFECTS[k]} <= _keys(BEFORE_AB)
+
+
+@pytest.mark.parametrize("case", sorted(ONE_PHYSICAL_AB))
+def test_set_ab_physics_moves_its_rigs_only(set_ab: Path, case: str) -> None:
+    """Each physical case moves what its form moves on every test of its rigs (the chest's,
+    belt's, bag's and pelvis's forms CR and CD, the pulse untouched; the BRS's off-centre
+    encoder the BRS alone) and leaves the tests of a rig it spares untouched to the bit."""
+    _moves_its_rigs_only(set_ab, BY_NAME_AB[case])
+
+
+def test_set_ab_pulse_sync_shifts_the_broken_tests_pulse_only(set_ab: Path) -> None:
+    """The broken test's pulse channel runs early (set G's and set X's check): its twin's pulse
+    shifted earlier by the effect's size (to a sample), rising on the pre-crash line; its CR,
+    CD and BRS untouched; every other test untouched."""
+    c = BY_NAME_AB["hab_broken_pulse_sync"]
+    (broken,), (e,) = c.expect_broken, c.effects
+    on, off = set_ab / "on" / c.name, set_ab / "off" / c.name
+    bad, good = _channel(on, broken, "pulse"), _channel(off, broken, "pulse")
+    t = _times(len(bad))
+    k = round(e.size * physics.FS_HZ)
+    assert bad[(t > -0.004) & (t < 0)].mean() > 5  # loaded before time zero
+    assert abs(good[(t > -0.004) & (t < 0)].mean()) < 1
+    assert np.abs(bad[:-k - 50] - good[k:-50]).max() < 4  # the noise apart, the same pulse
+    for which in ("cr", "cd"):
+        assert np.array_equal(_channel(on, broken, which), _channel(off, broken, which))
+    assert np.array_equal(_brs(on, broken), _brs(off, broken))
+    _others_untouched(set_ab, c.name, broken)
+
+
+def test_set_ab_cr_progressive_over_reads_cr_only(set_ab: Path) -> None:
+    """CR over-reads by the element's square law at its peak, right at small levels (set E's
+    and set Z's check), every test; CD and the pulse untouched, the BRS too."""
+    c = BY_NAME_AB["hab_cr_progressive"]
+    assert _cr_over_reads(set_ab, c) == 12
+    on, off = set_ab / "on" / c.name, set_ab / "off" / c.name
+    for folder in sorted(on.glob("*/*")):
+        assert np.array_equal(_brs(on, folder.name), _brs(off, folder.name))
+
+
+def test_set_ab_has_no_run_aways(set_ab: Path) -> None:
+    _no_run_aways(SET_AB, set_ab)
 
 
 def test_more_tests_doubles_the_estimation_tests_only(tmp_path: Path) -> None:
