@@ -524,8 +524,8 @@ def test_a_validation_refusal_says_on_which_setups_the_fit_fell():
     assert why.startswith("the validation tests do not confirm it: their fit_TOT falls from "
                           "88.8 to 86.7 %, per setup FULL 87.0 -> 81.8 % (2 tests, not judged),"
                           " R16 90.0 -> 90.1 % (3 tests)")
-    assert (f"the fall is on FULL, {MIMIC_WORDS} (the setups judged or acted on hold within "
-            "0.3 points): FULL may have this effect too") in why
+    assert (f"the fall is on FULL, {MIMIC_WORDS} (each setup judged or acted on holds "
+            "within 0.3 points): FULL may have this effect too") in why
     assert "; " not in why and "|" not in why  # joined with "; " in a round's decision
     # the same fall with FULL judged, or with the effect acting on FULL: the effect's own
     assert MIMIC_WORDS not in _refusal({"FULL_002": (88, 82), "R16_002": (90, 90)}, ["SLED"],
@@ -544,9 +544,16 @@ def test_a_validation_refusal_blames_no_unjudged_setup_when_the_rest_fall():
     fits = {f"R16_{k:03d}": (90.0, 89.65) for k in range(10)} | {"FULL_002": (90.0, 89.5)}
     why = _refusal(fits, ["R16"], {"FULL"})[1]
     assert "do not confirm" in why and MIMIC_WORDS not in why
-    # R16 within the tolerance, pooled: the words say it holds
+    # R16 within the tolerance: the words say it holds
     fits = {f"R16_{k:03d}": (90.0, 89.75) for k in range(2)} | {"FULL_002": (90.0, 88.5)}
-    assert "hold within 0.3 points" in _refusal(fits, ["R16"], {"FULL"})[1]
+    assert "holds within 0.3 points" in _refusal(fits, ["R16"], {"FULL"})[1]
+    # set AB's lumbar path: a judged clean R16 falls 8 points, FULL (where the effect acts)
+    # rises 12, SLED (unjudged, outside) falls 11: pooled, the first two would hold; R16 does
+    # not, so SLED is not blamed
+    fits = {"R16_002": (92.3, 84.3), "FULL_002": (79.5, 91.3)} | {
+        f"SLED_{k:03d}": (85.8, 74.7) for k in range(4)}
+    why = _refusal(fits, ["FULL"], {"SLED"})[1]
+    assert "do not confirm" in why and MIMIC_WORDS not in why
     # two unjudged setups outside the scope, both falling: both named
     fits = {"FULL_002": (88, 82), "SLED_002": (88, 84), "R16_002": (90, 90.5)}
     assert "the fall is on FULL and SLED, " in _refusal(fits, ["R16"], {"FULL", "SLED"})[1]
