@@ -224,7 +224,7 @@ def _run(est_tests: list[CrashTest], val_tests: list[CrashTest], out: Path, rate
     tests0 = correlation_tests(resid0, est)
     ctx = Context(runner, est, val, scr.folds, test_setup, thin, est_setups, scopes, margin, top_k,
                   rate_hz, prog)
-    st = State(base, dict(gb.std_err), [], scr.cv_now, baseline_val.fit.total)
+    st = State(base, dict(gb.std_err), [], scr.cv_now, baseline_val)
     while len(st.accepted) < max_effects and one_round(ctx, st):
         pass
     base, effects, carried = st.base, st.effects, st.carried

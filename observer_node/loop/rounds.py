@@ -95,7 +95,7 @@ class State:
     base_se: dict[str, float]
     effects: list[dict]
     cv_now: dict[str, float]  # per test, the model's cross-validated fit_TOT [%]
-    val_before: float  # the validation tests' fit_TOT [%] with the effects named so far
+    val_now: FitTable  # the validation tests' fits with the effects named so far
     history: list[LoopStep] = field(default_factory=list)
     accepted: list[AcceptedEffect] = field(default_factory=list)
     carried: list[AcceptedEffect] = field(default_factory=list)  # one side of a tie
@@ -370,7 +370,7 @@ def _settled(c: Context, st: State, step: LoopStep, pick: _Pick, fit: Refit,
                        and p.scope == scope_label(best.setups) else p for p in st.possible]
         step.decision += (f"; {best.kind} on {scope_label(best.setups)}, the side ranked "
                           "first, is carried in the model for its fit, not named "
-                          f"(validation fit_TOT {st.val_before:.1f} -> "
+                          f"(validation fit_TOT {st.val_now.fit.total:.1f} -> "
                           f"{checked.val_fit.fit.total:.1f} %)")
         c.prog.update(f"carried {best.kind} for its fit, not named: validation fit "
                       f"{checked.val_fit.fit.total:.1f} %")
@@ -388,7 +388,7 @@ def _settled(c: Context, st: State, step: LoopStep, pick: _Pick, fit: Refit,
                     f"{best.kind} is named") if (p.kind, p.scope) == lost else p
             for p in st.possible if (p.kind, p.scope) not in (won, here)]
     st.accepted.append(entry)
-    st.val_before = checked.val_fit.fit.total
+    st.val_now = checked.val_fit
     accepted = f"accepted {best.kind} on {scope_label(best.setups)}" + (
         f" (on {pick.narrower} only it fits no better beyond the scatter)"
         if pick.narrower else "")
@@ -521,15 +521,14 @@ def _checked(c: Context, st: State, step: LoopStep, pick: _Pick, fit: Refit
                          else f"{best.kind}: {why}: not accepted")
         return None
     val_fit = score(fit.base, fit.effects, c.val)
-    val_now = score(st.base, st.effects, c.val)
-    by_setup = validation_by_setup(val_now, val_fit, dict(zip(c.val.names, c.val.setups,
-                                                              strict=True)),
+    by_setup = validation_by_setup(st.val_now, val_fit, dict(zip(c.val.names, c.val.setups,
+                                                                 strict=True)),
                                    best.setups, c.thin)
     edge = at_the_edge(best.kind, fit.effects[-1]["parameters"], c.rate_hz)
-    val_why = validation_refusal(st.val_before, val_fit.fit.total, by_setup)
+    val_why = validation_refusal(st.val_now.fit.total, val_fit.fit.total, by_setup)
     refused = edge or val_why
     if tie_side:
-        refused = refused or carry_refusal(Fits(**fit3(val_now)), Fits(**fit3(val_fit)))
+        refused = refused or carry_refusal(Fits(**fit3(st.val_now)), Fits(**fit3(val_fit)))
         if refused:
             step.decision += f"; {best.kind} {pick.not_added}: {refused}"
             return None
