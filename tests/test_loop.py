@@ -504,3 +504,64 @@ def test_an_effect_the_validation_tests_refuse_says_where_their_fit_fell(tmp_pat
     saved = json.loads((tmp_path / "report.json").read_text())["possible"]
     assert [x["validation_by_setup"] for x in saved if "do not confirm" in x["why_not"]] == [
         [v.as_dict()]]
+
+
+@pytest.fixture
+def near_twin(monkeypatch):
+    """The chest's cubic stiffening beside a near twin that hardens a little more at large
+    compression (k3 d^3 (1 + d / 1 m)): the two fit each test a little differently, so a
+    tie between them has paired differences that are not all zero."""
+    from contextlib import contextmanager
+
+    from observer_node.loop import closed_loop
+    from observer_node.model.effects import EFFECTS, registered
+
+    @contextmanager
+    def here(scheduler=None, workers=None):
+        yield _InProcess()
+
+    def force(p, k, b):
+        f = p["k3"] * k.d * k.d * k.d * (1.0 + k.d / 1.0)
+        return f, -f
+
+    monkeypatch.setattr(closed_loop, "cluster", here)
+    with registered(dataclasses.replace(EFFECTS["chest_stiffening"], kind="rib_hardening_near",
+                                        force=force, c_code=None)):
+        yield "rib_hardening_near"
+
+
+def test_a_tie_whose_sides_differ_plans_on_their_paired_differences(tmp_path, near_twin,
+                                                                    monkeypatch):
+    # The ribs harden on R16 and the stiffening ties with its near twin. The planning figure
+    # both sides carry is computed from the two sides' per-test differences on the judged
+    # estimation tests (the differences of the gains report.json gives each side), not from
+    # one side's lead, and it is the figure report.json and the words give.
+    from observer_node.loop import rounds
+
+    seen: list[np.ndarray] = []
+
+    real = rounds.tell_apart
+
+    def spy(d):
+        seen.append(np.array(d, float))
+        return real(d)
+
+    monkeypatch.setattr(rounds, "tell_apart", spy)
+    r = _run({"chest_stiffening": 1.0}, "R16", tmp_path)
+    tied = [p for p in r.possible if "cannot tell it from" in p.why_not]
+    assert r.effects == [] and {p.kind for p in tied} == {"chest_stiffening", near_twin}, \
+        r.history
+    (d,) = seen  # one tie, one figure
+    gains = {t.kind: t.evidence.test_gain_points for t in r.history[0].tried
+             if t.kind in {"chest_stiffening", near_twin}}
+    a, b = gains["chest_stiffening"], gains[near_twin]
+    assert len(d) == len(a) == 6 and np.any(np.abs(d) > 1e-4)
+    # the side named first minus the other, test by test (the figure is sign-symmetric)
+    assert np.allclose(np.abs(d), np.abs([a[n] - b[n] for n in a]), atol=1e-9)
+    n_tell, _ = real(d)
+    assert n_tell is not None and n_tell > 6
+    report = json.loads((tmp_path / "report.json").read_text())
+    assert [p["tests_to_tell_apart"] for p in report["possible"]
+            if "cannot tell it from" in p["why_not"]] == [n_tell, n_tell]
+    for p in tied:
+        assert f"(about {n_tell} judged estimation tests in all, 6 now, differing" in p.why_not
