@@ -9,9 +9,11 @@ import os
 
 R = "/work/runs"
 latest = {}
-for js in sorted(glob.glob(f"{R}/s*/*.json")):
+# the latest run of each case by the time its rows were written (not by file name)
+for js in sorted(glob.glob(f"{R}/s*/*.json"), key=os.path.getmtime):
     try:
-        rows = json.load(open(js))
+        with open(js) as f:
+            rows = json.load(f)
     except (OSError, ValueError):
         continue
     rows = rows.get("cases", []) if isinstance(rows, dict) else rows
@@ -21,14 +23,19 @@ for js in sorted(glob.glob(f"{R}/s*/*.json")):
 
 
 def folder(js):
-    base = js[:-5]
-    for d in (base + "_out", os.path.join(os.path.dirname(js), "o_" + os.path.basename(base))):
-        if os.path.isdir(d):
-            return d
-    return None
+    """The run's report folder, from the log the run wrote beside its rows."""
+    log = js[:-5] + ".log"
+    if not os.path.exists(log):
+        log = js[:-5] + "_run.log"
+    if os.path.exists(log):
+        with open(log) as f:
+            for line in f:
+                if line.startswith("loop reports in "):
+                    return line.split("loop reports in ")[1].split("/CASE/")[0]
+    return js[:-5] if os.path.isdir(js[:-5]) else None  # a rerun written without a log
 
 
-cls, untried = collections.Counter(), []
+cls, untried, missing = collections.Counter(), [], []
 for case, (js, r) in sorted(latest.items()):
     exp = set(r["expected"])
     kinds = {e.split("@")[0] for e in exp}
@@ -41,7 +48,7 @@ for case, (js, r) in sorted(latest.items()):
     elif found and not found & exp:
         k = "right kind, wrong scope"
     elif found:
-        k = "partly right"
+        k = "named the expected effect and one not there"
     elif any(t.split("@")[0] in kinds for t in r.get("tied", [])):
         k = "tie with the expected kind (carried: " + ",".join(r.get("carried") or ["-"]) + ")"
     elif any(t.split("@")[0] in kinds for t in r.get("refused", [])):
@@ -51,11 +58,14 @@ for case, (js, r) in sorted(latest.items()):
     cls[k.split(" (")[0]] += 1
     d = folder(js)
     tried = None
-    if d and os.path.exists(f"{d}/{case}/report.json"):
-        rep = json.load(open(f"{d}/{case}/report.json"))
+    if d is None or not os.path.exists(f"{d}/{case}/report.json"):
+        missing.append(case)
+    else:
+        with open(f"{d}/{case}/report.json") as f:
+            rep = json.load(f)
         tried = {t["kind"] for s in rep["history"] for t in s["tried"]}
         if kinds - tried:
             untried.append((case, sorted(kinds - tried)))
     print(f"{os.path.relpath(js, R):16} {case[:46]:46} {k}")
 print(dict(cls))
-print(f"cases: {len(latest)}; expected kind never tried: {untried}")
+print(f"cases: {len(latest)}; report not found: {missing}; expected kind never tried: {untried}")
