@@ -259,21 +259,27 @@ class _InProcess:
         return [f(*a) for a in args]
 
 
-@pytest.fixture
-def twin(monkeypatch):
-    """The library holds the chest's cubic stiffening twice, under two names: where the ribs
-    harden, the two pass the rule alike and neither adds anything beside the other, a true
-    tie. The refits run in this process, where the twin is registered."""
+def _refits_here(monkeypatch) -> None:
+    """The loop's refits run in this process, where an effect a test registers is known."""
     from contextlib import contextmanager
 
     from observer_node.loop import closed_loop
-    from observer_node.model.effects import EFFECTS, registered
 
     @contextmanager
     def here(scheduler=None, workers=None):
         yield _InProcess()
 
     monkeypatch.setattr(closed_loop, "cluster", here)
+
+
+@pytest.fixture
+def twin(monkeypatch):
+    """The library holds the chest's cubic stiffening twice, under two names: where the ribs
+    harden, the two pass the rule alike and neither adds anything beside the other, a true
+    tie. The refits run in this process, where the twin is registered."""
+    from observer_node.model.effects import EFFECTS, registered
+
+    _refits_here(monkeypatch)
     with registered(dataclasses.replace(EFFECTS["chest_stiffening"],
                                         kind="rib_hardening_twin")):
         yield "rib_hardening_twin"
@@ -511,20 +517,13 @@ def near_twin(monkeypatch):
     """The chest's cubic stiffening beside a near twin that hardens a little more at large
     compression (k3 d^3 (1 + d / 1 m)): the two fit each test a little differently, so a
     tie between them has paired differences that are not all zero."""
-    from contextlib import contextmanager
-
-    from observer_node.loop import closed_loop
     from observer_node.model.effects import EFFECTS, registered
-
-    @contextmanager
-    def here(scheduler=None, workers=None):
-        yield _InProcess()
 
     def force(p, k, b):
         f = p["k3"] * k.d * k.d * k.d * (1.0 + k.d / 1.0)
         return f, -f
 
-    monkeypatch.setattr(closed_loop, "cluster", here)
+    _refits_here(monkeypatch)
     with registered(dataclasses.replace(EFFECTS["chest_stiffening"], kind="rib_hardening_near",
                                         force=force, c_code=None)):
         yield "rib_hardening_near"
