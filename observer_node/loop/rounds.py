@@ -360,8 +360,10 @@ def _settled(c: Context, st: State, step: LoopStep, pick: _Pick, fit: Refit,
     if checked is None:
         return False
     entry = _entry(c, st, step, pick, fit, checked)
+    val_before = st.val_now.fit.total
+    # the model, its cross-validated and its validation fits move together, carried or named
     st.base, st.effects, st.base_se = fit.base, fit.effects, fit.base_std_err
-    st.cv_now = per_test[id(best)]
+    st.cv_now, st.val_now = per_test[id(best)], checked.val_fit
     if pick.carrying:
         st.carried.append(entry)
         # its line among the possible says where it went
@@ -370,7 +372,7 @@ def _settled(c: Context, st: State, step: LoopStep, pick: _Pick, fit: Refit,
                        and p.scope == scope_label(best.setups) else p for p in st.possible]
         step.decision += (f"; {best.kind} on {scope_label(best.setups)}, the side ranked "
                           "first, is carried in the model for its fit, not named "
-                          f"(validation fit_TOT {st.val_now.fit.total:.1f} -> "
+                          f"(validation fit_TOT {val_before:.1f} -> "
                           f"{checked.val_fit.fit.total:.1f} %)")
         c.prog.update(f"carried {best.kind} for its fit, not named: validation fit "
                       f"{checked.val_fit.fit.total:.1f} %")
@@ -388,7 +390,6 @@ def _settled(c: Context, st: State, step: LoopStep, pick: _Pick, fit: Refit,
                     f"{best.kind} is named") if (p.kind, p.scope) == lost else p
             for p in st.possible if (p.kind, p.scope) not in (won, here)]
     st.accepted.append(entry)
-    st.val_now = checked.val_fit
     accepted = f"accepted {best.kind} on {scope_label(best.setups)}" + (
         f" (on {pick.narrower} only it fits no better beyond the scatter)"
         if pick.narrower else "")
