@@ -51,6 +51,24 @@ def test_zip_equals_folder():
     np.testing.assert_array_equal(a.cd_mm, b.cd_mm)
 
 
+def test_a_zip_made_on_a_mac_reads_as_the_test(tmp_path: Path):
+    """macOS's Finder writes __MACOSX/._* resource forks (binary) and .DS_Store into the zips
+    it makes: they are skipped, not read as channel files."""
+    src = bundled_campaign() / "R16_001.zip"
+    mac = tmp_path / "R16_001.zip"
+    with zipfile.ZipFile(src) as z, zipfile.ZipFile(mac, "w") as out:
+        for n in z.namelist():
+            out.writestr(n, z.read(n))
+            base = n.rsplit("/", 1)
+            if not n.endswith("/"):
+                fork = f"__MACOSX/{base[0]}/._{base[1]}" if len(base) == 2 else f"__MACOSX/._{n}"
+                out.writestr(fork, b"\x00\x05\x16\x07\x00\x02\x00\x00Mac OS X")
+        out.writestr("R16_001/.DS_Store", b"\x00\x00\x00\x01Bud1")
+    a, b = read_isomme(src), read_isomme(mac)
+    np.testing.assert_array_equal(a.cd_mm, b.cd_mm)
+    np.testing.assert_array_equal(a.brs, b.brs)
+
+
 @pytest.mark.parametrize("encoding,bom,eol", [("utf-8", True, "\n"), ("cp1252", False, "\n"),
                                               ("utf-8", False, "\r\n")])
 def test_encodings_and_line_ends(r16_folder: Path, encoding: str, bom: bool, eol: str):

@@ -107,8 +107,19 @@ def parse_header(lines: list[str]) -> tuple[dict[str, str], dict[str, int], int]
     return header, where, len(lines)
 
 
+def _is_os_litter(name: str) -> bool:
+    """A file an operating system adds beside a test's own: macOS's ``__MACOSX/`` tree and
+    ``._*`` resource forks (written into zips and onto FAT/exFAT sticks), ``.DS_Store``,
+    Windows's ``Thumbs.db``. Not ISO-MME files: skipped, so a test zipped on a Mac reads."""
+    parts = name.split("/")
+    base = parts[-1]
+    return ("__MACOSX" in parts or base.startswith("._")
+            or base.lower() in (".ds_store", "thumbs.db", "desktop.ini"))
+
+
 class _Source:
-    """Files of one test, from a folder or a zip, looked up case-insensitively."""
+    """Files of one test, from a folder or a zip, looked up case-insensitively (an operating
+    system's litter beside them skipped)."""
 
     def __init__(self, path: Path):
         self.path = path
@@ -129,6 +140,7 @@ class _Source:
             ]
         else:
             raise CrashDataError(f"{path}: not an ISO-MME test folder, .mme file or .zip")
+        self.names = [n for n in self.names if not _is_os_litter(n)]
 
     def label(self, name: str) -> str:
         return f"{self.path}!{name}" if self._zip else str(self.path / name)
