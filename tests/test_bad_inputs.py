@@ -302,6 +302,31 @@ def test_bad_zip(case, tmp_path, capsys):
     assert not (tmp_path / "out").exists()
 
 
+def test_a_test_given_as_estimation_and_validation_is_refused(tmp_path, capsys):
+    """A validation test must never be fitted on: one given in both roles is refused before
+    any fit, naming the test and both roles."""
+    out = tmp_path / "out"
+    code = cli.main(["loop", "--estimate", str(DATA / "R16_001"), str(DATA / "R16_002"),
+                     "--validate", str(DATA / "R16_002"), "--out", str(out), "--quiet"])
+    _expect_one_line_error(code, capsys.readouterr().err, "R16_002 is given twice")
+    assert not out.exists()
+
+
+def test_one_crash_under_two_names_is_refused(tmp_path, capsys):
+    """A copied test renamed (another name, the same samples) would count one crash twice."""
+    copy = tmp_path / "R16_009"
+    shutil.copytree(DATA / "R16_001", copy)
+    mme = copy / "R16_001.mme"
+    mme.write_bytes(mme.read_bytes().replace(b"ref. number :R16_001", b"ref. number :R16_009"))
+    out = tmp_path / "out"
+    code = cli.main(["identify", "--model", "greybox", "--data", str(DATA / "R16_001"),
+                     str(copy), "--out", str(out / "m.json"), "--quiet"])
+    err = capsys.readouterr().err
+    _expect_one_line_error(code, err, "holds the same samples as R16_001")
+    assert str(copy) in err
+    assert not out.exists()
+
+
 # ---------------------------------------------------------------------------- recordings
 def _mcap_without_our_metadata(p: Path) -> None:
     from mcap.writer import Writer

@@ -6,7 +6,14 @@ from __future__ import annotations
 
 import argparse
 
-from ..data import BUNDLED_NAME, ChannelCodes, CrashTest, bundled_campaign, load_tests
+from ..data import (
+    BUNDLED_NAME,
+    ChannelCodes,
+    CrashTest,
+    bundled_campaign,
+    check_distinct,
+    load_tests,
+)
 from ..data.crashtest import THESIS_WINDOW_S
 
 TESTS_HELP = (f"an ISO-MME test folder, .zip or .csv, a folder of them, or "
@@ -58,5 +65,7 @@ def window(a: argparse.Namespace) -> tuple[float, float]:
 
 
 def load(a: argparse.Namespace) -> list[CrashTest]:
-    """The tests --data names, else the bundled campaign."""
-    return load_tests(a.data or [bundled_campaign()], channel_codes(a), a.counts_per_rev)
+    """The tests --data names, else the bundled campaign (each crash once)."""
+    tests = load_tests(a.data or [bundled_campaign()], channel_codes(a), a.counts_per_rev)
+    check_distinct(data=tests)
+    return tests

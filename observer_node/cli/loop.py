@@ -59,7 +59,7 @@ def add_subparser(subparsers: argparse._SubParsersAction[argparse.ArgumentParser
 
 
 def _do_loop(a: argparse.Namespace) -> int:
-    from ..data import load_tests
+    from ..data import check_distinct, load_tests
     from ..data.setups import parse_groups
     from ..loop.closed_loop import run_loop
 
@@ -68,6 +68,7 @@ def _do_loop(a: argparse.Namespace) -> int:
     codes, cpr = _data.channel_codes(a), a.counts_per_rev
     est = load_tests(a.estimate, codes, cpr)
     val = load_tests(a.validate, codes, cpr)
+    check_distinct(estimation=est, validation=val)
     r = run_loop(est, val, Path(a.out), a.rate, _data.window(a), a.margin,
                  verbose=not a.quiet, groups=parse_groups(a.group),
                  anywhere=a.allow_anywhere, scheduler=a.scheduler, workers=a.workers)

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import fnmatch
+import hashlib
 from pathlib import Path
 
 from ..units import STANDARD_GRAVITY
@@ -24,6 +25,7 @@ __all__ = [
     "CrashDataError",
     "CrashTest",
     "bundled_campaign",
+    "check_distinct",
     "find_tests",
     "load_test",
     "load_tests",
@@ -107,3 +109,35 @@ def load_tests(paths: list[str | Path], codes: ChannelCodes | None = None,
                counts_per_rev: int | None = None, require_outputs: bool = True) -> list[CrashTest]:
     """Read every crash test under ``paths`` (see :func:`find_tests`)."""
     return [load_test(p, codes, counts_per_rev, require_outputs) for p in find_tests(paths)]
+
+
+def _fingerprint(t: CrashTest) -> str:
+    """A digest of a test's recorded samples (not its name or metadata)."""
+    h = hashlib.sha1(usedforsecurity=False)
+    for a in (t.pulse_g, t.brs, t.cr_g, t.cd_mm):
+        h.update(b"-" if a is None else a.tobytes())
+    return h.hexdigest()
+
+
+def check_distinct(**roles: list[CrashTest]) -> None:
+    """Refuse the same crash twice among tests given in roles (``estimation=[...],
+    validation=[...]``): one name twice (a test in both roles, or an .mme naming itself as
+    another test), or one recording under two names (a copied file). Either would let a test
+    score the fit it was part of, or count one crash as two in the rule's scatter. Raises
+    :class:`CrashDataError` naming both files."""
+    seen_name: dict[str, tuple[str, CrashTest]] = {}
+    seen_data: dict[str, tuple[str, CrashTest]] = {}
+    for role, tests in roles.items():
+        for t in tests:
+            where = f"{t.source or t.name} ({role})"
+            if t.name in seen_name:
+                r0, t0 = seen_name[t.name]
+                raise CrashDataError(f"{where}: test {t.name} is given twice, also as "
+                                     f"{t0.source or t0.name} ({r0}): each crash once")
+            fp = _fingerprint(t)
+            if fp in seen_data:
+                r0, t0 = seen_data[fp]
+                raise CrashDataError(f"{where}: test {t.name} holds the same samples as "
+                                     f"{t0.name}, {t0.source or t0.name} ({r0}): one crash "
+                                     "under two names (a copied file?)")
+            seen_name[t.name], seen_data[fp] = (role, t), (role, t)
