@@ -20,6 +20,7 @@ from observer_node.loop.diagnosis import shape_gains, unexplained, without_stati
 from observer_node.loop.evidence import MAX_TESTS, Evidence, judge, needed_tests
 from observer_node.loop.screening import (
     judged_fits,
+    output_step_outliers,
     payout_outliers,
     polarity_outliers,
     residual_outliers,
@@ -236,6 +237,37 @@ def test_crossed_brs_files_are_found_by_the_pay_out_against_the_pulse(campaign):
     found = payout_outliers(crossed, 0.15)
     assert [(f.test, f.channel) for f in found] == [("R16_002", "brs"), ("FULL_002", "brs")]
     assert "R16 tests" in found[0].reason and "crossed" in found[1].reason
+
+
+def _late(x, ms, fs_hz):
+    k = round(ms * fs_hz / 1000.0)
+    return np.concatenate([np.full(k, x[0]), x[:-k]])
+
+
+@pytest.mark.parametrize("channel", ["cr_g", "cd_mm"])
+def test_a_chest_channel_recorded_late_is_named(campaign, channel):
+    # one channel's time base shifted by 5 ms (a trigger or export offset on that channel):
+    # CR and CD of that test are out of step as no other test of its rig is
+    tests = [dataclasses.replace(t) for t in campaign]
+    assign_setups(tests)
+    assert output_step_outliers(tests, 0.15) == []
+    t = next(x for x in tests if x.name == "FULL_002")
+    late = [_broken(x, **{channel: _late(getattr(x, channel), 5.0, x.fs_hz)}) if x is t else x
+            for x in tests]
+    found = output_step_outliers(late, 0.15)
+    assert [(f.test, f.channel) for f in found] == [("FULL_002", channel[:2])], found
+    assert "out of step" in found[0].reason and "FULL tests" in found[0].reason
+
+
+def test_a_whole_test_recorded_late_is_not_called_out_of_step(campaign):
+    # a late trigger moves every channel of the test alike: CR and CD stay in step
+    tests = [dataclasses.replace(t) for t in campaign]
+    assign_setups(tests)
+    t = next(x for x in tests if x.name == "FULL_002")
+    late = [_broken(x, **{ch: _late(getattr(x, ch), 5.0, x.fs_hz)
+                          for ch in ("pulse_g", "brs", "cr_g", "cd_mm")}) if x is t else x
+            for x in tests]
+    assert output_step_outliers(late, 0.15) == []
 
 
 def test_a_campaign_that_pays_in_more_than_out_is_not_called_reversed(campaign):

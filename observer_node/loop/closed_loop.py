@@ -70,6 +70,7 @@ from .rounds import Context, State, cross_validate, fit3, one_round, residual
 from .screening import (
     BrokenTest,
     judged_fits,
+    output_step_outliers,
     payout_outliers,
     polarity_outliers,
     residual_outliers,
@@ -134,7 +135,7 @@ def _screened(est_tests: list[CrashTest], val_tests: list[CrashTest], rate_hz: f
     # Broken channels are found on the recorded data, before anything is fitted on them.
     broken = [b for t in (*est_tests, *val_tests) for b in screen_channels(t, window_s[1])]
     flagged = {b.test for b in broken}
-    for check in (polarity_outliers, payout_outliers):
+    for check in (polarity_outliers, payout_outliers, output_step_outliers):
         broken += [b for b in check([*est_tests, *val_tests], window_s[1])
                    if b.test not in flagged]
         flagged = {b.test for b in broken}

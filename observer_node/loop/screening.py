@@ -68,6 +68,16 @@ Per test, against the other tests of the set:
   ms, the next test 10.0; crossed by hand on the bundled campaign: 0.3, the next 5.3), unless
   its own setup (three or more others) finds its lag in step. Added after held-out set J,
   whose crossed files no other check found (one was the only FULL estimation test).
+- **CR and CD out of step**: the chest's acceleration and its deflection are one motion, so
+  on one rig the time from CR's half peak to CD's (each from its value at rest) varies little:
+  on the bundled campaign it lies within 0.7 ms on every rig (CR leads by 1.2-2.2 ms). A test
+  whose CR and CD lie more than 3 ms further out of step than every one of three or more other
+  tests of its setup, and further than those lie apart, had one channel's time base shifted
+  (a trigger or an export's offset on one channel). The channel named is the one further
+  from its setup's others when read against the test's own pulse (the car's 50 mm free
+  flight, as above). A late trigger of the whole test moves both and is not this. Added after
+  a hostile user's CR recorded 10 ms late passed every check and cost the validation fit 3
+  points.
 
 Per test, after the thesis grey-box is fitted: a **residual far outside the others'**, a
 test whose fit_TOT, by the model fitted without it (leave-one-test-out), lies more than 20
@@ -110,6 +120,7 @@ FREE_FLIGHT_M = 0.05
 PAYOUT_GAP_MS = 8.0
 PAYOUT_MIN_OTHERS = 3
 PARTNER_GAP_MS = 2.0
+STEP_GAP_MS = 3.0
 OUTLIER_POINTS = 20.0
 OUTLIER_DEVIATIONS = 4.0
 
@@ -339,6 +350,63 @@ def _crossed_with(x: CrashTest, rest: np.ndarray, tests: list[CrashTest],
     return [BrokenTest(z.name, "brs", f"its spool, read against {x.name}'s pulse, pays out as "
                        f"the {x.setup} tests' do ({gap:.1f} ms from the nearest), and no other "
                        f"test's does: its BRS file and {x.name}'s are crossed")]
+
+
+def _half_peak_ms(test: CrashTest, x: np.ndarray, end_s: float) -> float:
+    """When [ms after first contact] ``x`` (from its median at rest) first reaches half its
+    largest excursion within the window; NaN without a rest or a crash to read."""
+    i0, i1 = test.index_of(0.0), test.index_of(end_s) + 1
+    rest = x[:i0]
+    y = x[i0:i1] - (float(np.median(rest)) if len(rest) else 0.0)
+    if not (len(y) and np.all(np.isfinite(y))) or np.max(np.abs(y)) == 0:
+        return float("nan")
+    return int(np.argmax(np.abs(y) >= 0.5 * np.max(np.abs(y)))) * 1000.0 / test.fs_hz
+
+
+def _flight_ms(test: CrashTest, end_s: float) -> float:
+    """When [ms after first contact] the car has flown 50 mm (the pulse integrated twice)."""
+    i0, i1 = test.index_of(0.0), test.index_of(end_s) + 1
+    dt_s = 1.0 / test.fs_hz
+    pulse_ms2 = (test.pulse_g[i0:i1] - test.pulse_bias_g()) * STANDARD_GRAVITY
+    flight_m = np.abs(np.cumsum(np.cumsum(pulse_ms2)) * dt_s * dt_s)
+    if not (len(flight_m) and np.all(np.isfinite(flight_m))) or flight_m[-1] < FREE_FLIGHT_M:
+        return float("nan")
+    return int(np.argmax(flight_m >= FREE_FLIGHT_M)) * dt_s * 1000.0
+
+
+def output_step_outliers(tests: list[CrashTest], end_s: float) -> list[BrokenTest]:
+    """Tests whose CR and CD are out of step with each other, against the other tests of
+    their setup (see the module's docstring)."""
+    setup_of = {t.name: t.setup for t in tests}
+    # per test with both outputs: (CR's half peak, CD's, the car's 50 mm free flight) [ms]
+    at: dict[str, tuple[float, float, float]] = {
+        t.name: (_half_peak_ms(t, t.cr_g, end_s), _half_peak_ms(t, t.cd_mm, end_s),
+                 _flight_ms(t, end_s))
+        for t in tests if t.cr_g is not None and t.cd_mm is not None}
+    out = []
+    for name, (cr, cd, flight) in at.items():
+        peers = np.array([v for n, v in at.items() if n != name
+                          and setup_of[n] == setup_of[name] and np.isfinite(v[0] - v[1])])
+        if not np.isfinite(cr - cd) or len(peers) < PAYOUT_MIN_OTHERS:
+            continue
+        rest = peers[:, 0] - peers[:, 1]
+        gap, spread = float(np.min(np.abs(rest - (cr - cd)))), float(np.ptp(rest))
+        if not (gap > STEP_GAP_MS and gap > spread):
+            continue
+        # which one: the output further from its setup's others, read against its own pulse
+        off = {}
+        for ch, k, own in (("cr", 0, cr), ("cd", 1, cd)):
+            lags = peers[:, k] - peers[:, 2]
+            lags = lags[np.isfinite(lags)]
+            off[ch] = (abs(own - flight - float(np.median(lags)))
+                       if len(lags) and np.isfinite(flight) else 0.0)
+        ch = max(off, key=off.__getitem__)
+        out.append(BrokenTest(
+            name, ch, f"CR reaches half its peak {cr - cd:+.1f} ms from CD's, {gap:.1f} ms from "
+            f"the nearest of the {len(rest)} other {setup_of[name]} tests (which lie within "
+            f"{spread:.1f} ms of each other): one channel's time base is shifted, "
+            f"{ch.upper()} the one out of step with its pulse by {off[ch]:.1f} ms"))
+    return out
 
 
 def _zero_shift(test: CrashTest, end_s: float) -> BrokenTest | None:
