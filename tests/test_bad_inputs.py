@@ -216,6 +216,12 @@ def _truncate(rel: str, keep: int):
     return f
 
 
+def _backup(d: Path, rel: str) -> None:
+    """An older copy of a channel kept in a subfolder (the reader must not pick one)."""
+    (d / "Channel" / "OLD").mkdir()
+    shutil.copy(d / rel, d / "Channel" / "OLD" / Path(rel).name)
+
+
 CH1, CH2 = "Channel/R16_001.001", "Channel/R16_001.002"
 ISO_CASES: dict[str, tuple[Callable[[Path], None], str]] = {
     "interval NaN": (_edit_key(CH1, "Sampling interval", "NaN"), "Sampling interval"),
@@ -238,6 +244,8 @@ ISO_CASES: dict[str, tuple[Callable[[Path], None], str]] = {
     "no .mme": (lambda d: (d / "R16_001.mme").unlink(), "R16_001"),
     "unit unknown": (_edit_key(CH1, "Unit", "furlong"), "Unit"),
     "pulse channel missing": (_edit_key(CH1, "Channel code", "XXXXXXXXXXXXXXXX"), "crash pulse"),
+    "a backup of CR beside it": (lambda d: _backup(d, "Channel/R16_001.003"),
+                                 "2 channel files hold the CR channel"),
 }
 
 

@@ -302,8 +302,11 @@ def read_isomme(
         if not chan_files:
             raise CrashDataError(f"{src.label(mme_name)}: no channel files (<TEST>.NNN)")
         channels: dict[str, Channel] = {}
+        twins: dict[str, list[Channel]] = {}  # a code more than one file holds
         for name in chan_files:
             ch = _read_channel(src, name)
+            if ch.code in channels:
+                twins.setdefault(ch.code, [channels[ch.code]]).append(ch)
             channels.setdefault(ch.code, ch)
     finally:
         src.close()
@@ -312,6 +315,11 @@ def read_isomme(
         for p in patterns:
             for code, ch in channels.items():
                 if _match(code, p):
+                    if code in twins:  # a backup or a second sensor: which is the test's?
+                        raise CrashDataError(
+                            f"{src.path}: {len(twins[code])} channel files hold the {label} "
+                            f"channel {code} ({', '.join(c.path for c in twins[code])}); "
+                            "keep the one the test used")
                     return ch
         if required:
             raise CrashDataError(
