@@ -287,23 +287,31 @@ def polarity_outliers(tests: list[CrashTest], end_s: float) -> list[BrokenTest]:
     return out
 
 
+def _flight_ms(test: CrashTest, end_s: float) -> float:
+    """When [ms after first contact] the car has flown 50 mm (the pulse integrated twice)."""
+    i0, i1 = test.index_of(0.0), test.index_of(end_s) + 1
+    dt_s = 1.0 / test.fs_hz
+    pulse_ms2 = (test.pulse_g[i0:i1] - test.pulse_bias_g()) * STANDARD_GRAVITY
+    flight_m = np.abs(np.cumsum(np.cumsum(pulse_ms2)) * dt_s * dt_s)
+    if not (len(flight_m) and np.all(np.isfinite(flight_m))) or flight_m[-1] < FREE_FLIGHT_M:
+        return float("nan")
+    return int(np.argmax(flight_m >= FREE_FLIGHT_M)) * dt_s * 1000.0
+
+
 def _payout_lag_ms(test: CrashTest, end_s: float, brs: np.ndarray | None = None) -> float:
     """Time [ms] from the car's 50 mm free flight to half the spool's pay-out (of ``brs``,
     recorded on the test's clock, the test's own by default); NaN when the window holds
     neither (see the module's docstring)."""
     i0, i1 = test.index_of(0.0), test.index_of(end_s) + 1
-    dt_s = 1.0 / test.fs_hz
-    pulse_ms2 = (test.pulse_g[i0:i1] - test.pulse_bias_g()) * STANDARD_GRAVITY
-    flight_m = np.abs(np.cumsum(np.cumsum(pulse_ms2)) * dt_s * dt_s)
+    flight_ms = _flight_ms(test, end_s)
     b = np.asarray((test.brs if brs is None else brs)[i0:i1], dtype=float)
-    if not (len(b) and np.all(np.isfinite(b)) and np.all(np.isfinite(flight_m))):
+    if not (len(b) and np.all(np.isfinite(b)) and np.isfinite(flight_ms)):
         return float("nan")
     paid_counts = np.maximum.accumulate(b) - b  # pay-out since the most wound-in point
-    if flight_m[-1] < FREE_FLIGHT_M or paid_counts.max() < 2:  # 2 counts: the encoder's noise
+    if paid_counts.max() < 2:  # 2 counts: the encoder's noise
         return float("nan")
-    k_flight = int(np.argmax(flight_m >= FREE_FLIGHT_M))
     k_half = int(np.argmax(paid_counts >= 0.5 * paid_counts.max()))
-    return (k_half - k_flight) * dt_s * 1000.0
+    return k_half * 1000.0 / test.fs_hz - flight_ms
 
 
 def payout_outliers(tests: list[CrashTest], end_s: float) -> list[BrokenTest]:
@@ -366,17 +374,6 @@ def _rise_ms(test: CrashTest, x: np.ndarray, end_s: float) -> np.ndarray:
     if not (len(y) and np.all(np.isfinite(y))) or np.max(y) == 0:
         return np.full(len(STEP_SHARES), np.nan)
     return np.array([np.argmax(y >= f * np.max(y)) for f in STEP_SHARES]) * 1000.0 / test.fs_hz
-
-
-def _flight_ms(test: CrashTest, end_s: float) -> float:
-    """When [ms after first contact] the car has flown 50 mm (the pulse integrated twice)."""
-    i0, i1 = test.index_of(0.0), test.index_of(end_s) + 1
-    dt_s = 1.0 / test.fs_hz
-    pulse_ms2 = (test.pulse_g[i0:i1] - test.pulse_bias_g()) * STANDARD_GRAVITY
-    flight_m = np.abs(np.cumsum(np.cumsum(pulse_ms2)) * dt_s * dt_s)
-    if not (len(flight_m) and np.all(np.isfinite(flight_m))) or flight_m[-1] < FREE_FLIGHT_M:
-        return float("nan")
-    return int(np.argmax(flight_m >= FREE_FLIGHT_M)) * dt_s * 1000.0
 
 
 def output_step_outliers(tests: list[CrashTest], end_s: float) -> list[BrokenTest]:
