@@ -1,6 +1,7 @@
 from __future__ import annotations
 
 import dataclasses
+import re
 import zipfile
 from pathlib import Path
 
@@ -191,6 +192,19 @@ def test_write_read_roundtrip(tmp_path: Path):
         for a, b in ((t.pulse_g, back.pulse_g), (t.brs, back.brs), (t.cr_g, back.cr_g),
                      (t.cd_mm, back.cd_mm)):
             np.testing.assert_allclose(a, b, rtol=1e-6, atol=1e-9)
+        assert back.velocity_ms == t.velocity_ms == pytest.approx(14.40)
+
+
+@pytest.mark.parametrize("value", ["NOVALUE", "56 km/h", "nan", "0"])
+def test_a_stated_velocity_that_is_no_number_reads_as_none(r16_folder: Path, value: str):
+    # only the loop's screening reads it (against the pulse): a file without a usable one is
+    # a file without one, not a broken file
+    mme = r16_folder / "R16_001.mme"
+    text = mme.read_text(encoding="iso-8859-1")
+    assert "Velocity test object 1" in text
+    mme.write_text(re.sub(r"(Velocity test object 1\s*:)[^\r\n]*", rf"\g<1>{value}", text),
+                   encoding="iso-8859-1", newline="")
+    assert read_isomme(r16_folder).velocity_ms is None
 
 
 def test_bad_zip_and_missing_paths(tmp_path: Path):
@@ -228,6 +242,7 @@ def test_csv_and_isomme_read_the_same_brs_units(unit, per_rev, tmp_path):
         f.write(head + f"brs[{unit}]" + lines[0] + "\n")
         np.savetxt(f, data, delimiter=",", fmt="%.12g")
     np.testing.assert_array_equal(read_csv(out).brs, test.brs)
+    assert read_csv(out).velocity_ms == test.velocity_ms  # the stated velocity kept too
 
 
 def test_a_late_trigger_does_not_move_the_pulse_bias(campaign):

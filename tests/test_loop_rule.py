@@ -25,6 +25,7 @@ from observer_node.loop.screening import (
     polarity_outliers,
     residual_outliers,
     screen_channels,
+    velocity_outliers,
 )
 
 SETUPS = {f"T{i}": s for i, s in enumerate(["A", "A", "B", "B", "C", "C"])}
@@ -268,6 +269,44 @@ def test_a_whole_test_recorded_late_is_not_called_out_of_step(campaign):
                           for ch in ("pulse_g", "brs", "cr_g", "cd_mm")}) if x is t else x
             for x in tests]
     assert output_step_outliers(late, 0.15) == []
+
+
+def _read_fast(x, fs_true_hz, fs_hz):
+    """``x`` as a recorder at ``fs_true_hz`` wrote it, read at the ``fs_hz`` its header says."""
+    t_true = np.arange(len(x)) / fs_true_hz
+    return np.interp(t_true, np.arange(len(x)) / fs_hz, x)
+
+
+@pytest.mark.parametrize("fault", ["rate", "gain"])
+def test_a_pulse_at_odds_with_the_stated_velocity_is_named(campaign, fault):
+    # recorded at 8 kHz under headers that say 10 kHz (every channel: the crash reads 1.25
+    # times too fast, the pulse integrates to 0.8 of the speed), or a pulse sensitivity 1.3x
+    tests = [dataclasses.replace(t) for t in campaign]
+    assign_setups(tests)
+    assert velocity_outliers(tests, 0.15) == []
+    t = next(x for x in tests if x.name == "SLED_003")
+    if fault == "rate":
+        b = _broken(t, **{ch: _read_fast(getattr(t, ch), 8000.0, t.fs_hz)
+                          for ch in ("pulse_g", "brs", "cr_g", "cd_mm")})
+    else:
+        b = _broken(t, pulse_g=1.3 * t.pulse_g)
+    found = velocity_outliers([b if x is t else x for x in tests], 0.15)
+    assert [(f.test, f.channel) for f in found] == [("SLED_003", "pulse")], found
+    assert ("x0.80" if fault == "rate" else "x1.31") in found[0].reason
+    assert "SLED tests" in found[0].reason
+
+
+def test_a_pulse_gain_on_a_whole_rig_or_no_stated_velocity_is_no_broken_test(campaign):
+    # every FULL pulse 8 % high is the rig's input_gain, for the loop to find, not a broken
+    # test; a test that states no velocity is not judged
+    tests = [dataclasses.replace(t) for t in campaign]
+    assign_setups(tests)
+    gained = [_broken(x, pulse_g=1.08 * x.pulse_g) if x.setup == "FULL" else x for x in tests]
+    assert velocity_outliers(gained, 0.15) == []
+    t = next(x for x in tests if x.name == "SLED_003")
+    silent = [_broken(x, pulse_g=1.3 * x.pulse_g, velocity_ms=None) if x is t else x
+              for x in tests]
+    assert velocity_outliers(silent, 0.15) == []
 
 
 def test_a_campaign_that_pays_in_more_than_out_is_not_called_reversed(campaign):

@@ -17,6 +17,7 @@ in it too, so a frontal crash gives positive pulse, CR and CD.
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass, field, replace
 
 import numpy as np
@@ -39,6 +40,8 @@ class CrashTest:
 
     ``t0_s`` is the time of the first sample relative to first contact (t = 0).
     ``cr_g`` and ``cd_mm`` are ``None`` when the test has no dummy measurement.
+    ``velocity_ms`` is the test's stated impact velocity [m/s] (a speed trap's, not the
+    pulse's), ``None`` when the file gives none.
     """
 
     name: str
@@ -50,6 +53,7 @@ class CrashTest:
     cd_mm: np.ndarray | None = None
     setup: str = ""
     counts_per_rev: int | None = None
+    velocity_ms: float | None = None
     source: str = ""
     meta: dict[str, str] = field(default_factory=dict)
 
@@ -106,6 +110,16 @@ class CrashTest:
 # sensor's resolution; "-" and "1" are how some ISO-MME writers mark a dimensionless count).
 BRS_COUNT_UNITS = ("counts", "count", "cnt", "-", "1")
 BRS_UNITS_PER_REV = {"deg": 360.0, "°": 360.0, "rad": 2 * np.pi, "rev": 1.0}
+
+
+def velocity_of(value: str) -> float | None:
+    """A stated velocity [m/s] from its text, or None: only the loop's screening reads it
+    (against the pulse), so a file without a usable one is read as a file without one."""
+    try:
+        v = float(value)
+    except ValueError:
+        return None
+    return abs(v) if math.isfinite(v) and v != 0 else None  # a sign is a direction
 
 
 def brs_to_counts(values: np.ndarray, unit: str, counts_per_rev: int | None, where: str,

@@ -5,6 +5,7 @@ Example::
 
     # name: R16_001
     # counts_per_rev: 96
+    # velocity_ms: 14.40     (optional: the stated impact velocity, m/s)
     # signs: model          (or: sae-j211)
     time[s],pulse[g],brs[counts],cr[g],cd[mm]
     -0.0200,0.0231,0,-0.011,0.002
@@ -22,7 +23,7 @@ from pathlib import Path
 import numpy as np
 
 from ..units import STANDARD_GRAVITY
-from .crashtest import CrashDataError, CrashTest, brs_to_counts
+from .crashtest import CrashDataError, CrashTest, brs_to_counts, velocity_of
 from .isomme import decode_text
 
 _UNITS = {
@@ -44,6 +45,8 @@ def write_csv(test: CrashTest, path: str | Path) -> Path:
     head = [f"# name: {test.name}", f"# setup: {test.setup}", "# signs: model"]
     if test.counts_per_rev:
         head.append(f"# counts_per_rev: {test.counts_per_rev}")
+    if test.velocity_ms:
+        head.append(f"# velocity_ms: {test.velocity_ms:.2f}")
     data = np.column_stack(cols)
     with path.open("w", encoding="utf-8", newline="\n") as f:
         f.write("\n".join([*head, ",".join(names)]) + "\n")
@@ -121,6 +124,7 @@ def read_csv(path: str | Path, counts_per_rev: int | None = None) -> CrashTest:
         cr_g=None if cr is None else sign * cr, cd_mm=None if cd is None else sign * cd,
         setup=meta.get("setup", path.stem.split("_")[0].upper()),
         counts_per_rev=counts_per_rev or _int(meta.get("counts_per_rev")),
+        velocity_ms=velocity_of(meta.get("velocity_ms", "")),
         source=str(path), meta=meta,
     )
 

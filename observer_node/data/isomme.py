@@ -28,7 +28,7 @@ from pathlib import Path, PurePosixPath
 import numpy as np
 
 from ..units import STANDARD_GRAVITY
-from .crashtest import CrashDataError, CrashTest, brs_to_counts
+from .crashtest import CrashDataError, CrashTest, brs_to_counts, velocity_of
 
 NOVALUE = "NOVALUE"
 # Bounds of what a crash-test file can be: anything beyond is a broken or hostile file.
@@ -36,6 +36,7 @@ MAX_FILE_BYTES = 64 << 20  # one channel of 1 M samples at ~20 characters a line
 MAX_ABS_VALUE = 1e6  # g, m/s^2, mm, deg, counts: no channel of a crash test reaches it
 MIN_INTERVAL_S, MAX_INTERVAL_S = 1e-7, 1.0  # 10 MHz .. 1 Hz
 MAX_COUNTS_PER_REV = 100_000
+VELOCITY_KEY = "Velocity test object 1"  # m/s; test object 1 is the vehicle or the sled
 
 
 @dataclass(frozen=True)
@@ -376,6 +377,7 @@ def read_isomme(
         cd_mm=None if cd_ch is None else -_convert(cd_ch, _LENGTH_TO_MM, "length"),
         setup=setup_of(name, mme),
         counts_per_rev=per_rev,
+        velocity_ms=velocity_of(mme.get(VELOCITY_KEY, "")),
         source=str(path),
         meta={k: v for k, v in mme.items() if v.upper() != NOVALUE},
     )
@@ -417,6 +419,7 @@ def write_isomme(test: CrashTest, folder: str | Path, zip_it: bool = False) -> P
         "Laboratory test ref. number": test.name,
         "Title": test.meta.get("Title", "SIMULATED CRASH TEST"),
         "Comments": f"BRS resolution {test.counts_per_rev} counts/rev, bidirectional",
+        **({VELOCITY_KEY: f"{test.velocity_ms:.2f}"} if test.velocity_ms else {}),
         "Number of channels": str(len(present)),
     }
     chn = {}

@@ -75,6 +75,7 @@ from .screening import (
     polarity_outliers,
     residual_outliers,
     screen_channels,
+    velocity_outliers,
 )
 
 # A rig with fewer estimation tests than this is not judged: with one test, an effect there
@@ -135,7 +136,8 @@ def _screened(est_tests: list[CrashTest], val_tests: list[CrashTest], rate_hz: f
     # Broken channels are found on the recorded data, before anything is fitted on them.
     broken = [b for t in (*est_tests, *val_tests) for b in screen_channels(t, window_s[1])]
     flagged = {b.test for b in broken}
-    for check in (polarity_outliers, payout_outliers, output_step_outliers):
+    for check in (polarity_outliers, velocity_outliers, payout_outliers,
+                  output_step_outliers):
         broken += [b for b in check([*est_tests, *val_tests], window_s[1])
                    if b.test not in flagged]
         flagged = {b.test for b in broken}

@@ -83,6 +83,19 @@ Per test, against the other tests of the set:
   a hostile user's CR recorded 10 ms late passed every check and cost the validation fit 3
   points.
 
+- **a pulse that disagrees with the test's stated velocity**: the pulse integrated from first
+  contact (its bias removed) is the car's or sled's change of speed, which on one rig bears
+  one ratio to the velocity the test states (ISO-MME ``Velocity test object 1``, a speed
+  trap's): the rebound of a car from a barrier adds its share, a sled's brake none. A test
+  whose ratio lies more than 10 % from that of every one of three or more other tests of its
+  setup, and further than those lie apart, has a pulse whose sensitivity is wrong, or a
+  sampling interval that is not the one it was recorded at (a test recorded at 8 kHz whose
+  headers say 10 kHz integrates to 0.8 of its speed; its crash, read 1.25 times too fast,
+  blamed a CD sensor effect on every test and cost a hostile user's run 18 points of
+  validation fit with no warning). On the bundled campaign the ratio lies within 0.99-1.03 on
+  every rig. Tests without a stated velocity are not judged; a setup whose tests all disagree
+  alike (a pulse gain on the whole rig) is no broken test: the loop's ``input_gain`` is.
+
 Per test, after the thesis grey-box is fitted: a **residual far outside the others'**, a
 test whose fit_TOT, by the model fitted without it (leave-one-test-out), lies more than 20
 points and 4 robust deviations below the median of the estimation tests (scatter between
@@ -126,6 +139,7 @@ PAYOUT_MIN_OTHERS = 3
 PARTNER_GAP_MS = 2.0
 STEP_GAP_MS = 3.0
 STEP_SHARES = (0.2, 0.35, 0.5)  # of a chest channel's peak, read for its rise times
+VELOCITY_GAP = 0.10  # relative, of the pulse's change of speed to the stated velocity
 OUTLIER_POINTS = 20.0
 OUTLIER_DEVIATIONS = 4.0
 
@@ -410,6 +424,40 @@ def output_step_outliers(tests: list[CrashTest], end_s: float) -> list[BrokenTes
             f"other {setup_of[name]} tests (which lie within {spread[k]:.1f} ms of each "
             f"other): one channel's time base is shifted, {ch.upper()} the one out of step "
             f"with its pulse by {off[ch]:.1f} ms"))
+    return out
+
+
+def _speed_change_ms(test: CrashTest) -> float:
+    """The pulse's change of speed [m/s]: its largest integral from first contact on."""
+    pulse_ms2 = (test.pulse_g[test.index_of(0.0):] - test.pulse_bias_g()) * STANDARD_GRAVITY
+    dv_ms = np.cumsum(pulse_ms2) / test.fs_hz
+    if not (len(dv_ms) and np.all(np.isfinite(dv_ms))):
+        return float("nan")
+    return float(np.max(np.abs(dv_ms)))
+
+
+def velocity_outliers(tests: list[CrashTest], end_s: float) -> list[BrokenTest]:
+    """Tests whose pulse integrates to another share of their stated velocity than the other
+    tests of their setup (see the module's docstring); ``end_s`` unused (the whole record is
+    read: a long pulse outlasts the scoring window)."""
+    ratio = {t.name: (t.setup, _speed_change_ms(t) / t.velocity_ms) for t in tests
+             if t.velocity_ms and np.isfinite(_speed_change_ms(t))}
+    out = []
+    for x in tests:
+        if x.name not in ratio or not x.velocity_ms:
+            continue
+        setup, own = ratio[x.name]
+        rest = np.array([r for n, (s, r) in ratio.items() if n != x.name and s == setup and r > 0])
+        if own <= 0 or len(rest) < PAYOUT_MIN_OTHERS:
+            continue
+        gap = float(np.min(np.abs(np.log(rest / own))))
+        if gap > np.log1p(VELOCITY_GAP) and gap > float(np.ptp(np.log(rest))):
+            out.append(BrokenTest(
+                x.name, "pulse", f"integrates to {own * x.velocity_ms:.2f} m/s where the test "
+                f"states {x.velocity_ms:.2f} m/s (x{own:.2f}; the {len(rest)} other {setup} "
+                f"tests x{rest.min():.2f} to x{rest.max():.2f}): the pulse's sensitivity is "
+                "wrong, its sampling interval is not the one it was recorded at, or it is "
+                "another crash's pulse"))
     return out
 
 
