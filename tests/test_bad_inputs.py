@@ -243,6 +243,8 @@ ISO_CASES: dict[str, tuple[Callable[[Path], None], str]] = {
     "empty .mme": (lambda d: (d / "R16_001.mme").write_bytes(b""), "empty .mme"),
     "no .mme": (lambda d: (d / "R16_001.mme").unlink(), "R16_001"),
     "unit unknown": (_edit_key(CH1, "Unit", "furlong"), "Unit"),
+    # degrees of 3.75 would read as 3.75 times as many counts (a hostile user's finding)
+    "BRS unit NOVALUE": (_edit_key(CH2, "Unit", "NOVALUE"), "BRS has no unit and reads"),
     "pulse channel missing": (_edit_key(CH1, "Channel code", "XXXXXXXXXXXXXXXX"), "crash pulse"),
     "a backup of CR beside it": (lambda d: _backup(d, "Channel/R16_001.003"),
                                  "2 channel files hold the CR channel"),

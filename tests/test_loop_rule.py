@@ -4,6 +4,7 @@ is left, and where its refits run (observer_node.loop.evidence, screening, diagn
 from __future__ import annotations
 
 import dataclasses
+import shutil
 import subprocess
 import sys
 
@@ -11,6 +12,7 @@ import numpy as np
 import pytest
 from scipy import stats
 
+from observer_node.data import read_isomme, write_isomme
 from observer_node.data.filters import cfc_filter
 from observer_node.data.setups import assign_setups
 from observer_node.ident.dataset import make_dataset
@@ -27,6 +29,8 @@ from observer_node.loop.screening import (
     screen_channels,
     velocity_outliers,
 )
+
+from .conftest import DATA
 
 SETUPS = {f"T{i}": s for i, s in enumerate(["A", "A", "B", "B", "C", "C"])}
 
@@ -211,6 +215,22 @@ def test_a_broken_channel_is_named(campaign, fault):
     found = screen_channels(b, 0.15)
     assert [f.channel for f in found] == [channel], found
     assert found[0].test == "R16_003" and found[0].reason
+
+
+def test_a_channel_the_lab_marked_defect_is_named_in_its_words(tmp_path):
+    # ISO-MME "Data status": the lab's own verdict on a channel, read from the file
+    src = tmp_path / "R16_001"
+    shutil.copytree(DATA / "R16_001", src)
+    ch = src / "Channel" / "R16_001.004"  # CD
+    ch.write_bytes(ch.read_bytes().replace(b"Data status                 :ok",
+                                           b"Data status                 :defect"))
+    found = screen_channels(read_isomme(src), 0.15)
+    assert [(f.channel, f.reason) for f in found] == [
+        ("cd", "the lab marked it 'defect' (its Data status)")], found
+    assert screen_channels(read_isomme(DATA / "R16_001"), 0.15) == []
+    # written out again (crash-replay's recordings, an export), the lab's word stays
+    assert read_isomme(write_isomme(read_isomme(src), tmp_path / "again")).status == {
+        "cd": "defect"}
 
 
 def test_a_brs_recorded_at_the_wrong_polarity_is_named(campaign):

@@ -41,7 +41,8 @@ class CrashTest:
     ``t0_s`` is the time of the first sample relative to first contact (t = 0).
     ``cr_g`` and ``cd_mm`` are ``None`` when the test has no dummy measurement.
     ``velocity_ms`` is the test's stated impact velocity [m/s] (a speed trap's, not the
-    pulse's), ``None`` when the file gives none.
+    pulse's), ``None`` when the file gives none. ``status`` holds the lab's word on a channel
+    it did not pass as ok (ISO-MME ``Data status``), by role: pulse, brs, cr, cd.
     """
 
     name: str
@@ -54,6 +55,7 @@ class CrashTest:
     setup: str = ""
     counts_per_rev: int | None = None
     velocity_ms: float | None = None
+    status: dict[str, str] = field(default_factory=dict)
     source: str = ""
     meta: dict[str, str] = field(default_factory=dict)
 
@@ -127,7 +129,14 @@ def brs_to_counts(values: np.ndarray, unit: str, counts_per_rev: int | None, whe
     """BRS in ``unit`` (counts or an angle) as sensor counts; ``where`` names the file and key
     of the unit and ``source`` the file (for the messages), ``how_to_give`` where a user states
     the resolution."""
-    unit = unit.strip().lower() or "counts"
+    unit = unit.strip().lower()
+    if not unit:  # counts are whole numbers; an angle of 360/N-degree steps mostly is not
+        finite = np.asarray(values, dtype=float)[np.isfinite(values)]
+        odd = finite[np.abs(finite - np.round(finite)) > 1e-6]
+        if len(odd):
+            raise CrashDataError(f"{where}: BRS has no unit and reads {odd[0]:g}, not a whole "
+                                 "count: give its unit (counts, deg, rad or rev)")
+        unit = "counts"
     if unit in BRS_COUNT_UNITS:
         return np.array(values, dtype=float)
     per_rev = BRS_UNITS_PER_REV.get(unit)

@@ -359,6 +359,12 @@ def read_isomme(
         raise CrashDataError(f"--counts-per-rev {counts_per_rev}: must be "
                              f"1..{MAX_COUNTS_PER_REV}")
 
+    # the lab's own verdict on a channel (ISO-MME "Data status"): anything but ok is kept, for
+    # the loop's screening to leave the test out with the lab's words
+    status = {role: st for role, ch in (("pulse", pulse_ch), ("brs", brs_ch), ("cr", cr_ch),
+                                        ("cd", cd_ch))
+              if ch is not None and (st := (ch.get("Data status") or "ok").strip())
+              and st.lower() != "ok"}
     per_rev = counts_per_rev or _counts_per_rev(
         [mme.get("Comments", ""), brs_ch.get("Name of the channel") or "",
          *(v for k, v in mme.items() if k.startswith("Name of channel"))]
@@ -378,6 +384,7 @@ def read_isomme(
         setup=setup_of(name, mme),
         counts_per_rev=per_rev,
         velocity_ms=velocity_of(mme.get(VELOCITY_KEY, "")),
+        status=status,
         source=str(path),
         meta={k: v for k, v in mme.items() if v.upper() != NOVALUE},
     )
@@ -431,7 +438,7 @@ def write_isomme(test: CrashTest, folder: str | Path, zip_it: bool = False) -> P
             "Channel code": code, "Name of the channel": text, "Reference channel": "implicit",
             "Sampling interval": f"{1.0 / test.fs_hz:.6E}", "Unit": unit,
             "Time of first sample": f"{test.t0_s:.6E}", "Number of samples": str(len(values)),
-            "Dimension": dim, "Data status": "ok",
+            "Dimension": dim, "Data status": test.status.get(key, "ok"),  # not laundered
         }
         body = "".join(f"{v:.6E}\r\n" for v in values)
         files[f"Channel/{test.name}.{i:03d}"] = _kv(header) + body

@@ -2,6 +2,9 @@
 
 Per channel, on the recorded samples from first contact to the end of the scoring window:
 
+- **marked by the lab**: a channel whose ISO-MME ``Data status`` is anything but ``ok``
+  (the lab's own word, "defect" or "questionable", is quoted). Added after a hostile user's
+  files carried it and nothing read it;
 - **missing**: samples that are not numbers (NOVALUE, NaN) where the fit needs them;
 - **frozen**: a channel that stops changing while the crash goes on (a cable fault). CR and
   CD, filtered analogue signals, never hold one value for 2 ms while the pulse is above a fifth
@@ -179,9 +182,12 @@ def screen_channels(test: CrashTest, end_s: float) -> list[BrokenTest]:
     channels = {"pulse": test.pulse_g[i0:i1], "brs": test.brs[i0:i1],
                 **({"cr": test.cr_g[i0:i1]} if test.cr_g is not None else {}),
                 **({"cd": test.cd_mm[i0:i1]} if test.cd_mm is not None else {})}
-    out: list[BrokenTest] = [] if (z := _zero_shift(test, end_s)) is None else [z]
+    out: list[BrokenTest] = [BrokenTest(test.name, ch, f"the lab marked it {word!r} (its "
+                                        "Data status)") for ch, word in test.status.items()]
+    if "pulse" not in test.status and (z := _zero_shift(test, end_s)) is not None:
+        out.append(z)
     for ch, x in channels.items():
-        if ch == "pulse" and out:
+        if ch in {b.channel for b in out}:  # one reason a channel
             continue
         bad = ~np.isfinite(x)
         if bad.any():

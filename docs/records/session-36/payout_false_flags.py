@@ -32,7 +32,7 @@ for m in (1, 2, 3):
     count, who = 0, {}
     for _ in range(3000):
         pick = {}
-        for s, ns in names.items():
+        for ns in names.values():
             k = int(rng.integers(3, min(8, len(ns)) + 1))
             for n in rng.choice(ns, k, replace=False):
                 pick[str(n)] = lag[n]
