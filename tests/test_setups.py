@@ -49,6 +49,18 @@ def test_campaign_a_setups_come_from_its_metadata():
         None, ["R16"], ["SLED"], ["R16", "SLED"], ["R16", "FULL"], ["SLED", "FULL"]]
 
 
+def test_a_title_punctuated_another_way_is_the_same_rig():
+    # "3 POINT" for "3-POINT" on one test (a hostile user's typo): one rig, not two
+    tests = load_tests(["campaign-a"])
+    t = next(x for x in tests if x.name == "R16_002")
+    t.meta["Title"] = t.meta["Title"].replace("3-POINT", "3  point")
+    setups = assign_setups(tests)
+    assert [s.name for s in setups] == ["FULL", "R16", "SLED"]
+    assert t.setup == "R16" and "3-POINT" in next(s for s in setups if s.name == "R16").how
+    t.meta["Title"] = t.meta["Title"].replace("HARD SEAT", "SOFT SEAT")  # words differ: apart
+    assert len(assign_setups(tests)) == 4
+
+
 def test_names_without_a_separator_are_grouped_by_metadata_and_overridden_by_group():
     cfg = {s: PlantConfig(noise=False) for s in ("R16", "SLED", "FULL")}
     tests = simulate_mixed({"R16": 2, "SLED": 2, "FULL": 2}, 3, cfg, prefix="T")

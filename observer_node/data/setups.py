@@ -5,7 +5,8 @@ The rule, in order:
 1. ``--group NAME=PATTERN`` (a shell pattern on the test name; the first that matches wins)
    puts a test in setup NAME.
 2. Otherwise tests whose ``.mme`` gives the same ``Type of the test``, ``Title`` and
-   ``Name of test object 1`` share a setup. It is named after the test-name prefix (before
+   ``Name of test object 1`` share a setup (the same words and numbers: case, punctuation
+   and spacing aside). It is named after the test-name prefix (before
    ``_`` or ``-``) all its tests share, when no other setup shares it (R16_001 -> R16), else
    after the fewest leading words (two at least) of its title that tell it apart
    (FULL-FRONTAL).
@@ -69,13 +70,16 @@ def assign_setups(tests: list[CrashTest], groups: list[tuple[str, str]] | None =
     how: dict[tuple, str] = {}
     for t in tests:
         user = next((n for n, pat in groups or [] if fnmatch.fnmatchcase(t.name, pat)), None)
-        values = tuple(t.meta.get(k, "").strip().upper() for k in KEYS)
+        raw = tuple(t.meta.get(k, "").strip().upper() for k in KEYS)
+        # one rig however its title is punctuated ("3-POINT" and "3 POINT": a hostile user's
+        # typo had split a rig in two, one half then too small to judge)
+        values = tuple(" ".join(re.findall(r"[A-Z0-9]+", v)) for v in raw)
         if user is not None:
             key: tuple = ("user", user)
             how[key] = "--group " + next(p for n, p in groups or [] if n == user)
         elif any(values):
             key = ("meta", *values)
-            how[key] = "metadata: " + "; ".join(v for v in values if v)
+            how.setdefault(key, "metadata: " + "; ".join(v for v in raw if v))
         else:
             key = ("prefix", _prefix(t.name) or "UNKNOWN")
             how[key] = "name prefix" if key[1] != "UNKNOWN" else "no metadata, no name prefix"
