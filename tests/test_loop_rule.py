@@ -159,6 +159,13 @@ def test_the_bundled_campaign_has_no_broken_test(campaign):
     assert [b for t in campaign for b in screen_channels(t, 0.15)] == []
 
 
+def _grouped(campaign):
+    """Copies of the campaign's tests, each in its setup."""
+    tests = [dataclasses.replace(t) for t in campaign]
+    assign_setups(tests)
+    return tests
+
+
 def _broken(test, **arrays):
     return dataclasses.replace(test, **arrays)
 
@@ -248,8 +255,7 @@ def test_crossed_brs_files_are_found_by_the_pay_out_against_the_pulse(campaign):
     # the lab's export crossed two tests' spindle files: the R16 test's BRS is a full-scale
     # car's spool, which pays out 20 ms later after the same free flight than any R16 spool;
     # the car's test has one spool that fits the R16 test's pulse as the R16 tests' do
-    tests = [dataclasses.replace(t) for t in campaign]
-    assign_setups(tests)
+    tests = _grouped(campaign)
     assert payout_outliers(tests, 0.15) == []
     r16 = next(t for t in tests if t.name == "R16_002")
     full = next(t for t in tests if t.name == "FULL_002")
@@ -269,8 +275,7 @@ def _late(x, ms, fs_hz):
 def test_a_chest_channel_recorded_late_is_named(campaign, channel):
     # one channel's time base shifted by 5 ms (a trigger or export offset on that channel):
     # CR and CD of that test are out of step as no other test of its rig is
-    tests = [dataclasses.replace(t) for t in campaign]
-    assign_setups(tests)
+    tests = _grouped(campaign)
     assert output_step_outliers(tests, 0.15) == []
     t = next(x for x in tests if x.name == "FULL_002")
     late = [_broken(x, **{channel: _late(getattr(x, channel), 5.0, x.fs_hz)}) if x is t else x
@@ -282,8 +287,7 @@ def test_a_chest_channel_recorded_late_is_named(campaign, channel):
 
 def test_a_whole_test_recorded_late_is_not_called_out_of_step(campaign):
     # a late trigger moves every channel of the test alike: CR and CD stay in step
-    tests = [dataclasses.replace(t) for t in campaign]
-    assign_setups(tests)
+    tests = _grouped(campaign)
     t = next(x for x in tests if x.name == "FULL_002")
     late = [_broken(x, **{ch: _late(getattr(x, ch), 5.0, x.fs_hz)
                           for ch in ("pulse_g", "brs", "cr_g", "cd_mm")}) if x is t else x
@@ -301,8 +305,7 @@ def _read_fast(x, fs_true_hz, fs_hz):
 def test_a_pulse_at_odds_with_the_stated_velocity_is_named(campaign, fault):
     # recorded at 8 kHz under headers that say 10 kHz (every channel: the crash reads 1.25
     # times too fast, the pulse integrates to 0.8 of the speed), or a pulse sensitivity 1.3x
-    tests = [dataclasses.replace(t) for t in campaign]
-    assign_setups(tests)
+    tests = _grouped(campaign)
     assert velocity_outliers(tests, 0.15) == []
     t = next(x for x in tests if x.name == "SLED_003")
     if fault == "rate":
@@ -319,8 +322,7 @@ def test_a_pulse_at_odds_with_the_stated_velocity_is_named(campaign, fault):
 def test_a_pulse_gain_on_a_whole_rig_or_no_stated_velocity_is_no_broken_test(campaign):
     # every FULL pulse 8 % high is the rig's input_gain, for the loop to find, not a broken
     # test; a test that states no velocity is not judged
-    tests = [dataclasses.replace(t) for t in campaign]
-    assign_setups(tests)
+    tests = _grouped(campaign)
     gained = [_broken(x, pulse_g=1.08 * x.pulse_g) if x.setup == "FULL" else x for x in tests]
     assert velocity_outliers(gained, 0.15) == []
     t = next(x for x in tests if x.name == "SLED_003")
