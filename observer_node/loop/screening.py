@@ -446,8 +446,9 @@ def velocity_outliers(tests: list[CrashTest], end_s: float) -> list[BrokenTest]:
     """Tests whose pulse integrates to another share of their stated velocity than the other
     tests of their setup (see the module's docstring); ``end_s`` unused (the whole record is
     read: a long pulse outlasts the scoring window)."""
-    ratio = {t.name: (t.setup, _speed_change_ms(t) / t.velocity_ms) for t in tests
-             if t.velocity_ms and np.isfinite(_speed_change_ms(t))}
+    dv_ms = {t.name: _speed_change_ms(t) for t in tests if t.velocity_ms}
+    ratio = {t.name: (t.setup, dv_ms[t.name] / t.velocity_ms) for t in tests
+             if t.velocity_ms and np.isfinite(dv_ms[t.name])}
     out = []
     for x in tests:
         if x.name not in ratio or not x.velocity_ms:
