@@ -223,6 +223,16 @@ def _backup(d: Path, rel: str) -> None:
 
 
 CH1, CH2 = "Channel/R16_001.001", "Channel/R16_001.002"
+
+
+def _whole_degrees(d: Path) -> None:
+    """A 24 counts/rev spindle in whole degrees (15 a count), its Unit missing."""
+    _edit_key("R16_001.mme", "Comments", "BRS resolution 24 counts/rev")(d)
+    _edit_key(CH2, "Unit", "NOVALUE")(d)
+    p = d / CH2
+    lines = p.read_text(encoding="iso-8859-1").splitlines()
+    lines = [f"{15 * round(float(v) / 15):.1f}" if v and ":" not in v else v for v in lines]
+    p.write_text("\r\n".join(lines) + "\r\n", encoding="iso-8859-1", newline="")
 ISO_CASES: dict[str, tuple[Callable[[Path], None], str]] = {
     "interval NaN": (_edit_key(CH1, "Sampling interval", "NaN"), "Sampling interval"),
     "interval 0": (_edit_key(CH1, "Sampling interval", "0"), "Sampling interval"),
@@ -245,6 +255,7 @@ ISO_CASES: dict[str, tuple[Callable[[Path], None], str]] = {
     "unit unknown": (_edit_key(CH1, "Unit", "furlong"), "Unit"),
     # degrees of 3.75 would read as 3.75 times as many counts (a hostile user's finding)
     "BRS unit NOVALUE": (_edit_key(CH2, "Unit", "NOVALUE"), "BRS has no unit and reads"),
+    "BRS unit NOVALUE, whole degrees": (_whole_degrees, "moves only in steps of 15"),
     "pulse channel missing": (_edit_key(CH1, "Channel code", "XXXXXXXXXXXXXXXX"), "crash pulse"),
     "a backup of CR beside it": (lambda d: _backup(d, "Channel/R16_001.003"),
                                  "2 channel files hold the CR channel"),

@@ -195,8 +195,12 @@ def test_write_read_roundtrip(tmp_path: Path):
         assert back.velocity_ms == t.velocity_ms == pytest.approx(14.40)
 
 
-@pytest.mark.parametrize("value", ["NOVALUE", "56 km/h", "nan", "0"])
-def test_a_stated_velocity_that_is_no_number_reads_as_none(r16_folder: Path, value: str):
+@pytest.mark.parametrize("value, m_s", [("15.24", 15.24), ("15,24", 15.24),
+                                        ("54.864 km/h", 15.24), ("-15.24 m/s", 15.24),
+                                        ("NOVALUE", None), ("fast", None), ("56 furlongs", None),
+                                        ("nan", None), ("0", None)])
+def test_a_stated_velocity_reads_in_its_unit_or_as_none(r16_folder: Path, value: str,
+                                                        m_s: float | None):
     # only the loop's screening reads it (against the pulse): a file without a usable one is
     # a file without one, not a broken file
     mme = r16_folder / "R16_001.mme"
@@ -204,7 +208,7 @@ def test_a_stated_velocity_that_is_no_number_reads_as_none(r16_folder: Path, val
     assert "Velocity test object 1" in text
     mme.write_text(re.sub(r"(Velocity test object 1\s*:)[^\r\n]*", rf"\g<1>{value}", text),
                    encoding="iso-8859-1", newline="")
-    assert read_isomme(r16_folder).velocity_ms is None
+    assert read_isomme(r16_folder).velocity_ms == (None if m_s is None else pytest.approx(m_s))
 
 
 def test_bad_zip_and_missing_paths(tmp_path: Path):

@@ -9,7 +9,7 @@ import pytest
 from observer_node import cli
 from observer_node.data import load_tests
 from observer_node.data.crashtest import CrashDataError
-from observer_node.data.setups import assign_setups, parse_groups
+from observer_node.data.setups import assign_setups, parse_groups, words
 from observer_node.ident.dataset import make_dataset
 from observer_node.loop.closed_loop import scope_options
 from observer_node.model.chest import PARAM_NAMES, model_matrices
@@ -59,6 +59,14 @@ def test_a_title_punctuated_another_way_is_the_same_rig():
     assert t.setup == "R16" and "3-POINT" in next(s for s in setups if s.name == "R16").how
     t.meta["Title"] = t.meta["Title"].replace("HARD SEAT", "SOFT SEAT")  # words differ: apart
     assert len(assign_setups(tests)) == 4
+    # what punctuation aside still tells apart: a sign, another script's words
+    for a, b in (("SLED OBLIQUE +10 DEG", "SLED OBLIQUE -10 DEG"),
+                 ("САНИ, ЖЁСТКОЕ СИДЕНЬЕ", "САНИ, ПОДУШКА БЕЗОПАСНОСТИ")):
+        t.meta["Title"] = a
+        next(x for x in tests if x.name == "R16_003").meta["Title"] = b
+        assert len(assign_setups(tests)) == 5, (a, b)
+    assert words("Test 5,5 ms; 3-POINT, FULL-56, 30°") == [
+        "Test", "5.5", "ms", "3", "POINT", "FULL", "56", "30"]
 
 
 def test_names_without_a_separator_are_grouped_by_metadata_and_overridden_by_group():

@@ -18,6 +18,7 @@ in it too, so a frontal crash gives positive pulse, CR and CD.
 from __future__ import annotations
 
 import math
+import re
 from dataclasses import dataclass, field, replace
 
 import numpy as np
@@ -114,13 +115,17 @@ BRS_COUNT_UNITS = ("counts", "count", "cnt", "-", "1")
 BRS_UNITS_PER_REV = {"deg": 360.0, "°": 360.0, "rad": 2 * np.pi, "rev": 1.0}
 
 
+_SPEED_UNITS = {"": 1.0, "m/s": 1.0, "km/h": 1 / 3.6, "kph": 1 / 3.6, "mph": 0.44704}
+
+
 def velocity_of(value: str) -> float | None:
-    """A stated velocity [m/s] from its text, or None: only the loop's screening reads it
-    (against the pulse), so a file without a usable one is read as a file without one."""
-    try:
-        v = float(value)
-    except ValueError:
+    """A stated velocity [m/s] from its text ("15.24", "15,24", "56 km/h"), or None: only the
+    loop's screening reads it (against the pulse), so a file without a usable one is read as
+    a file without one."""
+    m = re.fullmatch(r"\s*([+-]?\d+(?:[.,]\d*)?(?:[eE][+-]?\d+)?)\s*([a-zA-Z/]*)\s*", value)
+    if not m or m.group(2).lower() not in _SPEED_UNITS:
         return None
+    v = float(m.group(1).replace(",", ".")) * _SPEED_UNITS[m.group(2).lower()]
     return abs(v) if math.isfinite(v) and v != 0 else None  # a sign is a direction
 
 
@@ -136,6 +141,12 @@ def brs_to_counts(values: np.ndarray, unit: str, counts_per_rev: int | None, whe
         if len(odd):
             raise CrashDataError(f"{where}: BRS has no unit and reads {odd[0]:g}, not a whole "
                                  "count: give its unit (counts, deg, rad or rev)")
+        step = 360.0 / counts_per_rev if counts_per_rev else 0.0
+        moved = finite[finite != finite[0]] - finite[0] if len(finite) else finite
+        if step > 1 and step == round(step) and len(moved) and np.all(moved % step == 0):
+            raise CrashDataError(f"{where}: BRS has no unit and moves only in steps of "
+                                 f"{step:g}, as {counts_per_rev} counts/rev read in degrees "
+                                 "would: give its unit (counts, deg, rad or rev)")
         unit = "counts"
     if unit in BRS_COUNT_UNITS:
         return np.array(values, dtype=float)

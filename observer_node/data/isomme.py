@@ -36,6 +36,7 @@ MAX_FILE_BYTES = 64 << 20  # one channel of 1 M samples at ~20 characters a line
 MAX_ABS_VALUE = 1e6  # g, m/s^2, mm, deg, counts: no channel of a crash test reaches it
 MIN_INTERVAL_S, MAX_INTERVAL_S = 1e-7, 1.0  # 10 MHz .. 1 Hz
 MAX_COUNTS_PER_REV = 100_000
+_STATUS_OK = {"ok", "okay", "valid", "good"}  # a channel's Data status, its letters only
 VELOCITY_KEY = "Velocity test object 1"  # m/s; test object 1 is the vehicle or the sled
 
 
@@ -364,7 +365,7 @@ def read_isomme(
     status = {role: st for role, ch in (("pulse", pulse_ch), ("brs", brs_ch), ("cr", cr_ch),
                                         ("cd", cd_ch))
               if ch is not None and (st := (ch.get("Data status") or "ok").strip())
-              and st.lower() != "ok"}
+              and re.sub(r"[^a-z]", "", st.lower()) not in _STATUS_OK}
     per_rev = counts_per_rev or _counts_per_rev(
         [mme.get("Comments", ""), brs_ch.get("Name of the channel") or "",
          *(v for k, v in mme.items() if k.startswith("Name of channel"))]

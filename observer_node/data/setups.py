@@ -57,6 +57,14 @@ def parse_groups(specs: list[str] | None) -> list[tuple[str, str]]:
     return out
 
 
+def words(text: str) -> list[str]:
+    """The words and numbers of ``text`` (any script), a number with the sign that stands
+    before it after a space ("-10 DEG" is not "+10 DEG"; "3-POINT" is "3 POINT", "FULL-56"
+    is "FULL 56"), its decimal comma a point."""
+    return [w.replace(",", ".") for w in
+            re.findall(r"(?:(?<!\S)[+-])?\d+(?:[.,]\d+)?(?![^\W_])|[^\W_]+", text)]
+
+
 def _prefix(name: str) -> str | None:
     parts = re.split(r"[_\-]", name, maxsplit=1)
     return parts[0].upper() if len(parts) == 2 and parts[0] and not parts[0].isdigit() else None
@@ -73,7 +81,7 @@ def assign_setups(tests: list[CrashTest], groups: list[tuple[str, str]] | None =
         raw = tuple(t.meta.get(k, "").strip().upper() for k in KEYS)
         # one rig however its title is punctuated ("3-POINT" and "3 POINT": a hostile user's
         # typo had split a rig in two, one half then too small to judge)
-        values = tuple(" ".join(re.findall(r"[A-Z0-9]+", v)) for v in raw)
+        values = tuple(" ".join(words(v)) for v in raw)
         if user is not None:
             key: tuple = ("user", user)
             how[key] = "--group " + next(p for n, p in groups or [] if n == user)
@@ -115,11 +123,10 @@ def _names(by_key: dict[tuple, list[CrashTest]]) -> dict[tuple, str]:
     # the rest: the fewest leading title words (else type words) that tell them apart
     rest = [k for k in prefixes if k not in names]
     for key in rest:
-        words = re.findall(r"[A-Z0-9]+", (key[2] or key[1] or "SETUP"))
-        for n in range(min(2, len(words)), len(words) + 1):
-            cand = "-".join(words[:n])
-            others = [re.findall(r"[A-Z0-9]+", (k[2] or k[1] or "SETUP"))[:n]
-                      for k in rest if k != key]
+        title = words(key[2] or key[1] or "SETUP")
+        for n in range(min(2, len(title)), len(title) + 1):
+            cand = "-".join(title[:n])
+            others = [words(k[2] or k[1] or "SETUP")[:n] for k in rest if k != key]
             if all("-".join(o) != cand for o in others) and cand not in taken:
                 break
         while cand in taken:

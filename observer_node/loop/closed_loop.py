@@ -137,9 +137,9 @@ def _screened(est_tests: list[CrashTest], val_tests: list[CrashTest], rate_hz: f
     broken = [b for t in (*est_tests, *val_tests) for b in screen_channels(t, window_s[1])]
     flagged = {b.test for b in broken}
     for check in (polarity_outliers, velocity_outliers, payout_outliers,
-                  output_step_outliers):
-        broken += [b for b in check([*est_tests, *val_tests], window_s[1])
-                   if b.test not in flagged]
+                  output_step_outliers):  # a test found broken is no other test's reference
+        broken += check([t for t in (*est_tests, *val_tests) if t.name not in flagged],
+                        window_s[1])
         flagged = {b.test for b in broken}
     left_out = flagged
     est_kept = [t for t in est_tests if t.name not in left_out]
