@@ -13,6 +13,7 @@ import pytest
 from scipy import stats
 
 from observer_node.data import read_isomme, write_isomme
+from observer_node.data.csvio import read_csv, write_csv
 from observer_node.data.filters import cfc_filter
 from observer_node.data.setups import assign_setups
 from observer_node.ident.dataset import make_dataset
@@ -243,6 +244,8 @@ def test_a_channel_the_lab_marked_defect_is_named_in_its_words(tmp_path):
         assert read_isomme(okay).status == {}, word
     # written out again (crash-replay's recordings, an export), the lab's word stays
     assert read_isomme(write_isomme(read_isomme(src), tmp_path / "again")).status == {
+        "cd": "defect"}
+    assert read_csv(write_csv(read_isomme(src), tmp_path / "again.csv")).status == {
         "cd": "defect"}
 
 

@@ -6,6 +6,7 @@ Example::
     # name: R16_001
     # counts_per_rev: 96
     # velocity_ms: 14.40     (optional: the stated impact velocity, m/s)
+    # status: cd=defect      (optional: channels the lab did not pass as ok)
     # signs: model          (or: sae-j211)
     time[s],pulse[g],brs[counts],cr[g],cd[mm]
     -0.0200,0.0231,0,-0.011,0.002
@@ -47,6 +48,8 @@ def write_csv(test: CrashTest, path: str | Path) -> Path:
         head.append(f"# counts_per_rev: {test.counts_per_rev}")
     if test.velocity_ms:
         head.append(f"# velocity_ms: {test.velocity_ms:.2f}")
+    if test.status:  # kept, not laundered: the loop leaves such a test out
+        head.append("# status: " + "; ".join(f"{k}={v}" for k, v in test.status.items()))
     data = np.column_stack(cols)
     with path.open("w", encoding="utf-8", newline="\n") as f:
         f.write("\n".join([*head, ",".join(names)]) + "\n")
@@ -125,6 +128,8 @@ def read_csv(path: str | Path, counts_per_rev: int | None = None) -> CrashTest:
         setup=meta.get("setup", path.stem.split("_")[0].upper()),
         counts_per_rev=counts_per_rev or _int(meta.get("counts_per_rev")),
         velocity_ms=velocity_of(meta.get("velocity_ms", "")),
+        status=dict(item.split("=", 1) for item in re.split(r"\s*;\s*", meta.get("status", ""))
+                    if item.count("=") == 1),
         source=str(path), meta=meta,
     )
 
