@@ -73,6 +73,11 @@ class CrashTest:
         return len(self.pulse_g)
 
     @property
+    def last_s(self) -> float:
+        """Time of the last sample [s] (relative to first contact)."""
+        return self.t0_s + (self.n - 1) / self.fs_hz
+
+    @property
     def time_s(self) -> np.ndarray:
         return self.t0_s + np.arange(self.n) / self.fs_hz
 
@@ -142,8 +147,8 @@ def brs_to_counts(values: np.ndarray, unit: str, counts_per_rev: int | None, whe
             raise CrashDataError(f"{where}: BRS has no unit and reads {odd[0]:g}, not a whole "
                                  "count: give its unit (counts, deg, rad or rev)")
         step = 360.0 / counts_per_rev if counts_per_rev else 0.0
-        moved = finite[finite != finite[0]] - finite[0] if len(finite) else finite
-        if step > 1 and step == round(step) and len(moved) and np.all(moved % step == 0):
+        moved = finite - finite[0] if len(finite) else finite
+        if step > 1 and step == round(step) and np.any(moved) and np.all(moved % step == 0):
             raise CrashDataError(f"{where}: BRS has no unit and moves only in steps of "
                                  f"{step:g}, as {counts_per_rev} counts/rev read in degrees "
                                  "would: give its unit (counts, deg, rad or rev)")

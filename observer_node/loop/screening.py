@@ -128,6 +128,7 @@ from collections.abc import Collection
 from dataclasses import dataclass
 
 import numpy as np
+from scipy.stats import median_abs_deviation
 
 from ..data import CrashTest
 from ..units import STANDARD_GRAVITY
@@ -238,7 +239,7 @@ def screen_channels(test: CrashTest, end_s: float) -> list[BrokenTest]:
                                       f"its extreme {peak:g}"))
                 continue
         dx = np.diff(x)
-        scale = 1.4826 * float(np.median(np.abs(dx - np.median(dx))))
+        scale = float(median_abs_deviation(dx, scale="normal"))
         # the dummy's channels are filtered (CFC 180, 600): a spike is a millisecond wide
         width = max(5, round(SPIKE_MS[ch] / ms) | 1) if ch in SPIKE_MS else 5
         if len(x) > width and scale > 0:
@@ -460,11 +461,11 @@ def velocity_outliers(tests: list[CrashTest], end_s: float) -> list[BrokenTest]:
     tests of their setup (see the module's docstring). A test whose record ends before
     ``end_s`` is not judged (the fit refuses it, saying so)."""
     share = {t.name: (t.setup, _speed_change_ms(t) / t.velocity_ms) for t in tests
-             if t.velocity_ms and t.t0_s + (t.n - 1) / t.fs_hz >= end_s}
+             if t.velocity_ms and t.last_s >= end_s}
     share = {n: (s, r) for n, (s, r) in share.items() if np.isfinite(r) and r > 0}
     out = []
     for x in tests:
-        if x.name not in share or not x.velocity_ms:
+        if x.name not in share or x.velocity_ms is None:  # (the second for the type checker)
             continue
         setup, own = share[x.name]
         rest = np.log([r for n, (s, r) in share.items() if n != x.name and s == setup])
@@ -474,7 +475,7 @@ def velocity_outliers(tests: list[CrashTest], end_s: float) -> list[BrokenTest]:
         # judged only where two thirds of the others agree on it (half of a campaign stating
         # km/h, half m/s, has no reference)
         mid = float(np.median(rest))
-        scatter = 1.4826 * float(np.median(np.abs(rest - mid)))
+        scatter = float(median_abs_deviation(rest, scale="normal"))
         agree = float(np.mean(np.abs(rest - mid) <= np.log1p(VELOCITY_GAP)))
         off = abs(np.log(own) - mid)
         if (agree >= 2 / 3 and off > np.log1p(VELOCITY_GAP)
@@ -493,8 +494,7 @@ def velocity_outliers(tests: list[CrashTest], end_s: float) -> list[BrokenTest]:
 def _zero_shift(test: CrashTest, end_s: float) -> BrokenTest | None:
     """The pulse's zero shift, judged at rest after the crash (see the module's docstring)."""
     n = round(AT_REST_MS * test.fs_hz / 1000.0)
-    t_last_s = test.t0_s + (len(test.pulse_g) - 1) / test.fs_hz
-    if t_last_s - end_s < AT_REST_MS / 1000.0:
+    if test.last_s - end_s < AT_REST_MS / 1000.0:
         return None  # the record ends too soon after the crash to see the car at rest
     x = test.pulse_g - test.pulse_bias_g()
     level, peak = float(np.mean(x[-n:])), float(np.nanmax(np.abs(x[test.index_of(0.0):])))
@@ -525,7 +525,7 @@ def residual_outliers(fit_total: dict[str, float],
         if len(rest) < 3:
             return []
         med = float(np.median(rest))
-        mad = 1.4826 * float(np.median(np.abs(rest - med)))
+        mad = float(median_abs_deviation(rest, scale="normal"))
         if med - f > OUTLIER_POINTS and med - f > OUTLIER_DEVIATIONS * max(mad, 1e-9):
             how = ("in-sample (the only test of its setup)" if name in in_sample
                    else "by a model fitted without it")
