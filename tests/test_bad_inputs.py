@@ -233,6 +233,18 @@ def _whole_degrees(d: Path) -> None:
     lines = p.read_text(encoding="iso-8859-1").splitlines()
     lines = [f"{15 * round(float(v) / 15):.1f}" if v and ":" not in v else v for v in lines]
     p.write_text("\r\n".join(lines) + "\r\n", encoding="iso-8859-1", newline="")
+
+
+def _rounded_degrees(d: Path) -> None:
+    """The 96 counts/rev spindle in degrees (3.75 a count) rounded to whole degrees by an
+    export, its Unit missing: 4, 8, 11, 15 ... read as counts would be 3.75 times the turn."""
+    _edit_key(CH2, "Unit", "NOVALUE")(d)
+    p = d / CH2
+    lines = p.read_text(encoding="iso-8859-1").splitlines()
+    lines = [f"{round(float(v)):d}" if v and ":" not in v else v for v in lines]
+    p.write_text("\r\n".join(lines) + "\r\n", encoding="iso-8859-1", newline="")
+
+
 ISO_CASES: dict[str, tuple[Callable[[Path], None], str]] = {
     "interval NaN": (_edit_key(CH1, "Sampling interval", "NaN"), "Sampling interval"),
     "interval 0": (_edit_key(CH1, "Sampling interval", "0"), "Sampling interval"),
@@ -256,6 +268,8 @@ ISO_CASES: dict[str, tuple[Callable[[Path], None], str]] = {
     # degrees of 3.75 would read as 3.75 times as many counts (a hostile user's finding)
     "BRS unit NOVALUE": (_edit_key(CH2, "Unit", "NOVALUE"), "BRS has no unit and reads"),
     "BRS unit NOVALUE, whole degrees": (_whole_degrees, "moves only in steps of 15"),
+    "BRS unit NOVALUE, degrees rounded": (_rounded_degrees,
+                                          "steps of 3.75 (rounded to whole numbers)"),
     "pulse channel missing": (_edit_key(CH1, "Channel code", "XXXXXXXXXXXXXXXX"), "crash pulse"),
     "a backup of CR beside it": (lambda d: _backup(d, "Channel/R16_001.003"),
                                  "2 channel files hold the CR channel"),

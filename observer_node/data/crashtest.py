@@ -146,12 +146,18 @@ def brs_to_counts(values: np.ndarray, unit: str, counts_per_rev: int | None, whe
         if len(odd):
             raise CrashDataError(f"{where}: BRS has no unit and reads {odd[0]:g}, not a whole "
                                  "count: give its unit (counts, deg, rad or rev)")
+        # Counts pass through every whole number they move by; degrees of 360/N-degree steps
+        # (rounded to whole degrees by an export when 360/N is not whole) lie within half a
+        # degree of a step. Below 2 degrees a step, every whole number does.
         step = 360.0 / counts_per_rev if counts_per_rev else 0.0
         moved = finite - finite[0] if len(finite) else finite
-        if step > 1 and step == round(step) and np.any(moved) and np.all(moved % step == 0):
+        off = np.abs(moved - step * np.round(moved / step)) if step else moved
+        if step >= 2 and np.any(np.abs(moved) >= step) and np.all(off <= 0.5 + 1e-6):
             raise CrashDataError(f"{where}: BRS has no unit and moves only in steps of "
-                                 f"{step:g}, as {counts_per_rev} counts/rev read in degrees "
-                                 "would: give its unit (counts, deg, rad or rev)")
+                                 f"{step:g}" + ("" if step == round(step) else
+                                                 " (rounded to whole numbers)")
+                                 + f", as {counts_per_rev} counts/rev read in degrees would: "
+                                 "give its unit (counts, deg, rad or rev)")
         unit = "counts"
     if unit in BRS_COUNT_UNITS:
         return np.array(values, dtype=float)
