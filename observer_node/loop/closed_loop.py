@@ -69,13 +69,9 @@ from .report_md import markdown
 from .rounds import Context, State, cross_validate, fit3, one_round, residual
 from .screening import (
     BrokenTest,
+    broken_before_fit,
     judged_fits,
-    output_step_outliers,
-    payout_outliers,
-    polarity_outliers,
     residual_outliers,
-    screen_channels,
-    velocity_outliers,
 )
 
 # A rig with fewer estimation tests than this is not judged: with one test, an effect there
@@ -134,14 +130,8 @@ def _screened(est_tests: list[CrashTest], val_tests: list[CrashTest], rate_hz: f
     """Broken channels left out, then tests the thesis grey-box fits far worse than the
     others (:mod:`.screening`); the grey-box identified on what is left."""
     # Broken channels are found on the recorded data, before anything is fitted on them.
-    broken = [b for t in (*est_tests, *val_tests) for b in screen_channels(t, window_s[1])]
-    flagged = {b.test for b in broken}
-    for check in (polarity_outliers, velocity_outliers, payout_outliers,
-                  output_step_outliers):  # a test found broken is no other test's reference
-        broken += check([t for t in (*est_tests, *val_tests) if t.name not in flagged],
-                        window_s[1])
-        flagged = {b.test for b in broken}
-    left_out = flagged
+    broken = broken_before_fit([*est_tests, *val_tests], window_s[1])
+    left_out = {b.test for b in broken}
     est_kept = [t for t in est_tests if t.name not in left_out]
     val_kept = [t for t in val_tests if t.name not in left_out]
     if len(est_kept) < 2 or not val_kept:
