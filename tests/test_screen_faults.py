@@ -1,0 +1,35 @@
+"""The fresh draws of benchmarks/screen_faults.py: a crossed pair is crossed both ways, and a
+drawn campaign goes through the files and the loop's checks to a verdict on its broken test."""
+
+from __future__ import annotations
+
+import subprocess
+import sys
+from pathlib import Path
+
+from benchmarks.heldout.make_sets import make
+from benchmarks.screen_faults import SEED, draw_campaign, judge, median_sizes
+
+ROOT = Path(__file__).resolve().parents[1]
+
+
+def test_crossed_spool_files_cross_two_tests_of_two_rigs_both_ways() -> None:
+    case = draw_campaign(38, SEED, median_sizes())
+    assert case.name.endswith("brs_swap")
+    (a, b) = [e for e in case.effects if e.key == "brs_swap"]
+    assert a.size == -b.size != 0 and set(case.expect_broken) == {*a.tests, *b.tests}
+    assert a.tests[0].split("_")[0] != b.tests[0].split("_")[0]  # of two rigs
+
+
+def test_a_drawn_campaign_is_judged_from_its_files(tmp_path: Path) -> None:
+    case = draw_campaign(19, SEED, median_sizes())  # a pulse clipped at its rails, R16_001
+    make([case], tmp_path, log=False)
+    row = judge(case, tmp_path / case.name)
+    assert row["broken"] == ["R16_001"] == row["found"] == row["on_channel"]
+    assert row["clean_named"] == [] and row["clean_tests"] == 11
+
+
+def test_bad_arguments_get_one_line_and_exit_2() -> None:
+    run = subprocess.run([sys.executable, "-m", "benchmarks.screen_faults", "--campaigns",
+                          "many"], cwd=ROOT, capture_output=True, text=True, check=False)
+    assert run.returncode == 2 and "invalid int value" in run.stderr
