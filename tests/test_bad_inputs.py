@@ -15,9 +15,12 @@ import zipfile
 from collections.abc import Callable
 from pathlib import Path
 
+import numpy as np
 import pytest
 
 from observer_node import cli
+from observer_node.data import CrashDataError
+from observer_node.data.crashtest import brs_to_counts
 from observer_node.evaluation import identify
 from observer_node.ident.dataset import make_dataset
 from observer_node.replay import cli as replay_cli
@@ -411,3 +414,23 @@ def test_slow_replay_config_is_accepted(tmp_path):
                  "cpu_latency_us = -1\n")
     cfg = NodeConfig.from_toml(p)
     assert (cfg.accel_timeout_s, cfg.brs_timeout_s, cfg.idle_after_s) == (2.0, 5.0, 10.0)
+
+
+@pytest.mark.parametrize(("values", "per_rev", "refused"), [
+    (np.round(0.4 + 3.75 * np.arange(40)), 96, True),  # degrees from a zero off a step
+    (np.round(-5.625 * np.arange(40)), 64, True),
+    (-np.arange(40.0), 96, False),  # counts pass through every whole number
+    ([0, 0, -3, -3], 128, False),  # a few levels say too little
+    ([0, 3, 6, 8], 128, False),
+    ([100, 104, 100], 96, False),
+])
+def test_a_brs_without_a_unit_is_read_as_counts_unless_it_moves_in_degree_steps(
+        values, per_rev, refused) -> None:
+    def read() -> np.ndarray:
+        return brs_to_counts(np.asarray(values, float), "", per_rev, "T.002:7 Unit", "T.002",
+                             "in the .mme")
+    if refused:
+        with pytest.raises(CrashDataError, match=r"T\.002:7 Unit: BRS has no unit and moves"):
+            read()
+    else:
+        assert np.array_equal(read(), np.asarray(values, float))

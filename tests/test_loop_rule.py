@@ -293,7 +293,36 @@ def test_three_close_tests_do_not_make_a_fourth_clean_one_out_of_step(campaign):
     assert payout_outliers(tests, 0.15) == []
 
 
-@pytest.mark.parametrize("channel", ["pulse_g", "brs", "cd_mm"])
+def test_a_pulse_two_tests_share_is_not_a_copy(campaign):
+    # a crash's driver and passenger filed as two tests share the car's one accelerometer
+    src = next(t for t in campaign if t.name == "FULL_001")
+    tests = [_broken(t, pulse_g=src.pulse_g.copy()) if t.name == "FULL_003" else t
+             for t in _grouped(campaign)]
+    assert copied_channels(tests, 0.15) == []
+
+
+def test_a_spool_far_out_of_step_is_named_whatever_few_tests_say(campaign):
+    # four R16 tests alone: the interval of three others is too wide to judge (Student's t on
+    # 2 degrees of freedom), but a BRS 30 ms late lies further from them than any clean
+    # test of a rig we hold lies from its nearest (a helper's attack, session 37)
+    picked = ("R16_002", "R16_004", "R16_012", "R16_008")
+    tests = [_broken(t, brs=_late(t.brs, 30, t.fs_hz)) if t.name == "R16_002" else t
+             for t in _grouped(campaign) if t.name in picked]
+    assert [f.test for f in payout_outliers(tests, 0.15)] == ["R16_002"]
+
+
+def test_a_crossed_partner_alone_on_its_rig_is_named(campaign):
+    # R16_002's and FULL_002's spool files crossed, FULL_002 the only FULL test: its side of
+    # the crossing cannot be seen, and it is named as before (a helper's attack, session 37)
+    tests = [t for t in _grouped(campaign) if t.setup != "FULL" or t.name == "FULL_002"]
+    r16 = next(t for t in tests if t.name == "R16_002")
+    full = next(t for t in tests if t.name == "FULL_002")
+    crossed = [_broken(t, brs=full.brs) if t is r16 else _broken(t, brs=r16.brs) if t is full
+               else t for t in tests]
+    assert [f.test for f in payout_outliers(crossed, 0.15)] == ["R16_002", "FULL_002"]
+
+
+@pytest.mark.parametrize("channel", ["brs", "cr_g", "cd_mm"])
 def test_a_channel_copied_from_another_test_names_both(campaign, channel):
     # the lab copied R16_003's file of one channel into SLED_001's folder: which of the two
     # is the copy the samples cannot tell
@@ -305,6 +334,11 @@ def test_a_channel_copied_from_another_test_names_both(campaign, channel):
     assert sorted(f.test for f in found) == ["R16_003", "SLED_001"], found
     assert all("same samples as" in f.reason for f in found)
     assert {b.test for b in broken_before_fit(tests, 0.15)} >= {"R16_003", "SLED_001"}
+    # copied into a third folder too: each test named once
+    thrice = [_broken(t, **{channel: getattr(src, channel).copy()}) if t.name == "FULL_001"
+              else t for t in tests]
+    found = copied_channels(thrice, 0.15)
+    assert sorted(f.test for f in found) == ["FULL_001", "R16_003", "SLED_001"], found
 
 
 def _late(x, ms, fs_hz):

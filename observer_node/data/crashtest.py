@@ -148,11 +148,18 @@ def brs_to_counts(values: np.ndarray, unit: str, counts_per_rev: int | None, whe
                                  "count: give its unit (counts, deg, rad or rev)")
         # Counts pass through every whole number they move by; degrees of 360/N-degree steps
         # (rounded to whole degrees by an export when 360/N is not whole) lie within half a
-        # degree of a step. Below 2 degrees a step, every whole number does.
+        # degree of a step, from a zero that may itself lie off a step. Under 2.5 degrees a
+        # step, whole numbers can all do so; a channel at four levels or fewer says too little.
         step = 360.0 / counts_per_rev if counts_per_rev else 0.0
         moved = finite - finite[0] if len(finite) else finite
-        off = np.abs(moved - step * np.round(moved / step)) if step else moved
-        if step >= 2 and np.any(np.abs(moved) >= step) and np.all(off <= 0.5 + 1e-6):
+        if step == round(step):
+            stepped = step > 1 and bool(np.any(moved)) and bool(np.all(moved % step == 0))
+        else:
+            levels = np.unique(moved[moved != 0])
+            stepped = step >= 2.5 and len(levels) > 4 and any(
+                np.all(np.abs(levels - zero - step * np.round((levels - zero) / step)) <= 0.51)
+                for zero in np.arange(-0.5, 0.5, 0.02))
+        if stepped:
             raise CrashDataError(f"{where}: BRS has no unit and moves only in steps of "
                                  f"{step:g}" + ("" if step == round(step) else
                                                  " (rounded to whole numbers)")
