@@ -426,8 +426,10 @@ def _outside_prediction(own: float, rest: np.ndarray, sd: float, dof: int) -> bo
     """Whether ``own`` lies outside the two-sided (1 - PAYOUT_ALPHA) prediction interval of one
     more test beside ``rest`` (their mean), the scatter ``sd`` estimated on ``dof`` degrees of
     freedom (Student's t)."""
-    if sd == 0.0 or dof < 1:
-        return sd == 0.0 and dof >= 1
+    if dof < 1:
+        return False  # no scatter read at all
+    if sd == 0.0:
+        return True  # the others agree exactly, and the gap rule already set it apart
     z = abs(own - float(np.mean(rest))) / (sd * np.sqrt(1.0 + 1.0 / len(rest)))
     return bool(2.0 * student_t.sf(z, dof) < PAYOUT_ALPHA)
 
@@ -459,18 +461,16 @@ def _crossed_with(x: CrashTest, rest: np.ndarray, tests: list[CrashTest],
     # setup's do. A spool that lost counts fits no other crash (fresh draws of the held-out
     # simulator: a decoder's lost counts named an innocent partner in 2 of 26, session 37).
     # The only test of its setup has no side to be seen from: named as before, one-sided.
+    seen = f"its spool, read against {x.name}'s pulse, pays out as the {x.setup} tests' do " \
+        f"({gap:.1f} ms from the nearest), and no other test's does"
+    crossed = f": its BRS file and {x.name}'s are crossed"
     if not len(peers):
-        return [BrokenTest(z.name, "brs", f"its spool, read against {x.name}'s pulse, pays out "
-                           f"as the {x.setup} tests' do ({gap:.1f} ms from the nearest), and no "
-                           f"other test's does: its BRS file and {x.name}'s are crossed")], False
+        return [BrokenTest(z.name, "brs", seen + crossed)], False
     back = float(np.min(np.abs(peers - _payout_lag_ms(z, end_s, x.brs))))
     if not back < PARTNER_GAP_MS:
         return [], False
-    return [BrokenTest(z.name, "brs", f"its spool, read against {x.name}'s pulse, pays out as "
-                       f"the {x.setup} tests' do ({gap:.1f} ms from the nearest), and no other "
-                       f"test's does, and {x.name}'s, read against its pulse, as the {z.setup} "
-                       f"tests' do ({back:.1f} ms): its BRS file and {x.name}'s are "
-                       "crossed")], True
+    return [BrokenTest(z.name, "brs", f"{seen}, and {x.name}'s, read against its pulse, as the "
+                       f"{z.setup} tests' do ({back:.1f} ms){crossed}")], True
 
 
 def _rise_ms(test: CrashTest, x: np.ndarray, end_s: float) -> np.ndarray:
