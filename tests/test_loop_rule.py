@@ -31,6 +31,7 @@ from observer_node.loop.screening import (
     payout_outliers,
     polarity_outliers,
     residual_outliers,
+    reversed_outputs,
     screen_channels,
     velocity_outliers,
 )
@@ -177,7 +178,8 @@ def _broken(test, **arrays):
 
 @pytest.mark.parametrize("fault", ["frozen_brs", "nan_cd", "spike_cr", "saturated_cd",
                                    "frozen_cd", "zero_shift_pulse", "filtered_spikes_cd",
-                                   "mains_hum_cr", "counter_reset_brs"])
+                                   "mains_hum_cr", "counter_reset_brs", "cable_break_cr",
+                                   "wiper_off_cd"])
 def test_a_broken_channel_is_named(campaign, fault):
     t = next(x for x in campaign if x.name == "R16_003")
     i = t.index_of(0.030)
@@ -220,6 +222,14 @@ def test_a_broken_channel_is_named(campaign, fault):
         k = t.index_of(0.070)
         brs[k:] -= brs[k]
         b, channel = _broken(t, brs=brs), "brs"
+    elif fault == "cable_break_cr":
+        # the spine accelerometer's cable parts at 30 ms: the amplifier reads a constant 0 g,
+        # which the lab's CFC 180 turns into a decay, never the same value twice
+        cut = np.where(t.time_s >= 0.030, 0.0, t.cr_g)
+        b, channel = _broken(t, cr_g=cfc_filter(cut, t.fs_hz, 180)), "cr"
+    elif fault == "wiper_off_cd":  # the pot's wiper off its track for 10 ms, through CFC 600
+        off = (t.time_s >= 0.030) & (t.time_s < 0.040)
+        b, channel = _broken(t, cd_mm=cfc_filter(np.where(off, 0.0, t.cd_mm), t.fs_hz, 600)), "cd"
     else:
         cd = t.cd_mm.copy()
         cd[i:i + 40] = cd[i]
@@ -262,6 +272,28 @@ def test_a_brs_recorded_at_the_wrong_polarity_is_named(campaign):
     found = polarity_outliers(flipped, 0.15)
     assert [(f.test, f.channel) for f in found] == [("SLED_002", "brs")], found
     assert "pay" in found[0].reason
+
+
+@pytest.mark.parametrize("channel", ["cr_g", "cd_mm"])
+def test_a_chest_channel_recorded_at_the_wrong_polarity_is_named(campaign, channel):
+    assert reversed_outputs(campaign, 0.15) == []
+    t = next(x for x in campaign if x.name == "FULL_004")
+    flipped = [_broken(x, **{channel: -getattr(x, channel)}) if x is t else x for x in campaign]
+    found = reversed_outputs(flipped, 0.15)
+    assert [(f.test, f.channel) for f in found] == [("FULL_004", channel[:2])], found
+    assert "wrong polarity" in found[0].reason
+    # a whole campaign the other way is a convention, not a broken test; two others say too
+    # little
+    assert reversed_outputs([_broken(x, **{channel: -getattr(x, channel)})
+                             for x in campaign], 0.15) == []
+    assert reversed_outputs([*flipped[:2], flipped[campaign.index(t)]], 0.15) == []
+
+
+def test_a_quiet_pre_trigger_names_no_channel_quieter_than_at_rest(campaign):
+    # a lab that zeroes its pre-trigger samples gives no noise to compare the crash with
+    t = next(x for x in campaign if x.name == "R16_003")
+    still = np.where(t.time_s < 0.0, 0.0, t.cr_g)
+    assert screen_channels(_broken(t, cr_g=still), 0.15) == []
 
 
 def test_crossed_brs_files_are_found_by_the_pay_out_against_the_pulse(campaign):

@@ -39,7 +39,17 @@ Per channel, on the recorded samples from first contact to the end of the scorin
   the same 1116 tests clean CR stays under 1.2 % and CD under 0.5 %; set F's 6 g mains hum on
   CR reached 12 %. The report names the strongest frequency (a ground loop shows the mains'
   50 or 60 Hz). Not on the pulse: a late trigger puts the crash's onset there. Added after
-  held-out set F.
+  held-out set F;
+- **quieter than at rest** (CR and CD): the lab's noise never stops, and in the crash the
+  chest moves too, so a channel changes from sample to sample by at least its noise. One
+  whose every change stays under a tenth of the median change at rest (its robust scale over
+  the 10 ms or more before contact) for over 4 ms while the pulse is above a fifth of its
+  peak has stopped reading the dummy: a cable that parted, whose amplifier reads a constant
+  the lab's CFC filter turns into a decay (never one value twice, so not *frozen* above), or
+  a pot's wiper off its track. On the bundled campaign the longest such run is 1.1 ms. Not
+  judged where the samples before contact do not change (a lab that zeroes them). Added in
+  session 38: the independent simulator's CR cable break and CD wiper drop-out were never
+  found before the fit (``benchmarks/screen_faults.py``).
 
 Per test, against the other tests of the set (those not already found broken: a broken test
 is no other test's reference):
@@ -60,6 +70,14 @@ is no other test's reference):
   of the bundled campaign and held-out sets A-D, the one BRS recorded reversed paid in 0.75
   turn after 9 counts out; every other test's rebound was at most 0.125 turn, after paying
   out more than it wound back. Added after held-out set D.
+- **CR or CD at the wrong polarity**: in the model's convention (retardation and compression
+  positive) a chest's CR and CD, from their median at rest, add up positive from first contact
+  to the window's end (on the bundled campaign CR +1.46 to +1.95 g·s, CD +1.29 to +1.67 mm·s).
+  A test whose area is negative, by more than a quarter of the other tests' median, where
+  three quarters of three or more other tests read positive, was recorded with that channel's
+  polarity set wrong, or the channel reads no chest at all (a run-away simulation of held-out
+  set T is named so). A campaign all the other way is the lab's convention, not a broken test.
+  Added in session 38, for the same reason as the check above.
 - **BRS pay-out out of step with its own pulse**: the spool pays out as the occupant moves forward
   in the car, so on one rig (same belt, seat and dummy) the time from the car's free flight of 50
   mm (the pulse integrated twice from first contact) to half the spool's pay-out (counted from its
@@ -158,6 +176,9 @@ from ..data import CrashTest
 from ..units import STANDARD_GRAVITY
 
 FROZEN_MS = {"cr": 2.0, "cd": 2.0}
+QUIET_SHARE = 0.1  # of the channel's sample-to-sample change at rest
+QUIET_MS = 4.0
+REVERSED_SHARE = 0.25  # of the other tests' median integral: below it, too small to read
 BRS_DV_LEFT = 0.3
 SATURATED_MS = 1.0
 SPIKE_SCALES = 10.0
@@ -242,6 +263,9 @@ def screen_channels(test: CrashTest, end_s: float) -> list[BrokenTest]:
                                       f"crash (from t = {(at + i0) * ms + 1000 * test.t0_s:.1f}"
                                       f" ms) at {x[at]:g}"))
                 continue
+        if ch in FROZEN_MS and (quiet := _quieter_than_at_rest(test, ch, x, pulse)):
+            out.append(quiet)
+            continue
         if ch == "brs" and (jump := _counter_jump(test, x, i0)):
             out.append(jump)
             continue
@@ -279,6 +303,30 @@ def screen_channels(test: CrashTest, end_s: float) -> list[BrokenTest]:
                 out.append(BrokenTest(test.name, ch, f"{int(spikes.sum())} spike(s) (first at "
                                       f"t = {at_ms:.1f} ms)"))
     return out
+
+
+def _quieter_than_at_rest(test: CrashTest, ch: str, x: np.ndarray,
+                          pulse: np.ndarray) -> BrokenTest | None:
+    """CR or CD changing less from sample to sample during the crash than at rest (see the
+    module's docstring); ``x`` and ``pulse`` from first contact, as in ``screen_channels``."""
+    full = test.cr_g if ch == "cr" else test.cd_mm
+    pre = full[test.time_s < 0.0] if full is not None else np.empty(0)
+    ms = 1000.0 / test.fs_hz
+    if len(pre) * ms < AT_REST_MIN_MS or not np.all(np.isfinite(pre)) or np.ptp(pulse) == 0:
+        return None
+    step = float(median_abs_deviation(np.diff(pre), scale="normal"))
+    if step == 0:  # a zeroed or coarsely quantised pre-trigger: no noise to compare with
+        return None
+    crash = np.abs(pulse[1:]) > 0.2 * np.max(np.abs(pulse))
+    # a run of one value of the count of loud steps is a run of quiet steps
+    run, at = _longest_run(np.cumsum(np.abs(np.diff(x)) >= QUIET_SHARE * step), crash)
+    if run * ms <= QUIET_MS:
+        return None
+    from_ms = 1000.0 * test.time_s[test.index_of(0.0)] + (at + 1) * ms
+    unit = "g" if ch == "cr" else "mm"
+    return BrokenTest(test.name, ch, f"changes less than at rest for {run * ms:.1f} ms during "
+                      f"the crash (from t = {from_ms:.1f} ms, near {x[at + 1]:.2f} {unit}): it "
+                      "stopped reading the dummy (a cable parted, a wiper off its track)")
 
 
 def _counter_jump(test: CrashTest, brs: np.ndarray, i0: int) -> BrokenTest | None:
@@ -343,6 +391,34 @@ def polarity_outliers(tests: list[CrashTest], end_s: float) -> list[BrokenTest]:
                 name, "brs", f"pays in {pay_in:.0f} counts after paying out {pay_out:.0f}, as "
                 f"no loaded belt does and {usual} of the other {len(others)} tests do not: "
                 "recorded at the wrong polarity"))
+    return out
+
+
+def reversed_outputs(tests: list[CrashTest], end_s: float) -> list[BrokenTest]:
+    """Tests whose CR or CD reads the chest opening, or pushed forward, through the crash where
+    the other tests read it compressed, retarded (see the module's docstring)."""
+    out = []
+    for ch, unit in (("cr", "g·s"), ("cd", "mm·s")):
+        area = {}
+        for t in tests:
+            x = t.cr_g if ch == "cr" else t.cd_mm
+            if x is None:
+                continue
+            pre = x[t.time_s < 0.0]
+            zero = float(np.median(pre)) if len(pre) else 0.0
+            a = float(np.sum(x[t.index_of(0.0):t.index_of(end_s) + 1] - zero)) / t.fs_hz
+            if np.isfinite(a):
+                area[t.name] = a
+        for name, a in area.items():
+            others = np.array([v for n, v in area.items() if n != name])
+            usual = int(np.sum(others > 0))
+            if (a < 0 and len(others) >= 3 and usual >= 0.75 * len(others)
+                    and -a > REVERSED_SHARE * float(np.median(np.abs(others)))):
+                out.append(BrokenTest(
+                    name, ch, f"reads the other way through the crash (its area {a:+.3f} {unit} "
+                    f"from contact to {1000 * end_s:g} ms; {usual} of the other {len(others)} "
+                    f"tests' median {float(np.median(others)):+.3f}): recorded at the wrong "
+                    "polarity, or not reading a chest at all"))
     return out
 
 
@@ -599,8 +675,8 @@ def broken_before_fit(tests: list[CrashTest], end_s: float) -> list[BrokenTest]:
     crash read too fast would otherwise be blamed on the BRS."""
     broken = [b for t in tests for b in screen_channels(t, end_s)]
     flagged = {b.test for b in broken}
-    for check in (copied_channels, polarity_outliers, velocity_outliers, payout_outliers,
-                  output_step_outliers):
+    for check in (copied_channels, polarity_outliers, reversed_outputs, velocity_outliers,
+                  payout_outliers, output_step_outliers):
         broken += check([t for t in tests if t.name not in flagged], end_s)
         flagged = {b.test for b in broken}
     return broken
