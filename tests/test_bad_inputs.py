@@ -248,6 +248,15 @@ def _rounded_degrees(d: Path) -> None:
     p.write_text("\r\n".join(lines) + "\r\n", encoding="iso-8859-1", newline="")
 
 
+def _counts_as_degrees(d: Path) -> None:
+    """The 96 counts/rev spindle's raw counts written under its "deg" Unit by an export: 1, 2,
+    3 ... degrees would read as a 3.75th of the turn."""
+    p = d / CH2
+    lines = p.read_text(encoding="iso-8859-1").splitlines()
+    lines = [f"{round(float(v) / 3.75):d}" if v and ":" not in v else v for v in lines]
+    p.write_text("\r\n".join(lines) + "\r\n", encoding="iso-8859-1", newline="")
+
+
 ISO_CASES: dict[str, tuple[Callable[[Path], None], str]] = {
     "interval NaN": (_edit_key(CH1, "Sampling interval", "NaN"), "Sampling interval"),
     "interval 0": (_edit_key(CH1, "Sampling interval", "0"), "Sampling interval"),
@@ -273,6 +282,8 @@ ISO_CASES: dict[str, tuple[Callable[[Path], None], str]] = {
     "BRS unit NOVALUE, whole degrees": (_whole_degrees, "moves only in steps of 15"),
     "BRS unit NOVALUE, degrees rounded": (_rounded_degrees,
                                           "steps of 3.75 (rounded to whole numbers)"),
+    "BRS raw counts under a deg Unit": (_counts_as_degrees,
+                                        "whole numbers that steps of 3.75 deg"),
     "pulse channel missing": (_edit_key(CH1, "Channel code", "XXXXXXXXXXXXXXXX"), "crash pulse"),
     "a backup of CR beside it": (lambda d: _backup(d, "Channel/R16_001.003"),
                                  "2 channel files hold the CR channel"),
@@ -434,3 +445,25 @@ def test_a_brs_without_a_unit_is_read_as_counts_unless_it_moves_in_degree_steps(
             read()
     else:
         assert np.array_equal(read(), np.asarray(values, float))
+
+
+@pytest.mark.parametrize(("values", "per_rev", "refused"), [
+    (-np.arange(40.0), 96, True),  # raw counts under a degree header
+    (-np.arange(40.0), 72, True),  # (5 degrees a count: whole steps)
+    (-3.75 * np.arange(40), 96, False),  # degrees, some of them whole numbers
+    (-15.0 * np.arange(40), 48, False),  # degrees, every one a whole number
+    (np.round(0.4 - 3.75 * np.arange(40)), 96, False),  # rounded to whole degrees by an export
+    (-0.37 * np.arange(40), 96, False),  # an analogue angle, not a counter's
+    ([0, -1, -2, -3, -2], 96, False),  # a few levels say too little
+    (-np.arange(40.0), 360, False),  # one degree a count: counts and degrees agree
+])
+def test_a_brs_in_degrees_that_no_count_of_its_resolution_lands_near_is_refused(
+        values, per_rev, refused) -> None:
+    def read() -> np.ndarray:
+        return brs_to_counts(np.asarray(values, float), "deg", per_rev, "T.002:7 Unit",
+                             "T.002", "in the .mme")
+    if refused:
+        with pytest.raises(CrashDataError, match=r"T\.002:7 Unit: BRS in deg reads whole"):
+            read()
+    else:
+        assert np.array_equal(read(), np.round(np.asarray(values, float) * per_rev / 360.0))

@@ -146,20 +146,8 @@ def brs_to_counts(values: np.ndarray, unit: str, counts_per_rev: int | None, whe
         if len(odd):
             raise CrashDataError(f"{where}: BRS has no unit and reads {odd[0]:g}, not a whole "
                                  "count: give its unit (counts, deg, rad or rev)")
-        # Counts pass through every whole number they move by; degrees of 360/N-degree steps
-        # (rounded to whole degrees by an export when 360/N is not whole) lie within half a
-        # degree of a step, from a zero that may itself lie off a step. Under 2.5 degrees a
-        # step, whole numbers can all do so; a channel at four levels or fewer says too little.
         step = 360.0 / counts_per_rev if counts_per_rev else 0.0
-        moved = finite - finite[0] if len(finite) else finite
-        if step == round(step):
-            stepped = step > 1 and bool(np.any(moved)) and bool(np.all(moved % step == 0))
-        else:
-            levels = np.unique(moved[moved != 0])
-            stepped = step >= 2.5 and len(levels) > 4 and any(
-                np.all(np.abs(levels - zero - step * np.round((levels - zero) / step)) <= 0.51)
-                for zero in np.arange(-0.5, 0.5, 0.02))
-        if stepped:
+        if _on_steps(finite, step):
             raise CrashDataError(f"{where}: BRS has no unit and moves only in steps of "
                                  f"{step:g}" + ("" if step == round(step) else
                                                  " (rounded to whole numbers)")
@@ -175,7 +163,30 @@ def brs_to_counts(values: np.ndarray, unit: str, counts_per_rev: int | None, whe
     if counts_per_rev is None:
         raise CrashDataError(f"{source}: BRS is in {unit} but counts/rev is unknown: give it "
                              f"{how_to_give}")
+    finite = np.asarray(values, dtype=float)[np.isfinite(values)]
+    step = per_rev / counts_per_rev
+    if np.all(finite == np.round(finite)) and _on_steps(finite, step) is False:
+        raise CrashDataError(f"{where}: BRS in {unit} reads whole numbers that steps of "
+                             f"{step:g} {unit} ({counts_per_rev} counts/rev) never land near, "
+                             "as the spindle's raw counts would: give its unit (counts, deg, "
+                             "rad or rev), or the resolution it was recorded at")
     return np.round(values * counts_per_rev / per_rev)
+
+
+def _on_steps(values: np.ndarray, step: float) -> bool | None:
+    """Whether whole-number BRS ``values`` lie on steps of ``step`` from their first (each
+    rounded to a whole number where ``step`` is not whole, from a zero that may itself lie off
+    a step); None when they cannot say. Counts pass through every whole number they move by:
+    under 2.5 a step, whole numbers can all lie near steps, and four levels or fewer say too
+    little."""
+    moved = values - values[0] if len(values) else values
+    levels = np.unique(moved[moved != 0])
+    if step == round(step):
+        return bool(np.all(levels % step == 0)) if step > 1 and len(levels) else None
+    if step < 2.5 or len(levels) <= 4:
+        return None
+    return any(bool(np.all(np.abs(levels - zero - step * np.round((levels - zero) / step))
+                           <= 0.51)) for zero in np.arange(-0.5, 0.5, 0.02))
 
 
 def decimation_step(fs_in_hz: float, fs_out_hz: float) -> int:
