@@ -33,3 +33,22 @@ def test_bad_arguments_get_one_line_and_exit_2() -> None:
     run = subprocess.run([sys.executable, "-m", "benchmarks.screen_faults", "--campaigns",
                           "many"], cwd=ROOT, capture_output=True, text=True, check=False)
     assert run.returncode == 2 and "invalid int value" in run.stderr
+
+
+def test_raw_counts_under_a_degree_header_are_refused_naming_their_file(tmp_path: Path) -> None:
+    case = draw_campaign(8, SEED, median_sizes())  # FULL_001's spindle in counts, "deg"
+    make([case], tmp_path, log=False)
+    row = judge(case, tmp_path / case.name)
+    assert row["form"] == "brs_counts" and row["refused_broken"], row
+    assert "FULL_001" in row["refused"] and "whole numbers" in row["refused"]
+
+
+def test_a_cable_break_and_a_reversed_channel_are_named_on_their_channel(
+        tmp_path: Path) -> None:
+    cases = [draw_campaign(k, SEED, median_sizes()) for k in (2, 3)]
+    make(cases, tmp_path, log=False)
+    for case, channel in zip(cases, ("cr", "cd"), strict=True):
+        row = judge(case, tmp_path / case.name)
+        assert row["found"] == row["on_channel"] == list(case.expect_broken), row
+        assert row["clean_named"] == [], row
+        assert channel in case.name
