@@ -456,6 +456,7 @@ def test_a_brs_without_a_unit_is_read_as_counts_unless_it_moves_in_degree_steps(
     (-0.37 * np.arange(40), 96, False),  # an analogue angle, not a counter's
     ([0, -1, -2, -3, -2], 96, False),  # a few levels say too little
     (-np.arange(40.0), 360, False),  # one degree a count: counts and degrees agree
+    (np.round(22.5 - 7.5 * np.arange(40)), 48, False),  # x.5 rounded half to even
 ])
 def test_a_brs_in_degrees_that_no_count_of_its_resolution_lands_near_is_refused(
         values, per_rev, refused) -> None:
@@ -467,3 +468,12 @@ def test_a_brs_in_degrees_that_no_count_of_its_resolution_lands_near_is_refused(
             read()
     else:
         assert np.array_equal(read(), np.round(np.asarray(values, float) * per_rev / 360.0))
+
+
+@pytest.mark.parametrize("unit", ["rev", "rad"])
+def test_a_brs_of_whole_turns_or_radians_is_refused_as_counts(unit) -> None:
+    with pytest.raises(CrashDataError, match=rf"BRS in {unit} reads whole numbers"):
+        brs_to_counts(-np.arange(40.0), unit, 96, "T.002:7 Unit", "T.002", "in the .mme")
+    turns = -np.arange(40.0) / 96 * (1.0 if unit == "rev" else 2 * np.pi)
+    assert np.array_equal(brs_to_counts(turns, unit, 96, "T.002:7 Unit", "T.002", "in the .mme"),
+                          -np.arange(40.0))

@@ -179,7 +179,7 @@ def _broken(test, **arrays):
 @pytest.mark.parametrize("fault", ["frozen_brs", "nan_cd", "spike_cr", "saturated_cd",
                                    "frozen_cd", "zero_shift_pulse", "filtered_spikes_cd",
                                    "mains_hum_cr", "counter_reset_brs", "cable_break_cr",
-                                   "wiper_off_cd"])
+                                   "wiper_off_cd", "cable_break_noisy_cr"])
 def test_a_broken_channel_is_named(campaign, fault):
     t = next(x for x in campaign if x.name == "R16_003")
     i = t.index_of(0.030)
@@ -227,6 +227,13 @@ def test_a_broken_channel_is_named(campaign, fault):
         # which the lab's CFC 180 turns into a decay, never the same value twice
         cut = np.where(t.time_s >= 0.030, 0.0, t.cr_g)
         b, channel = _broken(t, cr_g=cfc_filter(cut, t.fs_hz, 180)), "cr"
+    elif fault == "cable_break_noisy_cr":
+        # as above, but the amplifier reads its own noise, as large as the channel's at rest
+        cut = cfc_filter(np.where(t.time_s >= 0.030, 0.0, t.cr_g), t.fs_hz, 180)
+        rng = np.random.default_rng(3)
+        hiss = cfc_filter(rng.standard_normal(t.cr_g.size), t.fs_hz, 180)
+        hiss *= np.std(t.cr_g[t.time_s < 0.0]) / np.std(hiss)
+        b, channel = _broken(t, cr_g=np.where(t.time_s >= 0.030, cut + hiss, t.cr_g)), "cr"
     elif fault == "wiper_off_cd":  # the pot's wiper off its track for 10 ms, through CFC 600
         off = (t.time_s >= 0.030) & (t.time_s < 0.040)
         b, channel = _broken(t, cd_mm=cfc_filter(np.where(off, 0.0, t.cd_mm), t.fs_hz, 600)), "cd"
@@ -282,11 +289,38 @@ def test_a_chest_channel_recorded_at_the_wrong_polarity_is_named(campaign, chann
     found = reversed_outputs(flipped, 0.15)
     assert [(f.test, f.channel) for f in found] == [("FULL_004", channel[:2])], found
     assert "wrong polarity" in found[0].reason
-    # a whole campaign the other way is a convention, not a broken test; two others say too
-    # little
-    assert reversed_outputs([_broken(x, **{channel: -getattr(x, channel)})
-                             for x in campaign], 0.15) == []
-    assert reversed_outputs([*flipped[:2], flipped[campaign.index(t)]], 0.15) == []
+    # against its own pulse, whatever the other tests read: alone, and beside two others
+    # reversed alike
+    assert [(f.test, f.channel) for f in reversed_outputs([flipped[campaign.index(t)]], 0.15)
+            ] == [("FULL_004", channel[:2])]
+    four = [x for x in campaign if x.name in ("FULL_004", "R16_001", "R16_002", "SLED_001")]
+    two = [_broken(x, **{channel: -getattr(x, channel)}) if x.name in ("R16_001", "FULL_004")
+           else x for x in four]
+    assert {f.test for f in reversed_outputs(two, 0.15)} == {"R16_001", "FULL_004"}
+
+
+def test_a_test_all_the_other_way_names_its_channels_and_a_reversed_pulse_the_pulse(campaign):
+    def flip(x, *chs):
+        return _broken(x, **{c: -getattr(x, c) for c in chs})
+    # one test's every channel the other way (its pulse, CR, CD agree with each other)
+    whole = [flip(x, "pulse_g", "cr_g", "cd_mm") if x.name == "SLED_004" else x
+             for x in campaign]
+    assert sorted(f.channel for f in reversed_outputs(whole, 0.15)) == ["cd", "cr", "pulse"]
+    # a whole campaign the other way is a convention, not a broken test
+    assert reversed_outputs([flip(x, "pulse_g", "cr_g", "cd_mm") for x in campaign], 0.15) == []
+    # the pulse alone reversed: both dummy channels read against it, the pulse is named
+    pulse = [flip(x, "pulse_g") if x.name == "SLED_004" else x for x in campaign]
+    assert [(f.test, f.channel) for f in reversed_outputs(pulse, 0.15)] == [("SLED_004",
+                                                                             "pulse")]
+
+
+def test_a_clean_test_recorded_at_1_khz_is_not_named(campaign):
+    # one sample at a channel's extreme is 1 ms at 1 kHz: a peak, not a flat top
+    t = next(x for x in campaign if x.name == "R16_003")
+    k = 10
+    slow = dataclasses.replace(t, fs_hz=t.fs_hz / k, pulse_g=t.pulse_g[::k], brs=t.brs[::k],
+                               cr_g=t.cr_g[::k], cd_mm=t.cd_mm[::k])
+    assert screen_channels(slow, 0.15) == []
 
 
 def test_a_quiet_pre_trigger_names_no_channel_quieter_than_at_rest(campaign):

@@ -165,11 +165,15 @@ def brs_to_counts(values: np.ndarray, unit: str, counts_per_rev: int | None, whe
                              f"{how_to_give}")
     finite = np.asarray(values, dtype=float)[np.isfinite(values)]
     step = per_rev / counts_per_rev
-    if np.all(finite == np.round(finite)) and _on_steps(finite, step) is False:
+    whole = bool(np.all(finite == np.round(finite)))
+    # whole radians or turns at more than four levels are no angle a spindle reads
+    coarse = per_rev < 10 and len(np.unique(finite)) > 5
+    if whole and (coarse or _on_steps(finite, step) is False):
         raise CrashDataError(f"{where}: BRS in {unit} reads whole numbers that steps of "
                              f"{step:g} {unit} ({counts_per_rev} counts/rev) never land near, "
-                             "as the spindle's raw counts would: give its unit (counts, deg, "
-                             "rad or rev), or the resolution it was recorded at")
+                             "as the spindle's raw counts would (or an angle rounded to whole "
+                             f"{unit}): give its unit (counts, deg, rad or rev), or the "
+                             "resolution it was recorded at")
     return np.round(values * counts_per_rev / per_rev)
 
 
@@ -186,7 +190,7 @@ def _on_steps(values: np.ndarray, step: float) -> bool | None:
     if step < 2.5 or len(levels) <= 4:
         return None
     return any(bool(np.all(np.abs(levels - zero - step * np.round((levels - zero) / step))
-                           <= 0.51)) for zero in np.arange(-0.5, 0.5, 0.02))
+                           <= 0.51)) for zero in np.linspace(-0.5, 0.5, 51))
 
 
 def decimation_step(fs_in_hz: float, fs_out_hz: float) -> int:

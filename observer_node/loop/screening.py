@@ -49,7 +49,16 @@ Per channel, on the recorded samples from first contact to the end of the scorin
   a pot's wiper off its track. On the bundled campaign the longest such run is 1.1 ms. Not
   judged where the samples before contact do not change (a lab that zeroes them). Added in
   session 38: the independent simulator's CR cable break and CD wiper drop-out were never
-  found before the fit (``benchmarks/screen_faults.py``).
+  found before the fit (``benchmarks/screen_faults.py``);
+- **back at rest while the crash goes on** (CR and CD): a cable that parts with the amplifier
+  reading its own noise is not quiet; but once the chest has been loaded (the channel past
+  half its crash peak), it does not sit at its value at rest, within 3 robust standard
+  deviations of its noise there, for over 4 ms while the pulse is still above a fifth of its
+  peak (a helper's break at rest-level noise went unnamed by the check above). On the bundled
+  campaign no channel does. Neither check reads the crash's end, once the pulse has fallen
+  under a fifth of its peak (50-90 ms on the bundled tests): a break there is not found
+  before the fit. Runs after *noisy at rest*, whose larger noise at rest would otherwise
+  make a channel look quiet in the crash.
 
 Per test, against the other tests of the set (those not already found broken: a broken test
 is no other test's reference):
@@ -70,14 +79,20 @@ is no other test's reference):
   of the bundled campaign and held-out sets A-D, the one BRS recorded reversed paid in 0.75
   turn after 9 counts out; every other test's rebound was at most 0.125 turn, after paying
   out more than it wound back. Added after held-out set D.
-- **CR or CD at the wrong polarity**: in the model's convention (retardation and compression
-  positive) a chest's CR and CD, from their median at rest, add up positive from first contact
-  to the window's end (on the bundled campaign CR +1.46 to +1.95 g·s, CD +1.29 to +1.67 mm·s).
-  A test whose area is negative, by more than a quarter of the other tests' median, where
-  three quarters of three or more other tests read positive, was recorded with that channel's
-  polarity set wrong, or the channel reads no chest at all (a run-away simulation of held-out
-  set T is named so). A campaign all the other way is the lab's convention, not a broken test.
-  Added in session 38, for the same reason as the check above.
+- **a channel at the wrong polarity**: the chest is retarded and compressed as the car is
+  decelerated, so a test's CR and CD, from their median at rest, add up from first contact to
+  the window's end with the sign of its pulse (from its bias), and so does each's largest
+  excursion (on the bundled campaign CR's area is 1.11-1.24 times the pulse's, CD's 0.92-1.10
+  mm per g). A CR or CD whose area and excursion both read against its own pulse was recorded
+  with its polarity set wrong; where both do, the pulse is the one named. And since one test
+  may be the other way in every channel: a channel whose area is negative (the model's
+  convention: deceleration, retardation and compression positive), by more than a quarter of
+  the other tests' median, where three quarters of three or more other tests read positive,
+  is named too. A campaign all the other way is the lab's convention, not a broken test; a
+  CR the other way in every test is named in every test. A channel that reads no chest at all
+  may be named so too (a run-away simulation of held-out set T is). Added in session 38, for
+  the same reason as the checks above; it compares each test with its own pulse since a
+  helper's two reversed CRs among four tests went unnamed by the others' majority alone.
 - **BRS pay-out out of step with its own pulse**: the spool pays out as the occupant moves forward
   in the car, so on one rig (same belt, seat and dummy) the time from the car's free flight of 50
   mm (the pulse integrated twice from first contact) to half the spool's pay-out (counted from its
@@ -178,6 +193,7 @@ from ..units import STANDARD_GRAVITY
 FROZEN_MS = {"cr": 2.0, "cd": 2.0}
 QUIET_SHARE = 0.1  # of the channel's sample-to-sample change at rest
 QUIET_MS = 4.0
+REST_BAND = 3.0  # robust standard deviations of the channel's noise at rest
 REVERSED_SHARE = 0.25  # of the other tests' median integral: below it, too small to read
 BRS_DV_LEFT = 0.3
 SATURATED_MS = 1.0
@@ -263,14 +279,15 @@ def screen_channels(test: CrashTest, end_s: float) -> list[BrokenTest]:
                                       f"crash (from t = {(at + i0) * ms + 1000 * test.t0_s:.1f}"
                                       f" ms) at {x[at]:g}"))
                 continue
-        if ch in FROZEN_MS and (quiet := _quieter_than_at_rest(test, ch, x, pulse)):
+        if ch in ("cr", "cd") and (noisy := _noisy_at_rest(test, ch)):
+            out.append(noisy)
+            continue
+        if ch in FROZEN_MS and (quiet := (_quieter_than_at_rest(test, ch, x, pulse)
+                                          or _back_at_rest(test, ch, x, pulse))):
             out.append(quiet)
             continue
         if ch == "brs" and (jump := _counter_jump(test, x, i0)):
             out.append(jump)
-            continue
-        if ch in ("cr", "cd") and (noisy := _noisy_at_rest(test, ch)):
-            out.append(noisy)
             continue
         if ch == "brs" and np.all(np.isfinite(pulse)):
             moves = np.nonzero(np.diff(x))[0]
@@ -286,7 +303,7 @@ def screen_channels(test: CrashTest, end_s: float) -> list[BrokenTest]:
         if ch != "brs":
             peak = np.max(np.abs(x))
             at_peak = int(np.sum(np.abs(x) == peak))
-            if peak > 0 and at_peak * ms >= SATURATED_MS:
+            if peak > 0 and at_peak > 1 and at_peak * ms >= SATURATED_MS:
                 out.append(BrokenTest(test.name, ch, f"saturated: {at_peak * ms:.1f} ms at "
                                       f"its extreme {peak:g}"))
                 continue
@@ -327,6 +344,32 @@ def _quieter_than_at_rest(test: CrashTest, ch: str, x: np.ndarray,
     return BrokenTest(test.name, ch, f"changes less than at rest for {run * ms:.1f} ms during "
                       f"the crash (from t = {from_ms:.1f} ms, near {x[at + 1]:.2f} {unit}): it "
                       "stopped reading the dummy (a cable parted, a wiper off its track)")
+
+
+def _back_at_rest(test: CrashTest, ch: str, x: np.ndarray,
+                  pulse: np.ndarray) -> BrokenTest | None:
+    """CR or CD back at its value at rest, within its noise, while the crash goes on after the
+    chest was loaded (see the module's docstring); ``x`` and ``pulse`` from first contact."""
+    full = test.cr_g if ch == "cr" else test.cd_mm
+    pre = full[test.time_s < 0.0] if full is not None else np.empty(0)
+    ms = 1000.0 / test.fs_hz
+    if len(pre) * ms < AT_REST_MIN_MS or not np.all(np.isfinite(pre)) or np.ptp(pulse) == 0:
+        return None
+    rest, noise = float(np.median(pre)), float(median_abs_deviation(pre, scale="normal"))
+    y = x - rest
+    if noise == 0 or not np.max(y) > 0:
+        return None
+    loaded = np.maximum.accumulate(y) > 0.5 * np.max(y)
+    crash = np.abs(pulse) > 0.2 * np.max(np.abs(pulse))
+    run, at = _longest_run(np.cumsum(~(np.abs(y) < REST_BAND * noise)), crash & loaded)
+    if run * ms <= QUIET_MS:
+        return None
+    from_ms = 1000.0 * test.time_s[test.index_of(0.0)] + at * ms
+    unit = "g" if ch == "cr" else "mm"
+    return BrokenTest(test.name, ch, f"back at its value at rest (within {REST_BAND:g} times "
+                      f"its noise, {noise:.2g} {unit}) for {run * ms:.1f} ms while the crash goes "
+                      f"on (from t = {from_ms:.1f} ms): it stopped reading the dummy (a cable "
+                      "parted, the amplifier reading its own noise)")
 
 
 def _counter_jump(test: CrashTest, brs: np.ndarray, i0: int) -> BrokenTest | None:
@@ -394,32 +437,55 @@ def polarity_outliers(tests: list[CrashTest], end_s: float) -> list[BrokenTest]:
     return out
 
 
-def reversed_outputs(tests: list[CrashTest], end_s: float) -> list[BrokenTest]:
-    """Tests whose CR or CD reads the chest opening, or pushed forward, through the crash where
-    the other tests read it compressed, retarded (see the module's docstring)."""
-    out = []
-    for ch, unit in (("cr", "g·s"), ("cd", "mm·s")):
-        area = {}
-        for t in tests:
-            x = t.cr_g if ch == "cr" else t.cd_mm
-            if x is None:
-                continue
-            pre = x[t.time_s < 0.0]
-            zero = float(np.median(pre)) if len(pre) else 0.0
-            a = float(np.sum(x[t.index_of(0.0):t.index_of(end_s) + 1] - zero)) / t.fs_hz
-            if np.isfinite(a):
-                area[t.name] = a
-        for name, a in area.items():
-            others = np.array([v for n, v in area.items() if n != name])
-            usual = int(np.sum(others > 0))
-            if (a < 0 and len(others) >= 3 and usual >= 0.75 * len(others)
-                    and -a > REVERSED_SHARE * float(np.median(np.abs(others)))):
-                out.append(BrokenTest(
-                    name, ch, f"reads the other way through the crash (its area {a:+.3f} {unit} "
-                    f"from contact to {1000 * end_s:g} ms; {usual} of the other {len(others)} "
-                    f"tests' median {float(np.median(others)):+.3f}): recorded at the wrong "
-                    "polarity, or not reading a chest at all"))
+def _areas(test: CrashTest, end_s: float) -> dict[str, tuple[float, float]]:
+    """Each channel's area [unit·s] from its value at rest (the pulse's bias), first contact
+    to ``end_s``, and its largest excursion from that value (the finite channels only)."""
+    i0, i1 = test.index_of(0.0), test.index_of(end_s) + 1
+    out = {}
+    for ch, x in (("pulse", test.pulse_g), ("cr", test.cr_g), ("cd", test.cd_mm)):
+        if x is None:
+            continue
+        pre = x[test.time_s < 0.0]
+        zero = test.pulse_bias_g() if ch == "pulse" else float(np.median(pre)) if len(pre) else 0.0
+        y = x[i0:i1] - zero
+        if len(y) and np.all(np.isfinite(y)):
+            out[ch] = (float(np.sum(y)) / test.fs_hz, float(y[np.argmax(np.abs(y))]))
     return out
+
+
+def reversed_outputs(tests: list[CrashTest], end_s: float) -> list[BrokenTest]:
+    """Tests whose CR or CD reads the other way from their own pulse, or whose channel reads
+    the other way from most other tests' (see the module's docstring)."""
+    areas = {t.name: _areas(t, end_s) for t in tests}
+    out: dict[tuple[str, str], BrokenTest] = {}
+    for name, a in areas.items():
+        if "pulse" not in a:
+            continue
+        sign = np.sign(a["pulse"][0])
+        against: list[str] = [ch for ch in ("cr", "cd") if ch in a
+                   and np.sign(a[ch][0]) == np.sign(a[ch][1]) == -sign != 0]
+        if len(against) == 2:  # both dummy channels against the car: the pulse is the odd one
+            against = ["pulse"]
+        for ch in against:
+            what = "its CR and CD" if ch == "pulse" else "its own pulse"
+            out[(name, ch)] = BrokenTest(name, ch, f"reads the other way from {what} through "
+                                         f"the crash (areas from contact to {1000 * end_s:g} ms:"
+                                         + "".join(f" {c} {v[0]:+.3f}" for c, v in a.items())
+                                         + "): recorded at the wrong polarity, or not reading "
+                                         "what it should")
+    for c, unit in (("pulse", "g·s"), ("cr", "g·s"), ("cd", "mm·s")):
+        area = {n: a[c][0] for n, a in areas.items() if c in a}
+        for name, v in area.items():
+            others = np.array([w for n, w in area.items() if n != name])
+            usual = int(np.sum(others > 0))
+            if (v < 0 and len(others) >= 3 and usual >= 0.75 * len(others)
+                    and -v > REVERSED_SHARE * float(np.median(np.abs(others)))):
+                out.setdefault((name, c), BrokenTest(
+                    name, c, f"reads the other way through the crash (its area {v:+.3f} {unit} "
+                    f"from contact to {1000 * end_s:g} ms, where {usual} of the other "
+                    f"{len(others)} tests read positive, median {float(np.median(others)):+.3f}"
+                    "): recorded at the wrong polarity, or not reading what it should"))
+    return list(out.values())
 
 
 def _flight_ms(test: CrashTest, end_s: float) -> float:
