@@ -16,8 +16,10 @@ physical form's, is the median size sets A-AB gave it. Nothing here was tuned on
 
 Printed: per broken form, how many were drawn, how often the broken test was named (and on the
 broken channel), and the clean tests named beside it; for all campaigns, how many clean tests
-were named, by which check. The checks that run after the fit (a residual far below the
-others') are not part of this: a broken test not found here may still be found there.
+were named, by which check; and per form the campaigns the reader refused in one line naming
+the broken test's file (a unit that cannot be right, say), which are not judged. The checks
+that run after the fit (a residual far below the others') are not part of this: a broken
+test not found here may still be found there.
 
     python -m benchmarks.screen_faults [--campaigns 300] [--seed 50000] [--json FILE]
 """
