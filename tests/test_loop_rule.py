@@ -312,6 +312,9 @@ def test_a_test_all_the_other_way_names_its_channels_and_a_reversed_pulse_the_pu
     pulse = [flip(x, "pulse_g") if x.name == "SLED_004" else x for x in campaign]
     assert [(f.test, f.channel) for f in reversed_outputs(pulse, 0.15)] == [("SLED_004",
                                                                              "pulse")]
+    # ... unless the other tests' pulses read as it does: then CR and CD are the odd ones
+    chest = [flip(x, "cr_g", "cd_mm") if x.name == "SLED_004" else x for x in campaign]
+    assert sorted(f.channel for f in reversed_outputs(chest, 0.15)) == ["cd", "cr"]
 
 
 def test_a_clean_test_recorded_at_1_khz_is_not_named(campaign):

@@ -84,7 +84,8 @@ is no other test's reference):
   the window's end with the sign of its pulse (from its bias), and so does each's largest
   excursion (on the bundled campaign CR's area is 1.11-1.24 times the pulse's, CD's 0.92-1.10
   mm per g). A CR or CD whose area and excursion both read against its own pulse was recorded
-  with its polarity set wrong; where both do, the pulse is the one named. And since one test
+  with its polarity set wrong; where both do, the pulse is the one named, unless three
+  quarters of three or more other tests' pulses read as it does. And since one test
   may be the other way in every channel: a channel whose area is negative (the model's
   convention: deceleration, retardation and compression positive), by more than a quarter of
   the other tests' median, where three quarters of three or more other tests read positive,
@@ -464,7 +465,9 @@ def reversed_outputs(tests: list[CrashTest], end_s: float) -> list[BrokenTest]:
         sign = np.sign(a["pulse"][0])
         against: list[str] = [ch for ch in ("cr", "cd") if ch in a
                    and np.sign(a[ch][0]) == np.sign(a[ch][1]) == -sign != 0]
-        if len(against) == 2:  # both dummy channels against the car: the pulse is the odd one
+        pulses = [np.sign(b["pulse"][0]) for n, b in areas.items() if n != name and "pulse" in b]
+        if len(against) == 2 and not (len(pulses) >= 3 and pulses.count(sign) >= 0.75 * len(
+                pulses)):  # both dummy channels against the car, no other test's pulse like it
             against = ["pulse"]
         for ch in against:
             what = "its CR and CD" if ch == "pulse" else "its own pulse"
