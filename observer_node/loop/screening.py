@@ -312,7 +312,10 @@ def screen_channels(test: CrashTest, end_s: float) -> list[BrokenTest]:
         scale = float(median_abs_deviation(dx, scale="normal"))
         # the dummy's channels are filtered (CFC 180, 600): a spike is a millisecond wide
         width = max(5, round(SPIKE_MS[ch] / ms) | 1) if ch in SPIKE_MS else 5
-        if len(x) > width and scale > 0:
+        # under 5 samples in 2 ms (2.5 kHz) a filtered CR or CD peak is itself a few samples
+        # wide, and no running median follows it: not judged
+        coarse = ch in SPIKE_MS and SPIKE_MS[ch] / ms < 5
+        if len(x) > width and scale > 0 and not coarse:
             med = np.median(np.lib.stride_tricks.sliding_window_view(x, width), axis=1)
             off = np.abs(x[width // 2:-(width // 2)] - med)
             spikes = off > max(SPIKE_SCALES * scale, 0.1 * float(np.ptp(x)))
@@ -358,6 +361,7 @@ def _back_at_rest(test: CrashTest, ch: str, x: np.ndarray,
         return None
     rest, noise = float(np.median(pre)), float(median_abs_deviation(pre, scale="normal"))
     y = x - rest
+    y = y * np.sign(y[np.argmax(np.abs(y))])  # loaded either way: the polarity is judged later
     if noise == 0 or not np.max(y) > 0:
         return None
     loaded = np.maximum.accumulate(y) > 0.5 * np.max(y)
