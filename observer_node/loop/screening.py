@@ -330,15 +330,24 @@ def screen_channels(test: CrashTest, end_s: float) -> list[BrokenTest]:
     return out
 
 
+def _at_rest(test: CrashTest, ch: str, pulse: np.ndarray) -> np.ndarray | None:
+    """CR's or CD's samples before contact, where there are 10 ms or more of them to read the
+    lab's noise from and the pulse moves; else None."""
+    full = test.cr_g if ch == "cr" else test.cd_mm
+    pre = full[test.time_s < 0.0] if full is not None else np.empty(0)
+    if (len(pre) * 1000.0 / test.fs_hz < AT_REST_MIN_MS or not np.all(np.isfinite(pre))
+            or np.ptp(pulse) == 0):
+        return None
+    return pre
+
+
 def _quieter_than_at_rest(test: CrashTest, ch: str, x: np.ndarray,
                           pulse: np.ndarray) -> BrokenTest | None:
     """CR or CD changing less from sample to sample during the crash than at rest (see the
     module's docstring); ``x`` and ``pulse`` from first contact, as in ``screen_channels``."""
-    full = test.cr_g if ch == "cr" else test.cd_mm
-    pre = full[test.time_s < 0.0] if full is not None else np.empty(0)
-    ms = 1000.0 / test.fs_hz
-    if len(pre) * ms < AT_REST_MIN_MS or not np.all(np.isfinite(pre)) or np.ptp(pulse) == 0:
+    if (pre := _at_rest(test, ch, pulse)) is None:
         return None
+    ms = 1000.0 / test.fs_hz
     step = float(median_abs_deviation(np.diff(pre), scale="normal"))
     if step == 0:  # a zeroed or coarsely quantised pre-trigger: no noise to compare with
         return None
@@ -358,11 +367,9 @@ def _back_at_rest(test: CrashTest, ch: str, x: np.ndarray,
                   pulse: np.ndarray) -> BrokenTest | None:
     """CR or CD back at its value at rest, within its noise, while the crash goes on after the
     chest was loaded (see the module's docstring); ``x`` and ``pulse`` from first contact."""
-    full = test.cr_g if ch == "cr" else test.cd_mm
-    pre = full[test.time_s < 0.0] if full is not None else np.empty(0)
-    ms = 1000.0 / test.fs_hz
-    if len(pre) * ms < AT_REST_MIN_MS or not np.all(np.isfinite(pre)) or np.ptp(pulse) == 0:
+    if (pre := _at_rest(test, ch, pulse)) is None:
         return None
+    ms = 1000.0 / test.fs_hz
     rest, noise = float(np.median(pre)), float(median_abs_deviation(pre, scale="normal"))
     y = x - rest
     y = y * np.sign(y[np.argmax(np.abs(y))])  # loaded either way: the polarity is judged later
