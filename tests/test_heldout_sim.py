@@ -5,6 +5,8 @@ and the broken test really broken."""
 from __future__ import annotations
 
 import json
+import re
+import shutil
 import subprocess
 import sys
 from collections.abc import Iterator
@@ -47,7 +49,7 @@ from benchmarks.heldout.cases_y import BY_NAME_Y, ONE_PHYSICAL_Y
 from benchmarks.heldout.cases_y import SET_Y as SET_Y_FILE
 from benchmarks.heldout.cases_z import BY_NAME_Z, ONE_PHYSICAL_Z
 from benchmarks.heldout.cases_z import SET_Z as SET_Z_FILE
-from observer_node.data import load_tests
+from observer_node.data import CrashDataError, load_tests
 from observer_node.data.isomme import read_isomme
 from observer_node.data.setups import assign_setups
 
@@ -1132,8 +1134,10 @@ later_set = pytest.mark.parametrize("case_set", sorted(LATER_SETS))
 # a CR recorded at the wrong polarity peaks below zero: left out of the check that CR peaks
 # above 15 g (it reads like every other case otherwise)
 # (and a CD recorded at the wrong polarity never reads above 10 mm, nor does a chest pot loaded
-# by its conditioner always: it reads about 40 % of the chest's deflection)
-UNREADABLE = {"he_broken_cr_reversed", "hr_broken_cd_reversed", "hu_cd_pot_loading"}
+# by its conditioner always: it reads about 40 % of the chest's deflection; and a BRS of raw
+# counts under its "deg" Unit the reader refuses, since session 38: its own test below)
+UNREADABLE = {"he_broken_cr_reversed", "hr_broken_cd_reversed", "hu_cd_pot_loading",
+              "ho_broken_brs_counts"}
 
 
 @later_set
@@ -1937,18 +1941,31 @@ def test_set_o_rib_friction_moves_the_chest_where_it_is(set_o: Path) -> None:
             assert _files(folder) == _files(off / folder.parent.name / name)
 
 
-def test_set_o_brs_counts_reads_the_turn_n_over_360_times(set_o: Path) -> None:
-    """The broken test's BRS file holds the spindle's counts under its degrees: it reads its
-    twin's x n / 360 (n counts per rev; the reader's steps of 360 / n degrees round it to within
-    a step); its CR, CD and pulse untouched; every other test untouched."""
+def test_set_o_brs_counts_holds_the_counts_under_degrees(set_o: Path,
+                                                        tmp_path: Path) -> None:
+    """The broken test's BRS file holds the spindle's counts under its degrees (read as degrees
+    it would be its twin's x n / 360, n counts per rev): the reader refuses it in one line
+    naming the file and key (since session 38); with its Unit set to counts it reads its
+    twin's counts; its CR, CD and pulse untouched; every other test untouched."""
     c = heldout_sets.select(["ho_broken_brs_counts"], "o")[0]
     (broken,) = c.expect_broken
     on, off = set_o / "on" / c.name, set_o / "off" / c.name
+    with pytest.raises(CrashDataError, match=rf"{broken}\.\d+:\d+: key 'Unit': BRS in deg "
+                                             "reads whole numbers"):
+        _brs(on, broken)
+    fixed = tmp_path / "est" / broken
+    shutil.copytree(next(on.glob(f"*/{broken}")), fixed)
+    for ch in (fixed / "Channel").iterdir():
+        text = ch.read_text(encoding="iso-8859-1")
+        if "11RETR0000B1AN0P" in text:  # the spindle's channel: its Unit, told right
+            ch.write_text(re.sub(r"(Unit +:)deg", r"\1counts", text), encoding="iso-8859-1",
+                          newline="")
+    counts_read, good = read_isomme(fixed).brs, _brs(off, broken)
+    assert np.abs(counts_read - good).max() <= 1.0
+    assert np.abs(good).max() > 0  # the spool turned
     for which in ("cr", "cd", "pulse"):
-        assert np.array_equal(_channel(on, broken, which), _channel(off, broken, which))
-    bad, good = _brs(on, broken), _brs(off, broken)
-    assert np.abs(bad - good * c.counts_per_rev / 360.0).max() <= 1.0
-    assert np.abs(good - bad).max() > 0.8 * np.abs(good).max() > 0  # the spool turned
+        assert np.array_equal(_channel(tmp_path, broken, which),
+                              _channel(off, broken, which))
     _others_untouched(set_o, c.name, broken)
 
 
