@@ -10,7 +10,7 @@ import sys
 
 import numpy as np
 import pytest
-from scipy import stats
+from scipy import signal, stats
 
 from observer_node.data import read_isomme, write_isomme
 from observer_node.data.csvio import read_csv, write_csv
@@ -32,6 +32,7 @@ from observer_node.loop.screening import (
     polarity_outliers,
     residual_outliers,
     reversed_outputs,
+    ringing_outliers,
     screen_channels,
     velocity_outliers,
 )
@@ -179,7 +180,7 @@ def _broken(test, **arrays):
 @pytest.mark.parametrize("fault", ["frozen_brs", "nan_cd", "spike_cr", "saturated_cd",
                                    "frozen_cd", "zero_shift_pulse", "filtered_spikes_cd",
                                    "mains_hum_cr", "counter_reset_brs", "cable_break_cr",
-                                   "wiper_off_cd", "cable_break_noisy_cr"])
+                                   "wiper_off_cd", "cable_break_noisy_cr", "lost_block_cr"])
 def test_a_broken_channel_is_named(campaign, fault):
     t = next(x for x in campaign if x.name == "R16_003")
     i = t.index_of(0.030)
@@ -237,6 +238,12 @@ def test_a_broken_channel_is_named(campaign, fault):
     elif fault == "wiper_off_cd":  # the pot's wiper off its track for 10 ms, through CFC 600
         off = (t.time_s >= 0.030) & (t.time_s < 0.040)
         b, channel = _broken(t, cd_mm=cfc_filter(np.where(off, 0.0, t.cd_mm), t.fs_hz, 600)), "cd"
+    elif fault == "lost_block_cr":
+        # the recorder loses 6 ms of CR at 30 ms: the rest arrives early, the record's end is
+        # padded with its last sample, all through the lab's CFC 180
+        n = round(0.006 * t.fs_hz)
+        early = np.concatenate([t.cr_g[:i], t.cr_g[i + n:], np.full(n, t.cr_g[-1])])
+        b, channel = _broken(t, cr_g=cfc_filter(early, t.fs_hz, 180)), "cr"
     else:
         cd = t.cd_mm.copy()
         cd[i:i + 40] = cd[i]
@@ -244,6 +251,42 @@ def test_a_broken_channel_is_named(campaign, fault):
     found = screen_channels(b, 0.15)
     assert [f.channel for f in found] == [channel], found
     assert found[0].test == "R16_003" and found[0].reason
+
+
+def test_a_lost_block_is_named_by_the_held_end_of_the_record(campaign):
+    t = next(x for x in campaign if x.name == "R16_003")
+    i, n = t.index_of(0.030), round(0.006 * t.fs_hz)
+    early = np.concatenate([t.cr_g[:i], t.cr_g[i + n:], np.full(n, t.cr_g[-1])])
+    found = screen_channels(_broken(t, cr_g=cfc_filter(early, t.fs_hz, 180)), 0.15)
+    assert [(f.channel, "lost" in f.reason) for f in found] == [("cr", True)], found
+    # a record whose end keeps the lab's noise is not held, however quiet the dummy is there
+    rng = np.random.default_rng(5)
+    hiss = cfc_filter(rng.standard_normal(t.cr_g.size), t.fs_hz, 180)
+    hiss *= np.std(t.cr_g[t.time_s < 0.0]) / np.std(hiss)
+    calm = np.where(t.time_s > 0.15, np.median(t.cr_g[t.time_s < 0.0]) + hiss, t.cr_g)
+    assert screen_channels(_broken(t, cr_g=calm), 0.15) == []
+
+
+def _loose_mount(a_g, fs_hz, f_hz=150.0, zeta=0.05):
+    """What an accelerometer riding on a loosened mount (a spring and little damping, base
+    feed-through) reads of its base's acceleration."""
+    w = 2 * fs_hz * np.tan(np.pi * f_hz / fs_hz)
+    b, a = signal.bilinear([2 * zeta * w, w * w], [1.0, 2 * zeta * w, w * w], fs=fs_hz)
+    return signal.lfilter(b, a, a_g)
+
+
+def test_a_cr_ringing_as_no_other_test_does_is_named(campaign):
+    loose = [_broken(t, cr_g=_loose_mount(t.cr_g, t.fs_hz)) if t.name == "SLED_003" else t
+             for t in campaign]
+    found = broken_before_fit(loose, 0.15)
+    assert [(f.test, f.channel) for f in found] == [("SLED_003", "cr")], found
+    assert abs(float(found[0].reason.split(" Hz")[0].split()[-1]) - 150.0) < 5.0  # "rings at"
+    # every test's CR ringing alike is the rig's (or the dummy's), not one broken test
+    assert ringing_outliers([_broken(t, cr_g=_loose_mount(t.cr_g, t.fs_hz))
+                             for t in campaign], 0.15) == []
+    # nor is a test judged among fewer than five others
+    few = sorted(loose, key=lambda x: x.name != "SLED_003")[:5]
+    assert ringing_outliers(few, 0.15) == []
 
 
 def test_a_channel_the_lab_marked_defect_is_named_in_its_words(tmp_path):
