@@ -180,7 +180,8 @@ def _broken(test, **arrays):
 @pytest.mark.parametrize("fault", ["frozen_brs", "nan_cd", "spike_cr", "saturated_cd",
                                    "frozen_cd", "zero_shift_pulse", "filtered_spikes_cd",
                                    "mains_hum_cr", "counter_reset_brs", "cable_break_cr",
-                                   "wiper_off_cd", "cable_break_noisy_cr", "lost_block_cr"])
+                                   "wiper_off_cd", "cable_break_noisy_cr", "lost_block_cr",
+                                   "late_cable_break_cr"])
 def test_a_broken_channel_is_named(campaign, fault):
     t = next(x for x in campaign if x.name == "R16_003")
     i = t.index_of(0.030)
@@ -238,6 +239,12 @@ def test_a_broken_channel_is_named(campaign, fault):
     elif fault == "wiper_off_cd":  # the pot's wiper off its track for 10 ms, through CFC 600
         off = (t.time_s >= 0.030) & (t.time_s < 0.040)
         b, channel = _broken(t, cd_mm=cfc_filter(np.where(off, 0.0, t.cd_mm), t.fs_hz, 600)), "cd"
+    elif fault == "late_cable_break_cr":
+        # as cable_break_cr, at 100 ms, after the pulse has fallen under a fifth of its peak:
+        # found by the record's held end
+        assert np.max(np.abs(t.pulse_g[t.index_of(0.1):])) < 0.2 * np.max(np.abs(t.pulse_g))
+        cut = np.where(t.time_s >= 0.100, 0.0, t.cr_g)
+        b, channel = _broken(t, cr_g=cfc_filter(cut, t.fs_hz, 180)), "cr"
     elif fault == "lost_block_cr":
         # the recorder loses 6 ms of CR at 30 ms: the rest arrives early, the record's end is
         # padded with its last sample, all through the lab's CFC 180

@@ -60,9 +60,10 @@ Per channel, on the recorded samples from first contact to the end of the scorin
   deviations of its noise there, for over 4 ms while the pulse is still above a fifth of its
   peak (a helper's break at rest-level noise went unnamed by the check above). On the bundled
   campaign no channel does. Neither check reads the crash's end, once the pulse has fallen
-  under a fifth of its peak (50-90 ms on the bundled tests): a break there is not found
-  before the fit. Runs after *noisy at rest*, whose larger noise at rest would otherwise
-  make a channel look quiet in the crash.
+  under a fifth of its peak (50-90 ms on the bundled tests): a break there is found before the
+  fit only where the amplifier reads a constant (the record's held end, below). Runs after
+  *noisy at rest*, whose larger noise at rest would otherwise make a channel look quiet in the
+  crash.
 - **held over the record's end** (CR and CD): a recorder whose buffer overran lost a block of
   samples; what followed arrives that much early, and the record's end is padded with its last
   sample, so the channel's last changes are quieter than at rest. One whose record ends in over
