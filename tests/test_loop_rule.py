@@ -26,6 +26,7 @@ from observer_node.loop.screening import (
     _payout_lag_ms,
     broken_before_fit,
     copied_channels,
+    held_end_outliers,
     judged_fits,
     output_step_outliers,
     payout_outliers,
@@ -34,6 +35,7 @@ from observer_node.loop.screening import (
     reversed_outputs,
     ringing_outliers,
     screen_channels,
+    spool_gain_outliers,
     velocity_outliers,
 )
 
@@ -180,8 +182,7 @@ def _broken(test, **arrays):
 @pytest.mark.parametrize("fault", ["frozen_brs", "nan_cd", "spike_cr", "saturated_cd",
                                    "frozen_cd", "zero_shift_pulse", "filtered_spikes_cd",
                                    "mains_hum_cr", "counter_reset_brs", "cable_break_cr",
-                                   "wiper_off_cd", "cable_break_noisy_cr", "lost_block_cr",
-                                   "late_cable_break_cr"])
+                                   "wiper_off_cd", "cable_break_noisy_cr"])
 def test_a_broken_channel_is_named(campaign, fault):
     t = next(x for x in campaign if x.name == "R16_003")
     i = t.index_of(0.030)
@@ -239,18 +240,6 @@ def test_a_broken_channel_is_named(campaign, fault):
     elif fault == "wiper_off_cd":  # the pot's wiper off its track for 10 ms, through CFC 600
         off = (t.time_s >= 0.030) & (t.time_s < 0.040)
         b, channel = _broken(t, cd_mm=cfc_filter(np.where(off, 0.0, t.cd_mm), t.fs_hz, 600)), "cd"
-    elif fault == "late_cable_break_cr":
-        # as cable_break_cr, at 100 ms, after the pulse has fallen under a fifth of its peak:
-        # found by the record's held end
-        assert np.max(np.abs(t.pulse_g[t.index_of(0.1):])) < 0.2 * np.max(np.abs(t.pulse_g))
-        cut = np.where(t.time_s >= 0.100, 0.0, t.cr_g)
-        b, channel = _broken(t, cr_g=cfc_filter(cut, t.fs_hz, 180)), "cr"
-    elif fault == "lost_block_cr":
-        # the recorder loses 6 ms of CR at 30 ms: the rest arrives early, the record's end is
-        # padded with its last sample, all through the lab's CFC 180
-        n = round(0.006 * t.fs_hz)
-        early = np.concatenate([t.cr_g[:i], t.cr_g[i + n:], np.full(n, t.cr_g[-1])])
-        b, channel = _broken(t, cr_g=cfc_filter(early, t.fs_hz, 180)), "cr"
     else:
         cd = t.cd_mm.copy()
         cd[i:i + 40] = cd[i]
@@ -260,18 +249,72 @@ def test_a_broken_channel_is_named(campaign, fault):
     assert found[0].test == "R16_003" and found[0].reason
 
 
-def test_a_lost_block_is_named_by_the_held_end_of_the_record(campaign):
+def _lost_block(x, fs_hz, at_s=0.030, ms=6.0, cfc=180):
+    """A recorder that lost ``ms`` of samples at ``at_s``: the rest arrives early, the record's
+    end padded with its last sample, all through the lab's CFC filter."""
+    i, n = round(at_s * fs_hz), round(ms * fs_hz / 1000)
+    return cfc_filter(np.concatenate([x[:i], x[i + n:], np.full(n, x[-1])]), fs_hz, cfc)
+
+
+@pytest.mark.parametrize("fault", ["lost_block_cr", "lost_block_cd", "late_cable_break_cr"])
+def test_a_record_held_over_its_end_is_named(campaign, fault):
     t = next(x for x in campaign if x.name == "R16_003")
-    i, n = t.index_of(0.030), round(0.006 * t.fs_hz)
-    early = np.concatenate([t.cr_g[:i], t.cr_g[i + n:], np.full(n, t.cr_g[-1])])
-    found = screen_channels(_broken(t, cr_g=cfc_filter(early, t.fs_hz, 180)), 0.15)
-    assert [(f.channel, "lost" in f.reason) for f in found] == [("cr", True)], found
-    # a record whose end keeps the lab's noise is not held, however quiet the dummy is there
+    if fault == "lost_block_cr":
+        b = _broken(t, cr_g=_lost_block(t.cr_g, t.fs_hz))
+    elif fault == "lost_block_cd":
+        b = _broken(t, cd_mm=_lost_block(t.cd_mm, t.fs_hz, cfc=600))
+    else:  # a cable break at 100 ms, after the pulse fell under a fifth of its peak
+        assert np.max(np.abs(t.pulse_g[t.index_of(0.1):])) < 0.2 * np.max(np.abs(t.pulse_g))
+        b = _broken(t, cr_g=cfc_filter(np.where(t.time_s >= 0.100, 0.0, t.cr_g), t.fs_hz, 180))
+    found = broken_before_fit([b if x.name == "R16_003" else x for x in campaign], 0.15)
+    assert [(f.test, f.channel, "held" in f.reason or "one value" in f.reason)
+            for f in found] == [("R16_003", fault.split("_")[-1], True)], found
+
+
+def test_what_the_held_end_leaves_alone(campaign):
+    t = next(x for x in campaign if x.name == "R16_003")
+    # a record whose end keeps the lab's noise is not held, however still the dummy is there
     rng = np.random.default_rng(5)
     hiss = cfc_filter(rng.standard_normal(t.cr_g.size), t.fs_hz, 180)
     hiss *= np.std(t.cr_g[t.time_s < 0.0]) / np.std(hiss)
     calm = np.where(t.time_s > 0.15, np.median(t.cr_g[t.time_s < 0.0]) + hiss, t.cr_g)
-    assert screen_channels(_broken(t, cr_g=calm), 0.15) == []
+    assert broken_before_fit([_broken(t, cr_g=calm) if x is t else x for x in campaign],
+                             0.15) == []
+    # a lab that holds every record's end after the test (from 180 ms) is the lab's way
+    held = [_broken(x, cr_g=np.where(x.time_s > 0.18, x.cr_g[x.index_of(0.18)], x.cr_g))
+            for x in campaign]
+    assert held_end_outliers(held, 0.15) == []
+    # a record cut short (nothing before contact) is not judged: no noise to compare with
+    short = b = _broken(t, cr_g=_lost_block(t.cr_g, t.fs_hz))
+    assert held_end_outliers([dataclasses.replace(
+        short, t0_s=0.0, pulse_g=short.pulse_g[short.index_of(0.0):],
+        brs=short.brs[short.index_of(0.0):], cr_g=short.cr_g[short.index_of(0.0):],
+        cd_mm=short.cd_mm[short.index_of(0.0):])], 0.15) == []
+    others = [x for x in campaign if x is not t]
+    assert [f.test for f in held_end_outliers([b, *others], 0.15)] == ["R16_003"]
+
+
+def test_a_record_that_ends_before_the_crash_is_named_not_a_traceback(campaign):
+    t = next(x for x in campaign if x.name == "R16_003")
+    k = t.index_of(0.0)
+    early = dataclasses.replace(t, pulse_g=t.pulse_g[:k], brs=t.brs[:k], cr_g=t.cr_g[:k],
+                                cd_mm=t.cd_mm[:k])
+    assert [b.channel for b in screen_channels(early, 0.15)] == ["pulse"]
+
+
+@pytest.mark.parametrize("gain", [4, 0.25])
+def test_a_brs_read_at_another_gain_than_its_rigs_is_named(campaign, gain):
+    # a decoder counting every edge of both tracks (x4) under the header's counts/rev, or the
+    # other way round: the pretensioner's pull and the pay-out both read that many times
+    def scaled(x):
+        rest = np.median(x.brs[x.time_s < 0.0])
+        return _broken(x, brs=np.round(rest + gain * (x.brs - rest)))
+    tests = _grouped(campaign)
+    found = spool_gain_outliers([scaled(x) if x.name == "R16_003" else x for x in tests], 0.15)
+    assert [(f.test, f.channel) for f in found] == [("R16_003", "brs")], found
+    # a rig whose every spool reads so is its own (and a gain the loop may fit), not a test
+    assert spool_gain_outliers([scaled(x) if x.setup == "R16" else x for x in tests], 0.15) == []
+    assert spool_gain_outliers(tests, 0.15) == []
 
 
 def _loose_mount(a_g, fs_hz, f_hz=150.0, zeta=0.05):
@@ -287,6 +330,10 @@ def test_a_cr_ringing_as_no_other_test_does_is_named(campaign):
              for t in campaign]
     found = broken_before_fit(loose, 0.15)
     assert [(f.test, f.channel) for f in found] == [("SLED_003", "cr")], found
+    # two loose mounts (one dummy's, two tests running) do not hide each other
+    two = [_broken(t, cr_g=_loose_mount(t.cr_g, t.fs_hz, 120.0)) if t.name == "R16_007" else t
+           for t in loose]
+    assert sorted(f.test for f in ringing_outliers(two, 0.15)) == ["R16_007", "SLED_003"]
     assert abs(float(found[0].reason.split(" Hz")[0].split()[-1]) - 150.0) < 5.0  # "rings at"
     # every test's CR ringing alike is the rig's (or the dummy's), not one broken test
     assert ringing_outliers([_broken(t, cr_g=_loose_mount(t.cr_g, t.fs_hz))
