@@ -8,6 +8,7 @@ whole first. Run from the repository's clone:
     python docs/records/session-38/heldout_prefit.py [SETS]"""
 import glob
 import json
+import os
 import sys
 from pathlib import Path
 
@@ -17,7 +18,7 @@ from observer_node.data import CrashDataError, bundled_campaign, load_tests
 from observer_node.data.setups import assign_setups
 from observer_node.loop.screening import broken_before_fit
 
-BEFORE = "6ab39f1"
+BEFORE = os.environ.get("BEFORE", "6ab39f1")  # session 39 ran it with b8486ee
 before = screening_at(BEFORE)
 
 bundled = load_tests([bundled_campaign()])

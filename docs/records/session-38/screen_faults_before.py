@@ -5,6 +5,7 @@ reader is today's in both, so campaigns it refuses are refused alike. Run from t
 repository's clone, with the benchmark's arguments (the record ran --campaigns 600 --seed
 90000):
     PYTHONPATH=. python docs/records/session-38/screen_faults_before.py ARGS"""
+import os
 import sys
 from unittest import mock
 
@@ -12,7 +13,7 @@ from before import screening_at
 
 from benchmarks import screen_faults
 
-BEFORE = "6ab39f1"
+BEFORE = os.environ.get("BEFORE", "6ab39f1")  # session 39 ran it with b8486ee
 before = screening_at(BEFORE)
 
 with mock.patch.object(screen_faults, "broken_before_fit", before.broken_before_fit):
