@@ -250,9 +250,9 @@ REST_BAND = 3.0  # robust standard deviations of the channel's noise at rest
 HELD_END_MS = 2.0  # clean tests' quietest record end: 1.0 ms (CR), 0.4 ms (CD)
 RING_BAND_HZ = (80.0, 400.0)
 RING_DETREND_HZ = 40.0
-RING_PEAK = 400.0  # a line's height over the band's median: clean CR lines reach 240
-RING_RATIO = 3.0  # times every other test's sharpest line
-RING_MIN_OTHERS = 5
+RING_PEAK = 400.0  # a line's height over the band's median: clean CR lines reach 223
+RING_RATIO = 3.0  # times the sharpest line of the tests that do not ring
+RING_MIN_OTHERS = 5  # tests that do not ring, at least
 SPOOL_GAIN = 2.0  # times the rig's others', in the pretensioner's pull and the pay-out alike
 SPOOL_LOW = 1.0 / 3.0  # or under: a weak pretensioner in a slow crash reads 0.45 and 0.45
 REVERSED_SHARE = 0.25  # of the other tests' median integral: below it, too small to read
@@ -530,9 +530,10 @@ def spool_gain_outliers(tests: list[CrashTest], end_s: float) -> list[BrokenTest
 
 
 def _ring_line(test: CrashTest, end_s: float) -> tuple[float, float]:
-    """CR's sharpest line in the crash (see the module's docstring): the largest periodogram
-    ordinate of CR above 40 Hz, from first contact to ``end_s``, over the median of the 80-400
-    Hz band, and its frequency [Hz]; NaN where CR is missing or sampled under 2.5 kHz."""
+    """CR's sharpest line in the crash (see the module's docstring): the largest local peak of
+    the periodogram of CR above 40 Hz, from first contact to ``end_s``, in the 80-400 Hz band,
+    over the band's median, and its frequency [Hz]; 0 where the band holds no peak, NaN where
+    CR is missing or sampled under 2.5 kHz."""
     x = test.cr_g
     i0, i1 = test.index_of(0.0), test.index_of(end_s) + 1
     if x is None or test.fs_hz < 2500.0 or i1 - i0 < 64 or not np.all(np.isfinite(x)):
