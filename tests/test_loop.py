@@ -232,20 +232,34 @@ def test_a_broken_test_is_left_out_and_drawn_for_the_reviewer(tmp_path):
 
 @pytest.mark.parametrize("where", ["estimation", "validation"])
 def test_a_test_is_judged_by_the_fit_made_without_it(tmp_path, where):
-    # one test's BRS decoder counts four edges per line (x4 mode) while its header says 96
-    # per revolution: its belt angle reads 4x. In-sample, the grey-box bends towards it;
-    # fitted without it (an estimation test left out, or a validation test), it scores far
-    # below the others: flagged by its residual
+    # one test's spool reads 4x from its most wound-in point on, its pretensioner's pull read
+    # right (so the check of the spool's gain before the fit, which needs both 2x off, passes
+    # it). In-sample, the grey-box bends towards it; fitted without it (an estimation test left
+    # out, or a validation test), it scores far below the others: flagged by its residual
     est = simulate_campaign("R16", 6, seed=23, config=PlantConfig(), prefix="EST")
     val = simulate_campaign("R16", 6, seed=24, config=PlantConfig(), prefix="VAL")
     tests = est if where == "estimation" else val
     t = tests[3]
-    tests[3] = dataclasses.replace(t, brs=t.brs * 4)
+    wound = np.maximum.accumulate(t.brs)
+    tests[3] = dataclasses.replace(t, brs=wound - 4 * (wound - t.brs))
     r = run_loop(est, val, tmp_path, verbose=False, plots=False, ratings=False)
     assert [(w.test, w.channel) for w in r.warnings] == [(t.name, "residual")]
     assert "by a model fitted without it" in r.warnings[0].reason
     assert r.effects == []  # clean physics: nothing named once the test is out
     assert t.name not in (r.estimation + r.validation)
+
+
+def test_a_brs_decoder_in_x4_mode_is_left_out_before_the_fit(tmp_path):
+    # the decoder counts four edges per line while the header says 96 per revolution: its
+    # whole belt angle reads 4x, the pretensioner's pull as the pay-out (session 39)
+    est = simulate_campaign("R16", 6, seed=23, config=PlantConfig(), prefix="EST")
+    val = simulate_campaign("R16", 6, seed=24, config=PlantConfig(), prefix="VAL")
+    t = est[3]
+    est[3] = dataclasses.replace(t, brs=t.brs * 4)
+    r = run_loop(est, val, tmp_path, verbose=False, plots=False, ratings=False)
+    assert [(w.test, w.channel) for w in r.warnings] == [(t.name, "brs")]
+    assert "pretensioner's pull" in r.warnings[0].reason
+    assert r.effects == [] and t.name not in r.estimation
 
 
 class _InProcess:
