@@ -400,16 +400,27 @@ def _at_rest(test: CrashTest, ch: str, pulse: np.ndarray) -> np.ndarray | None:
     return pre
 
 
+def _rest_step(test: CrashTest, ch: str, pulse: np.ndarray) -> float | None:
+    """CR's or CD's robust sample-to-sample change at rest before contact (see ``_at_rest``);
+    None where there is none to read, or it is 0 (a zeroed or coarsely quantised pre-trigger:
+    no noise to compare with)."""
+    if (pre := _at_rest(test, ch, pulse)) is None:
+        return None
+    return float(median_abs_deviation(np.diff(pre), scale="normal")) or None
+
+
+def _paid_counts(b: np.ndarray) -> np.ndarray:
+    """The spool's pay-out [counts] since its most wound-in point, sample by sample."""
+    return np.maximum.accumulate(b) - b
+
+
 def _quieter_than_at_rest(test: CrashTest, ch: str, x: np.ndarray,
                           pulse: np.ndarray) -> BrokenTest | None:
     """CR or CD changing less from sample to sample during the crash than at rest (see the
     module's docstring); ``x`` and ``pulse`` from first contact, as in ``screen_channels``."""
-    if (pre := _at_rest(test, ch, pulse)) is None:
+    if not (step := _rest_step(test, ch, pulse)):
         return None
     ms = 1000.0 / test.fs_hz
-    step = float(median_abs_deviation(np.diff(pre), scale="normal"))
-    if step == 0:  # a zeroed or coarsely quantised pre-trigger: no noise to compare with
-        return None
     crash = np.abs(pulse[1:]) > 0.2 * np.max(np.abs(pulse))
     # a run of one value of the count of loud steps is a run of quiet steps
     run, at = _longest_run(np.cumsum(np.abs(np.diff(x)) >= QUIET_SHARE * step), crash)
@@ -467,14 +478,13 @@ def held_end_outliers(tests: list[CrashTest], end_s: float) -> list[BrokenTest]:
 
 def _held_at_end(test: CrashTest, ch: str) -> BrokenTest | None:
     """CR or CD holding its last value over the record's end, after contact."""
-    if (pre := _at_rest(test, ch, test.pulse_g)) is None:
+    if not (step := _rest_step(test, ch, test.pulse_g)):
         return None
-    step = float(median_abs_deviation(np.diff(pre), scale="normal"))
     full = test.cr_g if ch == "cr" else test.cd_mm
     after = np.asarray(full)[test.index_of(0.0):]
     loud = np.flatnonzero(np.abs(np.diff(after)) >= QUIET_SHARE * step)
-    if step == 0 or not len(loud) or not np.all(np.isfinite(after)):
-        return None  # no noise to compare with, never moved (frozen), or samples missing
+    if not len(loud) or not np.all(np.isfinite(after)):
+        return None  # never moved (frozen), or samples missing
     held, ms = len(after) - 2 - int(loud[-1]), 1000.0 / test.fs_hz
     if held < 3 or held * ms <= HELD_END_MS:
         return None
@@ -496,7 +506,7 @@ def _spool_reading(test: CrashTest, end_s: float) -> tuple[float, float]:
         return float("nan"), float("nan")
     b = np.asarray(test.brs, dtype=float)
     pull_counts = float(np.max(b[i0:i1]) - np.median(b[:i0]))
-    paid_counts = float(np.max(np.maximum.accumulate(b[i0:i1]) - b[i0:i1]))
+    paid_counts = float(np.max(_paid_counts(b[i0:i1])))
     chest_g = (test.pulse_g[i0:i1] - test.pulse_bias_g()) - (cr[i0:i1] - np.median(cr[:i0]))
     travel_m = float(np.max(np.cumsum(np.cumsum(chest_g * STANDARD_GRAVITY))) / test.fs_hz ** 2)
     if not (pull_counts >= 2 and paid_counts >= 2 and travel_m > 0):  # 2 counts: the noise
@@ -714,7 +724,7 @@ def _payout_lag_ms(test: CrashTest, end_s: float, brs: np.ndarray | None = None)
     b = np.asarray((test.brs if brs is None else brs)[i0:i1], dtype=float)
     if not (len(b) and np.all(np.isfinite(b)) and np.isfinite(flight_ms)):
         return float("nan")
-    paid_counts = np.maximum.accumulate(b) - b  # pay-out since the most wound-in point
+    paid_counts = _paid_counts(b)
     if paid_counts.max() < 2:  # 2 counts: the encoder's noise
         return float("nan")
     k_half = int(np.argmax(paid_counts >= 0.5 * paid_counts.max()))
