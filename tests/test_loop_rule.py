@@ -35,6 +35,7 @@ from observer_node.loop.screening import (
     reversed_outputs,
     ringing_outliers,
     screen_channels,
+    speed_share_outliers,
     spool_gain_outliers,
     velocity_outliers,
 )
@@ -614,6 +615,60 @@ def test_a_pulse_gain_on_a_whole_rig_or_no_stated_velocity_is_no_broken_test(cam
     silent = [_broken(x, pulse_g=1.3 * x.pulse_g, velocity_ms=None) if x is t else x
               for x in tests]
     assert velocity_outliers(silent, 0.15) == []
+
+
+def _cut(x, fs_hz, at_s, t0_s):
+    """``x`` reading 0 from ``at_s`` on (an open input), its noise gone with it."""
+    y = np.array(x, dtype=float)
+    y[round((at_s - t0_s) * fs_hz):] = 0.0
+    return y
+
+
+@pytest.mark.parametrize("fault", ["ms2", "ms2_no_velocity", "cable", "cr_gain"])
+def test_a_dummy_that_does_not_change_speed_as_its_car_is_named(campaign, fault):
+    # a pulse exported in m/s^2 under its g header (with or without a stated velocity to
+    # referee), a pulse cable parted at 42 ms, or a CR at 0.6 of its sensitivity: the spine's
+    # change of speed is no longer the car's, on one test of the campaign
+    tests = _grouped(campaign)
+    assert speed_share_outliers(tests, 0.15) == []
+    t = next(x for x in tests if x.name == "SLED_003")
+    b = {"ms2": lambda: _broken(t, pulse_g=9.80665 * t.pulse_g),
+         "ms2_no_velocity": lambda: _broken(t, pulse_g=9.80665 * t.pulse_g, velocity_ms=None),
+         "cable": lambda: _broken(t, pulse_g=_cut(t.pulse_g, t.fs_hz, 0.042, t.t0_s)),
+         "cr_gain": lambda: _broken(t, cr_g=0.6 * t.cr_g)}[fault]()
+    found = speed_share_outliers([b if x is t else x for x in tests], 0.15)
+    channel = "cr" if fault == "cr_gain" else "pulse"
+    assert [(f.test, f.channel) for f in found] == [("SLED_003", channel)], found
+    assert "moving with its car" in found[0].reason
+
+
+def test_what_the_speed_share_leaves_alone(campaign):
+    tests = _grouped(campaign)
+    sled = next(x for x in tests if x.name == "SLED_003")
+    # a pulse 10 % high on one test (under the gap; the velocity check's), and a whole rig's
+    # pulses 1.6 times (a gain, for the loop's input_gain): nothing named
+    assert speed_share_outliers([_broken(x, pulse_g=1.1 * x.pulse_g) if x is sled else x
+                                 for x in tests], 0.15) == []
+    assert speed_share_outliers([_broken(x, pulse_g=1.6 * x.pulse_g) if x.setup == "FULL"
+                                 else x for x in tests], 0.15) == []
+    # two tests of one rig read apart alike: a rig's way, which of them the data cannot tell
+    two = {"SLED_003", "SLED_004"}
+    assert speed_share_outliers([_broken(x, pulse_g=2 * x.pulse_g) if x.name in two else x
+                                 for x in tests], 0.15) == []
+    # a rig whose areas all lie low (its pulses 1.15 times: a physical effect or a gain), one
+    # of its tests past the gap from the campaign's median but near its rig's others
+    full = [x.name for x in tests if x.setup == "FULL"]
+    low = [_broken(x, pulse_g=(1.3 if x.name == full[0] else 1.15) * x.pulse_g)
+           if x.name in full else x for x in tests]
+    assert speed_share_outliers(low, 0.15) == []
+    # a record that ends at 70 ms is not judged, nor a test among four others
+    k = sled.index_of(0.070)
+    short = _broken(sled, pulse_g=9.8 * sled.pulse_g[:k], brs=sled.brs[:k], cr_g=sled.cr_g[:k],
+                    cd_mm=sled.cd_mm[:k])
+    assert speed_share_outliers([short if x is sled else x for x in tests], 0.15) == []
+    few = [_broken(sled, pulse_g=9.8 * sled.pulse_g), *[x for x in tests if x is not sled][:4]]
+    assert speed_share_outliers(few, 0.15) == []
+    assert [f.test for f in speed_share_outliers([*few, *tests[-1:]], 0.15)] == ["SLED_003"]
 
 
 def test_a_campaign_that_pays_in_more_than_out_is_not_called_reversed(campaign):
