@@ -31,6 +31,7 @@ from observer_node.loop.screening import (
     output_step_outliers,
     payout_outliers,
     polarity_outliers,
+    pulse_step_outliers,
     residual_outliers,
     reversed_outputs,
     ringing_outliers,
@@ -548,6 +549,35 @@ def test_a_whole_test_recorded_late_is_not_called_out_of_step(campaign):
                           for ch in ("pulse_g", "brs", "cr_g", "cd_mm")}) if x is t else x
             for x in tests]
     assert output_step_outliers(late, 0.15) == []
+
+
+def test_a_pulse_out_of_step_with_all_three_channels_is_named_on_the_pulse(campaign):
+    # SLED_003's pulse 10 ms late on its time base (another test's pulse, or its recorder's
+    # own trigger), beside two other SLED tests: its CR, CD and spool all read early from it
+    tests = _grouped(campaign)
+    t = next(x for x in tests if x.name == "SLED_003")
+    b = _broken(t, pulse_g=_late(t.pulse_g, 10.0, t.fs_hz))
+    mates = [x for x in tests if x.setup == "SLED" and x is not t][:2]
+    rest = [x for x in tests if x.setup != "SLED"]
+    assert pulse_step_outliers([t, *mates, *rest], 0.15) == []
+    found = pulse_step_outliers([b, *mates, *rest], 0.15)
+    assert [(f.test, f.channel) for f in found] == [("SLED_003", "pulse")], found
+    assert "2 other SLED tests" in found[0].reason and "CR, CD and spool" in found[0].reason
+    # one other SLED test is too few to tell
+    assert pulse_step_outliers([b, mates[0], *rest], 0.15) == []
+
+
+def test_what_the_pulse_step_leaves_alone(campaign):
+    tests = _grouped(campaign)
+    assert pulse_step_outliers(tests, 0.15) == []
+    t = next(x for x in tests if x.name == "SLED_003")
+    mates = [x for x in tests if x.setup == "SLED" and x is not t][:2]
+    # a whole test late (every channel alike), or its CR alone (output_step's): not the pulse
+    whole = _broken(t, **{ch: _late(getattr(t, ch), 10.0, t.fs_hz)
+                          for ch in ("pulse_g", "brs", "cr_g", "cd_mm")})
+    cr = _broken(t, cr_g=_late(t.cr_g, 10.0, t.fs_hz))
+    for b in (whole, cr):
+        assert pulse_step_outliers([b, *mates], 0.15) == []
 
 
 def _read_fast(x, fs_true_hz, fs_hz):
