@@ -967,9 +967,8 @@ def velocity_outliers(tests: list[CrashTest], end_s: float) -> list[BrokenTest]:
     """Tests whose pulse integrates to another share of their stated velocity than the other
     tests of their setup (see the module's docstring). A test whose record ends before
     ``end_s`` is not judged (the fit refuses it, saying so)."""
-    share = {t.name: (t.setup, _speed_change_ms(t) / t.velocity_ms) for t in tests
-             if t.velocity_ms and t.last_s >= end_s}
-    share = {n: (s, r) for n, (s, r) in share.items() if np.isfinite(r) and r > 0}
+    share = {t.name: (t.setup, r) for t in tests
+             if t.last_s >= end_s and np.isfinite(r := _velocity_share(t))}
     out = []
     for x in tests:
         if x.name not in share or x.velocity_ms is None:  # (the second for the type checker)
