@@ -14,10 +14,14 @@ another rig when there is one: the lab's export swapped two tests' files, both b
 copied pulse (``pulse_from``) takes another test's. Sizes are not drawn: each form's, and each
 physical form's, is the median size sets A-AB gave it. Nothing here was tuned on the draws.
 
-Printed: per broken form, how many were drawn, how often the broken test was named (and on the
-broken channel), and the clean tests named beside it; for all campaigns, how many clean tests
-were named, by which check; and per form the campaigns the reader refused in one line naming
-the broken test's file (a unit that cannot be right, say), which are not judged. The checks
+Printed: per broken form, how many were drawn, how many of those the fault changed by more than
+the channel's own noise (``changed``: a counter of too few bits that never passed its half
+range, a poll slow enough to lose no count, a rail above the channel's peak leave the file as
+it would be without the fault, and no check can see them), how often the broken test was named
+(and on the broken channel; of the changed ones apart), and the clean tests named beside it;
+for all campaigns, how many clean tests were named, by which check; and per form the
+campaigns the reader refused in one line naming the broken test's file (a unit that cannot
+be right, say), which are not judged. The checks
 that run after the fit (a residual far below the others') are not part of this: a broken
 test not found here may still be found there.
 
@@ -27,6 +31,7 @@ test not found here may still be found there.
 from __future__ import annotations
 
 import argparse
+import dataclasses
 import json
 import sys
 import tempfile
@@ -36,6 +41,7 @@ from pathlib import Path
 
 import numpy as np
 
+from benchmarks.heldout import lab
 from benchmarks.heldout.cases import ALL, Case, Effect, test_names
 from benchmarks.heldout.draw_v import KINDS, forms, scopes
 from benchmarks.heldout.draw_w import BROKEN
@@ -49,6 +55,7 @@ SEED = 50000
 END_S = 0.15  # the loop's scoring window ends here
 BY_PLACE = ("brs_swap", "pulse_from")  # sized by which test, not by how much
 BATCH = 20  # campaigns simulated at once
+CHANNEL_AT = {"pulse": 0, "brs": 1, "cr": 2, "cd": 3}  # lab.record's order of channels
 
 
 def median_sizes() -> dict[str, float]:
@@ -99,6 +106,38 @@ def draw_campaign(k: int, seed0: int, size: dict[str, float]) -> Case:
                 expect_broken=broken)
 
 
+def changed(case: Case, drawn: list[lab.Drawn], first: int,
+            sim: dict[str, np.ndarray]) -> list[str]:
+    """The broken tests of ``case`` whose broken channel the fault moved, at some sample, by
+    more than the channel's white noise (``lab.NOISE``; one count on the spindle): each
+    recorded again as its twin with the broken form off. The lab's noise is drawn the same
+    with or without a fault, and the fault is the recorder's, so the physics ``sim`` (of the
+    batch, this case's tests from ``first`` on, as ``make`` drew them) serves both."""
+    form = case.name.split("_", 1)[1]
+    if not case.expect_broken:
+        return []
+    chan = next(ch for ch, fs in BROKEN.items() if form in fs)
+    floor = {"pulse": lab.NOISE["pulse_g"], "cr": lab.NOISE["cr_g"],
+             "cd": lab.NOISE["cd_mm"], "brs": 360.0 / case.counts_per_rev}[chan]
+    twin = dataclasses.replace(case, effects=tuple(
+        dataclasses.replace(e, size=0.0) if e.key == form else e for e in case.effects))
+    twins, _ = lab.draw(twin)
+    names = [d.name for d in twins]
+    out = []
+    for name in case.expect_broken:
+        i = names.index(name)
+        reads = []
+        for d in (drawn[first + i], twins[i]):
+            rng = np.random.default_rng([case.seed, 1])  # as make() draws the lab's noise
+            for j in range(i):
+                lab.record(twins[j], first + j, sim, case.counts_per_rev, rng)
+            test, _ = lab.record(d, first + i, sim, case.counts_per_rev, rng)
+            reads.append(np.asarray(test.channels[CHANNEL_AT[chan]].values))
+        if np.max(np.abs(reads[0] - reads[1])) > floor:
+            out.append(name)
+    return out
+
+
 def judge(case: Case, folder: Path) -> dict:
     files: list[str | Path] = [*sorted((folder / "est").iterdir()),
                                *sorted((folder / "val").iterdir())]
@@ -136,8 +175,14 @@ def main(argv: list[str] | None = None) -> int:
     for b in range(0, len(cases), BATCH):
         batch = cases[b:b + BATCH]
         with tempfile.TemporaryDirectory() as tmp:  # a batch's files, gone once judged
-            make(batch, Path(tmp), log=False)
-            rows += [judge(c, Path(tmp) / c.name) for c in batch]
+            drawn, sim = make(batch, Path(tmp), log=False)
+            first = 0
+            for c in batch:
+                row = judge(c, Path(tmp) / c.name)
+                if "refused" not in row:
+                    row["changed"] = changed(c, drawn, first, sim)
+                rows.append(row)
+                first += len(c.est) + len(c.val)
         print(f"  {len(rows)} of {len(cases)} campaigns judged, "
               f"{time.perf_counter() - t0:.0f} s", file=sys.stderr, flush=True)
     report(rows)
@@ -158,13 +203,15 @@ def report(rows: list[dict]) -> None:
         by_form[r["form"]].append(r)
     # refused: campaigns the reader refused in one line naming the broken test's file (not
     # judged by the checks, not counted as drawn)
-    print(f"{'form':22s} {'drawn':>5s} {'found':>5s} {'on its channel':>14s} "
-          f"{'clean tests named':>17s} {'refused':>7s}")
+    print(f"{'form':22s} {'drawn':>5s} {'changed':>7s} {'found':>5s} {'on its channel':>14s} "
+          f"{'found of changed':>16s} {'clean tests named':>17s} {'refused':>7s}")
     for form in sorted(set(by_form) | set(refused), key=lambda f: (f == "clean", f)):
         rs = by_form[form]
         n = sum(len(r["broken"]) for r in rs)
-        print(f"{form:22s} {n:5d} {sum(len(r['found']) for r in rs):5d} "
-              f"{sum(len(r['on_channel']) for r in rs):14d} "
+        moved = sum(len(r.get("changed", r["broken"])) for r in rs)
+        seen = sum(len(set(r["found"]) & set(r.get("changed", r["broken"]))) for r in rs)
+        print(f"{form:22s} {n:5d} {moved:7d} {sum(len(r['found']) for r in rs):5d} "
+              f"{sum(len(r['on_channel']) for r in rs):14d} {seen:16d} "
               f"{sum(len(r['clean_named']) for r in rs):17d} {refused[form]:7d}")
     clean = sum(r["clean_tests"] for r in rows)
     wrong = [c for r in rows for c in r["clean_named"]]

@@ -7,8 +7,10 @@ import subprocess
 import sys
 from pathlib import Path
 
+import pytest
+
 from benchmarks.heldout.make_sets import make
-from benchmarks.screen_faults import SEED, draw_campaign, judge, median_sizes
+from benchmarks.screen_faults import SEED, changed, draw_campaign, judge, median_sizes, report
 
 ROOT = Path(__file__).resolve().parents[1]
 
@@ -52,3 +54,21 @@ def test_a_cable_break_and_a_reversed_channel_are_named_on_their_channel(
         assert row["found"] == row["on_channel"] == list(case.expect_broken), row
         assert row["clean_named"] == [], row
         assert channel in case.name
+
+
+def test_a_fault_that_left_its_channel_as_it_was_is_counted_apart(
+        tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    # two counters of too few bits (seed 100000): R16_003's count passes its half range and
+    # wraps, FULL_004's never does, so its file is its twin's and no check could name it
+    cases = [draw_campaign(k, 100000, median_sizes()) for k in (62, 71)]
+    assert all(c.name.endswith("brs_wrap") for c in cases)
+    drawn, sim = make(cases, tmp_path, log=False)
+    assert changed(cases[0], drawn, 0, sim) == ["R16_003"] == list(cases[0].expect_broken)
+    assert changed(cases[1], drawn, 12, sim) == [] and cases[1].expect_broken == ("FULL_004",)
+    rows = []
+    for k, c in enumerate(cases):
+        rows.append(judge(c, tmp_path / c.name) | {"changed": changed(c, drawn, 12 * k, sim)})
+    report(rows)
+    line = next(x for x in capsys.readouterr().out.splitlines() if x.startswith("brs_wrap"))
+    drawn_n, moved, found, _, seen = (int(x) for x in line.split()[1:6])
+    assert (drawn_n, moved) == (2, 1) and seen == found == 1, line

@@ -29,8 +29,11 @@ def expected(case: Case) -> dict:
             "broken_tests": list(case.expect_broken), "note": case.expect_note}
 
 
-def make(cases: list[Case], out: Path, log: bool = True, effects_on: bool = True) -> None:
-    """Simulate every test of ``cases`` in one batch and write them under ``out``."""
+def make(cases: list[Case], out: Path, log: bool = True,
+         effects_on: bool = True) -> tuple[list[lab.Drawn], dict[str, np.ndarray]]:
+    """Simulate every test of ``cases`` in one batch and write them under ``out``; returns
+    the tests as drawn and the batch's physics (``lab.run``), for a caller that records a
+    test again (a twin without a recorder's fault)."""
     t_start = time.perf_counter()
     drawn: list[lab.Drawn] = []
     pulses = []
@@ -59,6 +62,7 @@ def make(cases: list[Case], out: Path, log: bool = True, effects_on: bool = True
                   flush=True)
     if log:
         print(f"done in {time.perf_counter() - t_start:.1f} s")
+    return drawn, sim
 
 
 def more_tests_options(ap: argparse.ArgumentParser) -> None:
