@@ -309,6 +309,10 @@ PAYOUT_ALPHA = 0.001  # two-sided, of the others' Student-t prediction interval
 # no clean rig's scatter: a clean bundled test lies at most 14.3 ms from the nearest of
 # three or more of its rig's others, however drawn
 PAYOUT_SURE_MS = 20.0
+# two others of the rig only: out of step with its CD too, and a stricter interval (on 3000
+# campaigns of three bundled tests of each rig, 1e-3 named a clean test in 64, 1e-4 in 9)
+PAYOUT_FEW_OTHERS = 2
+PAYOUT_FEW_ALPHA = 1e-4
 PARTNER_GAP_MS = 2.0
 STEP_GAP_MS = 3.0
 PULSE_STEP_MS = 5.0  # clean tests' CR and CD: within 4.7 ms of their rig's median
@@ -780,28 +784,61 @@ def payout_outliers(tests: list[CrashTest], end_s: float) -> list[BrokenTest]:
         setup, own = lag[x.name]
         rest = np.array([v for n, (s, v) in lag.items() if n != x.name and s == setup
                          and np.isfinite(v)])
-        if not np.isfinite(own) or len(rest) < PAYOUT_MIN_OTHERS:
+        few = len(rest) < PAYOUT_MIN_OTHERS
+        if not np.isfinite(own) or len(rest) < PAYOUT_FEW_OTHERS:
             continue
         gap, spread = float(np.min(np.abs(rest - own))), float(np.ptp(rest))
         if not (gap > PAYOUT_GAP_MS and gap > spread):
+            continue
+        # Two others say less: the spool must be out of step with its own CD as well, alike
+        # (a pulse of another crash moves the lag from the pulse alone, and is not the BRS's)
+        chest = _off_its_chest(x, own - float(np.mean(rest)), tests, end_s) if few else ""
+        if few and not chest:
             continue
         # Out of step by the gap; named when that is beyond the dummy's scatter (or beyond
         # any rig's we hold, whatever few tests say of it), or when its spool and another
         # test's are crossed, seen from both sides
         partner, both_sides = _crossed_with(x, rest, tests, lag, end_s)
-        if (both_sides or gap > PAYOUT_SURE_MS
-                or _outside_prediction(own, rest, *_scatter(x.name, lag))):
+        alpha = PAYOUT_FEW_ALPHA if few else PAYOUT_ALPHA
+        if (both_sides or (gap > PAYOUT_SURE_MS and not few)
+                or _outside_prediction(own, rest, *_scatter(x.name, lag), alpha)):
             out.append(BrokenTest(
                 x.name, "brs", f"reaches half its pay-out {own:+.1f} ms after the car's "
                 f"{1000 * FREE_FLIGHT_M:.0f} mm free flight, {gap:.1f} ms from the nearest of "
                 f"the {len(rest)} other {setup} tests (which lie within {spread:.1f} ms of each "
-                "other): its BRS and its pulse are not of one crash (one of them is another "
-                "test's file), or the decoder lost counts"))
+                f"other){chest}: its BRS and its pulse are not of one crash (one of them is "
+                "another test's file), or the decoder lost counts"))
             out += partner
     first: dict[str, BrokenTest] = {}
     for b in out:  # a test out of step on its own may be another's partner too: once, first why
         first.setdefault(b.test, b)
     return list(first.values())
+
+
+def _spool_from_chest_ms(test: CrashTest, end_s: float) -> float:
+    """Time [ms] from CD's half rise to half the spool's pay-out: both the occupant's, so a
+    pulse of another crash leaves it as it is; NaN without both."""
+    if test.cd_mm is None:
+        return float("nan")
+    flight_ms = _flight_ms(test, end_s)
+    return _payout_lag_ms(test, end_s) - (_rise_ms(test, test.cd_mm, end_s)[-1] - flight_ms)
+
+
+def _off_its_chest(x: CrashTest, off_ms: float, tests: list[CrashTest], end_s: float) -> str:
+    """Words for a spool out of step with its own CD too, as with its pulse (``off_ms`` from
+    its rig's others, on the same side), more than PAYOUT_GAP_MS from each other test of its
+    setup and further than those lie apart; "" when it is not."""
+    own = _spool_from_chest_ms(x, end_s)
+    rest = np.array([_spool_from_chest_ms(z, end_s) for z in tests
+                     if z.setup == x.setup and z.name != x.name])
+    rest = rest[np.isfinite(rest)]
+    if not (np.isfinite(own) and len(rest) >= PAYOUT_FEW_OTHERS):
+        return ""
+    gap = float(np.min(np.abs(rest - own)))
+    if not (gap > PAYOUT_GAP_MS and gap > float(np.ptp(rest))
+            and np.sign(own - float(np.mean(rest))) == np.sign(off_ms)):
+        return ""
+    return f", and {own:+.1f} ms after its own CD's half rise, {gap:.1f} ms from theirs"
 
 
 def _scatter(name: str, lag: dict[str, tuple[str, float]]) -> tuple[float, int]:
@@ -820,8 +857,9 @@ def _scatter(name: str, lag: dict[str, tuple[str, float]]) -> tuple[float, int]:
     return (float(np.sqrt(squares / dof)) if dof else 0.0), dof
 
 
-def _outside_prediction(own: float, rest: np.ndarray, sd: float, dof: int) -> bool:
-    """Whether ``own`` lies outside the two-sided (1 - PAYOUT_ALPHA) prediction interval of one
+def _outside_prediction(own: float, rest: np.ndarray, sd: float, dof: int,
+                        alpha: float = PAYOUT_ALPHA) -> bool:
+    """Whether ``own`` lies outside the two-sided (1 - alpha) prediction interval of one
     more test beside ``rest`` (their mean), the scatter ``sd`` estimated on ``dof`` degrees of
     freedom (Student's t)."""
     if dof < 1:
@@ -829,7 +867,7 @@ def _outside_prediction(own: float, rest: np.ndarray, sd: float, dof: int) -> bo
     if sd == 0.0:
         return True  # the others agree exactly, and the gap rule already set it apart
     z = abs(own - float(np.mean(rest))) / (sd * np.sqrt(1.0 + 1.0 / len(rest)))
-    return bool(2.0 * student_t.sf(z, dof) < PAYOUT_ALPHA)
+    return bool(2.0 * student_t.sf(z, dof) < alpha)
 
 
 def _crossed_with(x: CrashTest, rest: np.ndarray, tests: list[CrashTest],
