@@ -503,46 +503,6 @@ def test_a_crossed_partner_alone_on_its_rig_is_named(campaign):
     assert [f.test for f in payout_outliers(crossed, 0.15)] == ["R16_002", "FULL_002"]
 
 
-def test_a_spool_out_of_step_on_a_rig_of_three_tests_is_named_against_its_pulse_and_cd(
-        campaign):
-    # three R16 tests (two others each) beside the SLED tests and three close FULL ones: a
-    # spool 30 ms late is out of step with its pulse and its CD alike, outside the campaign's
-    # scatter; before session 41 a rig of three was not judged (a rig needed three others)
-    keep = {"R16_002", "R16_003", "R16_009", "FULL_002", "FULL_003", "FULL_004"}
-    tests = [t for t in _grouped(campaign) if t.setup == "SLED" or t.name in keep]
-    assert payout_outliers(tests, 0.15) == []
-    late = [_broken(t, brs=_late(t.brs, 30, t.fs_hz)) if t.name == "R16_002" else t
-            for t in tests]
-    found = payout_outliers(late, 0.15)
-    assert [(f.test, f.channel) for f in found] == [("R16_002", "brs")]
-    assert "after its own CD's half rise" in found[0].reason
-    # 20 ms late lies inside what two others and this campaign's scatter allow: not named
-    less = [_broken(t, brs=_late(t.brs, 20, t.fs_hz)) if t.name == "R16_002" else t
-            for t in tests]
-    assert payout_outliers(less, 0.15) == []
-
-
-def test_a_pulse_out_of_step_on_a_rig_of_three_is_not_blamed_on_the_spool(campaign):
-    # the pulse 30 ms late moves the spool's lag from it as much, but the spool keeps step
-    # with its own CD: the pay-out check names nothing, the pulse step names the pulse
-    keep = {"R16_002", "R16_003", "R16_009", "FULL_002", "FULL_003", "FULL_004"}
-    tests = [_broken(t, pulse_g=_late(t.pulse_g, 30, t.fs_hz)) if t.name == "R16_002" else t
-             for t in _grouped(campaign) if t.setup == "SLED" or t.name in keep]
-    assert payout_outliers(tests, 0.15) == []
-    assert [(b.test, b.channel) for b in broken_before_fit(tests, 0.15)] == [("R16_002", "pulse")]
-
-
-def test_a_real_rig_of_three_whose_spools_lie_apart_is_not_named(campaign):
-    # the bundled FULL tests' spools fall in two groups (28-33 and 42-44 ms): FULL_001 lies
-    # 14.3 ms from FULL_002 and FULL_003, beside every other bundled test, within the
-    # campaign's own scatter
-    tests = [t for t in _grouped(campaign)
-             if t.setup != "FULL" or t.name in ("FULL_001", "FULL_002", "FULL_003")]
-    lags = {t.name: _payout_lag_ms(t, 0.15) for t in tests if t.setup == "FULL"}
-    assert min(abs(lags["FULL_001"] - lags[n]) for n in ("FULL_002", "FULL_003")) > 14.0
-    assert payout_outliers(tests, 0.15) == []
-
-
 @pytest.mark.parametrize("channel", ["brs", "cr_g", "cd_mm"])
 def test_a_channel_copied_from_another_test_names_both(campaign, channel):
     # the lab copied R16_003's file of one channel into SLED_001's folder: which of the two

@@ -133,16 +133,7 @@ is no other test's reference):
   decoder's lost counts fit no other crash, and had named an innocent partner in 2 of 26 fresh
   draws, ``benchmarks/screen_faults.py``; the only test of its setup has no side to be seen from
   and is named one-sided). Added after held-out set J, whose crossed files no other check found
-  (one was the only FULL estimation test). **A rig of three tests** (two others) is judged too
-  (session 41): two others say less, so the spool must also be out of step with its own CD
-  alike (its half pay-out from CD's half rise more than 8 ms from both others', further than
-  they lie apart, on the same side: a pulse of another crash moves the lag from the pulse and
-  leaves this one, and is not the spool's fault), and outside the 99.99 % interval (1e-4, not
-  1e-3), or crossed as seen from both sides; no 20 ms shortcut. On 3000 campaigns of three
-  bundled tests of each rig it named a clean test in 9 (at 1e-3, 64); on the bundled campaign's
-  real scatter a spool 30 ms late among three R16 tests is named, 20 ms late is not. On the
-  simulated rigs, which scatter less, it fires sooner (a crossed file, a slow decoder, a
-  frozen spool 11-19 ms out of step on dev seed 100000).
+  (one was the only FULL estimation test).
 - **CR and CD out of step**: the chest's acceleration and its deflection are one motion, so
   on one rig the time from CR's half peak to CD's (each from its value at rest) varies little:
   on the bundled campaign it lies within 0.7 ms on every rig (CR leads by 1.2-2.2 ms). A test
@@ -318,10 +309,6 @@ PAYOUT_ALPHA = 0.001  # two-sided, of the others' Student-t prediction interval
 # no clean rig's scatter: a clean bundled test lies at most 14.3 ms from the nearest of
 # three or more of its rig's others, however drawn
 PAYOUT_SURE_MS = 20.0
-# two others of the rig only: out of step with its CD too, and a stricter interval (on 3000
-# campaigns of three bundled tests of each rig, 1e-3 named a clean test in 64, 1e-4 in 9)
-PAYOUT_FEW_OTHERS = 2
-PAYOUT_FEW_ALPHA = 1e-4
 PARTNER_GAP_MS = 2.0
 STEP_GAP_MS = 3.0
 PULSE_STEP_MS = 5.0  # clean tests' CR and CD: within 4.7 ms of their rig's median
@@ -793,61 +780,28 @@ def payout_outliers(tests: list[CrashTest], end_s: float) -> list[BrokenTest]:
         setup, own = lag[x.name]
         rest = np.array([v for n, (s, v) in lag.items() if n != x.name and s == setup
                          and np.isfinite(v)])
-        few = len(rest) < PAYOUT_MIN_OTHERS
-        if not np.isfinite(own) or len(rest) < PAYOUT_FEW_OTHERS:
+        if not np.isfinite(own) or len(rest) < PAYOUT_MIN_OTHERS:
             continue
         gap, spread = float(np.min(np.abs(rest - own))), float(np.ptp(rest))
         if not (gap > PAYOUT_GAP_MS and gap > spread):
-            continue
-        # Two others say less: the spool must be out of step with its own CD as well, alike
-        # (a pulse of another crash moves the lag from the pulse alone, and is not the BRS's)
-        chest = _off_its_chest(x, own - float(np.mean(rest)), tests, end_s) if few else ""
-        if few and not chest:
             continue
         # Out of step by the gap; named when that is beyond the dummy's scatter (or beyond
         # any rig's we hold, whatever few tests say of it), or when its spool and another
         # test's are crossed, seen from both sides
         partner, both_sides = _crossed_with(x, rest, tests, lag, end_s)
-        alpha = PAYOUT_FEW_ALPHA if few else PAYOUT_ALPHA
-        if (both_sides or (gap > PAYOUT_SURE_MS and not few)
-                or _outside_prediction(own, rest, *_scatter(x.name, lag), alpha)):
+        if (both_sides or gap > PAYOUT_SURE_MS
+                or _outside_prediction(own, rest, *_scatter(x.name, lag))):
             out.append(BrokenTest(
                 x.name, "brs", f"reaches half its pay-out {own:+.1f} ms after the car's "
                 f"{1000 * FREE_FLIGHT_M:.0f} mm free flight, {gap:.1f} ms from the nearest of "
                 f"the {len(rest)} other {setup} tests (which lie within {spread:.1f} ms of each "
-                f"other){chest}: its BRS and its pulse are not of one crash (one of them is "
-                "another test's file), or the decoder lost counts"))
+                "other): its BRS and its pulse are not of one crash (one of them is another "
+                "test's file), or the decoder lost counts"))
             out += partner
     first: dict[str, BrokenTest] = {}
     for b in out:  # a test out of step on its own may be another's partner too: once, first why
         first.setdefault(b.test, b)
     return list(first.values())
-
-
-def _spool_from_chest_ms(test: CrashTest, end_s: float) -> float:
-    """Time [ms] from CD's half rise to half the spool's pay-out: both the occupant's, so a
-    pulse of another crash leaves it as it is; NaN without both."""
-    if test.cd_mm is None:
-        return float("nan")
-    flight_ms = _flight_ms(test, end_s)
-    return _payout_lag_ms(test, end_s) - (_rise_ms(test, test.cd_mm, end_s)[-1] - flight_ms)
-
-
-def _off_its_chest(x: CrashTest, off_ms: float, tests: list[CrashTest], end_s: float) -> str:
-    """Words for a spool out of step with its own CD too, as with its pulse (``off_ms`` from
-    its rig's others, on the same side), more than PAYOUT_GAP_MS from each other test of its
-    setup and further than those lie apart; "" when it is not."""
-    own = _spool_from_chest_ms(x, end_s)
-    rest = np.array([_spool_from_chest_ms(z, end_s) for z in tests
-                     if z.setup == x.setup and z.name != x.name])
-    rest = rest[np.isfinite(rest)]
-    if not (np.isfinite(own) and len(rest) >= PAYOUT_FEW_OTHERS):
-        return ""
-    gap = float(np.min(np.abs(rest - own)))
-    if not (gap > PAYOUT_GAP_MS and gap > float(np.ptp(rest))
-            and np.sign(own - float(np.mean(rest))) == np.sign(off_ms)):
-        return ""
-    return f", and {own:+.1f} ms after its own CD's half rise, {gap:.1f} ms from theirs"
 
 
 def _scatter(name: str, lag: dict[str, tuple[str, float]]) -> tuple[float, int]:
@@ -866,9 +820,8 @@ def _scatter(name: str, lag: dict[str, tuple[str, float]]) -> tuple[float, int]:
     return (float(np.sqrt(squares / dof)) if dof else 0.0), dof
 
 
-def _outside_prediction(own: float, rest: np.ndarray, sd: float, dof: int,
-                        alpha: float = PAYOUT_ALPHA) -> bool:
-    """Whether ``own`` lies outside the two-sided (1 - alpha) prediction interval of one
+def _outside_prediction(own: float, rest: np.ndarray, sd: float, dof: int) -> bool:
+    """Whether ``own`` lies outside the two-sided (1 - PAYOUT_ALPHA) prediction interval of one
     more test beside ``rest`` (their mean), the scatter ``sd`` estimated on ``dof`` degrees of
     freedom (Student's t)."""
     if dof < 1:
@@ -876,7 +829,7 @@ def _outside_prediction(own: float, rest: np.ndarray, sd: float, dof: int,
     if sd == 0.0:
         return True  # the others agree exactly, and the gap rule already set it apart
     z = abs(own - float(np.mean(rest))) / (sd * np.sqrt(1.0 + 1.0 / len(rest)))
-    return bool(2.0 * student_t.sf(z, dof) < alpha)
+    return bool(2.0 * student_t.sf(z, dof) < PAYOUT_ALPHA)
 
 
 def _crossed_with(x: CrashTest, rest: np.ndarray, tests: list[CrashTest],

@@ -3,7 +3,10 @@ clean bundled test, on campaigns drawn from the bundled tests, seed 1: 3000 with
 each rig and 3000 with exactly 3 of each (every test then has two others), the check as
 committed (loop/screening.payout_outliers); for the same draws, with the interval of three or
 more others (PAYOUT_ALPHA) on two, and as before (three others or more only).
-Run from the repository: python docs/records/session-41/payout_two_others.py"""
+The rule was tried and not kept (docs/loop.md, "Since session 41"): run it on a checkout of
+8cfe8b1, whose screening has PAYOUT_FEW_OTHERS and PAYOUT_FEW_ALPHA:
+    git worktree add /tmp/c41 8cfe8b1 && cd /tmp/c41 &&
+    PYTHONPATH=. python docs/records/session-41/payout_two_others.py"""
 from collections import Counter
 
 import numpy as np
