@@ -1018,24 +1018,34 @@ def speed_share_outliers(tests: list[CrashTest], end_s: float) -> list[BrokenTes
         # alone on its rig, a physical effect on the other rigs (a webbing's slack) may move
         # the campaign's median by 20-25 %: then only a factor of two is a broken test
         gap = np.log1p(SPEED_GAP) if rig else np.log(SPEED_ALONE)
+        whole_rig = bool(rig) and _rig_apart(share[x.name], [
+            v for n, v in share.items() if setup_of[n] != x.setup])
         # judged where two thirds of the others agree; not named where another test of its rig
-        # reads apart alike (the rig's gain, the loop's to fit), nor near its rig's others
+        # reads apart alike (the rig's gain, the loop's to fit), nor near its rig's others,
+        # unless the whole rig reads a factor of two from every other rig (no gain nor effect
+        # of a rig moves a dummy's speed so: a lab's export, in m/s^2, for a rig's tests)
         apart = [v for v in rig.values() if abs(v - mid) > gap and (v - mid) * off > 0]
         near_rig = bool(rig) and abs(share[x.name] - float(np.median(list(rig.values())))) <= gap
-        if (abs(off) <= gap or np.mean(np.abs(rest - mid) <= gap) < 2 / 3 or apart
-                or near_rig):
+        if not whole_rig and (abs(off) <= gap or np.mean(np.abs(rest - mid) <= gap) < 2 / 3
+                              or apart or near_rig):
             continue
         ch, why = "pulse", "the pulse or CR reads another crash or another unit"
         # the stated speed referees: a pulse that integrates to it as its rig's others' do (any
-        # test's, with none of its rig) is not the one
+        # test's, with none of its rig) is not the one; a whole rig read apart is refereed by
+        # the other rigs' tests, at the same factor of two
         own = _velocity_share(x)
         judged = [t for t in tests if t.name in share and t is not x]
+        if whole_rig:
+            judged = [t for t in judged if t.setup != x.setup]
         peers = [r for r in map(_velocity_share, [t for t in judged if t.setup == x.setup]
                                 or judged) if np.isfinite(r)]
-        if (np.isfinite(own) and peers
-                and abs(np.log(own / float(np.median(peers)))) <= np.log1p(VELOCITY_GAP)):
+        near = np.log(SPEED_ALONE) if whole_rig else np.log1p(VELOCITY_GAP)
+        if np.isfinite(own) and peers and abs(np.log(own / float(np.median(peers)))) <= near:
             ch, why = "cr", ("its pulse integrates to its stated velocity as the others' do: "
                              "CR's sensitivity or range is wrong")
+        if whole_rig:
+            why += (f"; over {SPEED_ALONE:g} times from the other rigs' tests, as no rig's gain "
+                    "or physical effect moves a dummy's speed, whatever its own rig reads")
         out.append(BrokenTest(
             x.name, ch, f"CR's area from contact to {1000 * end_s:g} ms is "
             f"{np.exp(share[x.name]):.2f} times its pulse's where the other {len(rest)} tests' "
@@ -1043,6 +1053,16 @@ def speed_share_outliers(tests: list[CrashTest], end_s: float) -> list[BrokenTes
             f"{np.exp(mid):.2f}{'' if rig else f'; none of its rig, so judged at x{SPEED_ALONE:g}'}"
             f"); a dummy ends the crash moving with its car, so {why}"))
     return out
+
+
+def _rig_apart(own: float, other_rigs: list[float]) -> bool:
+    """Whether a test's log speed share ``own`` lies more than a factor of SPEED_ALONE from the
+    median of five or more tests of the other rigs, two thirds of them within SPEED_GAP of it."""
+    if len(other_rigs) < SPEED_MIN_OTHERS:
+        return False
+    mid = float(np.median(other_rigs))
+    agree = np.mean(np.abs(np.array(other_rigs) - mid) <= np.log1p(SPEED_GAP)) >= 2 / 3
+    return bool(agree and abs(own - mid) > np.log(SPEED_ALONE))
 
 
 def _velocity_share(test: CrashTest) -> float:
