@@ -232,9 +232,13 @@ is no other test's reference):
   1.2 times the pulse's, and the third rig's lay 20 % under the campaign's median: fresh
   draws), and the only test of its rig is named only at a factor of two (a helper's lone
   full-scale test beside that slack lay 25 % apart). Not found: a pulse whose cable parts once
-  most of the crash is over (from 50-70 ms), a CR within 25 % of its sensitivity, and two
-  tests of one rig broken alike (they vouch for each other here; the velocity check, where a
-  velocity is stated, judges each against its rig's median). Added in session 40.
+  most of the crash is over (from 50-70 ms), and a CR within 25 % of its sensitivity. Added
+  in session 40. Tests of one rig broken alike vouched for each other (a helper's two pulses
+  in m/s^2 with no stated velocity): a test more than a factor of two from the median of five
+  or more tests of the other rigs (two thirds of them within 25 % of it) is named whatever its
+  own rig reads, since no rig's gain or physical effect moves a dummy's speed so far from its
+  car's (a lab's export writing a rig's pulses in m/s^2, every test of it); the stated
+  velocity referees against the other rigs' tests, at the same factor. Added in session 41.
 - **a pulse out of step with all three of its test's channels**: CR's and CD's half rise and
   the spool's half pay-out, each read from the car's 50 mm free flight (as above), lie more
   than 5 ms from the nearest of two or more other tests of its setup, all on one side of their
