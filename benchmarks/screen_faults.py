@@ -16,8 +16,11 @@ physical form's, is the median size sets A-AB gave it. Nothing here was tuned on
 
 Printed: per broken form, how many were drawn, how many of those the fault changed by more than
 the channel's own noise (``changed``: a counter of too few bits that never passed its half
-range, a poll slow enough to lose no count, a rail above the channel's peak leave the file as
-it would be without the fault, and no check can see them), how often the broken test was named
+range, a poll slow enough to lose no count or one, a rail above the channel's peak leave the
+file as it would be without the fault, or within one count or the noise, and no check can see
+them; the noise is the lab's white noise before the CFC filters, so on CR, filtered at 180
+Hz, the bar is about four times the recorded noise, on CD about twice, on the unfiltered
+pulse once), how often the broken test was named
 (and on the broken channel; of the changed ones apart), and the clean tests named beside it;
 for all campaigns, how many clean tests were named, by which check; and per form the
 campaigns the reader refused in one line naming the broken test's file (a unit that cannot
@@ -109,7 +112,8 @@ def draw_campaign(k: int, seed0: int, size: dict[str, float]) -> Case:
 def changed(case: Case, drawn: list[lab.Drawn], first: int,
             sim: dict[str, np.ndarray]) -> list[str]:
     """The broken tests of ``case`` whose broken channel the fault moved, at some sample, by
-    more than the channel's white noise (``lab.NOISE``; one count on the spindle): each
+    more than the channel's white noise (``lab.NOISE``, before the filters; one count on the
+    spindle, so a poll that lost one count here and there is not counted): each
     recorded again as its twin with the broken form off. The lab's noise is drawn the same
     with or without a fault, and the fault is the recorder's, so the physics ``sim`` (of the
     batch, this case's tests from ``first`` on, as ``make`` drew them) serves both."""
