@@ -676,27 +676,6 @@ def test_a_dummy_that_does_not_change_speed_as_its_car_is_named(campaign, fault)
     assert "moving with its car" in found[0].reason
 
 
-@pytest.mark.parametrize("fault", ["two_pulses_ms2", "two_crs_per_ms2", "rig_pulses_ms2"])
-def test_tests_of_one_rig_broken_alike_are_named_against_the_other_rigs(campaign, fault):
-    # two SLED pulses exported in m/s^2 with no stated velocity, two SLED CRs in m/s^2's
-    # reciprocal (a stated velocity says the pulse is right), every SLED pulse in m/s^2: each
-    # lies a factor of 9.8 from the other rigs' tests, which no rig's gain or physical effect
-    # moves a dummy's speed by, so the rig-mates reading alike no longer vouch for each other
-    # (a helper's attack, session 40)
-    tests = _grouped(campaign)
-    g = 9.80665
-    which = {"two_pulses_ms2": ({"SLED_003", "SLED_004"}, "pulse"),
-             "two_crs_per_ms2": ({"SLED_003", "SLED_004"}, "cr"),
-             "rig_pulses_ms2": ({x.name for x in tests if x.setup == "SLED"}, "pulse")}
-    names, channel = which[fault]
-    broken = {"two_pulses_ms2": lambda x: _broken(x, pulse_g=g * x.pulse_g, velocity_ms=None),
-              "two_crs_per_ms2": lambda x: _broken(x, cr_g=x.cr_g / g),
-              "rig_pulses_ms2": lambda x: _broken(x, pulse_g=g * x.pulse_g)}[fault]
-    found = speed_share_outliers([broken(x) if x.name in names else x for x in tests], 0.15)
-    assert sorted((f.test, f.channel) for f in found) == sorted((n, channel) for n in names)
-    assert all("from the other rigs' tests" in f.reason for f in found)
-
-
 def test_what_the_speed_share_leaves_alone(campaign):
     tests = _grouped(campaign)
     sled = next(x for x in tests if x.name == "SLED_003")

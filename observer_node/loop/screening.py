@@ -232,13 +232,9 @@ is no other test's reference):
   1.2 times the pulse's, and the third rig's lay 20 % under the campaign's median: fresh
   draws), and the only test of its rig is named only at a factor of two (a helper's lone
   full-scale test beside that slack lay 25 % apart). Not found: a pulse whose cable parts once
-  most of the crash is over (from 50-70 ms), and a CR within 25 % of its sensitivity. Added
-  in session 40. Tests of one rig broken alike vouched for each other (a helper's two pulses
-  in m/s^2 with no stated velocity): a test more than a factor of two from the median of five
-  or more tests of the other rigs (two thirds of them within 25 % of it) is named whatever its
-  own rig reads, since no rig's gain or physical effect moves a dummy's speed so far from its
-  car's (a lab's export writing a rig's pulses in m/s^2, every test of it); the stated
-  velocity referees against the other rigs' tests, at the same factor. Added in session 41.
+  most of the crash is over (from 50-70 ms), a CR within 25 % of its sensitivity, and two
+  tests of one rig broken alike (they vouch for each other here; the velocity check, where a
+  velocity is stated, judges each against its rig's median). Added in session 40.
 - **a pulse out of step with all three of its test's channels**: CR's and CD's half rise and
   the spool's half pay-out, each read from the car's 50 mm free flight (as above), lie more
   than 5 ms from the nearest of two or more other tests of its setup, all on one side of their
@@ -1022,34 +1018,24 @@ def speed_share_outliers(tests: list[CrashTest], end_s: float) -> list[BrokenTes
         # alone on its rig, a physical effect on the other rigs (a webbing's slack) may move
         # the campaign's median by 20-25 %: then only a factor of two is a broken test
         gap = np.log1p(SPEED_GAP) if rig else np.log(SPEED_ALONE)
-        whole_rig = bool(rig) and _rig_apart(share[x.name], [
-            v for n, v in share.items() if setup_of[n] != x.setup])
         # judged where two thirds of the others agree; not named where another test of its rig
-        # reads apart alike (the rig's gain, the loop's to fit), nor near its rig's others,
-        # unless the whole rig reads a factor of two from every other rig (no gain nor effect
-        # of a rig moves a dummy's speed so: a lab's export, in m/s^2, for a rig's tests)
+        # reads apart alike (the rig's gain, the loop's to fit), nor near its rig's others
         apart = [v for v in rig.values() if abs(v - mid) > gap and (v - mid) * off > 0]
         near_rig = bool(rig) and abs(share[x.name] - float(np.median(list(rig.values())))) <= gap
-        if not whole_rig and (abs(off) <= gap or np.mean(np.abs(rest - mid) <= gap) < 2 / 3
-                              or apart or near_rig):
+        if (abs(off) <= gap or np.mean(np.abs(rest - mid) <= gap) < 2 / 3 or apart
+                or near_rig):
             continue
         ch, why = "pulse", "the pulse or CR reads another crash or another unit"
         # the stated speed referees: a pulse that integrates to it as its rig's others' do (any
-        # test's, with none of its rig) is not the one; a whole rig read apart is refereed by
-        # the other rigs' tests, at the same factor of two
+        # test's, with none of its rig) is not the one
         own = _velocity_share(x)
         judged = [t for t in tests if t.name in share and t is not x]
-        if whole_rig:
-            judged = [t for t in judged if t.setup != x.setup]
         peers = [r for r in map(_velocity_share, [t for t in judged if t.setup == x.setup]
                                 or judged) if np.isfinite(r)]
-        near = np.log(SPEED_ALONE) if whole_rig else np.log1p(VELOCITY_GAP)
-        if np.isfinite(own) and peers and abs(np.log(own / float(np.median(peers)))) <= near:
+        if (np.isfinite(own) and peers
+                and abs(np.log(own / float(np.median(peers)))) <= np.log1p(VELOCITY_GAP)):
             ch, why = "cr", ("its pulse integrates to its stated velocity as the others' do: "
                              "CR's sensitivity or range is wrong")
-        if whole_rig:
-            why += (f"; over {SPEED_ALONE:g} times from the other rigs' tests, as no rig's gain "
-                    "or physical effect moves a dummy's speed, whatever its own rig reads")
         out.append(BrokenTest(
             x.name, ch, f"CR's area from contact to {1000 * end_s:g} ms is "
             f"{np.exp(share[x.name]):.2f} times its pulse's where the other {len(rest)} tests' "
@@ -1057,16 +1043,6 @@ def speed_share_outliers(tests: list[CrashTest], end_s: float) -> list[BrokenTes
             f"{np.exp(mid):.2f}{'' if rig else f'; none of its rig, so judged at x{SPEED_ALONE:g}'}"
             f"); a dummy ends the crash moving with its car, so {why}"))
     return out
-
-
-def _rig_apart(own: float, other_rigs: list[float]) -> bool:
-    """Whether a test's log speed share ``own`` lies more than a factor of SPEED_ALONE from the
-    median of five or more tests of the other rigs, two thirds of them within SPEED_GAP of it."""
-    if len(other_rigs) < SPEED_MIN_OTHERS:
-        return False
-    mid = float(np.median(other_rigs))
-    agree = np.mean(np.abs(np.array(other_rigs) - mid) <= np.log1p(SPEED_GAP)) >= 2 / 3
-    return bool(agree and abs(own - mid) > np.log(SPEED_ALONE))
 
 
 def _velocity_share(test: CrashTest) -> float:
