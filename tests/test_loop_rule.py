@@ -676,6 +676,35 @@ def test_a_dummy_that_does_not_change_speed_as_its_car_is_named(campaign, fault)
     assert "moving with its car" in found[0].reason
 
 
+@pytest.mark.parametrize("fault", ["two_pulses_ms2", "two_crs_per_ms2", "rig_pulses_ms2",
+                                   "most_pulses_ms2"])
+def test_tests_of_one_rig_broken_alike_are_named_by_the_speed_they_lose(campaign, fault):
+    # two SLED pulses exported in m/s^2 with no stated velocity, two SLED CRs in m/s^2's
+    # reciprocal (the stated velocity says the pulse is right), every SLED pulse in m/s^2, and
+    # every R16 pulse (12 of the 24 tests): a dummy changing speed by a tenth or ten times its
+    # car's is no rig's way, so rig-mates reading alike no longer vouch for each other (a
+    # helper's attack, session 40), and a rig holding half the campaign names no other rig's
+    # test (session 41's first form, read against the other rigs' tests, named them all)
+    tests = _grouped(campaign)
+    g = 9.80665
+    sled = {x.name for x in tests if x.setup == "SLED"}
+    names, channel = {"two_pulses_ms2": ({"SLED_003", "SLED_004"}, "pulse"),
+                      "two_crs_per_ms2": ({"SLED_003", "SLED_004"}, "cr"),
+                      "rig_pulses_ms2": (sled, "pulse"),
+                      "most_pulses_ms2": ({x.name for x in tests if x.setup == "R16"},
+                                          "pulse")}[fault]
+    broken = {"two_pulses_ms2": lambda x: _broken(x, pulse_g=g * x.pulse_g, velocity_ms=None),
+              "two_crs_per_ms2": lambda x: _broken(x, cr_g=x.cr_g / g),
+              "rig_pulses_ms2": lambda x: _broken(x, pulse_g=g * x.pulse_g),
+              "most_pulses_ms2": lambda x: _broken(x, pulse_g=g * x.pulse_g)}[fault]
+    found = speed_share_outliers([broken(x) if x.name in names else x for x in tests], 0.15)
+    assert sorted((f.test, f.channel) for f in found) == sorted((n, channel) for n in names)
+    assert all("no rig's way" in f.reason for f in found)
+    # a whole rig's pulses 2.2 times (its dummies at 0.53 of the car's speed): not absurd
+    assert speed_share_outliers([_broken(x, pulse_g=2.2 * x.pulse_g) if x.setup == "FULL"
+                                 else x for x in tests], 0.15) == []
+
+
 def test_what_the_speed_share_leaves_alone(campaign):
     tests = _grouped(campaign)
     sled = next(x for x in tests if x.name == "SLED_003")
