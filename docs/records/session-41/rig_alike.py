@@ -4,8 +4,8 @@ other tests only): in each, the rig with the most tests (two or more) gets, on t
 tests or on all, a pulse exported in m/s^2 with no stated velocity, or a CR in m/s^2's
 reciprocal with the velocity stated. Printed per fault: campaigns, tests broken, tests named
 by the checks before the fit (``broken_before_fit``), on the broken channel, and clean tests
-named. Run from a checkout (its own screening is the one judged; the rule tried is 1badf01's,
-not kept):
+named. Run from a checkout (its own screening is the one judged: 0cad69e before, 1badf01 the
+rule read against the other rigs, not kept; 5bf9913 the factor of two from the car's speed):
     PYTHONPATH=. python docs/records/session-41/rig_alike.py SEED CAMPAIGNS"""
 import dataclasses
 import sys
