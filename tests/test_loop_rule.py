@@ -705,6 +705,16 @@ def test_tests_of_one_rig_broken_alike_are_named_by_the_speed_they_lose(campaign
                                  else x for x in tests], 0.15) == []
 
 
+def test_a_cr_read_ten_times_is_named_on_cr_where_every_velocity_is_in_km_h(campaign):
+    # every test states its velocity as a bare km/h number: the pulse of SLED_003 integrates
+    # to 1/3.6 of it, as every other test's does, so CR is the one read in another unit (a
+    # helper's attack on the first form, which read the pulse against the stated speed alone)
+    tests = [_broken(x, velocity_ms=3.6 * x.velocity_ms) for x in _grouped(campaign)]
+    bad = [_broken(x, cr_g=9.80665 * x.cr_g) if x.name == "SLED_003" else x for x in tests]
+    found = speed_share_outliers(bad, 0.15)
+    assert [(f.test, f.channel) for f in found] == [("SLED_003", "cr")]
+
+
 def test_what_the_speed_share_leaves_alone(campaign):
     tests = _grouped(campaign)
     sled = next(x for x in tests if x.name == "SLED_003")

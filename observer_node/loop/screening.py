@@ -326,6 +326,7 @@ CRASH_SHARE = 0.05  # of the pulse's peak: below it for good, the crash is over
 SPEED_GAP = 0.25  # relative, CR's area over the pulse's against the campaign's: clean 0.14
 SPEED_ALONE = 2.0  # times, for a test with no other of its rig
 SPEED_MIN_OTHERS = 5
+CRASH_DONE = 0.9  # of the pulse's change of speed reached in the window: the crash is over
 OUTLIER_POINTS = 20.0
 OUTLIER_DEVIATIONS = 4.0
 
@@ -1030,7 +1031,7 @@ def speed_share_outliers(tests: list[CrashTest], end_s: float) -> list[BrokenTes
         near_rig = bool(rig) and abs(share[x.name] - float(np.median(list(rig.values())))) <= gap
         # under half or over twice its car's change of speed is no rig's way, whatever the
         # others read (tests of one rig broken alike vouch for each other otherwise)
-        absurd = abs(share[x.name]) > np.log(SPEED_ALONE)
+        absurd = abs(share[x.name]) > np.log(SPEED_ALONE) and _speed_by(x, end_s) >= CRASH_DONE
         if not absurd and (abs(off) <= gap or np.mean(np.abs(rest - mid) <= gap) < 2 / 3
                            or apart or near_rig):
             continue
@@ -1042,13 +1043,19 @@ def speed_share_outliers(tests: list[CrashTest], end_s: float) -> list[BrokenTes
         judged = [t for t in tests if t.name in share and t is not x]
         peers = [r for r in map(_velocity_share, [t for t in judged if t.setup == x.setup]
                                 or judged) if np.isfinite(r)]
-        if absurd:
-            peers, near = [1.0], np.log(SPEED_ALONE)
-        else:
-            near = np.log1p(VELOCITY_GAP)
+        near = np.log1p(VELOCITY_GAP)
+        if absurd:  # its rig-mates may be broken alike: the campaign's share where two thirds
+            every = [r for r in map(_velocity_share, judged) if np.isfinite(r)]  # agree (a
+            mid_v = float(np.median(every)) if every else 1.0  # speed in km/h), else 1
+            agree = bool(every) and np.mean(np.abs(np.log(np.array(every) / mid_v))
+                                            <= np.log1p(VELOCITY_GAP)) >= 2 / 3
+            peers, near = [mid_v if agree else 1.0], np.log(SPEED_ALONE)
         if np.isfinite(own) and peers and abs(np.log(own / float(np.median(peers)))) <= near:
             ch, why = "cr", ("its pulse integrates to its stated velocity as the others' do: "
                              "CR's sensitivity or range is wrong")
+            if absurd:
+                ch, why = "cr", ("its pulse integrates to its stated velocity within a factor "
+                                 f"of {SPEED_ALONE:g}: CR's sensitivity or range is wrong")
         if absurd:
             why += (f"; under 1/{SPEED_ALONE:g} or over {SPEED_ALONE:g} times is no rig's way "
                     "(1.11-1.24 on the bundled campaign), whatever its rig-mates read")
@@ -1059,6 +1066,17 @@ def speed_share_outliers(tests: list[CrashTest], end_s: float) -> list[BrokenTes
             f"{np.exp(mid):.2f}{'' if rig else f'; none of its rig, so judged at x{SPEED_ALONE:g}'}"
             f"); a dummy ends the crash moving with its car, so {why}"))
     return out
+
+
+def _speed_by(test: CrashTest, end_s: float) -> float:
+    """The share of the pulse's change of speed (its largest integral from first contact over
+    the record) reached by ``end_s``: under CRASH_DONE the crash goes on past the window, and
+    its dummy may not yet move with its car; NaN where the pulse is not numbers."""
+    i0, i1 = test.index_of(0.0), test.index_of(end_s) + 1
+    dv = np.abs(np.cumsum(test.pulse_g[i0:] - test.pulse_bias_g()))
+    if not (len(dv) and np.all(np.isfinite(dv)) and dv.max() > 0):
+        return float("nan")
+    return float(dv[min(i1 - i0, len(dv)) - 1] / dv.max())
 
 
 def _velocity_share(test: CrashTest) -> float:

@@ -45,7 +45,7 @@ for b in range(0, n, 20):
             mates = [t.name for t in tests if t.setup == rig]
             for fault, (k, channel) in FAULTS.items():
                 hit = set(mates[:k] if k else mates)
-                def brk(t):
+                def brk(t, channel=channel):
                     if channel == "pulse":
                         return dataclasses.replace(t, pulse_g=G * t.pulse_g, velocity_ms=None)
                     return dataclasses.replace(t, cr_g=t.cr_g / G)

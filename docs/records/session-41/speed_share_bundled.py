@@ -1,6 +1,6 @@
 """The speed share (loop/screening.speed_share_outliers) on the bundled campaign and on 3000
 campaigns of 3-8 tests of each rig drawn from it (seed 1): how many campaigns name a test.
-Run from a checkout (its screening is the one judged; 1badf01's was tried, not kept):
+Run from a checkout (its screening is the one judged: 1badf01 and 5bf9913 printed the same):
     PYTHONPATH=. python docs/records/session-41/speed_share_bundled.py"""
 from collections import Counter
 
