@@ -237,10 +237,12 @@ is no other test's reference):
   in m/s^2 with no stated velocity): a test whose CR area is under half or over twice its
   pulse's is named whatever its rig-mates read (no clean test of held-out sets A-AB nor of the
   bundled campaign lies outside 0.76-1.25; a helper's rigs stretched three times in time,
-  0.62-1.23), with the stated velocity refereeing at the same factor (its pulse within a
-  factor of two of it: CR is named). Read against the other rigs' tests instead, a broken rig
-  holding most of a campaign set their median and named every clean test (session 41's fresh
-  draws, tried and not kept). Added in session 41.
+  0.62-1.23), where the crash is over in the window (nine tenths of the pulse's change of
+  speed reached), with the stated velocity refereeing at the same factor (the pulse's share
+  of it within a factor of two of the campaign's, where two thirds agree on one, as in a
+  campaign in km/h, else of 1: CR is named). Read against the other rigs' tests instead, a
+  broken rig holding most of a campaign set their median and named every clean test (session
+  41's fresh draws, tried and not kept). Added in session 41.
 - **a pulse out of step with all three of its test's channels**: CR's and CD's half rise and
   the spool's half pay-out, each read from the car's 50 mm free flight (as above), lie more
   than 5 ms from the nearest of two or more other tests of its setup, all on one side of their
@@ -1037,25 +1039,18 @@ def speed_share_outliers(tests: list[CrashTest], end_s: float) -> list[BrokenTes
             continue
         ch, why = "pulse", "the pulse or CR reads another crash or another unit"
         # the stated speed referees: a pulse that integrates to it as its rig's others' do (any
-        # test's, with none of its rig) is not the one; read against the stated speed itself,
-        # at the same factor, where the test is absurd (its rig-mates may be broken alike)
+        # test's, with none of its rig) is not the one
         own = _velocity_share(x)
         judged = [t for t in tests if t.name in share and t is not x]
         peers = [r for r in map(_velocity_share, [t for t in judged if t.setup == x.setup]
                                 or judged) if np.isfinite(r)]
-        near = np.log1p(VELOCITY_GAP)
-        if absurd:  # its rig-mates may be broken alike: the campaign's share where two thirds
-            every = [r for r in map(_velocity_share, judged) if np.isfinite(r)]  # agree (a
-            mid_v = float(np.median(every)) if every else 1.0  # speed in km/h), else 1
-            agree = bool(every) and np.mean(np.abs(np.log(np.array(every) / mid_v))
-                                            <= np.log1p(VELOCITY_GAP)) >= 2 / 3
-            peers, near = [mid_v if agree else 1.0], np.log(SPEED_ALONE)
+        near, like = np.log1p(VELOCITY_GAP), "as the others' do"
+        if absurd:  # its rig-mates may be broken alike: read against the whole campaign
+            peers = [_agreed_velocity_share(judged)]
+            near, like = np.log(SPEED_ALONE), f"within a factor of {SPEED_ALONE:g}"
         if np.isfinite(own) and peers and abs(np.log(own / float(np.median(peers)))) <= near:
-            ch, why = "cr", ("its pulse integrates to its stated velocity as the others' do: "
-                             "CR's sensitivity or range is wrong")
-            if absurd:
-                ch, why = "cr", ("its pulse integrates to its stated velocity within a factor "
-                                 f"of {SPEED_ALONE:g}: CR's sensitivity or range is wrong")
+            ch, why = "cr", (f"its pulse integrates to its stated velocity {like}: CR's "
+                             "sensitivity or range is wrong")
         if absurd:
             why += (f"; under 1/{SPEED_ALONE:g} or over {SPEED_ALONE:g} times is no rig's way "
                     "(1.11-1.24 on the bundled campaign), whatever its rig-mates read")
@@ -1077,6 +1072,18 @@ def _speed_by(test: CrashTest, end_s: float) -> float:
     if not (len(dv) and np.all(np.isfinite(dv)) and dv.max() > 0):
         return float("nan")
     return float(dv[min(i1 - i0, len(dv)) - 1] / dv.max())
+
+
+def _agreed_velocity_share(tests: list[CrashTest]) -> float:
+    """The median of the tests' velocity shares where two thirds of them lie within
+    VELOCITY_GAP of it (a campaign whose velocities are all in km/h agrees on 1/3.6), else 1:
+    the stated speed itself."""
+    every = np.array([r for r in map(_velocity_share, tests) if np.isfinite(r)])
+    if not len(every):
+        return 1.0
+    mid = float(np.median(every))
+    agree = np.mean(np.abs(np.log(every / mid)) <= np.log1p(VELOCITY_GAP)) >= 2 / 3
+    return mid if agree else 1.0
 
 
 def _velocity_share(test: CrashTest) -> float:
