@@ -20,11 +20,10 @@ range, a poll slow enough to lose no count or one, a rail above the channel's pe
 file as it would be without the fault, or within one count or the noise, and no check can see
 them; the noise is the lab's white noise before the CFC filters, so on CR, filtered at 180
 Hz, the bar is about four times the recorded noise, on CD about twice, on the unfiltered
-pulse once), how often the broken test was named
-(and on the broken channel; of the changed ones apart), and the clean tests named beside it;
-for all campaigns, how many clean tests were named, by which check; and per form the
-campaigns the reader refused in one line naming the broken test's file (a unit that cannot
-be right, say), which are not judged. The checks
+pulse once), how often the broken test was named (and on the broken channel; of the changed
+ones apart), and the clean tests named beside it; for all campaigns, how many clean tests
+were named, by which check; and per form the campaigns the reader refused in one line naming
+the broken test's file (a unit that cannot be right, say), which are not judged. The checks
 that run after the fit (a residual far below the others') are not part of this: a broken
 test not found here may still be found there.
 
@@ -130,11 +129,13 @@ def changed(case: Case, drawn: list[lab.Drawn], first: int,
     out = []
     for name in case.expect_broken:
         i = names.index(name)
+        rng = np.random.default_rng([case.seed, 1])  # as make() draws the lab's noise
+        for j in range(i):  # the tests before it, to the noise it was drawn with
+            lab.record(twins[j], first + j, sim, case.counts_per_rev, rng)
+        state = rng.bit_generator.state
         reads = []
         for d in (drawn[first + i], twins[i]):
-            rng = np.random.default_rng([case.seed, 1])  # as make() draws the lab's noise
-            for j in range(i):
-                lab.record(twins[j], first + j, sim, case.counts_per_rev, rng)
+            rng.bit_generator.state = state
             test, _ = lab.record(d, first + i, sim, case.counts_per_rev, rng)
             reads.append(np.asarray(test.channels[CHANNEL_AT[chan]].values))
         if np.max(np.abs(reads[0] - reads[1])) > floor:
