@@ -242,7 +242,14 @@ is no other test's reference):
   of it within a factor of two of the campaign's, where two thirds agree on one, as in a
   campaign in km/h, else of 1: CR is named). Read against the other rigs' tests instead, a
   broken rig holding most of a campaign set their median and named every clean test (session
-  41's fresh draws, tried and not kept). Added in session 41.
+  41's fresh draws, tried and not kept). Added in session 41. A CR short of its car's speed
+  whose mean after the crash (from the pulse's 98 % change of speed) reads back against its
+  mean in the crash by more than a quarter of it is named as a charge that leaks away (an
+  AC-coupled CR), not a sensitivity: a sensitivity scales the tail with the crash, a leak
+  turns it (clean tests -0.20 to +0.34 on the bundled campaign and 240 drawn; leaking at
+  0.1 s, -0.25 to -0.93). CR is then named whatever the stated velocity says. Under zero but
+  not under a quarter, as a clean chest's rebound may read, both are said. Added in session
+  42, after a helper's campaign whose every CR leaked in 0.1 s was named a wrong sensitivity.
 - **a pulse out of step with all three of its test's channels**: CR's and CD's half rise and
   the spool's half pay-out, each read from the car's 50 mm free flight (as above), lie more
   than 5 ms from the nearest of two or more other tests of its setup, all on one side of their
@@ -329,6 +336,9 @@ SPEED_GAP = 0.25  # relative, CR's area over the pulse's against the campaign's:
 SPEED_ALONE = 2.0  # times, for a test with no other of its rig
 SPEED_MIN_OTHERS = 5
 CRASH_DONE = 0.9  # of the pulse's change of speed reached in the window: the crash is over
+CRASH_OVER = 0.98  # of the pulse's change of speed: from here on CR's tail is read
+LEAK_TAIL = -0.25  # CR's mean after the crash over its mean in it: clean -0.20 to +0.34
+LEAK_MIN_MS = 10.0  # of tail, or the leak is not judged
 OUTLIER_POINTS = 20.0
 OUTLIER_DEVIATIONS = 4.0
 
@@ -1051,6 +1061,18 @@ def speed_share_outliers(tests: list[CrashTest], end_s: float) -> list[BrokenTes
         if np.isfinite(own) and peers and abs(np.log(own / float(np.median(peers)))) <= near:
             ch, why = "cr", (f"its pulse integrates to its stated velocity {like}: CR's "
                              "sensitivity or range is wrong")
+        tail = _tail_against_crash(x)
+        short = min(off, share[x.name]) < 0  # short of its car's change of speed
+        if short and tail < LEAK_TAIL:  # no sensitivity turns a chest's tail against its crash
+            ch, why = "cr", (
+                f"after the crash CR reads {tail:+.2f} times its mean in it, against it (clean "
+                f"tests: {LEAK_TAIL:+.2f} or above): CR's charge leaks away (an AC-coupled or "
+                "piezoelectric channel whose time constant is too short), which takes its area "
+                "from it")
+        elif short and ch == "cr" and tail < 0:  # a clean chest's rebound may read so too
+            why += (f", or its charge leaks away (after the crash it reads {tail:+.2f} times its "
+                    f"mean in it, as a clean chest's rebound may; a leak reads under "
+                    f"{LEAK_TAIL:+.2f} at 0.1 s)")
         if absurd:
             why += (f"; under 1/{SPEED_ALONE:g} or over {SPEED_ALONE:g} times is no rig's way "
                     "(1.11-1.24 on the bundled campaign), whatever its rig-mates read")
@@ -1072,6 +1094,29 @@ def _speed_by(test: CrashTest, end_s: float) -> float:
     if not (len(dv) and np.all(np.isfinite(dv)) and dv.max() > 0):
         return float("nan")
     return float(dv[min(i1 - i0, len(dv)) - 1] / dv.max())
+
+
+def _tail_against_crash(test: CrashTest) -> float:
+    """CR's mean after the crash (from the pulse's CRASH_OVER share of its change of speed to
+    the record's end) over its mean in it (first contact to there), both from its median at
+    rest: a chest still moving with its car reads about zero after the crash or rebounds a
+    little (-0.20 to +0.34 on the bundled campaign and 240 tests of the independent
+    simulator), while a channel whose charge leaks away reads back against the crash, by
+    -0.25 to -0.93 at a time constant of 0.1 s. NaN under LEAK_MIN_MS of tail, or where a
+    channel is not numbers."""
+    i0 = test.index_of(0.0)
+    dv = np.abs(np.cumsum(test.pulse_g[i0:] - test.pulse_bias_g()))
+    if test.cr_g is None:
+        return float("nan")
+    pre = test.cr_g[test.time_s < 0.0]
+    if not (len(pre) and len(dv) and np.all(np.isfinite(dv)) and dv.max() > 0):
+        return float("nan")
+    j = i0 + int(np.argmax(dv >= CRASH_OVER * dv.max()))
+    if len(dv) - (j - i0) < LEAK_MIN_MS * 1e-3 * test.fs_hz or j == i0:
+        return float("nan")
+    y = test.cr_g - float(np.median(pre))
+    crash = float(np.mean(y[i0:j]))
+    return float(np.mean(y[j:i0 + len(dv)]) / crash) if crash else float("nan")
 
 
 def _agreed_velocity_share(tests: list[CrashTest]) -> float:
@@ -1126,9 +1171,10 @@ def broken_before_fit(tests: list[CrashTest], end_s: float) -> list[BrokenTest]:
     crash read too fast would otherwise be blamed on the BRS."""
     broken = [b for t in tests for b in screen_channels(t, end_s)]
     flagged = {b.test for b in broken}
-    for check in (copied_channels, held_end_outliers, polarity_outliers, reversed_outputs,
-                  velocity_outliers, speed_share_outliers, payout_outliers, output_step_outliers,
-                  spool_gain_outliers, ringing_outliers, pulse_step_outliers):
+    for check in (copied_channels, held_end_outliers, polarity_outliers,
+                  reversed_outputs, velocity_outliers, speed_share_outliers, payout_outliers,
+                  output_step_outliers, spool_gain_outliers, ringing_outliers,
+                  pulse_step_outliers):
         broken += check([t for t in tests if t.name not in flagged], end_s)
         flagged = {b.test for b in broken}
     return broken
