@@ -31,6 +31,7 @@ from observer_node.loop.screening import (
     output_step_outliers,
     payout_outliers,
     polarity_outliers,
+    polled_spools,
     pulse_step_outliers,
     residual_outliers,
     reversed_outputs,
@@ -443,6 +444,33 @@ def test_a_quiet_pre_trigger_names_no_channel_quieter_than_at_rest(campaign):
     t = next(x for x in campaign if x.name == "R16_003")
     still = np.where(t.time_s < 0.0, 0.0, t.cr_g)
     assert screen_channels(_broken(t, cr_g=still), 0.15) == []
+
+
+def _polled(counts, every):
+    """``counts`` as a quadrature decoder reads them polling its two tracks every ``every``
+    samples: it sees only the tracks' phase (the count mod 4), so a move of one count reads as
+    one, of three as one back, of two as none; held between polls."""
+    c = np.asarray(counts, dtype=float)[::every]
+    phase = np.diff(c) % 4
+    step = np.select([phase == 1, phase == 3], [1.0, -1.0], 0.0)
+    read = np.concatenate([[c[0]], c[0] + np.cumsum(step)])
+    return np.repeat(read, every)[:len(counts)]
+
+
+@pytest.mark.parametrize("every", [5, 10, 20])
+def test_a_spool_whose_decoder_polls_too_slowly_is_named(campaign, every):
+    tests = _grouped(campaign)
+    assert polled_spools(tests, 0.15) == []
+    bad = [_broken(x, brs=_polled(x.brs, every)) if x.name == "R16_003" else x for x in tests]
+    found = broken_before_fit(bad, 0.15)
+    assert [(f.test, f.channel) for f in found] == [("R16_003", "brs")], found
+    assert f"every {every}th sample" in found[0].reason
+    # a counter read as coarsely (its steps of several counts kept) loses nothing: not named
+    held = [_broken(x, brs=np.repeat(np.asarray(x.brs)[::every], every)[:len(x.brs)])
+            if x.name == "R16_003" else x for x in tests]
+    assert broken_before_fit(held, 0.15) == []
+    # every spool of the campaign polled so: no test's spool says how fast one turns
+    assert polled_spools([_broken(x, brs=_polled(x.brs, every)) for x in tests], 0.15) == []
 
 
 def test_crossed_brs_files_are_found_by_the_pay_out_against_the_pulse(campaign):

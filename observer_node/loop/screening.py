@@ -75,6 +75,19 @@ is no other test's reference):
   this: ``observer_node.data.check_distinct``). Not the pulse: a crash's driver and passenger
   may be filed as two tests sharing the car's accelerometer. Added in session 37;
 
+- **a spool read by a decoder that polls too slowly**: a quadrature decoder that polls its two
+  tracks every k samples sees only their phase, so a move of two counts between polls reads as
+  none and of three as one back. Its BRS changes only on every k-th sample (every interval
+  between changes a multiple of k: their greatest common divisor, over 20 changes or more; a
+  spindle read at the record's rate changes on any sample, and the bundled campaign's and
+  every clean drawn test's divisor is 1) and by one count at a time. It is named where the
+  other tests of its rig (any test's, with none) turn two counts or more in k samples at their
+  fastest (median): then the polled spool must have lost or reversed counts. A counter read as
+  coarsely keeps its steps of several counts and loses nothing: not named; nor is a campaign
+  whose every spool is polled so. The independent simulator's slow decoder (1 kHz in 10 kHz
+  records) was found before the fit in 5 of 18 that changed their channel (session 41's fresh
+  draws). Added in session 42;
+
 - **BRS at the wrong polarity** (+ = webbing pulled in, as the channel code says): once the
   occupant loads the belt, a locked retractor pays out (its load limiter) or holds; in the
   rebound its spring winds back a little. A spindle that, after paying out, pays in by more
@@ -339,6 +352,8 @@ CRASH_DONE = 0.9  # of the pulse's change of speed reached in the window: the cr
 CRASH_OVER = 0.98  # of the pulse's change of speed: from here on CR's tail is read
 LEAK_TAIL = -0.25  # CR's mean after the crash over its mean in it: clean -0.20 to +0.34
 LEAK_MIN_MS = 10.0  # of tail, or the leak is not judged
+POLL_MIN_CHANGES = 20  # a clean spool's on one residue of 2 or more: odds under 2^-19
+POLL_FAST_COUNTS = 2.0  # per poll: a decoder reading its tracks then sees an invalid step
 OUTLIER_POINTS = 20.0
 OUTLIER_DEVIATIONS = 4.0
 
@@ -515,6 +530,55 @@ def _back_at_rest(test: CrashTest, ch: str, x: np.ndarray,
                       f"its noise, {noise:.2g} {unit}) for {run * ms:.1f} ms while the crash goes "
                       f"on (from t = {from_ms:.1f} ms): it stopped reading the dummy (a cable "
                       "parted, the amplifier reading its own noise)")
+
+
+def polled_spools(tests: list[CrashTest], end_s: float) -> list[BrokenTest]:
+    """Tests whose BRS changes only on every k-th sample (k >= 2) and by one count at a time,
+    where the other tests' spools of their setup (any test's, with none of it) turn
+    POLL_FAST_COUNTS or more in that time at their fastest (see the module's docstring)."""
+    out = []
+    for x in tests:
+        k, changes = _poll_samples(x)
+        i0, i1 = x.index_of(0.0), x.index_of(end_s) + 1
+        if k < 2 or changes < POLL_MIN_CHANGES or np.max(np.abs(np.diff(x.brs[i0:i1]))) > 1:
+            continue
+        others = [t for t in tests if t is not x and t.setup == x.setup] or \
+            [t for t in tests if t is not x]
+        fast = [f for t in others if np.isfinite(f := _fastest_turns(t, k / x.fs_hz, end_s))]
+        per_poll = float(np.median(fast)) * (x.counts_per_rev or 48) if fast else 0.0
+        if per_poll < POLL_FAST_COUNTS:
+            continue
+        rig = f"{x.setup} " if others[0].setup == x.setup else ""
+        out.append(BrokenTest(
+            x.name, "brs", f"changes only on every {k}th sample ({x.fs_hz / k:g} Hz in a "
+            f"{x.fs_hz:g} Hz record; {changes} changes) and by one count at a time, where the "
+            f"other {len(fast)} {rig}tests' "
+            f"spools turn {per_poll:.1f} counts in that time at their fastest (median): its "
+            "decoder reads the tracks too slowly, and loses or reverses counts while the spool "
+            "turns fast"))
+    return out
+
+
+def _poll_samples(test: CrashTest) -> tuple[int, int]:
+    """The greatest common divisor of the sample intervals between the BRS's changes over the
+    record, and how many changes: 1 for a spindle read at the record's rate, k where a
+    decoder polls it every k samples. (1, 0) where the record is not numbers."""
+    b = np.asarray(test.brs, dtype=float)
+    if not np.all(np.isfinite(b)):
+        return 1, 0
+    at = np.flatnonzero(np.diff(b))
+    return (int(np.gcd.reduce(np.diff(at))) if len(at) > 1 else 1), len(at)
+
+
+def _fastest_turns(test: CrashTest, dt_s: float, end_s: float) -> float:
+    """The most turns the spool makes in ``dt_s``, first contact to ``end_s``; NaN where the
+    window holds none or the channel is not numbers."""
+    i0, i1 = test.index_of(0.0), test.index_of(end_s) + 1
+    b = np.asarray(test.brs[i0:i1], dtype=float)
+    n = max(1, round(dt_s * test.fs_hz))
+    if len(b) <= n or not np.all(np.isfinite(b)):
+        return float("nan")
+    return float(np.max(np.abs(b[n:] - b[:-n]))) / (test.counts_per_rev or 48)
 
 
 def held_end_outliers(tests: list[CrashTest], end_s: float) -> list[BrokenTest]:
@@ -1171,7 +1235,7 @@ def broken_before_fit(tests: list[CrashTest], end_s: float) -> list[BrokenTest]:
     crash read too fast would otherwise be blamed on the BRS."""
     broken = [b for t in tests for b in screen_channels(t, end_s)]
     flagged = {b.test for b in broken}
-    for check in (copied_channels, held_end_outliers, polarity_outliers,
+    for check in (copied_channels, polled_spools, held_end_outliers, polarity_outliers,
                   reversed_outputs, velocity_outliers, speed_share_outliers, payout_outliers,
                   output_step_outliers, spool_gain_outliers, ringing_outliers,
                   pulse_step_outliers):
