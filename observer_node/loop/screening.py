@@ -353,9 +353,11 @@ SPEED_MIN_OTHERS = 5
 CRASH_DONE = 0.9  # of the pulse's change of speed reached in the window: the crash is over
 CRASH_OVER = 0.98  # of the pulse's change of speed: from here on CR's tail is read
 LEAK_TAIL = -0.25  # CR's mean after the crash over its mean in it: clean -0.20 to +0.34
-LEAK_MIN_MS = 10.0  # of tail, or the leak is not judged
+LEAK_PAST_MS = 40.0  # the record past the window, or the tail holds the rebound: not judged
 POLL_MIN_CHANGES = 20  # a clean spool's on one residue of 2 or more: odds under 2^-19
-POLL_FAST_COUNTS = 2.0  # per poll: a decoder reading its tracks then sees an invalid step
+POLL_FAST_COUNTS = 3.0  # per poll, three times a step of one: a decoder reading its tracks sees
+# invalid steps then, and a clean spool read as coarsely moves more than one count (at 2.0 a
+# helper's clean counters read at 1-2 kHz were named, 62 of 504)
 OUTLIER_POINTS = 20.0
 OUTLIER_DEVIATIONS = 4.0
 
@@ -542,7 +544,8 @@ def polled_spools(tests: list[CrashTest], end_s: float) -> list[BrokenTest]:
     for x in tests:
         k, changes = _poll_samples(x)
         i0, i1 = x.index_of(0.0), x.index_of(end_s) + 1
-        if k < 2 or changes < POLL_MIN_CHANGES or np.max(np.abs(np.diff(x.brs[i0:i1]))) > 1:
+        steps = np.abs(np.diff(np.asarray(x.brs[i0:i1], dtype=float)))  # not a uint's wrap
+        if k < 2 or changes < POLL_MIN_CHANGES or not len(steps) or np.max(steps) > 1:
             continue
         others = [t for t in tests if t is not x and t.setup == x.setup] or \
             [t for t in tests if t is not x]
@@ -1127,7 +1130,7 @@ def speed_share_outliers(tests: list[CrashTest], end_s: float) -> list[BrokenTes
         if np.isfinite(own) and peers and abs(np.log(own / float(np.median(peers)))) <= near:
             ch, why = "cr", (f"its pulse integrates to its stated velocity {like}: CR's "
                              "sensitivity or range is wrong")
-        tail = _tail_against_crash(x)
+        tail = _tail_against_crash(x, end_s)
         short = min(off, share[x.name]) < 0  # short of its car's change of speed
         if short and tail < LEAK_TAIL:  # no sensitivity turns a chest's tail against its crash
             ch, why = "cr", (
@@ -1162,13 +1165,15 @@ def _speed_by(test: CrashTest, end_s: float) -> float:
     return float(dv[min(i1 - i0, len(dv)) - 1] / dv.max())
 
 
-def _tail_against_crash(test: CrashTest) -> float:
+def _tail_against_crash(test: CrashTest, end_s: float) -> float:
     """CR's mean after the crash (from the pulse's CRASH_OVER share of its change of speed to
     the record's end) over its mean in it (first contact to there), both from its median at
     rest: a chest still moving with its car reads about zero after the crash or rebounds a
     little (-0.20 to +0.34 on the bundled campaign and 240 tests of the independent
     simulator), while a channel whose charge leaks away reads back against the crash, by
-    -0.25 to -0.93 at a time constant of 0.1 s. NaN under LEAK_MIN_MS of tail, or where a
+    -0.25 to -0.93 at a time constant of 0.1 s. NaN where the record ends under LEAK_PAST_MS
+    after ``end_s`` (a helper's records cut at the window: a clean chest's rebound then read
+    down to -0.49, and CR gain errors got the leak's words, 67 of 473), or where a
     channel is not numbers."""
     i0 = test.index_of(0.0)
     dv = np.abs(np.cumsum(test.pulse_g[i0:] - test.pulse_bias_g()))
@@ -1178,7 +1183,7 @@ def _tail_against_crash(test: CrashTest) -> float:
     if not (len(pre) and len(dv) and np.all(np.isfinite(dv)) and dv.max() > 0):
         return float("nan")
     j = i0 + int(np.argmax(dv >= CRASH_OVER * dv.max()))
-    if len(dv) - (j - i0) < LEAK_MIN_MS * 1e-3 * test.fs_hz or j == i0:
+    if test.last_s < end_s + LEAK_PAST_MS / 1000.0 or j == i0:
         return float("nan")
     y = test.cr_g - float(np.median(pre))
     crash = float(np.mean(y[i0:j]))

@@ -17,7 +17,7 @@ from observer_node.data import bundled_campaign, load_tests
 from observer_node.loop.screening import _tail_against_crash
 
 SEED, N = int(sys.argv[1]), int(sys.argv[2])
-bundled = [_tail_against_crash(t) for t in load_tests([bundled_campaign()])]
+bundled = [_tail_against_crash(t, 0.15) for t in load_tests([bundled_campaign()])]
 print(f"bundled, clean: {min(bundled):+.2f} to {max(bundled):+.2f} ({len(bundled)} tests)")
 variants = {"clean": (), "leak 0.6 s": (Effect("cr_ac_coupled", 0.6),),
             "leak 0.2 s": (Effect("cr_ac_coupled", 0.2),),
@@ -36,7 +36,7 @@ with tempfile.TemporaryDirectory() as tmp:
         d = Path(tmp) / c.name
         v = list(variants)[int(c.name.rsplit("_", 1)[1])]
         tests = load_tests([*sorted((d / "est").iterdir()), *sorted((d / "val").iterdir())])
-        reads[v] += [_tail_against_crash(t) for t in tests]
+        reads[v] += [_tail_against_crash(t, 0.15) for t in tests]
 for v, r in reads.items():
     a = np.array(r)
     print(f"drawn, {v:11s}: {a.min():+.2f} to {a.max():+.2f} ({len(a)} tests; "
