@@ -531,24 +531,6 @@ def test_a_crossed_partner_alone_on_its_rig_is_named(campaign):
     assert [f.test for f in payout_outliers(crossed, 0.15)] == ["R16_002", "FULL_002"]
 
 
-def test_a_partner_in_step_with_one_or_two_others_of_its_rig_is_not_named(campaign):
-    # FULL_002's and SLED_001's spool files crossed in a campaign holding three FULL tests:
-    # SLED_001's own lag lies over 2 ms from its rig's others, so FULL_005's clean spool, read
-    # against SLED_001's pulse, fitted better than the true partner's and was named, though it
-    # lies in step with FULL_004 (session 41's helper; 8 of 4320 crossings on the bundled
-    # campaign). Its rig's two other tests now speak for it, as three or more did
-    keep = {"FULL_002", "FULL_004", "FULL_005", "R16_001", "R16_002", "R16_003", "R16_004",
-            "R16_006", "R16_008", "R16_010", "R16_011", "SLED_001", "SLED_003", "SLED_004",
-            "SLED_005"}
-    tests = [t for t in _grouped(campaign) if t.name in keep]
-    full = next(t for t in tests if t.name == "FULL_002")
-    sled = next(t for t in tests if t.name == "SLED_001")
-    crossed = [_broken(t, brs=full.brs) if t is sled else _broken(t, brs=sled.brs) if t is full
-               else t for t in tests]
-    assert "FULL_005" not in {f.test for f in broken_before_fit(crossed, 0.15)}
-    assert broken_before_fit(tests, 0.15) == []
-
-
 @pytest.mark.parametrize("channel", ["brs", "cr_g", "cd_mm"])
 def test_a_channel_copied_from_another_test_names_both(campaign, channel):
     # the lab copied R16_003's file of one channel into SLED_001's folder: which of the two

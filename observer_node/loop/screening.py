@@ -81,12 +81,15 @@ is no other test's reference):
   between changes a multiple of k: their greatest common divisor, over 20 changes or more; a
   spindle read at the record's rate changes on any sample, and the bundled campaign's and
   every clean drawn test's divisor is 1) and by one count at a time. It is named where the
-  other tests of its rig (any test's, with none) turn two counts or more in k samples at their
-  fastest (median): then the polled spool must have lost or reversed counts. A counter read as
-  coarsely keeps its steps of several counts and loses nothing: not named; nor is a campaign
-  whose every spool is polled so. The independent simulator's slow decoder (1 kHz in 10 kHz
-  records) was found before the fit in 5 of 18 that changed their channel (session 41's fresh
-  draws). Added in session 42;
+  other tests of its rig (any test's, with none) turn three counts or more in k samples at
+  their fastest (median): then the polled spool must have lost or reversed counts. A counter
+  read as coarsely keeps its steps of several counts and loses nothing: not named; nor is a
+  campaign whose every spool is polled so. At two counts a helper's clean counters read at 1-2
+  kHz and held were named (62 of 504 at 2 kHz: a spool a little slower than its rig moves one
+  count per read); at three, none at 0.5-5 kHz. A read clock that does not divide the
+  record's rate (1024 Hz in 10 kHz) leaves the divisor at 1 and is not found here. The
+  independent simulator's slow decoder (1 kHz in 10 kHz records) was found before the fit in
+  5 of 18 that changed their channel (session 41's fresh draws). Added in session 42;
 
 - **BRS at the wrong polarity** (+ = webbing pulled in, as the channel code says): once the
   occupant loads the belt, a locked retractor pays out (its load limiter) or holds; in the
@@ -140,10 +143,8 @@ is no other test's reference):
   on fresh draws (``benchmarks/screen_faults.py``) see docs/loop.md. Its partner, when the files
   were crossed: the one test of another setup whose spool, read against the flagged test's pulse,
   lands within 2 ms of a lag of the flagged test's setup (set J's: 0.1 ms, the next test 10.0;
-  crossed by hand on the bundled campaign: 0.3, the next 5.3), unless its own setup finds its lag
-  in step (any other test of it within 8 ms: since session 42, where three or more were read
-  before and a clean partner with one or two others was named in 8 of 4320 crossings on the
-  bundled campaign), and only if the flagged test's spool, read against the partner's
+  crossed by hand on the bundled campaign: 0.3, the next 5.3), unless its own setup (three or more
+  others) finds its lag in step, and only if the flagged test's spool, read against the partner's
   pulse, lands as near a lag of the partner's setup (a crossing is seen from both sides; a
   decoder's lost counts fit no other crash, and had named an innocent partner in 2 of 26 fresh
   draws, ``benchmarks/screen_faults.py``; the only test of its setup has no side to be seen from
@@ -924,8 +925,8 @@ def _crossed_with(x: CrashTest, rest: np.ndarray, tests: list[CrashTest],
                   lag: dict[str, tuple[str, float]], end_s: float
                   ) -> tuple[list[BrokenTest], bool]:
     """The test whose BRS file was crossed with ``x``'s, if exactly one fits: its spool, read
-    against x's pulse, pays out within 2 ms of an x-setup test's lag. A test with other tests
-    of its setup must be out of step with each of them too, and x's spool must fit
+    against x's pulse, pays out within 2 ms of an x-setup test's lag. A test of a setup that
+    can judge it (three or more others) must be out of step there too, and x's spool must fit
     its pulse as its setup's other tests do. Also whether the crossing was so seen from both
     sides (False for the only test of its setup)."""
     near = []
@@ -941,7 +942,7 @@ def _crossed_with(x: CrashTest, rest: np.ndarray, tests: list[CrashTest],
     z, gap = near[0]
     peers = np.array([v for n, (s, v) in lag.items() if n != z.name and s == z.setup
                       and np.isfinite(v)])
-    if len(peers) and np.min(np.abs(peers - lag[z.name][1])) <= PAYOUT_GAP_MS:
+    if len(peers) >= PAYOUT_MIN_OTHERS and np.min(np.abs(peers - lag[z.name][1])) <= PAYOUT_GAP_MS:
         return [], False  # its own setup says its spool is its own
     # A crossing is seen from both sides: x's spool, read against z's pulse, pays out as z's
     # setup's do. A spool that lost counts fits no other crash (fresh draws of the held-out
