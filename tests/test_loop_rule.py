@@ -464,7 +464,7 @@ def test_a_spool_whose_decoder_polls_too_slowly_is_named(campaign, every):
     bad = [_broken(x, brs=_polled(x.brs, every)) if x.name == "R16_003" else x for x in tests]
     found = broken_before_fit(bad, 0.15)
     assert [(f.test, f.channel) for f in found] == [("R16_003", "brs")], found
-    assert f"every {every}th sample" in found[0].reason
+    assert f"multiples of {every} samples" in found[0].reason
     # a counter read as coarsely (its steps of several counts kept) loses nothing: not named
     held = [_broken(x, brs=np.repeat(np.asarray(x.brs)[::every], every)[:len(x.brs)])
             if x.name == "R16_003" else x for x in tests]

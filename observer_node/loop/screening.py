@@ -264,8 +264,10 @@ is no other test's reference):
   AC-coupled CR), not a sensitivity: a sensitivity scales the tail with the crash, a leak
   turns it (clean tests -0.20 to +0.34 on the bundled campaign and 240 drawn; leaking at
   0.1 s, -0.25 to -0.93). CR is then named whatever the stated velocity says. Under zero but
-  not under a quarter, as a clean chest's rebound may read, both are said. Added in session
-  42, after a helper's campaign whose every CR leaked in 0.1 s was named a wrong sensitivity.
+  not under a quarter, as a clean chest's rebound may read, both are said. Read only where the
+  record runs 40 ms past the window: cut at it, the tail holds the chest's rebound (a helper's
+  gain errors then got the leak's words). Added in session 42, after a helper's campaign whose
+  every CR leaked in 0.1 s was named a wrong sensitivity.
 - **a pulse out of step with all three of its test's channels**: CR's and CD's half rise and
   the spool's half pay-out, each read from the car's 50 mm free flight (as above), lie more
   than 5 ms from the nearest of two or more other tests of its setup, all on one side of their
@@ -556,7 +558,7 @@ def polled_spools(tests: list[CrashTest], end_s: float) -> list[BrokenTest]:
             continue
         rig = f"{x.setup} " if others[0].setup == x.setup else ""
         out.append(BrokenTest(
-            x.name, "brs", f"changes only on every {k}th sample ({x.fs_hz / k:g} Hz in a "
+            x.name, "brs", f"changes only at multiples of {k} samples ({x.fs_hz / k:g} Hz in a "
             f"{x.fs_hz:g} Hz record; {changes} changes) and by one count at a time, where the "
             f"other {len(fast)} {rig}tests' "
             f"spools turn {per_poll:.1f} counts in that time at their fastest (median): its "
