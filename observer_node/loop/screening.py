@@ -1162,10 +1162,17 @@ def _speed_by(test: CrashTest, end_s: float) -> float:
     the record) reached by ``end_s``: under CRASH_DONE the crash goes on past the window, and
     its dummy may not yet move with its car; NaN where the pulse is not numbers."""
     i0, i1 = test.index_of(0.0), test.index_of(end_s) + 1
-    dv = np.abs(np.cumsum(test.pulse_g[i0:] - test.pulse_bias_g()))
-    if not (len(dv) and np.all(np.isfinite(dv)) and dv.max() > 0):
+    dv = _speed_from_contact(test)
+    if dv is None:
         return float("nan")
     return float(dv[min(i1 - i0, len(dv)) - 1] / dv.max())
+
+
+def _speed_from_contact(test: CrashTest) -> np.ndarray | None:
+    """The pulse's change of speed [g·samples] from first contact to each sample of the record
+    (its bias removed, unsigned); None where it is not numbers or never changes."""
+    dv = np.abs(np.cumsum(test.pulse_g[test.index_of(0.0):] - test.pulse_bias_g()))
+    return dv if len(dv) and np.all(np.isfinite(dv)) and dv.max() > 0 else None
 
 
 def _tail_against_crash(test: CrashTest, end_s: float) -> float:
@@ -1178,13 +1185,10 @@ def _tail_against_crash(test: CrashTest, end_s: float) -> float:
     after ``end_s`` (a helper's records cut at the window: a clean chest's rebound then read
     down to -0.49, and CR gain errors got the leak's words, 67 of 473), or where a
     channel is not numbers."""
-    i0 = test.index_of(0.0)
-    dv = np.abs(np.cumsum(test.pulse_g[i0:] - test.pulse_bias_g()))
-    if test.cr_g is None:
+    i0, dv = test.index_of(0.0), _speed_from_contact(test)
+    if test.cr_g is None or dv is None or not np.any(test.time_s < 0.0):
         return float("nan")
     pre = test.cr_g[test.time_s < 0.0]
-    if not (len(pre) and len(dv) and np.all(np.isfinite(dv)) and dv.max() > 0):
-        return float("nan")
     j = i0 + int(np.argmax(dv >= CRASH_OVER * dv.max()))
     if test.last_s < end_s + LEAK_PAST_MS / 1000.0 or j == i0:
         return float("nan")
