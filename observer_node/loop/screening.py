@@ -86,10 +86,15 @@ is no other test's reference):
   read as coarsely keeps its steps of several counts and loses nothing: not named; nor is a
   campaign whose every spool is polled so. At two counts a helper's clean counters read at 1-2
   kHz and held were named (62 of 504 at 2 kHz: a spool a little slower than its rig moves one
-  count per read); at three, none at 0.5-5 kHz. A read clock that does not divide the
-  record's rate (1024 Hz in 10 kHz) leaves the divisor at 1 and is not found here. The
-  independent simulator's slow decoder (1 kHz in 10 kHz records) was found before the fit in
-  5 of 18 that changed their channel (session 41's fresh draws). Added in session 42;
+  count per read); at three, none at 0.5-5 kHz. The independent simulator's slow decoder (1
+  kHz in 10 kHz records) was found before the fit in 5 of 18 that changed their channel
+  (session 41's fresh draws). Added in session 42. A read clock that does not divide the
+  record's rate (1024 Hz in 10 kHz: a poll every 9.77 samples) leaves the divisor at 1; since
+  session 43 the poll's period is then read as a fraction: the one, within a sample of the shortest
+  interval between changes, on whose grid every change falls (each change
+  the first sample at or after a poll, so the changes' indices modulo the period lie within
+  one sample). A spindle read at the record's rate speeds up and slows down through the crash,
+  and its intervals fit no such grid;
 
 - **BRS at the wrong polarity** (+ = webbing pulled in, as the channel code says): once the
   occupant loads the belt, a locked retractor pays out (its load limiter) or holds; in the
@@ -358,6 +363,8 @@ CRASH_OVER = 0.98  # of the pulse's change of speed: from here on CR's tail is r
 LEAK_TAIL = -0.25  # CR's mean after the crash over its mean in it: clean -0.20 to +0.34
 LEAK_PAST_MS = 40.0  # the record past the window, or the tail holds the rebound: not judged
 POLL_MIN_CHANGES = 20  # a clean spool's on one residue of 2 or more: odds under 2^-19
+POLL_GRID_DRIFT = 0.02  # samples: the poll's grid searched finely enough to drift under this
+POLL_GRID_SPREAD = 1.0 + 2 * POLL_GRID_DRIFT  # samples: one sample, and the search's drift
 POLL_FAST_COUNTS = 3.0  # per poll, three times a step of one: a decoder reading its tracks sees
 # invalid steps then, and a clean spool read as coarsely moves more than one count (at 2.0 a
 # helper's clean counters read at 1-2 kHz were named, 62 of 504)
@@ -545,7 +552,7 @@ def polled_spools(tests: list[CrashTest], end_s: float) -> list[BrokenTest]:
     POLL_FAST_COUNTS or more in that time at their fastest (see the module's docstring)."""
     out = []
     for x in tests:
-        k, changes = _poll_samples(x)
+        k, changes = _poll_period(x)
         i0, i1 = x.index_of(0.0), x.index_of(end_s) + 1
         steps = np.abs(np.diff(np.asarray(x.brs[i0:i1], dtype=float)))  # not a uint's wrap
         if k < 2 or changes < POLL_MIN_CHANGES or not len(steps) or np.max(steps) > 1:
@@ -557,8 +564,10 @@ def polled_spools(tests: list[CrashTest], end_s: float) -> list[BrokenTest]:
         if per_poll < POLL_FAST_COUNTS:
             continue
         rig = f"{x.setup} " if others[0].setup == x.setup else ""
+        grid = f"at multiples of {k:.0f} samples" if k == round(k) else \
+            f"on a grid of one poll every {k:.2f} samples"
         out.append(BrokenTest(
-            x.name, "brs", f"changes only at multiples of {k} samples ({x.fs_hz / k:g} Hz in a "
+            x.name, "brs", f"changes only {grid} ({x.fs_hz / k:.0f} Hz in a "
             f"{x.fs_hz:g} Hz record; {changes} changes) and by one count at a time, where the "
             f"other {len(fast)} {rig}tests' "
             f"spools turn {per_poll:.1f} counts in that time at their fastest (median): its "
@@ -567,15 +576,52 @@ def polled_spools(tests: list[CrashTest], end_s: float) -> list[BrokenTest]:
     return out
 
 
-def _poll_samples(test: CrashTest) -> tuple[int, int]:
-    """The greatest common divisor of the sample intervals between the BRS's changes over the
-    record, and how many changes: 1 for a spindle read at the record's rate, k where a
-    decoder polls it every k samples. (1, 0) where the record is not numbers."""
+def _poll_period(test: CrashTest) -> tuple[float, int]:
+    """The poll period [samples] on whose grid the BRS's every change falls, and how many
+    changes: 1 for a spindle read at the record's rate, k where a decoder polls it every k
+    samples (the greatest common divisor of the intervals between changes), and a fraction
+    where its clock does not divide the record's rate (1024 Hz in 10 kHz: 9.77). (1, 0) where
+    the record is not numbers."""
     b = np.asarray(test.brs, dtype=float)
     if not np.all(np.isfinite(b)):
-        return 1, 0
+        return 1.0, 0
     at = np.flatnonzero(np.diff(b))
-    return (int(np.gcd.reduce(np.diff(at))) if len(at) > 1 else 1), len(at)
+    if len(at) < 2:
+        return 1.0, len(at)
+    gaps = np.diff(at)
+    if (k := int(np.gcd.reduce(gaps))) >= 2:
+        return float(k), len(at)
+    return _poll_grid(at.astype(float), float(np.min(gaps))), len(at)
+
+
+def _poll_grid(at: np.ndarray, shortest: float) -> float:
+    """The period P within a sample of ``shortest`` (the shortest interval between changes,
+    which is P rounded up or down: at 1005 Hz in 10 kHz only one interval in 200 is 9 samples)
+    whose grid holds every change: each change is the first sample at or after a poll
+    j * P + phase, so the changes' indices modulo P lie within one sample of each other
+    (POLL_GRID_SPREAD, with the search's step); 1 where none does or the changes are a sample
+    or less apart."""
+    if shortest < 2:
+        return 1.0
+    at = at - at[0]
+    step = POLL_GRID_DRIFT * shortest / max(at[-1], 1.0)  # drift over the record, in samples
+    periods = np.arange(max(2.0, shortest - 1.0), shortest + 1.0, step)
+    for gap in np.unique(np.diff(at)):  # each interval near a whole number of polls, first:
+        periods = periods[np.abs(gap - np.round(gap / periods) * periods) <= POLL_GRID_SPREAD]
+        if not len(periods):  # a clean spool's intervals rule every period out at once
+            return 1.0
+    spread = np.concatenate([_grid_spread(at, periods[i:i + 4096])
+                             for i in range(0, len(periods), 4096)])
+    best = int(np.argmin(spread))
+    return float(periods[best]) if spread[best] <= POLL_GRID_SPREAD else 1.0
+
+
+def _grid_spread(at: np.ndarray, periods: np.ndarray) -> np.ndarray:
+    """Per period [samples], the shortest arc of the circle of that length holding every
+    change's index modulo it."""
+    rest = np.sort(np.mod(at[None, :], periods[:, None]), axis=1)
+    widest = np.max(np.diff(rest, axis=1, append=rest[:, :1] + periods[:, None]), axis=1)
+    return periods - widest
 
 
 def _fastest_turns(test: CrashTest, dt_s: float, end_s: float) -> float:
