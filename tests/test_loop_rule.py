@@ -310,10 +310,10 @@ def test_a_record_that_ends_before_the_crash_is_named_not_a_traceback(campaign):
     assert [b.channel for b in screen_channels(early, 0.15)] == ["pulse"]
 
 
-@pytest.mark.parametrize("gain", [4, 0.25])
+@pytest.mark.parametrize("gain", [4, 2, 0.25])
 def test_a_brs_read_at_another_gain_than_its_rigs_is_named(campaign, gain):
-    # a decoder counting every edge of both tracks (x4) under the header's counts/rev, or the
-    # other way round: the pretensioner's pull and the pay-out both read that many times
+    # a decoder counting every edge of both tracks (x4) or both edges of one (x2) under the
+    # header's counts/rev, or the other way round: the pull and the pay-out both read so
     def scaled(x):
         rest = np.median(x.brs[x.time_s < 0.0])
         return _broken(x, brs=np.round(rest + gain * (x.brs - rest)))
@@ -327,6 +327,16 @@ def test_a_brs_read_at_another_gain_than_its_rigs_is_named(campaign, gain):
     half = set(sorted(half)[:6])
     assert spool_gain_outliers([scaled(x) if x.name in half else x for x in tests], 0.15) == []
     assert spool_gain_outliers(tests, 0.15) == []
+
+
+def test_a_brs_reading_within_a_capstans_scatter_is_not_named(campaign):
+    # a D-ring capstan's clean test read 1.5 times its rig's pull (held-out set P): not a decoder
+    tests = _grouped(campaign)
+    def scaled(x):
+        rest = np.median(x.brs[x.time_s < 0.0])
+        return _broken(x, brs=np.round(rest + 1.5 * (x.brs - rest)))
+    assert spool_gain_outliers([scaled(x) if x.name == "R16_003" else x for x in tests],
+                               0.15) == []
 
 
 def _loose_mount(a_g, fs_hz, f_hz=150.0, zeta=0.05):
@@ -480,6 +490,42 @@ def test_a_spool_whose_decoder_polls_too_slowly_is_named(campaign, every, words)
     assert broken_before_fit(held, 0.15) == []
     # every spool of the campaign polled so: no test's spool says how fast one turns
     assert polled_spools([_broken(x, brs=_polled(x.brs, every)) for x in tests], 0.15) == []
+
+
+@pytest.mark.parametrize("hz", [1024.0, 1005.0])
+def test_spools_read_without_loss_at_a_clock_that_does_not_divide_are_not_named(campaign, hz):
+    # every spool read at this clock and held, no count lost; R16_003's turns at most one
+    # count a read, its rig-mates' up to two. Over 10 samples a mate's reading may hold two
+    # reads' moves (4 counts); inside one read (9 samples) it holds one (a hostile review's
+    # whole campaigns: 32 clean tests named at 1024 Hz when measured over 10)
+    def spool(x, peak):  # counts, at most ``peak`` a sample, over the first 100 ms
+        u = np.clip(x.time_s / 0.1, 0.0, 1.0)
+        return np.floor(np.cumsum(peak * np.sin(np.pi * u) ** 2) + 0.5)
+
+    def held(x, b, phase):
+        at = np.ceil(np.arange(phase, len(b), x.fs_hz / hz) - 1e-9).astype(int)
+        at = at[at < len(b)]
+        return b[at][np.clip(np.searchsorted(at, np.arange(len(b)), side="right") - 1, 0, None)]
+    tests = _grouped(campaign)
+    for phase in (3.3, 6.1):
+        read = [_broken(x, brs=held(x, spool(x, 0.1 if x.name == "R16_003" else 0.2), phase))
+                for x in tests]
+        assert polled_spools(read, 0.15) == []
+
+
+def test_a_long_polled_record_is_read_on_its_crash(campaign):
+    # a million samples: the grid is read on the crash's changes, not on the whole record's
+    tests = _grouped(campaign)
+    x = next(t for t in tests if t.name == "R16_003")
+    n = 1_000_000
+    def longer(a):
+        return np.concatenate([a, np.full(n - len(a), a[-1])])
+    brs = longer(_polled(x.brs, 10000 / 1024))
+    brs[len(x.brs):] += np.floor(np.arange(n - len(x.brs)) / 10.3)  # and turning on and on
+    long = _broken(x, pulse_g=longer(x.pulse_g), brs=brs, cr_g=longer(x.cr_g),
+                   cd_mm=longer(x.cd_mm))
+    found = polled_spools([long if t is x else t for t in tests], 0.15)
+    assert [f.test for f in found] == ["R16_003"], found
 
 
 def test_crossed_brs_files_are_found_by_the_pay_out_against_the_pulse(campaign):
