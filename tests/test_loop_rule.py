@@ -26,6 +26,7 @@ from observer_node.loop.screening import (
     _payout_lag_ms,
     broken_before_fit,
     copied_channels,
+    copied_pulses,
     held_end_outliers,
     judged_fits,
     output_step_outliers,
@@ -526,6 +527,26 @@ def test_a_long_polled_record_is_read_on_its_crash(campaign):
                    cd_mm=longer(x.cd_mm))
     found = polled_spools([long if t is x else t for t in tests], 0.15)
     assert [f.test for f in found] == ["R16_003"], found
+
+
+@pytest.mark.parametrize("noise_g", [0.0, 0.8])
+def test_a_pulse_copied_from_another_rigs_test_is_named(campaign, noise_g):
+    # SLED_002's folder holds FULL_003's carriage file (as copied, or with noise of its own
+    # the size of the channel's): one crash's pulse on two rigs; the sled's is the copy
+    tests = _grouped(campaign)
+    assert copied_pulses(tests, 0.15) == []
+    source = next(t for t in tests if t.name == "FULL_003")
+    noise = np.random.default_rng(5).standard_normal(len(source.pulse_g)) * noise_g
+    bad = [_broken(x, pulse_g=source.pulse_g + noise) if x.name == "SLED_002" else x
+           for x in tests]
+    found = broken_before_fit(bad, 0.15)
+    assert [(f.test, f.channel) for f in found] == [("SLED_002", "pulse")], found
+    assert "FULL_003's" in found[0].reason and "the copy" in found[0].reason
+    # two seats of one crash filed as two tests of one rig share its accelerometer: not named
+    twin = next(t for t in tests if t.name == "SLED_003")
+    same = [_broken(x, pulse_g=twin.pulse_g.copy()) if x.name == "SLED_002" else x
+            for x in tests]
+    assert copied_pulses(same, 0.15) == []
 
 
 def test_crossed_brs_files_are_found_by_the_pay_out_against_the_pulse(campaign):

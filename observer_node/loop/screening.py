@@ -75,6 +75,19 @@ is no other test's reference):
   this: ``observer_node.data.check_distinct``). Not the pulse: a crash's driver and passenger
   may be filed as two tests sharing the car's accelerometer. Added in session 37;
 
+- **a pulse copied from a test of another rig**: two tests of different setups (a sled and a
+  car, told apart by their metadata) cannot share one crash's accelerometer. Two whose pulses
+  (bias removed) differ from first contact to the window's end by under twice their noise
+  (the RMS of the difference against the root sum of squares of their noise before contact,
+  read from successive differences; a copied file differs by nothing, a copy with its own
+  noise added by 1.0 times, the bundled R16 and SLED sleds' nearest pair by 4.5) hold one
+  crash's pulse. The copy is the one whose pulse lies, from the median pulse of its rig's
+  other tests, over three times as many of their own scatters (RMS) as the other's from its
+  rig's; where that cannot be told (under two others on a rig), both are named. Two seats of
+  one crash filed under two setups would be named too: give them one ``--group``. Added in
+  session 43 (the independent simulator's copied pulse was found in 9 of 21 by the checks
+  after it, at seed 150000);
+
 - **a spool read by a decoder that polls too slowly**: a quadrature decoder that polls its two
   tracks every k samples sees only their phase, so a move of two counts between polls reads as
   none and of three as one back. Its BRS changes only on every k-th sample (every interval
@@ -309,6 +322,7 @@ from __future__ import annotations
 from collections import Counter
 from collections.abc import Collection
 from dataclasses import dataclass
+from itertools import combinations
 
 import numpy as np
 from scipy import signal
@@ -351,6 +365,9 @@ PAYOUT_ALPHA = 0.001  # two-sided, of the others' Student-t prediction interval
 # three or more of its rig's others, however drawn
 PAYOUT_SURE_MS = 20.0
 PARTNER_GAP_MS = 2.0
+PULSE_COPY_NOISE = 2.0  # times the two pulses' noise (root sum of squares): one crash's pulse
+# (a copy with its own noise reads 1.0; the bundled R16 and SLED sleds' nearest pair 4.5)
+PULSE_COPY_APART = 3.0  # times: the copy lies this much farther out of its rig's scatter
 STEP_GAP_MS = 3.0
 PULSE_STEP_MS = 5.0  # clean tests' CR and CD: within 4.7 ms of their rig's median
 PULSE_STEP_MIN_OTHERS = 2
@@ -1299,6 +1316,64 @@ def copied_channels(tests: list[CrashTest], end_s: float) -> list[BrokenTest]:
     return list(out.values())
 
 
+def copied_pulses(tests: list[CrashTest], end_s: float) -> list[BrokenTest]:
+    """Tests of different setups that hold one crash's pulse, the copy named where its rig
+    tells which it is, else both (see the module's docstring)."""
+    read = {t.name: r for t in tests if (r := _pulse_in_crash(t, end_s)) is not None}
+    out: dict[str, BrokenTest] = {}
+    for a, b in combinations([t for t in tests if t.name in read], 2):
+        (pa, na), (pb, nb) = read[a.name], read[b.name]
+        if a.setup == b.setup or len(pa) != len(pb) or a.fs_hz != b.fs_hz:
+            continue
+        apart = float(np.sqrt(np.mean((pa - pb) ** 2)))
+        if not apart < PULSE_COPY_NOISE * float(np.hypot(na, nb)):
+            continue
+        far = {x.name: _pulse_off_rig(x, (a.name, b.name), tests, read) for x in (a, b)}
+        copy = [x for x, y in ((a, b), (b, a))
+                if far[x.name] > PULSE_COPY_APART * far[y.name]]  # NaN: never
+        for x, y in ((a, b), (b, a)):
+            if copy and x not in copy:
+                continue
+            which = (f"its pulse lies {far[x.name]:.2g} times its {x.setup} rig's scatter "
+                     f"from their median, {y.name}'s {far[y.name]:.2g} times its {y.setup} "
+                     "rig's: this test's is the copy") if copy else \
+                "which is the copy, the data cannot tell"
+            out.setdefault(x.name, BrokenTest(
+                x.name, "pulse", f"its pulse is {y.name}'s ({y.setup}; {x.setup} here): they "
+                f"differ by {apart:.2g} g RMS from first contact on, within their noise, so "
+                "they hold one crash's pulse, and two rigs never share one (two seats of one "
+                f"crash filed as two setups: give them one --group); {which}"))
+    return list(out.values())
+
+
+def _pulse_in_crash(test: CrashTest, end_s: float) -> tuple[np.ndarray, float] | None:
+    """The pulse [g] from first contact to ``end_s``, its bias removed, and its noise [g]
+    before contact (from successive differences: a late trigger's onset moves it little);
+    None where it cannot be read."""
+    i0, i1 = test.index_of(0.0), test.index_of(end_s) + 1
+    p = np.asarray(test.pulse_g, dtype=float)
+    if i0 < 10 or i1 - i0 < 10 or i1 > len(p) or not np.all(np.isfinite(p[:i1])):
+        return None
+    noise = 1.4826 * float(np.median(np.abs(np.diff(p[:i0])))) / np.sqrt(2.0)
+    crash = p[i0:i1] - test.pulse_bias_g()
+    return (crash, noise) if noise > 0 and np.ptp(crash) > 0 else None
+
+
+def _pulse_off_rig(test: CrashTest, pair: tuple[str, str], tests: list[CrashTest],
+                   read: dict[str, tuple[np.ndarray, float]]) -> float:
+    """How far the test's pulse lies from the median pulse of its rig's other tests (neither
+    of the pair), over how far they lie from it (RMS, their median); NaN with under two."""
+    rig = np.array([read[t.name][0] for t in tests if t.setup == test.setup
+                    and t.name not in pair and t.name in read
+                    and len(read[t.name][0]) == len(read[test.name][0])])
+    if len(rig) < 2:
+        return float("nan")
+    median = np.median(rig, axis=0)
+    scatter = float(np.median(np.sqrt(np.mean((rig - median) ** 2, axis=1))))
+    off = float(np.sqrt(np.mean((read[test.name][0] - median) ** 2)))
+    return off / scatter if scatter > 0 else float("nan")
+
+
 def broken_before_fit(tests: list[CrashTest], end_s: float) -> list[BrokenTest]:
     """Every check above that needs no fit, in the loop's order: each channel on its own, then
     each test against the others of its setup that are not already found broken (a broken
@@ -1306,9 +1381,9 @@ def broken_before_fit(tests: list[CrashTest], end_s: float) -> list[BrokenTest]:
     crash read too fast would otherwise be blamed on the BRS."""
     broken = [b for t in tests for b in screen_channels(t, end_s)]
     flagged = {b.test for b in broken}
-    for check in (copied_channels, polled_spools, held_end_outliers, polarity_outliers,
-                  reversed_outputs, velocity_outliers, speed_share_outliers, payout_outliers,
-                  output_step_outliers, spool_gain_outliers, ringing_outliers,
+    for check in (copied_channels, copied_pulses, polled_spools, held_end_outliers,
+                  polarity_outliers, reversed_outputs, velocity_outliers, speed_share_outliers,
+                  payout_outliers, output_step_outliers, spool_gain_outliers, ringing_outliers,
                   pulse_step_outliers):
         broken += check([t for t in tests if t.name not in flagged], end_s)
         flagged = {b.test for b in broken}
