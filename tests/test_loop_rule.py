@@ -514,6 +514,22 @@ def test_spools_read_without_loss_at_a_clock_that_does_not_divide_are_not_named(
         assert polled_spools(read, 0.15) == []
 
 
+def test_a_rig_mate_whose_counter_wraps_does_not_vouch_for_a_fast_spool(campaign):
+    # FULL_002's counter read at 5 kHz and held, nothing lost; of its two rig-mates, FULL_003's
+    # counter wraps mid-crash (a jump of 128 counts): their median fastest turn would be 64
+    tests = [t for t in _grouped(campaign) if t.setup != "FULL" or t.name in
+             ("FULL_001", "FULL_002", "FULL_003")]
+    def fixed(x):
+        b = np.asarray(x.brs, dtype=float)
+        if x.name == "FULL_002":
+            return _broken(x, brs=np.repeat(b[::2], 2)[:len(b)])
+        if x.name == "FULL_003":
+            return _broken(x, brs=b - 128.0 * (x.time_s >= 0.03))
+        return x
+    read = [fixed(x) for x in tests]
+    assert [f.test for f in polled_spools(read, 0.15)] == []
+
+
 def test_a_long_polled_record_is_read_on_its_crash(campaign):
     # a million samples: the grid is read on the crash's changes, not on the whole record's
     tests = _grouped(campaign)
@@ -529,15 +545,13 @@ def test_a_long_polled_record_is_read_on_its_crash(campaign):
     assert [f.test for f in found] == ["R16_003"], found
 
 
-@pytest.mark.parametrize("noise_g", [0.0, 0.8])
-def test_a_pulse_copied_from_another_rigs_test_is_named(campaign, noise_g):
-    # SLED_002's folder holds FULL_003's carriage file (as copied, or with noise of its own
-    # the size of the channel's): one crash's pulse on two rigs; the sled's is the copy
+def test_a_pulse_copied_from_another_rigs_test_is_named(campaign):
+    # SLED_002's folder holds FULL_003's carriage file: one crash's pulse on two rigs, and
+    # the sled's is the one out of its rig's scatter
     tests = _grouped(campaign)
     assert copied_pulses(tests, 0.15) == []
     source = next(t for t in tests if t.name == "FULL_003")
-    noise = np.random.default_rng(5).standard_normal(len(source.pulse_g)) * noise_g
-    bad = [_broken(x, pulse_g=source.pulse_g + noise) if x.name == "SLED_002" else x
+    bad = [_broken(x, pulse_g=source.pulse_g.copy()) if x.name == "SLED_002" else x
            for x in tests]
     found = broken_before_fit(bad, 0.15)
     assert [(f.test, f.channel) for f in found] == [("SLED_002", "pulse")], found
@@ -547,6 +561,15 @@ def test_a_pulse_copied_from_another_rigs_test_is_named(campaign, noise_g):
     same = [_broken(x, pulse_g=twin.pulse_g.copy()) if x.name == "SLED_002" else x
             for x in tests]
     assert copied_pulses(same, 0.15) == []
+    # one sled's runs repeat within their noise: a sled's tests filed under two setups (belt
+    # A and belt B on one sled program) are not copies, nor a copy with noise of its own
+    split = [dataclasses.replace(x, setup=f"{x.setup}-B") if i % 2 else x
+             for i, x in enumerate(tests)]
+    assert copied_pulses(split, 0.15) == []
+    noise = np.random.default_rng(5).standard_normal(len(source.pulse_g)) * 0.8
+    noisy = [_broken(x, pulse_g=source.pulse_g + noise) if x.name == "SLED_002" else x
+             for x in tests]
+    assert copied_pulses(noisy, 0.15) == []
 
 
 def test_crossed_brs_files_are_found_by_the_pay_out_against_the_pulse(campaign):
