@@ -634,9 +634,9 @@ def _poll_grid(at: np.ndarray, shortest: float) -> float:
     if shortest < 2:
         return 1.0
     at = at - at[0]
-    step = POLL_GRID_DRIFT * shortest / max(at[-1], 1.0)  # drift over the record, in samples
+    step = POLL_GRID_DRIFT * shortest / max(at[-1], 1.0)  # drift over the changes read
     periods = np.arange(max(2.0, shortest - 1.0), shortest + 1.0, step)
-    # a period that stays within a sample of a whole one over the record is the divisor's to
+    # a period that stays within a sample of a whole one over the changes is the divisor's to
     # judge: any samples fit a grid of 2.0 within one sample (two residues, a sample apart)
     periods = periods[np.abs(periods - np.round(periods)) * at[-1] / periods >= 1.0]
     for gap in np.unique(np.diff(at)):  # each interval near a whole number of polls, first:
