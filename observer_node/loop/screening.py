@@ -1303,21 +1303,25 @@ def copied_channels(tests: list[CrashTest], end_s: float) -> list[BrokenTest]:
     its folder. Two seats never record the same samples (noise alone differs); which of the
     two is the copy the data cannot tell, so both are named. A channel that does not move
     there is not compared, nor the pulse: a lab may file a crash's two occupants as two tests
-    sharing the car's one accelerometer (a copied pulse is the pay-out check's)."""
-    first: dict[tuple[str, bytes], str] = {}
+    sharing the car's one accelerometer (a pulse shared across setups is ``copied_pulses``')."""
+    channels = ("brs", "cr", "cd")
+    pairs = []
+    for ch in channels:
+        read = {}
+        for t in tests:
+            i0, i1 = t.index_of(0.0), t.index_of(end_s) + 1
+            x = {"brs": t.brs, "cr": t.cr_g, "cd": t.cd_mm}[ch]
+            if x is not None and np.ptp(x[i0:i1]) > 0:
+                read[t.name] = np.asarray(x[i0:i1], dtype=float)
+        pairs += [(ch, a, b) for a, b in _same_samples(tests, read)]
+    at = {t.name: i for i, t in enumerate(tests)}  # named in the order the copies are met
+    pairs.sort(key=lambda p: (at[p[2].name], channels.index(p[0]), at[p[1].name]))
     out: dict[tuple[str, str], BrokenTest] = {}  # one reason a test's channel
-    for t in tests:
-        i0, i1 = t.index_of(0.0), t.index_of(end_s) + 1
-        for ch, x in (("brs", t.brs), ("cr", t.cr_g), ("cd", t.cd_mm)):
-            if x is None or not np.ptp(x[i0:i1]) > 0:
-                continue
-            other = first.setdefault((ch, np.ascontiguousarray(x[i0:i1], float).tobytes()),
-                                     t.name)
-            if other != t.name:
-                why = (f"its {ch} holds the same samples as {{}}'s from first contact on: one "
-                       "of the two is the other's file (which, the data cannot tell)")
-                for a, b in ((other, t.name), (t.name, other)):
-                    out.setdefault((a, ch), BrokenTest(a, ch, why.format(b)))
+    for ch, a, b in pairs:
+        why = (f"its {ch} holds the same samples as {{}}'s from first contact on: one of the "
+               "two is the other's file (which, the data cannot tell)")
+        for u, v in ((a, b), (b, a)):
+            out.setdefault((u.name, ch), BrokenTest(u.name, ch, why.format(v.name)))
     return list(out.values())
 
 
@@ -1325,31 +1329,36 @@ def copied_pulses(tests: list[CrashTest], end_s: float) -> list[BrokenTest]:
     """Tests of different setups whose pulses hold the same samples, the copy named where its
     rig tells which it is, else both (see the module's docstring)."""
     read = {t.name: p for t in tests if (p := _pulse_in_crash(t, end_s)) is not None}
+    out: dict[str, BrokenTest] = {}
+    for a, b in _same_samples(tests, read):
+        if a.setup == b.setup:
+            continue  # two seats of one crash, filed as two tests of one rig
+        far = {x.name: _pulse_off_rig(x, (a.name, b.name), tests, read) for x in (a, b)}
+        copy = [x for x, y in ((a, b), (b, a))
+                if far[x.name] > PULSE_COPY_APART * far[y.name]]  # NaN: never
+        for x, y in ((a, b), (b, a)):
+            if copy and x not in copy:
+                continue
+            which = (f"its pulse lies {far[x.name]:.2g} times its {x.setup} rig's scatter "
+                     f"from their median, {y.name}'s {far[y.name]:.2g} times its {y.setup} "
+                     "rig's: this test's is the copy") if copy else \
+                "which is the copy, the data cannot tell"
+            out.setdefault(x.name, BrokenTest(
+                x.name, "pulse", f"its pulse holds the same samples as {y.name}'s "
+                f"({y.setup}; {x.setup} here) from first contact on: one crash's pulse, "
+                "and two rigs never share one (two seats of one crash filed as two "
+                f"setups: give them one --group); {which}"))
+    return list(out.values())
+
+
+def _same_samples(tests: list[CrashTest], read: dict[str, np.ndarray]
+                  ) -> list[tuple[CrashTest, CrashTest]]:
+    """Every pair of tests whose ``read`` samples are the same, in the tests' order."""
     same: dict[bytes, list[CrashTest]] = {}
     for t in tests:
         if t.name in read:
             same.setdefault(np.ascontiguousarray(read[t.name]).tobytes(), []).append(t)
-    out: dict[str, BrokenTest] = {}
-    for group in same.values():
-        for a, b in combinations(group, 2):
-            if a.setup == b.setup:
-                continue  # two seats of one crash, filed as two tests of one rig
-            far = {x.name: _pulse_off_rig(x, (a.name, b.name), tests, read) for x in (a, b)}
-            copy = [x for x, y in ((a, b), (b, a))
-                    if far[x.name] > PULSE_COPY_APART * far[y.name]]  # NaN: never
-            for x, y in ((a, b), (b, a)):
-                if copy and x not in copy:
-                    continue
-                which = (f"its pulse lies {far[x.name]:.2g} times its {x.setup} rig's scatter "
-                         f"from their median, {y.name}'s {far[y.name]:.2g} times its {y.setup} "
-                         "rig's: this test's is the copy") if copy else \
-                    "which is the copy, the data cannot tell"
-                out.setdefault(x.name, BrokenTest(
-                    x.name, "pulse", f"its pulse holds the same samples as {y.name}'s "
-                    f"({y.setup}; {x.setup} here) from first contact on: one crash's pulse, "
-                    "and two rigs never share one (two seats of one crash filed as two "
-                    f"setups: give them one --group); {which}"))
-    return list(out.values())
+    return [pair for group in same.values() for pair in combinations(group, 2)]
 
 
 def _pulse_in_crash(test: CrashTest, end_s: float) -> np.ndarray | None:
