@@ -312,13 +312,18 @@ def test_a_record_that_ends_before_the_crash_is_named_not_a_traceback(campaign):
     assert [b.channel for b in screen_channels(early, 0.15)] == ["pulse"]
 
 
+def _spool_read_at(test, gain):
+    """The test with its BRS counting ``gain`` times the turns from its rest before contact."""
+    rest = np.median(test.brs[test.time_s < 0.0])
+    return _broken(test, brs=np.round(rest + gain * (test.brs - rest)))
+
+
 @pytest.mark.parametrize("gain", [4, 2, 0.25])
 def test_a_brs_read_at_another_gain_than_its_rigs_is_named(campaign, gain):
     # a decoder counting every edge of both tracks (x4) or both edges of one (x2) under the
     # header's counts/rev, or the other way round: the pull and the pay-out both read so
     def scaled(x):
-        rest = np.median(x.brs[x.time_s < 0.0])
-        return _broken(x, brs=np.round(rest + gain * (x.brs - rest)))
+        return _spool_read_at(x, gain)
     tests = _grouped(campaign)
     found = spool_gain_outliers([scaled(x) if x.name == "R16_003" else x for x in tests], 0.15)
     assert [(f.test, f.channel) for f in found] == [("R16_003", "brs")], found
@@ -335,8 +340,7 @@ def test_a_brs_reading_within_a_capstans_scatter_is_not_named(campaign):
     # a D-ring capstan's clean test read 1.5 times its rig's pull (held-out set P): not a decoder
     tests = _grouped(campaign)
     def scaled(x):
-        rest = np.median(x.brs[x.time_s < 0.0])
-        return _broken(x, brs=np.round(rest + 1.5 * (x.brs - rest)))
+        return _spool_read_at(x, 1.5)
     assert spool_gain_outliers([scaled(x) if x.name == "R16_003" else x for x in tests],
                                0.15) == []
 
@@ -458,18 +462,29 @@ def test_a_quiet_pre_trigger_names_no_channel_quieter_than_at_rest(campaign):
     assert screen_channels(_broken(t, cr_g=still), 0.15) == []
 
 
+def _reads(n, every, phase=0.0):
+    """The samples of a record of ``n`` at which a clock reading every ``every`` samples (a
+    fraction where it does not divide the record's rate), first at ``phase``, reads."""
+    at = np.unique(np.ceil(np.arange(phase, n, every) - 1e-9).astype(int))
+    return at[at < n]
+
+
+def _held(read, at, n):
+    """A record of ``n`` samples holding ``read[j]`` from sample ``at[j]`` to the next read
+    (the first read before ``at[0]``)."""
+    return read[np.clip(np.searchsorted(at, np.arange(n), side="right") - 1, 0, None)]
+
+
 def _polled(counts, every):
     """``counts`` as a quadrature decoder reads them polling its two tracks every ``every``
     samples (a fraction where its clock does not divide the record's rate): it sees only the
     tracks' phase (the count mod 4), so a move of one count reads as one, of three as one
     back, of two as none; held between polls."""
     c = np.asarray(counts, dtype=float)
-    at = np.unique(np.ceil(np.arange(0.0, len(c), every) - 1e-9).astype(int))
-    at = at[at < len(c)]
+    at = _reads(len(c), every)
     phase = np.diff(c[at]) % 4
     step = np.select([phase == 1, phase == 3], [1.0, -1.0], 0.0)
-    read = np.concatenate([[c[0]], c[0] + np.cumsum(step)])
-    return read[np.searchsorted(at, np.arange(len(c)), side="right") - 1]
+    return _held(np.concatenate([[c[0]], c[0] + np.cumsum(step)]), at, len(c))
 
 
 @pytest.mark.parametrize("every, words", [(5, "multiples of 5 samples"),
@@ -505,9 +520,8 @@ def test_spools_read_without_loss_at_a_clock_that_does_not_divide_are_not_named(
         return np.floor(np.cumsum(peak * np.sin(np.pi * u) ** 2) + 0.5)
 
     def held(x, b, phase):
-        at = np.ceil(np.arange(phase, len(b), x.fs_hz / hz) - 1e-9).astype(int)
-        at = at[at < len(b)]
-        return b[at][np.clip(np.searchsorted(at, np.arange(len(b)), side="right") - 1, 0, None)]
+        at = _reads(len(b), x.fs_hz / hz, phase)
+        return _held(b[at], at, len(b))
     tests = _grouped(campaign)
     for phase in (3.3, 6.1):
         read = [_broken(x, brs=held(x, spool(x, 0.1 if x.name == "R16_003" else 0.2), phase))
