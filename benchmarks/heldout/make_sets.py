@@ -3,8 +3,8 @@ DIR/<case>/truth.json (the case, the expected verdict, the true parameters of ev
 Deterministic from each case's seed.
 
     python -m benchmarks.heldout.make_sets --out DIR
-        [--set a|b|c|d|e|f|g|h|i|j|k|l|m|n|o|p|q|r|s|t|u|v|w|x|y|z|aa|ab] [--case NAME ...]
-        [--est-times K] [--new-crashes] [--no-effects]
+        [--set a|b|c|d|e|f|g|h|i|j|k|l|m|n|o|p|q|r|s|t|u|v|w|x|y|z|aa|ab|ac]
+        [--case NAME ...] [--est-times K] [--new-crashes] [--no-effects]
 """
 
 from __future__ import annotations
@@ -90,8 +90,9 @@ def main(argv: list[str] | None = None) -> int:
                          "(cases_p.py), set Q (cases_q.py), set R (cases_r.py), set S "
                          "(cases_s.py), set T (cases_t.py), set U (cases_u.py), set V "
                          "(cases_v.py), set W (cases_w.py), set X (cases_x.py), set Y "
-                         "(cases_y.py), set Z (cases_z.py), set AA (cases_aa.py) or set AB "
-                         "(cases_ab.py, held out from the loop's engineers)")
+                         "(cases_y.py), set Z (cases_z.py), set AA (cases_aa.py), set AB "
+                         "(cases_ab.py) or set AC (cases_ac.py, held out from the loop's "
+                         "engineers)")
     ap.add_argument("--case", action="append", metavar="NAME",
                     help="only this case of the set (repeatable); default all, in set A: "
                          + ", ".join(c.name for c in CASES))
