@@ -20,6 +20,7 @@ from benchmarks.heldout import (
     cases,
     draw_aa,
     draw_ab,
+    draw_ac,
     draw_v,
     draw_w,
     draw_x,
@@ -35,6 +36,8 @@ from benchmarks.heldout.cases_aa import BY_NAME_AA, ONE_PHYSICAL_AA
 from benchmarks.heldout.cases_aa import SET_AA as SET_AA_FILE
 from benchmarks.heldout.cases_ab import BY_NAME_AB, ONE_PHYSICAL_AB
 from benchmarks.heldout.cases_ab import SET_AB as SET_AB_FILE
+from benchmarks.heldout.cases_ac import BY_NAME_AC, ONE_PHYSICAL_AC
+from benchmarks.heldout.cases_ac import SET_AC as SET_AC_FILE
 from benchmarks.heldout.cases_p import BY_NAME_P
 from benchmarks.heldout.cases_q import BY_NAME_Q
 from benchmarks.heldout.cases_r import BY_NAME_R
@@ -3711,8 +3714,8 @@ def _follows_a_reusing_draw(draw_mod: ModuleType, seed: int, earlier: tuple[str,
                             redrawn: list[tuple[str, int]], before: list[cases.Case],
                             two_case: cases.Case) -> None:
     """A set drawn by set W's process from ``seed`` after the sets ``earlier``, its two-effect
-    case reusing a pairing those sets ran (sets Z, AA and AB): the cases follow the draw, and the
-    reused pairing is one the rules allow that no free pairing could replace."""
+    case reusing a pairing those sets ran (sets Z, AA, AB and AC): the cases follow the draw,
+    and the reused pairing is one the rules allow that no free pairing could replace."""
     d = draw_mod.draw(seed)
     assert d == draw_mod.draw()  # reproducible from its seed
     assert earlier == draw_mod.EARLIER and seed == draw_mod.SEED
@@ -4042,6 +4045,119 @@ def test_set_ab_cr_progressive_over_reads_cr_only(set_ab: Path) -> None:
 
 def test_set_ab_has_no_run_aways(set_ab: Path) -> None:
     _no_run_aways(SET_AB, set_ab)
+
+
+# ------------------------------------------------------------------ set AC (cases_ac.py)
+
+SET_AC = heldout_sets.case_set("ac")
+BEFORE_AC = _cases_of(heldout_sets.before("ac"))
+# the broken test, the transducer error, and every physical case of one effect (its rigs moved,
+# the others untouched)
+WATCHED_AC = ("hac_broken_pulse_ms2", "hac_cd_clock", *ONE_PHYSICAL_AC)
+# the draws found impossible, drawn again by the next seeds in the order found (draw_ac.REDRAWN)
+REDRAWN_AC: list[tuple[str, int]] = []
+# the two-effect case, on an earlier set's pairing (none free for it: draw_ac's reuse rule)
+TWO_AC = "hac_two_friction_r16_full_lock_sled"
+
+
+@pytest.fixture(scope="module")
+def set_ac(tmp_path_factory: pytest.TempPathFactory) -> Path:
+    return _generate(tmp_path_factory, "ac", WATCHED_AC)
+
+
+def test_set_ac_is_registered(tmp_path: Path) -> None:
+    """Set AC is ``cases_ac.SET_AC`` under the letters ac, for sets.select, make_sets and
+    costs, after set AB (its earlier sets A-AB, by name)."""
+    assert "ac" in heldout_sets.SETS and SET_AC == SET_AC_FILE
+    assert heldout_sets.SETS[-3:] == ("aa", "ab", "ac")
+    assert heldout_sets.before("ac") == (*"abcdefghijklmnopqrstuvwxyz", "aa", "ab")
+    assert heldout_sets.select(["hac_clean48"], "ac") == [BY_NAME_AC["hac_clean48"]]
+    assert make_sets.main(["--set", "ac", "--case", "hac_clean48", "--out", str(tmp_path)]) == 0
+    truth = json.loads((tmp_path / "hac_clean48" / "truth.json").read_text())
+    assert truth["case"]["name"] == "hac_clean48" and len(truth["tests"]) == 12
+    assert make_sets.main(["--set", "AC", "--case", "hac_clean48",
+                           "--out", str(tmp_path / "upper")]) == 0
+
+
+def test_set_ac_is_new() -> None:
+    """Set AC's names, seeds (38xxx), pairings and effect sizes (a switch's aside) are none of
+    sets A-AB's, but the two-effect case's pairing (an earlier set's, by draw_ac's rule); its
+    forms are drawn among every set's (so may be an earlier set's)."""
+    _is_new_drawn(SET_AC, BEFORE_AC, 38000, reused=(TWO_AC,))
+    assert all(c.name.startswith("hac_") for c in SET_AC)
+
+
+def test_set_ac_covers_the_general_list() -> None:
+    """Set AC as its brief asks: clean cases at 48 and 96 counts; each kind of the library a
+    loop can name, as physics, once in a case of its own; two effects of different kinds on
+    different rigs in one case; a broken estimation test; a transducer error on CD alone (as
+    drawn); a late pulse and a late BRS at delays in 1-5 ms no earlier set used on any input;
+    6 + 6 tests, every rig an estimation part holds held twice or more; an effect on some rigs
+    only rests on two estimation and two validation tests of them beside an estimation test of
+    a rig it spares."""
+    _covers_the_general_list(SET_AC, BEFORE_AC, "cd", ONE_PHYSICAL_AC, draw_ac.KINDS)
+
+
+def test_set_ac_follows_its_draw() -> None:
+    """Set AC's designer's choices are numpy's default_rng(38000)'s (``draw_ac.py``; the draws
+    found impossible drawn again by the next seeds, ``REDRAWN``), followed as drawn: each
+    kind's form, rigs, counts and mix; the two-effect case's kinds, forms, rigs, counts and mix;
+    the delays, their counts and mixes; the transducer error's output, form, counts and mix;
+    the broken test's channel, form, test, counts and mix; the clean cases' mixes. Set AB's
+    process: set W's kinds, pools and mix rules, A-AB's pairings taken, but the two-effect
+    case's: none was free for its rigs (the old rule draws it none), so it reuses one A-AB ran,
+    among those its rules allow."""
+    _follows_a_reusing_draw(draw_ac, 38000, (*"abcdefghijklmnopqrstuvwxyz", "aa", "ab"), SET_AC,
+                            ONE_PHYSICAL_AC, REDRAWN_AC, BEFORE_AC, BY_NAME_AC[TWO_AC])
+    assert _pairing(BY_NAME_AC[TWO_AC]) == ((2, 2, 2), (4, 2, 0))
+
+
+def test_set_ac_lab_side_is_as_drawn_and_unnamed() -> None:
+    """One broken estimation test, the only thing expected; one transducer error on CD on every
+    test, nothing physical named; AC's physics earlier sets' forms only."""
+    _lab_side_as_drawn(SET_AC, "cd")
+    assert {k for k in _keys(SET_AC) if physics.EFFECTS[k]} <= _keys(BEFORE_AC)
+
+
+@pytest.mark.parametrize("case", sorted(ONE_PHYSICAL_AC))
+def test_set_ac_physics_moves_its_rigs_only(set_ac: Path, case: str) -> None:
+    """Each physical case moves what its form moves on every test of its rigs (the chest's,
+    belt's, bag's, pelvis's and spool's forms CR and CD, the pulse untouched) and leaves the
+    tests of a rig it spares untouched to the bit."""
+    _moves_its_rigs_only(set_ac, BY_NAME_AC[case])
+
+
+def test_set_ac_pulse_ms2_scales_the_broken_tests_pulse_only(set_ac: Path) -> None:
+    """The broken test's pulse is its twin's times G (m/s^2 under g; within the file's six
+    digits; set T's check), its CR, CD and BRS untouched; every other test untouched."""
+    c = BY_NAME_AC["hac_broken_pulse_ms2"]
+    (broken,) = c.expect_broken
+    on, off = set_ac / "on" / c.name, set_ac / "off" / c.name
+    bad, good = _channel(on, broken, "pulse"), _channel(off, broken, "pulse")
+    assert good.max() > 15 and bad.max() > 150
+    assert np.allclose(bad, good * physics.G, rtol=1e-5, atol=1e-4)
+    for which in ("cr", "cd"):
+        assert np.array_equal(_channel(on, broken, which), _channel(off, broken, which))
+    assert np.array_equal(_brs(on, broken), _brs(off, broken))
+    _others_untouched(set_ac, c.name, broken)
+
+
+def test_set_ac_cd_clock_stretches_cd_only(set_ac: Path) -> None:
+    """CD is its twin's on the stretched time base (within the noise and the CFC filter), every
+    test, and moved by it (set V's check of cr_clock, on CD); CR, pulse and BRS untouched."""
+    c = BY_NAME_AC["hac_cd_clock"]
+    (e,) = c.effects
+    seen = 0
+    for cd, cd0 in _cd_only(set_ac / "on" / c.name, set_ac / "off" / c.name):
+        miss = np.abs(cd - lab.clock(cd0, e.size)).max()  # within the noise and the filter
+        moved = np.abs(cd - cd0).max()
+        assert moved > 1.0 and miss < 0.25 * moved, (miss, moved)
+        seen += 1
+    assert seen == 12
+
+
+def test_set_ac_has_no_run_aways(set_ac: Path) -> None:
+    _no_run_aways(SET_AC, set_ac)
 
 
 def test_more_tests_doubles_the_estimation_tests_only(tmp_path: Path) -> None:
