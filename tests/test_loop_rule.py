@@ -1434,6 +1434,26 @@ def test_a_delay_held_at_the_largest_searched_is_not_named():
     assert at_the_edge("input_delay", {"n_pulse": 45.0, "n_brs": 0.0}, 10_000.0) is None
 
 
+def test_an_effect_refitted_to_physically_nothing_is_not_named():
+    # set AC's eccentric ring: a belt stiffening of 6.3 N/m^3 (typical 1e8) named on every
+    # rig, its gain the base parameters' its refit moved
+    from observer_node.loop.verdicts import nothing_left
+
+    why = nothing_left("belt_stiffening", {"kb3": 6.33})
+    assert why is not None and "kb3 = 6.33 N/m^3" in why and "physically nothing" in why
+    assert nothing_left("pelvis_coupling", {"kp": 2e-4, "cp": 3e-6}) is not None
+    assert nothing_left("input_gain", {"g": -1e-6}) is not None
+    # one size left is an effect: named effects of sets W-AA with one size at nothing (a
+    # spring-only pelvis path, an undamped bag touching the chest, a BRS-only delay)
+    assert nothing_left("pelvis_coupling", {"kp": 6457.0, "cp": 3.5e-6}) is None
+    assert nothing_left("airbag_contact", {"kab": 20971.0, "gap": 4e-9, "cab": 5.3e-5}) is None
+    assert nothing_left("input_delay", {"n_pulse": 2.9e-8, "n_brs": 2.44}) is None
+    # a gap says where a bag acts, not how much; a switch and the formula have no size
+    assert nothing_left("airbag_contact", {"kab": 1e-3, "gap": 0.05, "cab": 1e-5}) is not None
+    assert nothing_left("belt_unloading", {}) is None
+    assert nothing_left("other", {"rib": {"x3": 0.0}}) is None
+
+
 def test_the_held_out_benchmark_scores_scopes_on_the_rigs_held_twice():
     from benchmarks.loop_heldout import _as_judged
 

@@ -54,6 +54,7 @@ from .verdicts import (
     at_the_edge,
     carry_refusal,
     defended_scope,
+    nothing_left,
     output_lag,
     parameter_warnings,
     runner_up_of,
@@ -525,7 +526,8 @@ def _checked(c: Context, st: State, step: LoopStep, pick: _Pick, fit: Refit
     by_setup = validation_by_setup(st.val_now, val_fit, dict(zip(c.val.names, c.val.setups,
                                                                  strict=True)),
                                    best.setups, c.thin)
-    edge = at_the_edge(best.kind, fit.effects[-1]["parameters"], c.rate_hz)
+    edge = (at_the_edge(best.kind, fit.effects[-1]["parameters"], c.rate_hz)
+            or nothing_left(best.kind, fit.effects[-1]["parameters"]))
     val_why = validation_refusal(st.val_now.fit.total, val_fit.fit.total, by_setup)
     refused = edge or val_why
     if tie_side:
