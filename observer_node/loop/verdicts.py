@@ -193,11 +193,13 @@ WHERE = frozenset({"gap"})
 def nothing_left(kind: str, params: dict) -> str | None:
     """Why an effect that passed the rule is still not named: refitted on all estimation
     tests, every size it has (``params``, as the fit left them) is under ``NOTHING`` of its
-    typical one, so the model it would be named in is the model without it, and its
-    cross-validated gain came from the base parameters its refit moved, not from the effect
-    (held-out set AC: a belt stiffening of 6.3 N/m^3, typical 1e8, named on every rig for a
-    BRS read through an eccentric ring, +1.5 points on 6 of 6 tests, the validation fit
-    unchanged). None when one size is more, or the kind has none (the formula, a switch)."""
+    typical one, so the model it would be named in is the model without it: its
+    cross-validated gain was made in the folds' refits on fewer tests, not by an effect the
+    estimation tests hold (held-out set AC: a belt stiffening of 6.3 N/m^3, typical 1e8,
+    named on every rig for a BRS read through an eccentric ring, +1.5 points on 6 of 6
+    tests, while its all-test fit was the model without it's to 0.001 points and the
+    validation fit unchanged). None when one size is more, or the kind has none (the
+    formula, a switch)."""
     spec = EFFECTS[kind]
     sizes = [(p, params[p.name]) for p in spec.params
              if p.name not in WHERE and p.typical and isinstance(params.get(p.name), float | int)]
@@ -205,8 +207,8 @@ def nothing_left(kind: str, params: dict) -> str | None:
         return None
     what = ", ".join(f"{p.name} = {v:.3g} {p.unit}" for p, v in sizes)
     return (f"refitted on all estimation tests it is physically nothing ({what}; under "
-            f"{NOTHING:g} of typical): its gain came from the base parameters its refit "
-            "moved, not from the effect")
+            f"{NOTHING:g} of typical): the model it would be named in is the model without "
+            "it, and its gain was made in the folds' refits, not by the effect")
 
 
 VALIDATION_TOLERANCE = 0.3  # fit points: as SETUP_TOLERANCE, refit noise
