@@ -194,12 +194,12 @@ def nothing_left(kind: str, params: dict) -> str | None:
     """Why an effect that passed the rule is still not named: refitted on all estimation
     tests, every size it has (``params``, as the fit left them) is under ``NOTHING`` of its
     typical one, so the model it would be named in is the model without it: its
-    cross-validated gain was made in the folds' refits on fewer tests, not by an effect the
-    estimation tests hold (held-out set AC: a belt stiffening of 6.3 N/m^3, typical 1e8,
-    named on every rig for a BRS read through an eccentric ring, +1.5 points on 6 of 6
-    tests, while its all-test fit was the model without it's to 0.001 points and the
-    validation fit unchanged). None when one size is more, or the kind has none (the
-    formula, a switch)."""
+    cross-validated gain was made in the folds' refits, not by an effect the estimation
+    tests hold (held-out set AC: a belt stiffening of 6.3 N/m^3, typical 1e8, named on
+    every rig for a BRS read through an eccentric ring, +1.5 points on 6 of 6 tests, while
+    its all-test fit was the model without it's to 0.001 points; its folds' refits never
+    left that fit, so each scored its held-out test in-sample, docs/loop.md). None when one
+    size is more, or the kind has none (the formula, a switch)."""
     spec = EFFECTS[kind]
     sizes = [(p, params[p.name]) for p in spec.params
              if p.name not in WHERE and p.typical and isinstance(params.get(p.name), float | int)]
