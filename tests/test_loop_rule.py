@@ -339,10 +339,8 @@ def test_a_brs_read_at_another_gain_than_its_rigs_is_named(campaign, gain):
 def test_a_brs_reading_within_a_capstans_scatter_is_not_named(campaign):
     # a D-ring capstan's clean test read 1.5 times its rig's pull (held-out set P): not a decoder
     tests = _grouped(campaign)
-    def scaled(x):
-        return _spool_read_at(x, 1.5)
-    assert spool_gain_outliers([scaled(x) if x.name == "R16_003" else x for x in tests],
-                               0.15) == []
+    assert spool_gain_outliers([_spool_read_at(x, 1.5) if x.name == "R16_003" else x
+                                for x in tests], 0.15) == []
 
 
 def _loose_mount(a_g, fs_hz, f_hz=150.0, zeta=0.05):
@@ -1436,7 +1434,7 @@ def test_a_delay_held_at_the_largest_searched_is_not_named():
 
 def test_an_effect_refitted_to_physically_nothing_is_not_named():
     # set AC's eccentric ring: a belt stiffening of 6.3 N/m^3 (typical 1e8) named on every
-    # rig, its gain the base parameters' its refit moved
+    # rig, its gain made in folds whose refits never left the all-test fit
     from observer_node.loop.verdicts import nothing_left
 
     why = nothing_left("belt_stiffening", {"kb3": 6.33})
