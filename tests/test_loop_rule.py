@@ -1566,6 +1566,28 @@ def test_a_refit_with_its_jacobian_run_as_one_simulation_is_the_refit_run_one_by
     assert batched.effects[1]["parameters"] != effects[1]["parameters"]  # it did fit
 
 
+def test_a_fold_refit_leaves_a_positive_size_fitted_near_nothing(campaign):
+    """A positive size near 0 (set AC's eccentric ring: a belt stiffening refitted to 6.3
+    N/m^3) was fitted as |v|, whose kink made trf reject every step: the all-test refit and
+    its folds never left their start, so a fold scored its held-out test in-sample. Fitted
+    with scipy's bound v >= 0, the fold's refit moves and the size stays >= 0."""
+    from observer_node.ident import greybox
+    from observer_node.loop.refit import FOLD_NFEV, refit_from
+
+    data = make_dataset([t for t in campaign
+                         if t.name in ("R16_001", "R16_003", "FULL_001", "SLED_001")])
+    base = greybox.fit_greybox(data).params
+    stiff = [{"kind": "belt_stiffening", "parameters": {"kb3": 6.33}}]
+    every = refit_from(base, stiff, data, 60)
+    fold = refit_from(every.base, every.effects, data.subset([0, 1, 2]), FOLD_NFEV)
+    assert every.base != base and fold.base != every.base  # neither stalled at its start
+    moved = max(abs(fold.base[n] / every.base[n] - 1) for n in greybox.FREE)
+    assert moved > 1e-3
+    assert every.effects[0]["parameters"]["kb3"] >= 0 <= fold.effects[0]["parameters"]["kb3"]
+    start = refit_from(every.base, every.effects, data.subset([0, 1, 2]), 1)  # one evaluation
+    assert fold.cost < start.cost
+
+
 def test_a_search_grid_scored_as_one_simulation_scores_each_point_as_alone(campaign):
     """The delay grid and a size's half decades are scored in one simulation
     (``_Scorer.shares``): each share must be the one the point scores alone."""
