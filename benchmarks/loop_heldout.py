@@ -56,7 +56,7 @@ from observer_node.data import CrashDataError, load_tests
 from observer_node.ident.dataset import Dataset, make_dataset
 from observer_node.loop.closed_loop import run_loop
 from observer_node.loop.evidence import Evidence, judge
-from observer_node.loop.refit import Refit, fold_scores, folds, refit, score
+from observer_node.loop.refit import Refit, finite, fold_scores, folds, refit, score, where_stalled
 from observer_node.loop.report import LoopReport
 from observer_node.model.effects import EFFECTS
 
@@ -191,12 +191,16 @@ def by_the_rule(base: dict, effects: list[dict], est: Dataset, margin: float
     held = {s: est.setups.count(s) for s in est.setups}
     setup_of = ({n: s for n, s in zip(est.names, est.setups, strict=True) if held[s] >= 2}
                 or dict(zip(est.names, est.setups, strict=True)))
-    cv = []
+    cv: list[dict[str, float]] = []
     with np.errstate(all="ignore"):
         for eff in ([], effects):
             fit = refit(base, eff, est, max_nfev=150 if eff else 60)
-            cv.append({n: v for tr, te in folds(est)
-                       for n, v in fold_scores(fit.base, fit.effects, est, tr, te).items()})
+            # a stalled fold's tests as the loop counts them (rounds.cross_validate)
+            instead = cv[0] if cv else {n: finite(v.total) for n, v in
+                                        score(fit.base, fit.effects, est).tests.items()}
+            cv.append(where_stalled({n: v for tr, te in folds(est) for n, v in
+                                     fold_scores(fit.base, fit.effects, est, tr, te).items()},
+                                    instead))
     return judge(cv[0], cv[1], setup_of, None, margin), fit
 
 

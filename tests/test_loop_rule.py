@@ -1588,6 +1588,26 @@ def test_a_fold_refit_leaves_a_positive_size_fitted_near_nothing(campaign):
     assert fold.cost < start.cost
 
 
+def test_a_fold_whose_refit_never_moved_counts_as_no_gain(campaign):
+    """A fold whose refit took no step scores its held-out test in-sample (set Z's fabric
+    case: a formula's stalled fold gained 2.4 points the folds that moved did not): its tests
+    are NaN, and the rule counts the model without the candidate's fit there instead."""
+    import math
+
+    from observer_node.ident import greybox
+    from observer_node.loop.refit import fold_scores, where_stalled
+
+    data = make_dataset([t for t in campaign
+                         if t.name in ("R16_001", "R16_003", "FULL_001", "SLED_001")])
+    base = greybox.fit_greybox(data).params
+    stalled = fold_scores(base, [], data, [0, 1, 2], [3], max_nfev=1)  # one evaluation: no step
+    moved = fold_scores(base, [], data, [0, 1, 2], [3])
+    assert list(stalled) == list(moved) == ["SLED_001"]
+    assert math.isnan(stalled["SLED_001"]) and 0 < moved["SLED_001"] <= 100
+    assert where_stalled({"a": math.nan, "b": 90.0}, {"a": 88.0, "b": 1.0}) == \
+        {"a": 88.0, "b": 90.0}
+
+
 def test_a_search_grid_scored_as_one_simulation_scores_each_point_as_alone(campaign):
     """The delay grid and a size's half decades are scored in one simulation
     (``_Scorer.shares``): each share must be the one the point scores alone."""

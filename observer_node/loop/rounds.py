@@ -38,7 +38,16 @@ from .evidence import (
     past_the_tie,
     tell_apart,
 )
-from .refit import Refit, finite, fold_scores, fold_scores_by_output, model, refit, score
+from .refit import (
+    Refit,
+    finite,
+    fold_scores,
+    fold_scores_by_output,
+    model,
+    refit,
+    score,
+    where_stalled,
+)
 from .report import (
     AcceptedEffect,
     EffectEvidence,
@@ -193,7 +202,7 @@ def _cross_validated(c: Context, st: State, ranked: list[Candidate]
         c.prog.update(f"cross-validating {len(trials)} candidate(s): "
                       + ", ".join(f"{t.kind} on {scope_label(t.setups)}" for t in trials))
         cvs = cross_validate(c.runner, [(st.base, [*st.effects, t.effect()]) for t in trials],
-                             c.est, c.folds)
+                             c.est, c.folds, instead=st.cv_now)
         for cv, t in zip(cvs, trials, strict=True):
             tried.append((_mean(cv), t, judge(st.cv_now, cv, c.test_setup, t.setups,
                                               c.margin)))
@@ -610,14 +619,23 @@ def _fold_by_output(base: dict, effects: list[dict], data: Dataset, train: list[
 
 
 def cross_validate(runner: Runner, models: list[tuple[dict, list[dict]]], data: Dataset,
-                   folds_: Folds) -> list[dict[str, float]]:
+                   folds_: Folds, instead: dict[str, float] | None = None
+                   ) -> list[dict[str, float]]:
     """Per-test cross-validated fit_TOT [%] of each (base, effects): each fitted on all tests,
-    then refitted from there without each fold's held-out tests; every fit a task."""
+    then refitted from there without each fold's held-out tests; every fit a task. A test
+    whose fold stalled (:func:`~.refit.fold_scores`) counts ``instead``'s fit (the model
+    without the candidate's: no gain), or, without it, the model's own fit on all tests."""
     starts = runner.map(_all_tests, [(b, e, data) for b, e in models])
     res = runner.map(_fold, [(b, e, data, tr, te) for b, e in starts for tr, te in folds_])
     k = len(folds_)
-    return [{n: v for r in res[i * k:(i + 1) * k] for n, v in r.items()}
-            for i in range(len(models))]
+    out = []
+    for i, (b, e) in enumerate(starts):
+        cv = {n: v for r in res[i * k:(i + 1) * k] for n, v in r.items()}
+        if any(np.isnan(v) for v in cv.values()):
+            fits = instead or {n: finite(v.total) for n, v in score(b, e, data).tests.items()}
+            cv = where_stalled(cv, fits)
+        out.append(cv)
+    return out
 
 
 def _other_output(runner: Runner, base: dict, effects: list[dict], data: Dataset,
@@ -677,7 +695,9 @@ def _look_past(runner: Runner, base: dict, effects: list[dict], data: Dataset, f
                test_setup: dict[str, str], margin: float) -> PastTheTie:
     """A tie between ``a`` and ``b`` looked past: the model with both cross-validated, and
     each judged by the rule beside the other."""
-    cv_both = cross_validate(runner, [(base, [*effects, a.effect(), b.effect()])], data, folds_)[0]
+    better = {n: max(v, per_test[id(b)][n]) for n, v in per_test[id(a)].items()}
+    cv_both = cross_validate(runner, [(base, [*effects, a.effect(), b.effect()])], data, folds_,
+                             instead=better)[0]
     return past_the_tie(per_test[id(a)], per_test[id(b)], cv_both, test_setup, a.setups,
                         b.setups, margin)
 
