@@ -67,8 +67,23 @@ from .sets import before
 SEED = 39000
 # a case whose draw proved impossible, drawn again, whole, by the next seed's generator (one per
 # redraw, in this order, after the rest), the pairings of everything drawn before still taken:
-# none yet (written before the first draw)
-REDRAWN: tuple[tuple[str, int], ...] = ()
+# the belt unloading's first draw, dring_capstan on SLED (96 counts, est 3/3/0, val 1/5/0), cost
+# the grey-box 3.24 points at the rule's first size, mu theta 0.59 (CR 3.83, CD 2.65), in band,
+# but ran away by test_set_ad_has_no_run_aways's limits: the capstan held the webbing, five of
+# its eight SLED tests paid out less than a third of the set's SLED median (30-68 deg against
+# 205): impossible; the input gain's first draw, spool_buildup on R16+FULL (96 counts, est
+# 4/2/0, val 5/0/1), cost 0.53 at 13 mm per wrap (CR 1.10, CD -0.05), below the band; the
+# rule's next, 39 mm (three times, the clip), leaves the spool's 17 mm radius below zero within
+# 7 rad of pay-out (a run-away): impossible; the late BRS's first draw, 1.03 ms (48 counts, est
+# 2/0/4, val 2/3/1), cost -0.24 (CR -0.33, CD -0.14), below the delay's 1 point, nothing to set:
+# impossible; the two-effect case's first draw, webbing_knee on R16 beside rib_maxwell on FULL
+# (96 counts, est 3/0/3, val 3/0/3, set O's pairing), cost 7.04 together at 2.4 and 0.76, each
+# alone in band (the knee 3.13, the Maxwell branch 3.84); by rule 4 the Maxwell branch (its
+# cost alone the higher) stepped by 2 toward 3.5: 0.69 (alone 3.25, together 6.54), 0.74 (3.65,
+# 6.88), 0.71 (3.42, 6.68): four sizes, the two together never in band, impossible; every other
+# draw found a size in band within the rule's four (see ``cases_ad.py``)
+REDRAWN: tuple[tuple[str, int], ...] = (("belt_unloading", 39001), ("input_gain", 39002),
+                                         ("brs_late", 39003), ("two", 39004))
 EARLIER = before("ad")
 __all__ = ["BROKEN", "BRS_GAIN", "KINDS", "REDRAWN", "SEED", "TRANSDUCER", "draw", "forms",
            "scopes"]
