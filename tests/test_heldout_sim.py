@@ -21,6 +21,7 @@ from benchmarks.heldout import (
     draw_aa,
     draw_ab,
     draw_ac,
+    draw_ad,
     draw_v,
     draw_w,
     draw_x,
@@ -38,6 +39,8 @@ from benchmarks.heldout.cases_ab import BY_NAME_AB, ONE_PHYSICAL_AB
 from benchmarks.heldout.cases_ab import SET_AB as SET_AB_FILE
 from benchmarks.heldout.cases_ac import BY_NAME_AC, ONE_PHYSICAL_AC
 from benchmarks.heldout.cases_ac import SET_AC as SET_AC_FILE
+from benchmarks.heldout.cases_ad import BY_NAME_AD, ONE_PHYSICAL_AD
+from benchmarks.heldout.cases_ad import SET_AD as SET_AD_FILE
 from benchmarks.heldout.cases_p import BY_NAME_P
 from benchmarks.heldout.cases_q import BY_NAME_Q
 from benchmarks.heldout.cases_r import BY_NAME_R
@@ -3714,8 +3717,8 @@ def _follows_a_reusing_draw(draw_mod: ModuleType, seed: int, earlier: tuple[str,
                             redrawn: list[tuple[str, int]], before: list[cases.Case],
                             two_case: cases.Case) -> None:
     """A set drawn by set W's process from ``seed`` after the sets ``earlier``, its two-effect
-    case reusing a pairing those sets ran (sets Z, AA, AB and AC): the cases follow the draw,
-    and the reused pairing is one the rules allow that no free pairing could replace."""
+    case reusing a pairing those sets ran (sets Z, AA, AB, AC and AD): the cases follow the
+    draw, and the reused pairing is one the rules allow that no free pairing could replace."""
     d = draw_mod.draw(seed)
     assert d == draw_mod.draw()  # reproducible from its seed
     assert earlier == draw_mod.EARLIER and seed == draw_mod.SEED
@@ -3834,8 +3837,9 @@ def test_sets_before_are_names_not_letters() -> None:
     assert _cases_of(after_aa)[-len(SET_AA):] == SET_AA
     assert heldout_sets.before("ab") == after_aa  # set AB's earlier sets: A-AA, by name
     assert heldout_sets.before("ac") == (*after_aa, "ab")  # set AC's: A-AB, by name
-    with pytest.raises(ValueError, match="unknown case set 'ad'"):
-        heldout_sets.before("ad")
+    assert heldout_sets.before("ad") == (*after_aa, "ab", "ac")  # set AD's: A-AC, by name
+    with pytest.raises(ValueError, match="unknown case set 'ae'"):
+        heldout_sets.before("ae")
     # a draw after AA takes AA's pairings; at this seed, without AA one single draws one of them
     aa = {_pairing(c) for c in SET_AA}
 
@@ -4069,7 +4073,7 @@ def test_set_ac_is_registered(tmp_path: Path) -> None:
     """Set AC is ``cases_ac.SET_AC`` under the letters ac, for sets.select, make_sets and
     costs, after set AB (its earlier sets A-AB, by name)."""
     assert "ac" in heldout_sets.SETS and SET_AC == SET_AC_FILE
-    assert heldout_sets.SETS[-3:] == ("aa", "ab", "ac")
+    assert heldout_sets.SETS[26:29] == ("aa", "ab", "ac")
     assert heldout_sets.before("ac") == (*"abcdefghijklmnopqrstuvwxyz", "aa", "ab")
     assert heldout_sets.select(["hac_clean48"], "ac") == [BY_NAME_AC["hac_clean48"]]
     assert make_sets.main(["--set", "ac", "--case", "hac_clean48", "--out", str(tmp_path)]) == 0
@@ -4158,6 +4162,121 @@ def test_set_ac_cd_clock_stretches_cd_only(set_ac: Path) -> None:
 
 def test_set_ac_has_no_run_aways(set_ac: Path) -> None:
     _no_run_aways(SET_AC, set_ac)
+
+
+# ------------------------------------------------------------------ set AD (cases_ad.py)
+
+SET_AD = heldout_sets.case_set("ad")
+BEFORE_AD = _cases_of(heldout_sets.before("ad"))
+# the broken test, the transducer error, and every physical case of one effect (its rigs moved,
+# the others untouched)
+WATCHED_AD = ("had_broken_cr_reversed", "had_cd_dead_band", *ONE_PHYSICAL_AD)
+# the draws found impossible, drawn again by the next seeds in the order found (draw_ad.REDRAWN)
+REDRAWN_AD: list[tuple[str, int]] = [("belt_unloading", 39001), ("input_gain", 39002),
+                                      ("brs_late", 39003), ("two", 39004)]
+# the two-effect case, on an earlier set's pairing (none free for it: draw_ad's reuse rule)
+TWO_AD = "had_two_sealed_sled_fung_r16"
+
+
+@pytest.fixture(scope="module")
+def set_ad(tmp_path_factory: pytest.TempPathFactory) -> Path:
+    return _generate(tmp_path_factory, "ad", WATCHED_AD)
+
+
+def test_set_ad_is_registered(tmp_path: Path) -> None:
+    """Set AD is ``cases_ad.SET_AD`` under the letters ad, for sets.select, make_sets and
+    costs, after set AC (its earlier sets A-AC, by name)."""
+    assert "ad" in heldout_sets.SETS and SET_AD == SET_AD_FILE
+    assert heldout_sets.SETS[-4:] == ("aa", "ab", "ac", "ad")
+    assert heldout_sets.before("ad") == (*"abcdefghijklmnopqrstuvwxyz", "aa", "ab", "ac")
+    assert heldout_sets.select(["had_clean48"], "ad") == [BY_NAME_AD["had_clean48"]]
+    assert make_sets.main(["--set", "ad", "--case", "had_clean48", "--out", str(tmp_path)]) == 0
+    truth = json.loads((tmp_path / "had_clean48" / "truth.json").read_text())
+    assert truth["case"]["name"] == "had_clean48" and len(truth["tests"]) == 12
+    assert make_sets.main(["--set", "AD", "--case", "had_clean48",
+                           "--out", str(tmp_path / "upper")]) == 0
+
+
+def test_set_ad_is_new() -> None:
+    """Set AD's names, seeds (39xxx), pairings and effect sizes (a switch's aside) are none of
+    sets A-AC's, but the two-effect case's pairing (an earlier set's, by draw_ad's rule); its
+    forms are drawn among every set's (so may be an earlier set's)."""
+    _is_new_drawn(SET_AD, BEFORE_AD, 39000, reused=(TWO_AD,))
+    assert all(c.name.startswith("had_") for c in SET_AD)
+
+
+def test_set_ad_covers_the_general_list() -> None:
+    """Set AD as its brief asks: clean cases at 48 and 96 counts; each kind of the library a
+    loop can name, as physics, once in a case of its own; two effects of different kinds on
+    different rigs in one case; a broken estimation test; a transducer error on CD alone (as
+    drawn); a late pulse and a late BRS at delays in 1-5 ms no earlier set used on any input;
+    6 + 6 tests, every rig an estimation part holds held twice or more; an effect on some rigs
+    only rests on two estimation and two validation tests of them beside an estimation test of
+    a rig it spares."""
+    _covers_the_general_list(SET_AD, BEFORE_AD, "cd", ONE_PHYSICAL_AD, draw_ad.KINDS)
+
+
+def test_set_ad_follows_its_draw() -> None:
+    """Set AD's designer's choices are numpy's default_rng(39000)'s (``draw_ad.py``; the draws
+    found impossible drawn again by the next seeds, ``REDRAWN``), followed as drawn: each
+    kind's form, rigs, counts and mix; the two-effect case's kinds, forms, rigs, counts and mix;
+    the delays, their counts and mixes; the transducer error's output, form, counts and mix;
+    the broken test's channel, form, test, counts and mix; the clean cases' mixes. Set AC's
+    process: set W's kinds, pools and mix rules, A-AC's pairings taken, but the two-effect
+    case's: none was free for its rigs (the old rule draws it none), so it reuses one A-AC ran,
+    among those its rules allow."""
+    _follows_a_reusing_draw(draw_ad, 39000,
+                            (*"abcdefghijklmnopqrstuvwxyz", "aa", "ab", "ac"), SET_AD,
+                            ONE_PHYSICAL_AD, REDRAWN_AD, BEFORE_AD, BY_NAME_AD[TWO_AD])
+    assert _pairing(BY_NAME_AD[TWO_AD]) == ((2, 2, 2), (3, 3, 0))
+
+
+def test_set_ad_lab_side_is_as_drawn_and_unnamed() -> None:
+    """One broken estimation test, the only thing expected; one transducer error on CD on every
+    test, nothing physical named; AD's physics earlier sets' forms only."""
+    _lab_side_as_drawn(SET_AD, "cd")
+    assert {k for k in _keys(SET_AD) if physics.EFFECTS[k]} <= _keys(BEFORE_AD)
+
+
+@pytest.mark.parametrize("case", sorted(ONE_PHYSICAL_AD))
+def test_set_ad_physics_moves_its_rigs_only(set_ad: Path, case: str) -> None:
+    """Each physical case moves what its form moves on every test of its rigs (the chest's,
+    belt's, bag's, pelvis's and spool's forms CR and CD, the pulse untouched) and leaves the
+    tests of a rig it spares untouched to the bit."""
+    _moves_its_rigs_only(set_ad, BY_NAME_AD[case])
+
+
+def test_set_ad_cr_reversed_reads_negative_on_the_broken_test_only(set_ad: Path) -> None:
+    """The broken test's CR is its twin's negated (set E's check), its CD, pulse and BRS
+    untouched; every other test untouched."""
+    c = BY_NAME_AD["had_broken_cr_reversed"]
+    (broken,) = c.expect_broken
+    on, off = set_ad / "on" / c.name, set_ad / "off" / c.name
+    bad, good = _channel(on, broken, "cr"), _channel(off, broken, "cr")
+    assert np.array_equal(bad, -good) and good.max() > 15 and bad.min() < -15
+    for which in ("cd", "pulse"):
+        assert np.array_equal(_channel(on, broken, which), _channel(off, broken, which))
+    assert np.array_equal(_brs(on, broken), _brs(off, broken))
+    _others_untouched(set_ad, c.name, broken)
+
+
+def test_set_ad_cd_dead_band_cd_only(set_ad: Path) -> None:
+    """CD reads its twin's less the dead band past it, zero at rest (set G's check), every
+    test; CR, pulse and BRS untouched."""
+    c = BY_NAME_AD["had_cd_dead_band"]
+    (e,) = c.effects
+    seen = 0
+    for cd, cd0 in _cd_only(set_ad / "on" / c.name, set_ad / "off" / c.name):
+        big = cd0 > e.size + 5
+        assert big.sum() > 100 and np.allclose(cd[big], cd0[big] - e.size, atol=0.3)
+        rest = _times(len(cd)) < 0
+        assert np.abs(cd[rest]).max() < 0.5 and np.abs(cd0[rest]).max() < 0.5
+        seen += 1
+    assert seen == 12
+
+
+def test_set_ad_has_no_run_aways(set_ad: Path) -> None:
+    _no_run_aways(SET_AD, set_ad)
 
 
 def test_more_tests_doubles_the_estimation_tests_only(tmp_path: Path) -> None:
