@@ -198,10 +198,12 @@ def nothing_left(kind: str, params: dict) -> str | None:
     tests hold (held-out set AC: a belt stiffening of 6.3 N/m^3, typical 1e8, named on
     every rig for a BRS read through an eccentric ring, +1.5 points on 6 of 6 tests, while
     its all-test fit was the model without it's to 0.001 points; its folds' refits never
-    left that fit, so each scored its held-out test in-sample, docs/loop.md). That stall is
-    the refit's (a positive size fitted as |v|, a kink at 0); this check only keeps its
-    worst outcome from being named until the refit itself is mended. None when one size is
-    more, or the kind has none (the formula, a switch)."""
+    left that fit, so each scored its held-out test in-sample, docs/loop.md). That stall
+    was the refit's (a positive size fitted as |v|, a kink at 0), mended in session 45 (a
+    bound, and a stalled fold counts no gain: ``refit.fold_scores``); on set AC this check
+    has not fired since. It stays as a backstop: an effect refitted to nothing is never a
+    finding, however it passed. None when one size is more, or the kind has none (the
+    formula, a switch)."""
     spec = EFFECTS[kind]
     sizes = [(p, params[p.name]) for p in spec.params
              if p.name not in WHERE and p.typical and isinstance(params.get(p.name), float | int)]
