@@ -1311,7 +1311,7 @@ def test_a_fold_starts_from_a_fit_that_drove_a_parameter_to_zero(campaign):
     base = {**greybox.fit_greybox(data).params, "c1": 0.0}
     effects = [{"kind": "pelvis_coupling", "parameters": {"kp": 1.3e3, "cp": 340.0}}]
     with np.errstate(all="ignore"):
-        got = fold_scores(base, effects, data, [0, 1], [2], max_nfev=3)
+        got = fold_scores(base, effects, data, [0, 1], [2])
     assert list(got) == ["R16_005"] and np.isfinite(got["R16_005"])
 
 
