@@ -1,8 +1,17 @@
-"""Session 45, offline: Set Z's fabric case with bounds: round 2's formula gains 1.35 (0.29 before). Are the folds
-of the airbag model (the round's base) or of the candidate stalled?"""
-import json, sys, tempfile
+"""Session 45, offline: set Z's fabric case with the bound (d0897a1): round 2's formula
+gains 1.35 (0.29 before). Are the folds of the airbag model (the round's base) or of the
+candidate stalled?
+
+    PYTHONPATH=. python docs/records/session-45/fabric_r2.py SETS/z \
+        REPORTS/z/hz_fabric_sled/report.json
+"""
+import json
+import sys
+import tempfile
 from pathlib import Path
+
 import numpy as np
+
 from benchmarks.loop_heldout import load_tests
 from observer_node.ident.greybox import FREE
 from observer_node.loop import closed_loop as CL
@@ -27,13 +36,14 @@ if __name__ == "__main__":
     est, base, effects, folds = seen[1]
     print("round-2 base effects", effects)
     rep = json.loads(Path(sys.argv[2]).read_text())
-    other = [e for e in rep["effects"] if e["kind"] == "other"][0]
-    cand = refit(base, effects + [{"kind": "other", "parameters": other["parameters"]}], est)
+    other = next(e for e in rep["effects"] if e["kind"] == "other")
+    cand = refit(base, [*effects, {"kind": "other", "parameters": other["parameters"]}], est)
     for label, b, eff in (("airbag", base, effects), ("airbag+other", cand.base, cand.effects)):
         tot = []
         for train, test in folds:
             r = refit_from(b, eff, est.subset(train), FOLD_NFEV)
             t = score(r.base, r.effects, est.subset(test)).tests
             tot += [v.total for v in t.values()]
-            print(f"  {label}: fold {test} moved {moved(r.base, b):.2e} fits {[round(v.total,2) for v in t.values()]}")
+            fits = [round(v.total, 2) for v in t.values()]
+            print(f"  {label}: fold {test} moved {moved(r.base, b):.2e} fits {fits}")
         print(label, "mean cv", np.mean(tot))
