@@ -240,6 +240,10 @@ def folds(data: Dataset, k_max: int = MAX_FOLDS) -> list[tuple[list[int], list[i
     return [([i for i in range(n) if i not in h], h) for h in held]
 
 
+#: a held-out test's fit when its fold's refit stalled (:func:`fold_scores`)
+STALLED = float("nan")
+
+
 def fold_scores(base: dict, effects: list[dict], data: Dataset, train: list[int],
                 test: list[int], max_nfev: int = FOLD_NFEV) -> dict[str, float]:
     """Refit on tests ``train``, starting at ``base``/``effects`` (the fit on all tests), then
@@ -255,10 +259,6 @@ def fold_scores(base: dict, effects: list[dict], data: Dataset, train: list[int]
         return {n: STALLED for n in data.subset(test).names}
     t = score(r.base, r.effects, data.subset(test)).tests
     return {n: finite(v.total) for n, v in t.items()}
-
-
-#: a held-out test's fit when its fold's refit stalled (:func:`fold_scores`)
-STALLED = float("nan")
 
 
 def where_stalled(cv: dict[str, float], instead: dict[str, float]) -> dict[str, float]:
