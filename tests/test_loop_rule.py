@@ -1057,6 +1057,51 @@ def test_a_physical_effect_in_both_outputs_is_not_one_transducers_error(chest):
     assert other(bent) is None
 
 
+def test_the_other_outputs_check_counts_a_stalled_fold_as_no_gain(chest, monkeypatch):
+    """The one-output check refits too: where the candidate's fold took no step, its
+    held-out test would score in-sample. Such folds count the model's own fit (no gain), as
+    ``cross_validate`` counts them: the rib damping that passes on CR above, its every fold
+    stalled here, gains nothing."""
+    from observer_node.loop import refit, rounds
+    from observer_node.loop.refit import folds
+
+    data, base, damped, _ = chest
+    tried = _one_passing("chest_rate_damping", {"c3": 1000.0})
+    setups = dict(zip(data.names, data.setups, strict=True))
+    real = refit.fold_scores_by_output
+    stalls = real(base, [], data, [0, 1, 2], [3], max_nfev=1)  # one evaluation: no step
+    assert all(np.isnan(v) for o in ("cr", "cd") for v in stalls[o].values())
+    monkeypatch.setattr(rounds, "fold_scores_by_output",
+                        lambda b, e, d, tr, te: real(b, e, d, tr, te, max_nfev=1 if e else 15))
+    assert rounds._other_output(_InProcess(), base, [], dataclasses.replace(data, y=damped),
+                                folds(data), tried, "cd", setups, 1.0) is None
+
+
+def test_a_transducers_correction_gains_nothing_on_a_fold_that_stalled(chest, monkeypatch):
+    """The sensor family's folds refit the model before fitting their correction: a fold
+    that took no step would judge the correction beside a model fitted on its held-out test
+    too. A CD transducer's over-reading passes the rule when the folds move; with every fold
+    stalled, its tests count the model's cross-validated fit (no gain) and it does not."""
+    from observer_node.loop import diagnosis, rounds
+    from observer_node.loop.refit import FOLD_NFEV, folds
+
+    data, base, _, bent = chest
+    data = dataclasses.replace(data, y=bent)
+    setups = dict(zip(data.names, data.setups, strict=True))
+    cv_now = rounds.cross_validate(_InProcess(), [(base, [])], data, folds(data))[0]
+
+    def sensor(nfev: int) -> object:
+        real = diagnosis.sensor_fold_scores
+        monkeypatch.setattr(rounds, "sensor_fold_scores",
+                            lambda b, e, d, tr, te: real(b, e, d, tr, te, max_nfev=nfev))
+        return rounds._sensor_candidates(_InProcess(), base, [], data, folds(data), cv_now,
+                                         setups, 1.0)["cd"]
+
+    moving, stalled = sensor(FOLD_NFEV), sensor(1)  # one evaluation: no step
+    assert moving.accepted and moving.gain_points >= 1.0
+    assert not stalled.accepted and stalled.gain_points == 0.0
+
+
 def test_a_physical_effect_no_better_than_a_transducer_is_not_named():
     """A physical effect that wins a round where one output's static correction passes the
     rule too is named only if it beats that correction test by test above the scatter (set F:

@@ -26,7 +26,7 @@ import numpy as np
 
 from ..ident.dataset import Dataset
 from ..ident.metrics import OUTPUT_NAMES, fit_percent
-from .refit import FOLD_NFEV, model, refit_from
+from .refit import FOLD_NFEV, STALLED, model, refit_from
 
 SHAPES = {"static": "a static function of {o} (a transducer's non-linearity: its error grows "
                     "with the value)",
@@ -131,8 +131,13 @@ def sensor_fold_scores(base: dict, effects: list[dict], data: Dataset, train: li
     """One fold of the sensor candidate: refit the current model (fitted on all tests, the
     start) on ``train``, fit a static
     correction of each output there, score each ``test`` test's fit_TOT [%] with it. Returns
-    {output: {test: fit_TOT}}."""
+    {output: {test: fit_TOT}}; a stalled fold's tests NaN (``STALLED``), as
+    :func:`~.refit.fold_scores` gives them: its correction would be judged on a model fitted
+    on them too."""
     r = refit_from(base, effects, data.subset(train), max_nfev)
+    if not r.moved:
+        names = data.subset(test).names
+        return {o: dict.fromkeys(names, STALLED) for o in OUTPUT_NAMES}
     tr, te = data.subset(train), data.subset(test)
     with np.errstate(all="ignore"):
         yh_tr = model(r.base, r.effects, tr).simulate(tr.pulse_g, tr.brs_rad)

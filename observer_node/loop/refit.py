@@ -271,8 +271,12 @@ def where_stalled(cv: dict[str, float], instead: dict[str, float]) -> dict[str, 
 def fold_scores_by_output(base: dict, effects: list[dict], data: Dataset, train: list[int],
                           test: list[int], max_nfev: int = FOLD_NFEV
                           ) -> dict[str, dict[str, float]]:
-    """As :func:`fold_scores`, each output's fit [%] apart: {"cr": {test: fit}, "cd": ...}."""
+    """As :func:`fold_scores`, each output's fit [%] apart: {"cr": {test: fit}, "cd": ...};
+    a stalled fold's tests NaN (``STALLED``) in both, as there."""
     r = refit_from(base, effects, data.subset(train), max_nfev)
+    if not r.moved:
+        names = data.subset(test).names
+        return {"cr": dict.fromkeys(names, STALLED), "cd": dict.fromkeys(names, STALLED)}
     t = score(r.base, r.effects, data.subset(test)).tests
     return {"cr": {n: finite(v.cr) for n, v in t.items()},
             "cd": {n: finite(v.cd) for n, v in t.items()}}

@@ -659,6 +659,13 @@ def _other_output(runner: Runner, base: dict, effects: list[dict], data: Dataset
     k = len(folds_)
     now, with_c = ({n: v for r in res[i * k:(i + 1) * k] for n, v in r[o2].items()}
                    for i in range(2))
+    # a stalled fold (refit.fold_scores) counts as cross_validate counts it: the model's own
+    # test at its fit on all tests, the candidate's at the model's (no gain)
+    if any(np.isnan(v) for v in now.values()):
+        b0, e0 = starts[0]
+        own = score(b0, e0, data).tests
+        now = where_stalled(now, {n: finite(getattr(v, o2)) for n, v in own.items()})
+    with_c = where_stalled(with_c, now)
     ev = judge(now, with_c, test_setup, c.setups, margin)
     return (c, ev) if ev.accepted else None
 
@@ -705,10 +712,11 @@ def _look_past(runner: Runner, base: dict, effects: list[dict], data: Dataset, f
 def _sensor_candidates(runner: Runner, base: dict, effects: list[dict], data: Dataset,
                        folds_: Folds, cv_now: dict[str, float], test_setup: dict[str, str],
                        margin: float) -> dict[str, Evidence]:
-    """The sensor family: a static correction of one output, judged by the same rule."""
+    """The sensor family: a static correction of one output, judged by the same rule (a
+    stalled fold's tests at ``cv_now``: no gain)."""
     res = runner.map(_sensor_fold, [(base, effects, data, tr, te) for tr, te in folds_])
-    return {o: judge(cv_now, {n: v for r in res for n, v in r[o].items()}, test_setup, None,
-                     margin)
+    return {o: judge(cv_now, where_stalled({n: v for r in res for n, v in r[o].items()}, cv_now),
+                     test_setup, None, margin)
             for o in res[0]}
 
 
