@@ -1057,6 +1057,26 @@ def test_a_physical_effect_in_both_outputs_is_not_one_transducers_error(chest):
     assert other(bent) is None
 
 
+def test_cross_validation_counts_a_stalled_fold_as_the_caller_says(chest, monkeypatch):
+    """``held_out_fits`` leaves a stalled fold's tests NaN; ``cross_validate`` gives them
+    ``instead``'s fit (a candidate's: the model's without it) or the model's own on all
+    tests; ``stalled_in`` names them for the evidence."""
+    from observer_node.loop import refit, rounds
+    from observer_node.loop.refit import folds, score, stalled_in
+
+    data, base, _, _ = chest
+    real = refit.fold_scores
+    monkeypatch.setattr(rounds, "fold_scores",
+                        lambda b, e, d, tr, te: real(b, e, d, tr, te, max_nfev=1))
+    [(start, raw)] = rounds.held_out_fits(_InProcess(), [(base, [])], data, folds(data))
+    assert stalled_in(raw) == list(data.names)
+    instead = dict.fromkeys(data.names, 12.5)
+    assert rounds.cross_validate(_InProcess(), [(base, [])], data, folds(data),
+                                 instead=instead) == [instead]
+    own = {n: v.total for n, v in score(*start, data).tests.items()}
+    assert rounds.cross_validate(_InProcess(), [(base, [])], data, folds(data)) == [own]
+
+
 def test_the_other_outputs_check_counts_a_stalled_fold_as_no_gain(chest, monkeypatch):
     """The one-output check refits too: where the candidate's fold took no step, its
     held-out test would score in-sample. Such folds count the model's own fit (no gain), as
@@ -1100,6 +1120,11 @@ def test_a_transducers_correction_gains_nothing_on_a_fold_that_stalled(chest, mo
     moving, stalled = sensor(FOLD_NFEV), sensor(1)  # one evaluation: no step
     assert moving.accepted and moving.gain_points >= 1.0
     assert not stalled.accepted and stalled.gain_points == 0.0
+    # and the evidence says so, in report.json and in its one line for report.md
+    assert moving.stalled_tests == () and "no step" not in moving.confidence
+    assert stalled.stalled_tests == tuple(data.names)
+    assert f"{len(data.names)} tests whose fold's refit took no step" in stalled.confidence
+    assert Evidence.from_dict(stalled.as_dict()).stalled_tests == stalled.stalled_tests
 
 
 def test_a_physical_effect_no_better_than_a_transducer_is_not_named():

@@ -29,6 +29,7 @@ wider one test by test, above the scatter (:func:`above_scatter`); otherwise the
 
 from __future__ import annotations
 
+from collections.abc import Iterable
 from dataclasses import asdict, dataclass
 
 import numpy as np
@@ -58,6 +59,8 @@ class Evidence:
     # failed on the scatter alone: the judged estimation tests that, gaining and scattering as
     # these did, would pass the interval test 4 times in 5 (:func:`needed_tests`); else None
     tests_to_defend: int | None = None
+    # tests whose fold's refit took no step (refit.fold_scores), counted as gaining nothing
+    stalled_tests: tuple[str, ...] = ()
 
     def as_dict(self) -> dict:
         d = asdict(self)
@@ -71,15 +74,19 @@ class Evidence:
     @classmethod
     def from_dict(cls, d: dict) -> Evidence:
         """Evidence as :meth:`as_dict` wrote it (rounded)."""
-        return cls(**{**d, "ci95_points": tuple(d["ci95_points"])})
+        return cls(**{**d, "ci95_points": tuple(d["ci95_points"]),
+                      "stalled_tests": tuple(d.get("stalled_tests", ()))})
 
     @property
     def confidence(self) -> str:
         """One line for the report: gain, interval, tests improved."""
         lo, hi = self.ci95_points
+        n = len(self.stalled_tests)
+        stalled = (f"; {n} test{'s' * (n > 1)} whose fold's refit took no step counted as "
+                   f"no gain ({', '.join(self.stalled_tests)})" if n else "")
         return (f"{self.gain_points:+.1f} points (95 % CI {lo:+.1f}..{hi:+.1f}), "
                 f"{self.tests_improved}/{self.tests} tests improved (sign test p = "
-                f"{self.sign_test_p:.3f})")
+                f"{self.sign_test_p:.3f}){stalled}")
 
 
 def above_scatter(d: np.ndarray) -> tuple[bool, float, float, int, float]:
@@ -170,11 +177,14 @@ def beats(a: dict[str, float], b: dict[str, float]) -> tuple[bool, int]:
 
 
 def judge(before: dict[str, float], after: dict[str, float], setups: dict[str, str],
-          scope: list[str] | None, margin: float) -> Evidence:
+          scope: list[str] | None, margin: float, stalled: Iterable[str] = ()) -> Evidence:
     """Judge a candidate from the per-test cross-validated fit_TOT [%] without it (``before``)
     and with it (``after``); ``setups`` maps each test to its setup, ``scope`` is the setups
-    the effect acts on (None: every test). Only the tests in ``setups`` are judged."""
+    the effect acts on (None: every test). Only the tests in ``setups`` are judged.
+    ``stalled``: the tests whose fold's refit took no step, which ``after`` already counts as
+    the caller chose (``refit.where_stalled``); the evidence lists them."""
     names = [n for n in before if n in after and n in setups]
+    stuck = set(stalled)
     gain = {n: after[n] - before[n] for n in names}
     inside = [gain[n] for n in names if scope is None or setups[n] in scope] or [0.0]
     above, mean, half, improved, sign_p = above_scatter(
@@ -197,7 +207,8 @@ def judge(before: dict[str, float], after: dict[str, float], setups: dict[str, s
     else:
         reason = ""
     return Evidence(mean, (mean - half, mean + half), float(np.mean(inside)), gain, improved,
-                    len(names), sign_p, per_setup, not reason, reason, more)
+                    len(names), sign_p, per_setup, not reason, reason, more,
+                    tuple(n for n in names if n in stuck))
 
 
 @dataclass

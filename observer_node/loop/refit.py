@@ -268,6 +268,11 @@ def where_stalled(cv: dict[str, float], instead: dict[str, float]) -> dict[str, 
     return {n: instead[n] if np.isnan(v) else v for n, v in cv.items()}
 
 
+def stalled_in(cv: dict[str, float]) -> list[str]:
+    """The tests of per-test fits whose fold stalled (NaN, :func:`fold_scores`)."""
+    return [n for n, v in cv.items() if np.isnan(v)]
+
+
 def fold_scores_by_output(base: dict, effects: list[dict], data: Dataset, train: list[int],
                           test: list[int], max_nfev: int = FOLD_NFEV
                           ) -> dict[str, dict[str, float]]:

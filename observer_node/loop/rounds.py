@@ -46,6 +46,7 @@ from .refit import (
     model,
     refit,
     score,
+    stalled_in,
     where_stalled,
 )
 from .report import (
@@ -201,11 +202,14 @@ def _cross_validated(c: Context, st: State, ranked: list[Candidate]
         trials = [t for x in group for t in _with_widest_scope(x, c.scopes[x.kind])]
         c.prog.update(f"cross-validating {len(trials)} candidate(s): "
                       + ", ".join(f"{t.kind} on {scope_label(t.setups)}" for t in trials))
-        cvs = cross_validate(c.runner, [(st.base, [*st.effects, t.effect()]) for t in trials],
-                             c.est, c.folds, instead=st.cv_now)
-        for cv, t in zip(cvs, trials, strict=True):
+        # a stalled fold's test gains nothing (the model's fit without the candidate there),
+        # and the evidence says which tests stalled
+        cvs = held_out_fits(c.runner, [(st.base, [*st.effects, t.effect()]) for t in trials],
+                            c.est, c.folds)
+        for (_, raw), t in zip(cvs, trials, strict=True):
+            cv = where_stalled(raw, st.cv_now)
             tried.append((_mean(cv), t, judge(st.cv_now, cv, c.test_setup, t.setups,
-                                              c.margin)))
+                                              c.margin, stalled_in(raw))))
             per_test[id(t)] = cv
         if any(ev.accepted for _, _, ev in tried):
             break
@@ -618,20 +622,27 @@ def _fold_by_output(base: dict, effects: list[dict], data: Dataset, train: list[
         return fold_scores_by_output(base, effects, data, train, test)
 
 
-def cross_validate(runner: Runner, models: list[tuple[dict, list[dict]]], data: Dataset,
-                   folds_: Folds, instead: dict[str, float] | None = None
-                   ) -> list[dict[str, float]]:
+def held_out_fits(runner: Runner, models: list[tuple[dict, list[dict]]], data: Dataset,
+                  folds_: Folds) -> list[tuple[tuple[dict, list[dict]], dict[str, float]]]:
     """Per-test cross-validated fit_TOT [%] of each (base, effects): each fitted on all tests,
-    then refitted from there without each fold's held-out tests; every fit a task. A test
-    whose fold stalled (:func:`~.refit.fold_scores`) counts ``instead``'s fit (the model
-    without the candidate's: no gain), or, without it, the model's own fit on all tests."""
+    then refitted from there without each fold's held-out tests; every fit a task. Returns
+    each model's fit on all tests (the folds' start) and its per-test fits, NaN where the
+    fold stalled (:func:`~.refit.fold_scores`)."""
     starts = runner.map(_all_tests, [(b, e, data) for b, e in models])
     res = runner.map(_fold, [(b, e, data, tr, te) for b, e in starts for tr, te in folds_])
     k = len(folds_)
+    return [(start, {n: v for r in res[i * k:(i + 1) * k] for n, v in r.items()})
+            for i, start in enumerate(starts)]
+
+
+def cross_validate(runner: Runner, models: list[tuple[dict, list[dict]]], data: Dataset,
+                   folds_: Folds, instead: dict[str, float] | None = None
+                   ) -> list[dict[str, float]]:
+    """:func:`held_out_fits`, a test whose fold stalled counting ``instead``'s fit (the model
+    without the candidate's: no gain), or, without it, the model's own fit on all tests."""
     out = []
-    for i, (b, e) in enumerate(starts):
-        cv = {n: v for r in res[i * k:(i + 1) * k] for n, v in r.items()}
-        if any(np.isnan(v) for v in cv.values()):
+    for (b, e), cv in held_out_fits(runner, models, data, folds_):
+        if stalled_in(cv):
             fits = instead or {n: finite(v.total) for n, v in score(b, e, data).tests.items()}
             cv = where_stalled(cv, fits)
         out.append(cv)
@@ -661,12 +672,12 @@ def _other_output(runner: Runner, base: dict, effects: list[dict], data: Dataset
                    for i in range(2))
     # a stalled fold (refit.fold_scores) counts as cross_validate counts it: the model's own
     # test at its fit on all tests, the candidate's at the model's (no gain)
-    if any(np.isnan(v) for v in now.values()):
+    if stalled_in(now):
         b0, e0 = starts[0]
         own = score(b0, e0, data).tests
         now = where_stalled(now, {n: finite(getattr(v, o2)) for n, v in own.items()})
-    with_c = where_stalled(with_c, now)
-    ev = judge(now, with_c, test_setup, c.setups, margin)
+    ev = judge(now, where_stalled(with_c, now), test_setup, c.setups, margin,
+               stalled_in(with_c))
     return (c, ev) if ev.accepted else None
 
 
@@ -715,9 +726,9 @@ def _sensor_candidates(runner: Runner, base: dict, effects: list[dict], data: Da
     """The sensor family: a static correction of one output, judged by the same rule (a
     stalled fold's tests at ``cv_now``: no gain)."""
     res = runner.map(_sensor_fold, [(base, effects, data, tr, te) for tr, te in folds_])
-    return {o: judge(cv_now, where_stalled({n: v for r in res for n, v in r[o].items()}, cv_now),
-                     test_setup, None, margin)
-            for o in res[0]}
+    raw = {o: {n: v for r in res for n, v in r[o].items()} for o in res[0]}
+    return {o: judge(cv_now, where_stalled(cv, cv_now), test_setup, None, margin, stalled_in(cv))
+            for o, cv in raw.items()}
 
 
 def _with_widest_scope(c: Candidate, options: list[list[str] | None]) -> list[Candidate]:
