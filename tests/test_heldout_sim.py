@@ -4292,7 +4292,7 @@ BEFORE_AE = _cases_of(heldout_sets.before("ae"))
 # the others untouched)
 WATCHED_AE = ("hae_broken_cd_dropout", "hae_cd_pot_nonlinear", *ONE_PHYSICAL_AE)
 # the draws found impossible, drawn again by the next seeds in the order found (draw_ae.REDRAWN)
-REDRAWN_AE: list[tuple[str, int]] = []
+REDRAWN_AE: list[tuple[str, int]] = [("belt_unloading", 40001), ("brs_late", 40002)]
 # the two-effect case, on an earlier set's pairing (none free for it: draw_ae's reuse rule)
 TWO_AE = "hae_two_set_full_fabric_sled"
 
