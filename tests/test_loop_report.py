@@ -41,7 +41,7 @@ EVIDENCE_KEYS = ["ranking_share", "scope_shares", "rule", "explained_share_befor
                  "input_xcorr_max_ratio_after"]
 RULE_KEYS = ["gain_points", "ci95_points", "gain_in_scope_points", "test_gain_points",
              "tests_improved", "tests", "sign_test_p", "setup_gain_points", "accepted",
-             "reason", "tests_to_defend"]
+             "reason", "tests_to_defend", "stalled_tests"]
 
 
 def _rule():
