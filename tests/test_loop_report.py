@@ -53,7 +53,7 @@ def _rule():
 
 def _accepted(setups: list[str] | None, rivals: bool) -> AcceptedEffect:
     rule = _rule()
-    runner_up = RunnerUp("pelvis_coupling", "all", 94.3, False, 4, True)
+    runner_up = RunnerUp("pelvis_coupling", "all", 94.3, False, 4, True, False)
     ev = EffectEvidence(0.1234, {"SLED": 0.1234, "all": 0.05}, rule, 0.1834, 0.025, 94.0,
                         96.0, runner_up if rivals else None,
                         1.8 if rivals else None, OtherScope("all", 95.1, 0.9) if rivals else None,
@@ -70,7 +70,7 @@ def test_an_accepted_effect_is_written_with_the_keys_report_json_has():
     assert list(d["evidence"]) == EVIDENCE_KEYS
     assert list(d["evidence"]["rule"]) == RULE_KEYS
     assert list(d["evidence"]["runner_up"]) == ["kind", "scope", "cv_fit", "told_apart",
-                                                "tests_better", "passes_rule"]
+                                                "tests_better", "passes_rule", "over_bar"]
     assert list(d["evidence"]["other_scope"]) == ["scope", "cv_fit", "margin_points"]
     assert list(d["fit"]) == ["cr", "cd", "total"]
     # on every test, without rivals: no setups, applies_to, runner-up, margin or other scope

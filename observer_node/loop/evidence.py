@@ -176,6 +176,18 @@ def beats(a: dict[str, float], b: dict[str, float]) -> tuple[bool, int]:
     return above, better
 
 
+def over_the_bar(ev: Evidence, margin: float) -> bool:
+    """``ev`` failed the rule on the scatter alone: its mean gain over the bar, every gain
+    finite, no setup lower, but neither the interval nor the sign test above zero. Such a
+    candidate is a rival too: one the winner does not beat test by test is as good an
+    explanation, on the tests, as the winner (sets W and AD: an input delay and a rib
+    stiffening named for a webbing's toe, the truth over the bar on 4 of 6 tests)."""
+    gains = list(ev.test_gain_points.values())
+    return (not ev.accepted and bool(gains) and bool(np.all(np.isfinite(gains)))
+            and ev.gain_points >= margin
+            and min(ev.setup_gain_points.values()) >= -SETUP_TOLERANCE)
+
+
 def judge(before: dict[str, float], after: dict[str, float], setups: dict[str, str],
           scope: list[str] | None, margin: float, stalled: Iterable[str] = ()) -> Evidence:
     """Judge a candidate from the per-test cross-validated fit_TOT [%] without it (``before``)

@@ -32,17 +32,29 @@ class RunnerUp:
     told_apart: bool | None = None
     tests_better: int | None = None
     passes_rule: bool | None = None
+    # whether it failed the rule on the scatter alone, its mean over the bar
+    # (evidence.over_the_bar); None in reports written before 2026-11-30
+    over_bar: bool | None = None
 
     def as_dict(self) -> dict[str, Any]:
         return {"kind": self.kind, "scope": self.scope, "cv_fit": self.cv_fit,
                 **({"told_apart": self.told_apart, "tests_better": self.tests_better,
-                    "passes_rule": self.passes_rule} if self.told_apart is not None else {})}
+                    "passes_rule": self.passes_rule} if self.told_apart is not None else {}),
+                **({"over_bar": self.over_bar} if self.over_bar is not None else {})}
 
     @property
     def rival(self) -> bool:
-        """The runner-up passes the rule too and the data cannot tell it from the accepted
-        effect: the accepted one is then one of two explanations, not a finding on its own."""
-        return bool(self.passes_rule) and self.told_apart is False
+        """The runner-up passes the rule too, or fails it on the scatter alone (since
+        2026-11-30), and the data cannot tell it from the accepted effect: the accepted one is
+        then one of two explanations, not a finding on its own."""
+        return (bool(self.passes_rule) or bool(self.over_bar)) and self.told_apart is False
+
+    @property
+    def standing(self) -> str:
+        """What the runner-up's own evidence is, in words."""
+        return ("passes the rule too" if self.passes_rule else
+                "gains over the bar too, failing the rule on the scatter alone" if self.over_bar
+                else "does not pass the rule")
 
 
 @dataclass(frozen=True)

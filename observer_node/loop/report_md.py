@@ -108,11 +108,11 @@ def _markdown_effect(e: AcceptedEffect, carried: bool = False) -> list[str]:
             n = len(ev.rule.test_gain_points)
             rival += (f"; {e.kind} fits better on {ru.tests_better} of {n} estimation tests, "
                       + ("above the scatter" if ru.told_apart else "not above the scatter")
-                      + (f"; {ru.kind} passes the rule too, and the two were judged "
+                      + (f"; {ru.kind} {ru.standing}, and the two were judged "
                          f"each beside the other: {ev.tie}" if ru.rival and ev.tie else
-                         f"; **{ru.kind} passes the rule too: the data cannot tell the two "
+                         f"; **{ru.kind} {ru.standing}: the data cannot tell the two "
                          "apart**" if ru.rival else
-                         "" if ru.passes_rule else f"; {ru.kind} does not pass the rule"))
+                         "" if ru.passes_rule else f"; {ru.kind} {ru.standing}"))
     if ev.other_scope is not None:
         os_ = ev.other_scope
         rival += (("\n" if rival else "") + f"- on {os_.scope} instead it "

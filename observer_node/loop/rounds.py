@@ -35,6 +35,7 @@ from .evidence import (
     PastTheTie,
     beats,
     judge,
+    over_the_bar,
     past_the_tie,
     tell_apart,
 )
@@ -287,7 +288,8 @@ def _picked(c: Context, st: State, step: LoopStep, tried: list[Tried], passing: 
     (cv_best, best, ev_best), narrower = defended_scope(passing, on_judged, c.thin,
                                                         c.est_setups)
     runner_up, margin_points, other_scope = runner_up_of(
-        [(cv_best, best, ev_best), *(t for t in tried if t[1] is not best)], on_judged)
+        [(cv_best, best, ev_best), *(t for t in tried if t[1] is not best)], on_judged,
+        c.margin)
     tie = untold(best.kind, runner_up, len(ev_best.test_gain_points))
     tie_note: str | None = None
     carrying = False
@@ -328,7 +330,7 @@ def _picked(c: Context, st: State, step: LoopStep, tried: list[Tried], passing: 
                           and t[1] is not rival[1])], on_judged, c.thin, c.est_setups)
             runner_up, margin_points, other_scope = runner_up_of(
                 [(cv_best, best, ev_best), *(t for t in tried if t[1] is not best)],
-                on_judged)
+                on_judged, c.margin)
         elif past.named == "both":  # the other is tried again in the next round
             st.carry.append(rival[1])
     return _Pick(cv_best, best, ev_best, narrower, runner_up, margin_points, other_scope,
@@ -342,7 +344,7 @@ def _other_side(c: Context, tried: list[Tried], passing: list[Tried], rival: Tri
         [rival, *(t for t in passing if t[1].kind == rival[1].kind and t[1] is not rival[1])],
         on_judged, c.thin, c.est_setups)
     runner_up, margin, other_scope = runner_up_of(
-        [(cv, best, ev), *(t for t in tried if t[1] is not best)], on_judged)
+        [(cv, best, ev), *(t for t in tried if t[1] is not best)], on_judged, c.margin)
     return _Pick(cv, best, ev, narrower, runner_up, margin, other_scope, None, carrying=False)
 
 
@@ -463,7 +465,8 @@ def _told(c: Context, st: State, pick: _Pick, fit: Refit
             # on the estimation tests, as any runner-up (their gains share the model before)
             apart, better = beats(won.ev.test_gain_points, lost.ev.test_gain_points)
             runner_up = RunnerUp(lost.best.kind, scope_label(lost.best.setups),
-                                 round(lost.cv, 2), apart, better, True)
+                                 round(lost.cv, 2), apart, better, lost.ev.accepted,
+                                 over_the_bar(lost.ev, c.margin))
             return won._replace(carrying=False, told=True, other_side=None, tie_note=note,
                                 runner_up=runner_up,
                                 margin_points=round(won.cv - lost.cv, 2),

@@ -13,7 +13,7 @@ import numpy as np
 from ..ident.metrics import Fits, FitTable
 from ..model.effects import EFFECTS
 from .analysis import DELAY_MAX_S, Candidate, scope_label
-from .evidence import Evidence, PastTheTie, beats
+from .evidence import Evidence, PastTheTie, beats, over_the_bar
 from .refit import finite
 from .report import OtherScope, RunnerUp, SetupValidation
 
@@ -48,22 +48,26 @@ def defended_scope(passing: list[tuple[float, Candidate, Evidence]],
 
 
 def runner_up_of(tried: list[tuple[float, Candidate, Evidence]],
-           per_test: dict[int, dict[str, float]]
-           ) -> tuple[RunnerUp | None, float | None, OtherScope | None]:
-    """The runner-up (the best of another kind that passes the rule, else the best of another
-    kind: one that fails the rule must not hide a rival that passes), whether the winner beats
-    it test by test above the scatter and whether it passes the rule itself, the margin
+                 per_test: dict[int, dict[str, float]], margin_points: float
+                 ) -> tuple[RunnerUp | None, float | None, OtherScope | None]:
+    """The runner-up (the best of another kind that passes the rule, else the best that fails
+    it on the scatter alone, its mean over the bar ``margin_points``, else the best of another
+    kind: a weaker one must not hide a rival), whether the winner beats it test by test above
+    the scatter and whether it passes the rule itself, the margin
     [points] to it, and the winner on its other scope; ``tried``: (cv fit_TOT [%],
     candidate, its evidence), the winner first; ``per_test``: each candidate's per-test
     cross-validated fit_TOT [%] by ``id``."""
     cv_best, best, _ = tried[0]
     runner_up, margin, other_scope = None, None, None
     others = [(cv, c, ev) for cv, c, ev in tried if c.kind != best.kind]
-    other = next((o for o in others if o[2].accepted), others[0] if others else None)
+    near = [o for o in others if over_the_bar(o[2], margin_points)]
+    other = next((o for o in others if o[2].accepted),
+                 near[0] if near else others[0] if others else None)
     if other is not None:
         told_apart, better = beats(per_test[id(best)], per_test[id(other[1])])
         runner_up = RunnerUp(other[1].kind, scope_label(other[1].setups), round(other[0], 2),
-                             told_apart, better, other[2].accepted)
+                             told_apart, better, other[2].accepted,
+                             over_the_bar(other[2], margin_points))
         margin = round(cv_best - other[0], 2)
     scope = next(((cv, c) for cv, c, _ in tried if c.kind == best.kind and c is not best),
                  None)
@@ -75,16 +79,17 @@ def runner_up_of(tried: list[tuple[float, Candidate, Evidence]],
 
 def untold(kind: str, runner_up: RunnerUp | None, n_tests: int) -> str | None:
     """Why ``kind`` cannot be named on the test-by-test comparison alone: its runner-up of
-    another kind passes the rule too and ``kind`` does not beat it above the scatter (None
-    when it does, or the runner-up fails the rule). Named with a "?" until 2026-11-25 (of
+    another kind passes the rule too, or fails it on the scatter alone (since 2026-11-30), and
+    ``kind`` does not beat it above the scatter (None when it does, or the runner-up is
+    weaker). Named with a "?" until 2026-11-25 (of
     five such names on held-out sets D and E, three were effects not there: a coin flip);
     then not named at all, which cost three right names on set G and two of the library's
     held-out cases (docs/loop.md). Since then the loop looks past the tie
     (:func:`~observer_node.loop.evidence.past_the_tie`): each effect beside the other."""
     if runner_up is None or not runner_up.rival:
         return None
-    return (f"the data cannot tell it from {runner_up.kind} on {runner_up.scope}, which passes "
-            f"the rule too ({kind} fits better on {runner_up.tests_better} of {n_tests} "
+    return (f"the data cannot tell it from {runner_up.kind} on {runner_up.scope}, which "
+            f"{runner_up.standing} ({kind} fits better on {runner_up.tests_better} of {n_tests} "
             "estimation tests, not above the scatter)")
 
 
