@@ -4,6 +4,7 @@ and the broken test really broken."""
 
 from __future__ import annotations
 
+import importlib
 import json
 import re
 import shutil
@@ -35,15 +36,10 @@ from benchmarks.heldout import (
 from benchmarks.heldout import sets as heldout_sets
 from benchmarks.heldout.cases import BY_NAME
 from benchmarks.heldout.cases_aa import BY_NAME_AA, ONE_PHYSICAL_AA
-from benchmarks.heldout.cases_aa import SET_AA as SET_AA_FILE
 from benchmarks.heldout.cases_ab import BY_NAME_AB, ONE_PHYSICAL_AB
-from benchmarks.heldout.cases_ab import SET_AB as SET_AB_FILE
 from benchmarks.heldout.cases_ac import BY_NAME_AC, ONE_PHYSICAL_AC
-from benchmarks.heldout.cases_ac import SET_AC as SET_AC_FILE
 from benchmarks.heldout.cases_ad import BY_NAME_AD, ONE_PHYSICAL_AD
-from benchmarks.heldout.cases_ad import SET_AD as SET_AD_FILE
 from benchmarks.heldout.cases_ae import BY_NAME_AE, ONE_PHYSICAL_AE
-from benchmarks.heldout.cases_ae import SET_AE as SET_AE_FILE
 from benchmarks.heldout.cases_p import BY_NAME_P
 from benchmarks.heldout.cases_q import BY_NAME_Q
 from benchmarks.heldout.cases_r import BY_NAME_R
@@ -53,11 +49,8 @@ from benchmarks.heldout.cases_u import BY_NAME_U, ONE_PHYSICAL_U, ORDINARY_U
 from benchmarks.heldout.cases_v import BY_NAME_V, ONE_PHYSICAL_V
 from benchmarks.heldout.cases_w import BY_NAME_W, ONE_PHYSICAL_W
 from benchmarks.heldout.cases_x import BY_NAME_X, ONE_PHYSICAL_X
-from benchmarks.heldout.cases_x import SET_X as SET_X_FILE
 from benchmarks.heldout.cases_y import BY_NAME_Y, ONE_PHYSICAL_Y
-from benchmarks.heldout.cases_y import SET_Y as SET_Y_FILE
 from benchmarks.heldout.cases_z import BY_NAME_Z, ONE_PHYSICAL_Z
-from benchmarks.heldout.cases_z import SET_Z as SET_Z_FILE
 from observer_node.data import CrashDataError, load_tests
 from observer_node.data.isomme import read_isomme
 from observer_node.data.setups import assign_setups
@@ -3437,15 +3430,6 @@ def set_x(tmp_path_factory: pytest.TempPathFactory) -> Path:
     return _generate(tmp_path_factory, "x", WATCHED_X)
 
 
-def test_set_x_is_registered(tmp_path: Path) -> None:
-    """Set X is ``cases_x.SET_X`` under the letter x, for sets.select, make_sets and costs."""
-    assert "x" in heldout_sets.SETS and SET_X == SET_X_FILE
-    assert heldout_sets.select(["hx_clean48"], "x") == [BY_NAME_X["hx_clean48"]]
-    assert make_sets.main(["--set", "x", "--case", "hx_clean48", "--out", str(tmp_path)]) == 0
-    truth = json.loads((tmp_path / "hx_clean48" / "truth.json").read_text())
-    assert truth["case"]["name"] == "hx_clean48" and len(truth["tests"]) == 12
-
-
 def test_set_x_is_new() -> None:
     """Set X's names, seeds (33xxx), pairings and effect sizes (a switch's aside) are none of
     sets A-W's; its forms are drawn among every set's (so may be an earlier set's)."""
@@ -3559,15 +3543,6 @@ REDRAWN_Y = [*(("two", s) for s in range(34001, 34015)), ("belt_unloading", 3401
 @pytest.fixture(scope="module")
 def set_y(tmp_path_factory: pytest.TempPathFactory) -> Path:
     return _generate(tmp_path_factory, "y", WATCHED_Y)
-
-
-def test_set_y_is_registered(tmp_path: Path) -> None:
-    """Set Y is ``cases_y.SET_Y`` under the letter y, for sets.select, make_sets and costs."""
-    assert "y" in heldout_sets.SETS and SET_Y == SET_Y_FILE
-    assert heldout_sets.select(["hy_clean48"], "y") == [BY_NAME_Y["hy_clean48"]]
-    assert make_sets.main(["--set", "y", "--case", "hy_clean48", "--out", str(tmp_path)]) == 0
-    truth = json.loads((tmp_path / "hy_clean48" / "truth.json").read_text())
-    assert truth["case"]["name"] == "hy_clean48" and len(truth["tests"]) == 12
 
 
 def test_set_y_is_new() -> None:
@@ -3685,15 +3660,6 @@ TWO_Z = "hz_two_lock_sled_set_full"
 @pytest.fixture(scope="module")
 def set_z(tmp_path_factory: pytest.TempPathFactory) -> Path:
     return _generate(tmp_path_factory, "z", WATCHED_Z)
-
-
-def test_set_z_is_registered(tmp_path: Path) -> None:
-    """Set Z is ``cases_z.SET_Z`` under the letter z, for sets.select, make_sets and costs."""
-    assert "z" in heldout_sets.SETS and SET_Z == SET_Z_FILE
-    assert heldout_sets.select(["hz_clean48"], "z") == [BY_NAME_Z["hz_clean48"]]
-    assert make_sets.main(["--set", "z", "--case", "hz_clean48", "--out", str(tmp_path)]) == 0
-    truth = json.loads((tmp_path / "hz_clean48" / "truth.json").read_text())
-    assert truth["case"]["name"] == "hz_clean48" and len(truth["tests"]) == 12
 
 
 def test_set_z_is_new() -> None:
@@ -3819,16 +3785,20 @@ def set_aa(tmp_path_factory: pytest.TempPathFactory) -> Path:
     return _generate(tmp_path_factory, "aa", WATCHED_AA)
 
 
-def test_set_aa_is_registered(tmp_path: Path) -> None:
-    """Set AA is ``cases_aa.SET_AA`` under the letters aa, for sets.select, make_sets and
-    costs (the first set named by two letters)."""
-    assert "aa" in heldout_sets.SETS and SET_AA == SET_AA_FILE
-    assert heldout_sets.select(["haa_clean48"], "aa") == [BY_NAME_AA["haa_clean48"]]
-    assert make_sets.main(["--set", "aa", "--case", "haa_clean48", "--out", str(tmp_path)]) == 0
-    truth = json.loads((tmp_path / "haa_clean48" / "truth.json").read_text())
-    assert truth["case"]["name"] == "haa_clean48" and len(truth["tests"]) == 12
-    assert make_sets.main(["--set", "AA", "--case", "haa_clean48",
-                           "--out", str(tmp_path / "upper")]) == 0
+@pytest.mark.parametrize("letters", ["x", "y", "z", "aa", "ab", "ac", "ad", "ae"])
+def test_a_drawn_set_is_registered(letters: str, tmp_path: Path) -> None:
+    """Sets X-AE: each is its ``cases_<letters>.SET_<LETTERS>`` under its letters (either
+    case), for sets.select, make_sets and costs, after every set before it."""
+    own = getattr(importlib.import_module(f"benchmarks.heldout.cases_{letters}"),
+                  f"SET_{letters.upper()}")
+    assert heldout_sets.case_set(letters) == own
+    assert heldout_sets.before(letters) == heldout_sets.SETS[:heldout_sets.SETS.index(letters)]
+    clean = f"h{letters}_clean48"
+    assert heldout_sets.select([clean], letters) == [c for c in own if c.name == clean]
+    for given, out in ((letters, tmp_path), (letters.upper(), tmp_path / "upper")):
+        assert make_sets.main(["--set", given, "--case", clean, "--out", str(out)]) == 0
+    truth = json.loads((tmp_path / clean / "truth.json").read_text())
+    assert truth["case"]["name"] == clean and len(truth["tests"]) == 12
 
 
 def test_sets_before_are_names_not_letters() -> None:
@@ -3960,20 +3930,6 @@ def set_ab(tmp_path_factory: pytest.TempPathFactory) -> Path:
     return _generate(tmp_path_factory, "ab", WATCHED_AB)
 
 
-def test_set_ab_is_registered(tmp_path: Path) -> None:
-    """Set AB is ``cases_ab.SET_AB`` under the letters ab, for sets.select, make_sets and
-    costs, after set AA (its earlier sets A-AA, by name)."""
-    assert "ab" in heldout_sets.SETS and SET_AB == SET_AB_FILE
-    assert heldout_sets.SETS[26:28] == ("aa", "ab")
-    assert heldout_sets.before("ab") == (*"abcdefghijklmnopqrstuvwxyz", "aa")
-    assert heldout_sets.select(["hab_clean48"], "ab") == [BY_NAME_AB["hab_clean48"]]
-    assert make_sets.main(["--set", "ab", "--case", "hab_clean48", "--out", str(tmp_path)]) == 0
-    truth = json.loads((tmp_path / "hab_clean48" / "truth.json").read_text())
-    assert truth["case"]["name"] == "hab_clean48" and len(truth["tests"]) == 12
-    assert make_sets.main(["--set", "AB", "--case", "hab_clean48",
-                           "--out", str(tmp_path / "upper")]) == 0
-
-
 def test_set_ab_is_new() -> None:
     """Set AB's names, seeds (37xxx), pairings and effect sizes (a switch's aside) are none of
     sets A-AA's, but the two-effect case's pairing (an earlier set's, by draw_ab's rule); its
@@ -4071,20 +4027,6 @@ TWO_AC = "hac_two_friction_r16_full_lock_sled"
 @pytest.fixture(scope="module")
 def set_ac(tmp_path_factory: pytest.TempPathFactory) -> Path:
     return _generate(tmp_path_factory, "ac", WATCHED_AC)
-
-
-def test_set_ac_is_registered(tmp_path: Path) -> None:
-    """Set AC is ``cases_ac.SET_AC`` under the letters ac, for sets.select, make_sets and
-    costs, after set AB (its earlier sets A-AB, by name)."""
-    assert "ac" in heldout_sets.SETS and SET_AC == SET_AC_FILE
-    assert heldout_sets.SETS[26:29] == ("aa", "ab", "ac")
-    assert heldout_sets.before("ac") == (*"abcdefghijklmnopqrstuvwxyz", "aa", "ab")
-    assert heldout_sets.select(["hac_clean48"], "ac") == [BY_NAME_AC["hac_clean48"]]
-    assert make_sets.main(["--set", "ac", "--case", "hac_clean48", "--out", str(tmp_path)]) == 0
-    truth = json.loads((tmp_path / "hac_clean48" / "truth.json").read_text())
-    assert truth["case"]["name"] == "hac_clean48" and len(truth["tests"]) == 12
-    assert make_sets.main(["--set", "AC", "--case", "hac_clean48",
-                           "--out", str(tmp_path / "upper")]) == 0
 
 
 def test_set_ac_is_new() -> None:
@@ -4187,20 +4129,6 @@ def set_ad(tmp_path_factory: pytest.TempPathFactory) -> Path:
     return _generate(tmp_path_factory, "ad", WATCHED_AD)
 
 
-def test_set_ad_is_registered(tmp_path: Path) -> None:
-    """Set AD is ``cases_ad.SET_AD`` under the letters ad, for sets.select, make_sets and
-    costs, after set AC (its earlier sets A-AC, by name)."""
-    assert "ad" in heldout_sets.SETS and SET_AD == SET_AD_FILE
-    assert heldout_sets.SETS[26:30] == ("aa", "ab", "ac", "ad")
-    assert heldout_sets.before("ad") == (*"abcdefghijklmnopqrstuvwxyz", "aa", "ab", "ac")
-    assert heldout_sets.select(["had_clean48"], "ad") == [BY_NAME_AD["had_clean48"]]
-    assert make_sets.main(["--set", "ad", "--case", "had_clean48", "--out", str(tmp_path)]) == 0
-    truth = json.loads((tmp_path / "had_clean48" / "truth.json").read_text())
-    assert truth["case"]["name"] == "had_clean48" and len(truth["tests"]) == 12
-    assert make_sets.main(["--set", "AD", "--case", "had_clean48",
-                           "--out", str(tmp_path / "upper")]) == 0
-
-
 def test_set_ad_is_new() -> None:
     """Set AD's names, seeds (39xxx), pairings and effect sizes (a switch's aside) are none of
     sets A-AC's, but the two-effect case's pairing (an earlier set's, by draw_ad's rule); its
@@ -4300,20 +4228,6 @@ TWO_AE = "hae_two_set_full_fabric_sled"
 @pytest.fixture(scope="module")
 def set_ae(tmp_path_factory: pytest.TempPathFactory) -> Path:
     return _generate(tmp_path_factory, "ae", WATCHED_AE)
-
-
-def test_set_ae_is_registered(tmp_path: Path) -> None:
-    """Set AE is ``cases_ae.SET_AE`` under the letters ae, for sets.select, make_sets and
-    costs, after set AD (its earlier sets A-AD, by name)."""
-    assert "ae" in heldout_sets.SETS and SET_AE == SET_AE_FILE
-    assert heldout_sets.SETS[-5:] == ("aa", "ab", "ac", "ad", "ae")
-    assert heldout_sets.before("ae") == (*"abcdefghijklmnopqrstuvwxyz", "aa", "ab", "ac", "ad")
-    assert heldout_sets.select(["hae_clean48"], "ae") == [BY_NAME_AE["hae_clean48"]]
-    assert make_sets.main(["--set", "ae", "--case", "hae_clean48", "--out", str(tmp_path)]) == 0
-    truth = json.loads((tmp_path / "hae_clean48" / "truth.json").read_text())
-    assert truth["case"]["name"] == "hae_clean48" and len(truth["tests"]) == 12
-    assert make_sets.main(["--set", "AE", "--case", "hae_clean48",
-                           "--out", str(tmp_path / "upper")]) == 0
 
 
 def test_set_ae_is_new() -> None:
