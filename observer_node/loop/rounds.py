@@ -208,9 +208,9 @@ def _cross_validated(c: Context, st: State, ranked: list[Candidate]
         cvs = held_out_fits(c.runner, [(st.base, [*st.effects, t.effect()]) for t in trials],
                             c.est, c.folds)
         for (_, raw), t in zip(cvs, trials, strict=True):
+            ev = _judge_folds(st.cv_now, raw, c.test_setup, t.setups, c.margin)
             cv = where_stalled(raw, st.cv_now)
-            tried.append((_mean(cv), t, judge(st.cv_now, cv, c.test_setup, t.setups,
-                                              c.margin, stalled_in(raw))))
+            tried.append((_mean(cv), t, ev))
             per_test[id(t)] = cv
         if any(ev.accepted for _, _, ev in tried):
             break
@@ -595,6 +595,13 @@ def fit3(t: FitTable) -> dict[str, float]:
     return {k: round(float(v), 2) for k, v in t.fit.as_dict().items()}
 
 
+def _judge_folds(before: dict[str, float], raw: dict[str, float], setups: dict[str, str],
+                 scope: list[str] | None, margin: float) -> Evidence:
+    """:func:`~.evidence.judge` on a candidate's per-test held-out fits as its folds gave
+    them: a stalled fold's tests (NaN) count ``before``'s fit, no gain, and are listed."""
+    return judge(before, where_stalled(raw, before), setups, scope, margin, stalled_in(raw))
+
+
 def _mean(per_test: dict[str, float]) -> float:
     return float(np.mean(list(per_test.values())))
 
@@ -679,8 +686,7 @@ def _other_output(runner: Runner, base: dict, effects: list[dict], data: Dataset
         b0, e0 = starts[0]
         own = score(b0, e0, data).tests
         now = where_stalled(now, {n: finite(getattr(v, o2)) for n, v in own.items()})
-    ev = judge(now, where_stalled(with_c, now), test_setup, c.setups, margin,
-               stalled_in(with_c))
+    ev = _judge_folds(now, with_c, test_setup, c.setups, margin)
     return (c, ev) if ev.accepted else None
 
 
@@ -730,8 +736,7 @@ def _sensor_candidates(runner: Runner, base: dict, effects: list[dict], data: Da
     stalled fold's tests at ``cv_now``: no gain)."""
     res = runner.map(_sensor_fold, [(base, effects, data, tr, te) for tr, te in folds_])
     raw = {o: {n: v for r in res for n, v in r[o].items()} for o in res[0]}
-    return {o: judge(cv_now, where_stalled(cv, cv_now), test_setup, None, margin, stalled_in(cv))
-            for o, cv in raw.items()}
+    return {o: _judge_folds(cv_now, cv, test_setup, None, margin) for o, cv in raw.items()}
 
 
 def _with_widest_scope(c: Candidate, options: list[list[str] | None]) -> list[Candidate]:
