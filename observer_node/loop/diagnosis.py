@@ -26,7 +26,7 @@ import numpy as np
 
 from ..ident.dataset import Dataset
 from ..ident.metrics import OUTPUT_NAMES, fit_percent
-from .refit import FOLD_NFEV, STALLED, model, refit_from
+from .refit import FOLD_NFEV, model, refit_from, stalled_by_output
 
 SHAPES = {"static": "a static function of {o} (a transducer's non-linearity: its error grows "
                     "with the value)",
@@ -136,8 +136,7 @@ def sensor_fold_scores(base: dict, effects: list[dict], data: Dataset, train: li
     on them too."""
     r = refit_from(base, effects, data.subset(train), max_nfev)
     if not r.moved:
-        names = data.subset(test).names
-        return {o: dict.fromkeys(names, STALLED) for o in OUTPUT_NAMES}
+        return stalled_by_output(data.subset(test).names)
     tr, te = data.subset(train), data.subset(test)
     with np.errstate(all="ignore"):
         yh_tr = model(r.base, r.effects, tr).simulate(tr.pulse_g, tr.brs_rad)

@@ -15,7 +15,7 @@ from scipy import optimize
 
 from ..ident.dataset import Dataset
 from ..ident.greybox import FREE, STARTS
-from ..ident.metrics import Fits, FitTable, fit_table
+from ..ident.metrics import OUTPUT_NAMES, Fits, FitTable, fit_table
 from ..model.effects import EFFECTS
 from ..model.nonlinear import NonlinearGreyBox, simulate_many
 from .analysis import weights, within_free, within_value
@@ -280,11 +280,17 @@ def fold_scores_by_output(base: dict, effects: list[dict], data: Dataset, train:
     a stalled fold's tests NaN (``STALLED``) in both, as there."""
     r = refit_from(base, effects, data.subset(train), max_nfev)
     if not r.moved:
-        names = data.subset(test).names
-        return {"cr": dict.fromkeys(names, STALLED), "cd": dict.fromkeys(names, STALLED)}
+        return stalled_by_output(data.subset(test).names)
     t = score(r.base, r.effects, data.subset(test)).tests
     return {"cr": {n: finite(v.cr) for n, v in t.items()},
             "cd": {n: finite(v.cd) for n, v in t.items()}}
+
+
+def stalled_by_output(names: Iterable[str]) -> dict[str, dict[str, float]]:
+    """Each output's fits of a stalled fold's tests: NaN (``STALLED``), as
+    :func:`fold_scores` gives them."""
+    names = list(names)
+    return {o: dict.fromkeys(names, STALLED) for o in OUTPUT_NAMES}
 
 
 def finite(v: float) -> float:
