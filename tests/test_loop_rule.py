@@ -969,6 +969,21 @@ def test_a_test_far_below_the_others_is_an_outlier():
     assert residual_outliers({**fits, "E": 84.0}) == []
 
 
+def test_a_test_low_with_its_rig_is_not_an_outlier():
+    # set AE's dual-stage airbag on FULL: FULL_001 fell 20.2 points under the others' median,
+    # but its FULL mate fell too (an effect of the rig the grey-box lacks); set Z's swapped
+    # spool, SLED_005, lay as far below its SLED mates as below everyone
+    ae = {"FULL_001": 68.9, "FULL_003": 84.2, "R16_001": 89.8, "R16_003": 89.1,
+          "R16_005": 90.8, "R16_007": 87.5}
+    ae_rigs = {n: n.split("_")[0] for n in ae}
+    assert [b.test for b in residual_outliers(ae)] == ["FULL_001"]
+    assert residual_outliers(ae, (), ae_rigs) == []
+    z = {"R16_001": 90.6, "R16_003": 83.3, "SLED_001": 90.8, "SLED_003": 88.5,
+         "SLED_005": 65.6, "SLED_007": 83.6}
+    (b,) = residual_outliers(z, (), {n: n.split("_")[0] for n in z})
+    assert b.test == "SLED_005" and "its setup's other tests' 88.5 %" in b.reason
+
+
 def test_the_only_test_of_its_setup_is_judged_in_sample():
     # left out, the only R16 test is predicted by a model that never saw the R16 rig (set J:
     # 65.8 % against 87.7): judged by the fit made with it; a test whose rig the others share

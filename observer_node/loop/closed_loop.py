@@ -151,7 +151,7 @@ def _screened(est_tests: list[CrashTest], val_tests: list[CrashTest], rate_hz: f
                                                   folds_)[0]
     fitted = {n: v.total for n, v in score(dict(gb.params), [], est).tests.items()}
     setup_of = dict(zip(est.names, est.setups, strict=True))
-    outliers = residual_outliers(*judged_fits(cv0 or {}, fitted, setup_of))
+    outliers = residual_outliers(*judged_fits(cv0 or {}, fitted, setup_of), setup_of)
     if outliers and est.n_tests - len(outliers) >= 2:
         broken += outliers
         left_out |= {b.test for b in outliers}
@@ -165,7 +165,9 @@ def _screened(est_tests: list[CrashTest], val_tests: list[CrashTest], rate_hz: f
     # against them and the other validation tests: it never chose anything, but a broken one
     # would bend the fits the report gives and the refusal reads.
     val_fits = {n: v.total for n, v in score(dict(gb.params), [], val).tests.items()}
-    val_out = [b for b in residual_outliers({**cv_now, **val_fits}) if b.test in val_fits]
+    setup_of |= dict(zip(val.names, val.setups, strict=True))
+    val_out = [b for b in residual_outliers({**cv_now, **val_fits}, (), setup_of)
+               if b.test in val_fits]
     if val_out and val.n_tests > len(val_out):
         broken += val_out
         left_out |= {b.test for b in val_out}
