@@ -3,6 +3,7 @@ had: same keys, same order (report.json is compared byte for byte between versio
 
 from __future__ import annotations
 
+import dataclasses
 import json
 from pathlib import Path
 
@@ -28,6 +29,8 @@ from observer_node.loop.report import (
     SetupValidation,
     TriedCandidate,
 )
+from observer_node.loop.report_md import markdown
+from observer_node.loop.screening import low_with_rig
 
 EXAMPLE = Path(__file__).parent.parent / "observer_node" / "examples" / "bench-loop"
 
@@ -214,3 +217,19 @@ def test_evidence_png_draws_each_round_as_the_rule_reads_it(
     assert plots.EVIDENCE_FLOOR_POINTS - 5 < drawn[0][0] < 0 < 2.0 < drawn[0][1] < 100
     # a loop that ran no round still gets its figure
     assert plots.loop_evidence(tmp_path / "none.png", [], {}, 1.0).stat().st_size > 0
+
+
+def test_a_test_low_with_its_rig_is_said_and_kept(r16_loop) -> None:
+    # far below the others but not below its rig's other tests: not left out (warnings),
+    # but said in report.md and report.json, so the engineer looks before reading that rig
+    _, r = r16_loop
+    assert "low_with_rig" not in r.as_dict()
+    (low,) = low_with_rig({"R16_001": 90.0, "R16_003": 89.0, "F1": 66.0, "F2": 70.0,
+                           "S1": 91.0}, {"R16_001": "R16", "R16_003": "R16", "F1": "FULL",
+                                         "F2": "FULL", "S1": "SLED"})
+    assert low.test == "F1" and "its setup's other tests' 70.0 %" in low.reason
+    said = dataclasses.replace(r, low_with_rig=[low])
+    assert said.as_dict()["low_with_rig"] == [low.as_dict()]
+    md = markdown(said)
+    assert "## Tests far below the others, low with their rig (kept in the fits)" in md
+    assert f"| F1 | {low.reason} |" in md and "kept in the fits" in low.reason

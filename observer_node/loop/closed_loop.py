@@ -71,6 +71,7 @@ from .screening import (
     BrokenTest,
     broken_before_fit,
     judged_fits,
+    low_with_rig,
     residual_outliers,
 )
 
@@ -123,6 +124,7 @@ class _Screened(NamedTuple):
     est_kept: list[CrashTest]
     folds: list[tuple[list[int], list[int]]]
     cv_now: dict[str, float]  # the grey-box's cross-validated fit_TOT [%] per test
+    low: list[BrokenTest]  # far below the others but low with their rig: kept, and said
 
 
 def _screened(est_tests: list[CrashTest], val_tests: list[CrashTest], rate_hz: float,
@@ -151,7 +153,9 @@ def _screened(est_tests: list[CrashTest], val_tests: list[CrashTest], rate_hz: f
                                                   folds_)[0]
     fitted = {n: v.total for n, v in score(dict(gb.params), [], est).tests.items()}
     setup_of = dict(zip(est.names, est.setups, strict=True))
-    outliers = residual_outliers(*judged_fits(cv0 or {}, fitted, setup_of), setup_of)
+    judged_est = judged_fits(cv0 or {}, fitted, setup_of)
+    outliers = residual_outliers(*judged_est, setup_of)
+    low = low_with_rig(judged_est[0], setup_of)
     if outliers and est.n_tests - len(outliers) >= 2:
         broken += outliers
         left_out |= {b.test for b in outliers}
@@ -168,12 +172,13 @@ def _screened(est_tests: list[CrashTest], val_tests: list[CrashTest], rate_hz: f
     setup_of |= dict(zip(val.names, val.setups, strict=True))
     val_out = [b for b in residual_outliers({**cv_now, **val_fits}, (), setup_of)
                if b.test in val_fits]
+    low += [b for b in low_with_rig({**cv_now, **val_fits}, setup_of) if b.test in val_fits]
     if val_out and val.n_tests > len(val_out):
         broken += val_out
         left_out |= {b.test for b in val_out}
         val_kept = [t for t in val_kept if t.name not in left_out]
         val = make_dataset(val_kept, rate_hz, window_s)
-    return _Screened(est, val, gb, broken, est_kept, folds_, cv_now)
+    return _Screened(est, val, gb, broken, est_kept, folds_, cv_now, low)
 
 
 def run_loop(est_tests: list[CrashTest], val_tests: list[CrashTest], out: Path,
@@ -249,7 +254,7 @@ def _run(est_tests: list[CrashTest], val_tests: list[CrashTest], out: Path, rate
         possible=sorted(st.possible, key=lambda p: -round(p.evidence.gain_points, 3)),
         sensor_effects=[st.sensor] if st.sensor else [],
         unexplained=st.left_unexplained or ([] if st.sensor else unexplained(est, y_named)),
-        warnings=broken,
+        warnings=broken, low_with_rig=scr.low,
         left_out=_with_and_without(broken, base, effects, est_tests, val_tests, scr.est_kept,
                                    val, rate_hz, window_s),
         final=ModelFit(Fits(**fit3(final_val)), base, st.base_se),

@@ -417,6 +417,9 @@ class LoopReport:
     carried: list[AcceptedEffect] = field(default_factory=list)
     # Setups where the final model's belt pushes the chest (absent from report.json when none)
     belt_pushes: list[BeltPush] = field(default_factory=list)
+    # Tests far below the others whose rig is low with them: kept in the fits (absent from
+    # report.json when none)
+    low_with_rig: list[BrokenTest] = field(default_factory=list)
 
     def as_dict(self) -> dict[str, Any]:
         return {
@@ -428,6 +431,8 @@ class LoopReport:
             **({"belt_pushes": [b.as_dict() for b in self.belt_pushes]}
                if self.belt_pushes else {}),
             "warnings": [w.as_dict() for w in self.warnings],
+            **({"low_with_rig": [w.as_dict() for w in self.low_with_rig]}
+               if self.low_with_rig else {}),
             "left_out": self.left_out.as_dict() if self.left_out is not None else {},
             "final": self.final.as_dict(),
             "setups": [s.as_dict() for s in self.setups],

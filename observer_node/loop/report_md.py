@@ -163,6 +163,13 @@ def _markdown_findings(r: LoopReport) -> list[str]:
                 lines.append("- scored on the left-out validation tests too: "
                              + _pct(lo.validation_fit_with_them))
         lines.append("")
+    if r.low_with_rig:
+        lines += ["## Tests far below the others, low with their rig (kept in the fits)", "",
+                  "The grey-box may lack something on that rig; or its tests are broken "
+                  "alike. Look at them before reading an effect on that rig.", "",
+                  "| test | why kept |", "|---|---|"]
+        lines += [f"| {w.test} | {w.reason} |" for w in r.low_with_rig]
+        lines.append("")
     for s in r.sensor_effects:
         lines += ["## Sensor effect (not physics)", "",
                   f"- **{s.output.upper()}**: {s.looks_like}",

@@ -1431,12 +1431,9 @@ def judged_fits(left_out: dict[str, float], in_sample: dict[str, float],
     return {n: in_sample[n] if n in lone else f for n, f in left_out.items()}, lone
 
 
-def residual_outliers(fit_total: dict[str, float], in_sample: Collection[str] = (),
-                      setups: Mapping[str, str] | None = None) -> list[BrokenTest]:
-    """Tests whose fit_TOT [%] lies far below the others' (see the module's docstring);
-    ``in_sample``: the tests whose fit is the model's fitted with them; ``setups``: each
-    test's setup, so that a test with setup-mates is judged against them too."""
-    setups = setups or {}
+def _far_below(fit_total: dict[str, float]) -> list[tuple[str, float, float, float]]:
+    """(test, its fit, the others' median, their robust scatter) [%] for each test far below
+    the others (20 points and 4 robust deviations); none among fewer than four tests."""
     out = []
     for name, f in fit_total.items():
         rest = np.array([v for n, v in fit_total.items() if n != name])
@@ -1444,10 +1441,24 @@ def residual_outliers(fit_total: dict[str, float], in_sample: Collection[str] = 
             return []
         med = float(np.median(rest))
         mad = float(median_abs_deviation(rest, scale="normal"))
-        if not (med - f > OUTLIER_POINTS and med - f > OUTLIER_DEVIATIONS * max(mad, 1e-9)):
-            continue
-        rig = setups.get(name)
-        mates = [v for n, v in fit_total.items() if n != name and rig and setups.get(n) == rig]
+        if med - f > OUTLIER_POINTS and med - f > OUTLIER_DEVIATIONS * max(mad, 1e-9):
+            out.append((name, f, med, mad))
+    return out
+
+
+def _mates(name: str, fit_total: dict[str, float], setups: Mapping[str, str]) -> list[float]:
+    rig = setups.get(name)
+    return [v for n, v in fit_total.items() if n != name and rig and setups.get(n) == rig]
+
+
+def residual_outliers(fit_total: dict[str, float], in_sample: Collection[str] = (),
+                      setups: Mapping[str, str] | None = None) -> list[BrokenTest]:
+    """Tests whose fit_TOT [%] lies far below the others' (see the module's docstring);
+    ``in_sample``: the tests whose fit is the model's fitted with them; ``setups``: each
+    test's setup, so that a test with setup-mates is judged against them too."""
+    out = []
+    for name, f, med, mad in _far_below(fit_total):
+        mates = _mates(name, fit_total, setups or {})
         if mates and float(np.median(mates)) - f <= OUTLIER_POINTS:
             continue  # its rig is low with it: an effect of the rig, not a broken test
         how = ("in-sample (the only test of its setup)" if name in in_sample
@@ -1455,4 +1466,19 @@ def residual_outliers(fit_total: dict[str, float], in_sample: Collection[str] = 
         beside = f", its setup's other tests' {np.median(mates):.1f} %" if mates else ""
         out.append(BrokenTest(name, "residual", f"fit_TOT {f:.1f} % {how}, against the "
                               f"others' median {med:.1f} % (robust scatter {mad:.1f}){beside}"))
+    return out
+
+
+def low_with_rig(fit_total: dict[str, float], setups: Mapping[str, str]) -> list[BrokenTest]:
+    """The tests far below the others that :func:`residual_outliers` keeps, their setup's
+    other tests lying within 20 points of them: kept in the fits, and said (the grey-box
+    lacks something on that rig, or the rig's tests are all broken alike)."""
+    out = []
+    for name, f, med, _ in _far_below(fit_total):
+        mates = _mates(name, fit_total, setups)
+        if mates and float(np.median(mates)) - f <= OUTLIER_POINTS:
+            out.append(BrokenTest(name, "residual", f"fit_TOT {f:.1f} % against the others' "
+                                  f"median {med:.1f} %, but its setup's other tests' "
+                                  f"{np.median(mates):.1f} %: read as its rig's physics, "
+                                  "kept in the fits"))
     return out
