@@ -4268,7 +4268,7 @@ BEFORE_AF = _cases_of(heldout_sets.before("af"))
 # the others untouched)
 WATCHED_AF = ("haf_broken_brs_poll", "haf_cr_damped", *ONE_PHYSICAL_AF)
 # the draws found impossible, drawn again by the next seeds in the order found (draw_af.REDRAWN)
-REDRAWN_AF: list[tuple[str, int]] = []
+REDRAWN_AF: list[tuple[str, int]] = [("brs_late", 41001)]
 # the two-effect case, on an earlier set's pairing (none free for it: draw_af's reuse rule)
 TWO_AF = "haf_two_toe_full_bumper_r16_sled"
 
