@@ -24,6 +24,7 @@ from benchmarks.heldout import (
     draw_ac,
     draw_ad,
     draw_ae,
+    draw_af,
     draw_v,
     draw_w,
     draw_x,
@@ -40,6 +41,7 @@ from benchmarks.heldout.cases_ab import BY_NAME_AB, ONE_PHYSICAL_AB
 from benchmarks.heldout.cases_ac import BY_NAME_AC, ONE_PHYSICAL_AC
 from benchmarks.heldout.cases_ad import BY_NAME_AD, ONE_PHYSICAL_AD
 from benchmarks.heldout.cases_ae import BY_NAME_AE, ONE_PHYSICAL_AE
+from benchmarks.heldout.cases_af import BY_NAME_AF, ONE_PHYSICAL_AF
 from benchmarks.heldout.cases_p import BY_NAME_P
 from benchmarks.heldout.cases_q import BY_NAME_Q
 from benchmarks.heldout.cases_r import BY_NAME_R
@@ -3664,8 +3666,8 @@ def _follows_a_reusing_draw(draw_mod: ModuleType, seed: int, earlier: tuple[str,
                             redrawn: list[tuple[str, int]], before: list[cases.Case],
                             two_case: cases.Case) -> None:
     """A set drawn by set W's process from ``seed`` after the sets ``earlier``, its two-effect
-    case reusing a pairing those sets ran (sets Z, AA, AB, AC, AD and AE): the cases follow the
-    draw, and the reused pairing is one the rules allow that no free pairing could replace."""
+    case reusing a pairing those sets ran (sets Z, AA, AB, AC, AD, AE and AF): the cases follow
+    the draw, and the reused pairing is one the rules allow that no free pairing could replace."""
     d = draw_mod.draw(seed)
     assert d == draw_mod.draw()  # reproducible from its seed
     assert earlier == draw_mod.EARLIER and seed == draw_mod.SEED
@@ -3763,9 +3765,9 @@ def set_aa(tmp_path_factory: pytest.TempPathFactory) -> Path:
     return _generate(tmp_path_factory, "aa", WATCHED_AA)
 
 
-@pytest.mark.parametrize("letters", ["x", "y", "z", "aa", "ab", "ac", "ad", "ae"])
+@pytest.mark.parametrize("letters", ["x", "y", "z", "aa", "ab", "ac", "ad", "ae", "af"])
 def test_a_drawn_set_is_registered(letters: str, tmp_path: Path) -> None:
-    """Sets X-AE: each is its ``cases_<letters>.SET_<LETTERS>`` under its letters (either
+    """Sets X-AF: each is its ``cases_<letters>.SET_<LETTERS>`` under its letters (either
     case), for sets.select, make_sets and costs, after every set before it."""
     own = getattr(importlib.import_module(f"benchmarks.heldout.cases_{letters}"),
                   f"SET_{letters.upper()}")
@@ -3790,8 +3792,9 @@ def test_sets_before_are_names_not_letters() -> None:
     assert heldout_sets.before("ac") == (*after_aa, "ab")  # set AC's: A-AB, by name
     assert heldout_sets.before("ad") == (*after_aa, "ab", "ac")  # set AD's: A-AC, by name
     assert heldout_sets.before("ae") == (*after_aa, "ab", "ac", "ad")  # set AE's: A-AD
-    with pytest.raises(ValueError, match="unknown case set 'af'"):
-        heldout_sets.before("af")
+    assert heldout_sets.before("af") == (*after_aa, "ab", "ac", "ad", "ae")  # set AF's: A-AE
+    with pytest.raises(ValueError, match="unknown case set 'ag'"):
+        heldout_sets.before("ag")
     # a draw after AA takes AA's pairings; at this seed, without AA one single draws one of them
     aa = {_pairing(c) for c in SET_AA}
 
@@ -4256,6 +4259,116 @@ def test_set_ae_cd_pot_nonlinear_over_reads_cd_only(set_ae: Path) -> None:
 def test_set_ae_has_no_run_aways(set_ae: Path) -> None:
     _no_run_aways(SET_AE, set_ae)
 
+
+# ------------------------------------------------------------------ set AF (cases_af.py)
+
+SET_AF = heldout_sets.case_set("af")
+BEFORE_AF = _cases_of(heldout_sets.before("af"))
+# the broken test, the transducer error, and every physical case of one effect (its rigs moved,
+# the others untouched)
+WATCHED_AF = ("haf_broken_brs_poll", "haf_cr_damped", *ONE_PHYSICAL_AF)
+# the draws found impossible, drawn again by the next seeds in the order found (draw_af.REDRAWN)
+REDRAWN_AF: list[tuple[str, int]] = [("brs_late", 41001)]
+# the two-effect case, on an earlier set's pairing (none free for it: draw_af's reuse rule)
+TWO_AF = "haf_two_toe_full_bumper_r16_sled"
+
+
+@pytest.fixture(scope="module")
+def set_af(tmp_path_factory: pytest.TempPathFactory) -> Path:
+    return _generate(tmp_path_factory, "af", WATCHED_AF)
+
+
+def test_set_af_covers_the_general_list() -> None:
+    """Set AF as its brief asks: clean cases at 48 and 96 counts; each kind of the library a
+    loop can name, as physics, once in a case of its own; two effects of different kinds on
+    different rigs in one case; a broken estimation test; a transducer error on CR alone (as
+    drawn); a late pulse and a late BRS at delays in 1-5 ms no earlier set used on any input;
+    6 + 6 tests, every rig an estimation part holds held twice or more; an effect on some rigs
+    only rests on two estimation and two validation tests of them beside an estimation test of
+    a rig it spares."""
+    _covers_the_general_list(SET_AF, BEFORE_AF, "cr", ONE_PHYSICAL_AF, draw_af.KINDS)
+
+
+def test_set_af_follows_its_draw() -> None:
+    """Set AF's designer's choices are numpy's default_rng(41000)'s (``draw_af.py``; the draws
+    found impossible drawn again by the next seeds, ``REDRAWN``), followed as drawn: each
+    kind's form, rigs, counts and mix; the two-effect case's kinds, forms, rigs, counts and mix;
+    the delays, their counts and mixes; the transducer error's output, form, counts and mix;
+    the broken test's channel, form, test, counts and mix; the clean cases' mixes. Set AE's
+    process: set W's kinds, pools and mix rules, A-AE's pairings taken, but the two-effect
+    case's: none was free for its rigs (the old rule draws it none), so it reuses one A-AE ran,
+    among those its rules allow."""
+    _follows_a_reusing_draw(draw_af, 41000,
+                            (*"abcdefghijklmnopqrstuvwxyz", "aa", "ab", "ac", "ad", "ae"),
+                            SET_AF, ONE_PHYSICAL_AF, REDRAWN_AF, BEFORE_AF, BY_NAME_AF[TWO_AF])
+    assert _pairing(BY_NAME_AF[TWO_AF]) == ((2, 2, 2), (2, 1, 3))
+
+
+def test_set_af_lab_side_is_as_drawn_and_unnamed() -> None:
+    """One broken estimation test, the only thing expected; one transducer error on CR on every
+    test, nothing physical named; AF's physics earlier sets' forms only."""
+    _lab_side_as_drawn(SET_AF, "cr")
+    assert {k for k in _keys(SET_AF) if physics.EFFECTS[k]} <= _keys(BEFORE_AF)
+
+
+@pytest.mark.parametrize("case", sorted(ONE_PHYSICAL_AF))
+def test_set_af_physics_moves_its_rigs_only(set_af: Path, case: str) -> None:
+    """Each physical case moves what its form moves on every test of its rigs (the chest's,
+    belt's, bag's and pelvis's forms CR and CD, the pulse untouched; the BRS's off-centre
+    encoder the BRS alone) and leaves the tests of a rig it spares untouched to the bit."""
+    _moves_its_rigs_only(set_af, BY_NAME_AF[case])
+
+
+def test_set_af_brs_poll_holds_between_polls(set_af: Path) -> None:
+    """The spindle's tracks polled by a quadrature decoder every 9th sample (1.1 kHz; set I's
+    form): the broken test's BRS moves only at the polls, by one count at most, from its
+    twin's first count; at 48 counts a rev this test's spool turns one count a poll at most, so
+    no count is lost and the channel stays within a count of its twin (held between polls);
+    the other channels and tests as without it."""
+    c = BY_NAME_AF["haf_broken_brs_poll"]
+    (broken,), (eff,) = c.expect_broken, c.effects
+    bad, good = _brs(set_af / "on" / c.name, broken), _brs(set_af / "off" / c.name, broken)
+    every = round(physics.FS_HZ / eff.size)
+    assert every == 9
+    step = np.diff(bad)
+    assert not np.any(step[(np.arange(step.size) + 1) % every != 0])  # held between polls
+    assert set(np.abs(step)) <= {0.0, 1.0}  # one count a poll at most
+    assert np.abs(np.diff(good[::every])).max() <= 1  # the spool never outran the polling
+    assert bad[0] == good[0] and np.abs(bad - good).max() == 1  # held, nothing lost
+    for which in ("cr", "cd", "pulse"):
+        assert np.array_equal(_channel(set_af / "on" / c.name, broken, which),
+                              _channel(set_af / "off" / c.name, broken, which))
+    _others_untouched(set_af, c.name, broken)
+
+
+def test_set_af_cr_damped_lags_cr_only(set_af: Path) -> None:
+    """CR reads its own signal through the damped element (within the CFC 180 filter and the
+    noise, which the element filters too), later at its peak (set O's check), every test; CD,
+    pulse and BRS untouched."""
+    c = BY_NAME_AF["haf_cr_damped"]
+    (e,) = c.effects
+    on, off = set_af / "on" / c.name, set_af / "off" / c.name
+    seen = 0
+    for folder in sorted(on.glob("*/*")):
+        name = folder.name
+        for which in ("cd", "pulse"):
+            assert np.array_equal(_channel(on, name, which), _channel(off, name, which))
+        assert np.array_equal(_brs(on, name), _brs(off, name))
+        cr, cr0 = _channel(on, name, "cr"), _channel(off, name, "cr")
+        t = _times(len(cr))
+        inner = (t > 0.0) & (t < 0.17)
+        miss = np.abs(cr - lab.damped_element(cr0, e.size))[inner].max()
+        moved = np.abs(cr - cr0).max()
+        assert miss < 1.0 and miss < 0.2 * moved, (name, miss, moved)
+        assert np.argmax(cr) > np.argmax(cr0) and moved > 2.0
+        seen += 1
+    assert seen == 12
+
+
+def test_set_af_has_no_run_aways(set_af: Path) -> None:
+    _no_run_aways(SET_AF, set_af)
+
+
 def test_more_tests_doubles_the_estimation_tests_only(tmp_path: Path) -> None:
     """``more_tests``: K times each rig's estimation tests, the validation tests and the
     effects as written, another seed (new crashes), a name that says so; the broken test's name
@@ -4310,11 +4423,11 @@ def test_loop_heldout_on_a_folder_without_the_case_is_one_line(tmp_path: Path) -
     assert "--case haa_clean48 --est-times 2 --out" in r.stderr
 
 
-# the drawn sets X-AE: each one's seed, and its cases that reuse an earlier set's pairing by
+# the drawn sets X-AF: each one's seed, and its cases that reuse an earlier set's pairing by
 # its draw's rule (the two-effect case since set Z: none was free for its rigs)
 DRAWN = {"x": (33000, ()), "y": (34000, ()), "z": (35000, (TWO_Z,)),
          "aa": (36000, (TWO_AA,)), "ab": (37000, (TWO_AB,)), "ac": (38000, (TWO_AC,)),
-         "ad": (39000, (TWO_AD,)), "ae": (40000, (TWO_AE,))}
+         "ad": (39000, (TWO_AD,)), "ae": (40000, (TWO_AE,)), "af": (41000, (TWO_AF,))}
 
 
 @pytest.mark.parametrize("letters", DRAWN)
