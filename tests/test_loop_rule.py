@@ -30,6 +30,7 @@ from observer_node.loop.screening import (
     copied_pulses,
     held_end_outliers,
     judged_fits,
+    low_with_rig,
     output_step_outliers,
     payout_outliers,
     polarity_outliers,
@@ -982,6 +983,20 @@ def test_a_test_low_with_its_rig_is_not_an_outlier():
          "SLED_005": 65.6, "SLED_007": 83.6}
     (b,) = residual_outliers(z, (), {n: n.split("_")[0] for n in z})
     assert b.test == "SLED_005" and "its setup's other tests' 88.5 %" in b.reason
+
+
+def test_a_broken_test_shelters_no_other_of_its_rig():
+    # F1 and F2 broken, F3 clean on one rig: F2's mates' median (F1 50, F3 88) is 69, 7 over
+    # it; once F1 is flagged it is no one's mate, and F2 lies 26 below F3. A rig whose two
+    # tests are low alike keeps both, said as low with their rig (a hostile review's cases)
+    fits = {"R1": 88.0, "R2": 89.0, "R3": 87.0, "R4": 90.0, "F1": 50.0, "F2": 62.0, "F3": 88.0}
+    rigs = {n: n[0] for n in fits}
+    assert [b.test for b in residual_outliers(fits, (), rigs)] == ["F1", "F2"]
+    assert low_with_rig(fits, rigs) == []
+    alike = {**fits, "F2": 55.0}
+    del alike["F3"]
+    assert residual_outliers(alike, (), rigs) == []
+    assert [b.test for b in low_with_rig(alike, rigs)] == ["F1", "F2"]
 
 
 def test_the_only_test_of_its_setup_is_judged_in_sample():

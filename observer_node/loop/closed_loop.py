@@ -166,13 +166,17 @@ def _screened(est_tests: list[CrashTest], val_tests: list[CrashTest], rate_hz: f
     cv_now = cv0 if cv0 is not None else cross_validate(runner, [(dict(gb.params), [])],
                                                         est, folds_)[0]
     # A validation test is judged the same way, by the model the estimation tests made,
-    # against them and the other validation tests: it never chose anything, but a broken one
-    # would bend the fits the report gives and the refusal reads.
-    val_fits = {n: v.total for n, v in score(dict(gb.params), [], val).tests.items()}
+    # against them (each as judged above: the only one of its setup in-sample) and the other
+    # validation tests: it never chose anything, but a broken one would bend the fits the
+    # report gives and the refusal reads.
+    if cv0 is None:  # refitted without the outliers
+        setup_of = dict(zip(est.names, est.setups, strict=True))
+        fitted = {n: v.total for n, v in score(dict(gb.params), [], est).tests.items()}
+    all_fits = {**judged_fits(cv_now or {}, fitted, setup_of)[0],
+                **{n: v.total for n, v in score(dict(gb.params), [], val).tests.items()}}
     setup_of |= dict(zip(val.names, val.setups, strict=True))
-    val_out = [b for b in residual_outliers({**cv_now, **val_fits}, (), setup_of)
-               if b.test in val_fits]
-    low += [b for b in low_with_rig({**cv_now, **val_fits}, setup_of) if b.test in val_fits]
+    val_out = [b for b in residual_outliers(all_fits, (), setup_of) if b.test in val.names]
+    low += [b for b in low_with_rig(all_fits, setup_of) if b.test in val.names]
     if val_out and val.n_tests > len(val_out):
         broken += val_out
         left_out |= {b.test for b in val_out}

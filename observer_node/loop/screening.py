@@ -1446,9 +1446,32 @@ def _far_below(fit_total: dict[str, float]) -> list[tuple[str, float, float, flo
     return out
 
 
-def _mates(name: str, fit_total: dict[str, float], setups: Mapping[str, str]) -> list[float]:
-    rig = setups.get(name)
-    return [v for n, v in fit_total.items() if n != name and rig and setups.get(n) == rig]
+def _by_rig(fit_total: dict[str, float], setups: Mapping[str, str]
+            ) -> tuple[list[tuple[str, float, float, float, float | None]],
+                       list[tuple[str, float, float, float, float]]]:
+    """The tests far below the others, split: (flagged, kept). Flagged: no setup-mates, or
+    20 points below their median; kept: low with their rig. A flagged test is no one's mate
+    (two broken tests of one rig would otherwise shelter a third), so the split is repeated
+    until it holds. Each: (test, fit, others' median, their scatter, its mates' median)."""
+    far = _far_below(fit_total)
+    flagged: dict[str, float | None] = {}
+    while True:
+        before = len(flagged)
+        kept: list[tuple[str, float, float, float, float]] = []
+        for name, f, med, mad in far:
+            if name in flagged:
+                continue
+            rig = setups.get(name)
+            mates = [v for n, v in fit_total.items()
+                     if n != name and n not in flagged and rig and setups.get(n) == rig]
+            m = float(np.median(mates)) if mates else None
+            if m is None or m - f > OUTLIER_POINTS:
+                flagged[name] = m
+            else:
+                kept.append((name, f, med, mad, m))
+        if len(flagged) == before:
+            return [(n, f, med, mad, flagged[n]) for n, f, med, mad in far
+                    if n in flagged], kept
 
 
 def residual_outliers(fit_total: dict[str, float], in_sample: Collection[str] = (),
@@ -1457,13 +1480,10 @@ def residual_outliers(fit_total: dict[str, float], in_sample: Collection[str] = 
     ``in_sample``: the tests whose fit is the model's fitted with them; ``setups``: each
     test's setup, so that a test with setup-mates is judged against them too."""
     out = []
-    for name, f, med, mad in _far_below(fit_total):
-        mates = _mates(name, fit_total, setups or {})
-        if mates and float(np.median(mates)) - f <= OUTLIER_POINTS:
-            continue  # its rig is low with it: an effect of the rig, not a broken test
+    for name, f, med, mad, mates in _by_rig(fit_total, setups or {})[0]:
         how = ("in-sample (the only test of its setup)" if name in in_sample
                else "by a model fitted without it")
-        beside = f", its setup's other tests' {np.median(mates):.1f} %" if mates else ""
+        beside = f", its setup's other tests' {mates:.1f} %" if mates is not None else ""
         out.append(BrokenTest(name, "residual", f"fit_TOT {f:.1f} % {how}, against the "
                               f"others' median {med:.1f} % (robust scatter {mad:.1f}){beside}"))
     return out
@@ -1471,14 +1491,10 @@ def residual_outliers(fit_total: dict[str, float], in_sample: Collection[str] = 
 
 def low_with_rig(fit_total: dict[str, float], setups: Mapping[str, str]) -> list[BrokenTest]:
     """The tests far below the others that :func:`residual_outliers` keeps, their setup's
-    other tests lying within 20 points of them: kept in the fits, and said (the grey-box
-    lacks something on that rig, or the rig's tests are all broken alike)."""
-    out = []
-    for name, f, med, _ in _far_below(fit_total):
-        mates = _mates(name, fit_total, setups)
-        if mates and float(np.median(mates)) - f <= OUTLIER_POINTS:
-            out.append(BrokenTest(name, "residual", f"fit_TOT {f:.1f} % against the others' "
-                                  f"median {med:.1f} %, but its setup's other tests' "
-                                  f"{np.median(mates):.1f} %: read as its rig's physics, "
-                                  "kept in the fits"))
-    return out
+    other tests (those not flagged) lying within 20 points of them: kept in the fits, and
+    said (the grey-box lacks something on that rig, or the rig's tests are all broken
+    alike)."""
+    return [BrokenTest(name, "residual", f"fit_TOT {f:.1f} % against the others' median "
+                       f"{med:.1f} %, but its setup's other tests' {mates:.1f} %: read as "
+                       "its rig's physics, kept in the fits")
+            for name, f, med, _, mates in _by_rig(fit_total, setups)[1]]
