@@ -315,11 +315,14 @@ left-out fits and the other validation tests'. A test that is the only one of it
 among the estimation tests is judged in-sample: left out, the model has never seen its rig, so
 a low fit says nothing about the test (set J: the one R16 test beside five SLED and FULL tests
 holding an airbag and a stiffening webbing scored 65.8 % left out against the others' 87.7 and
-was flagged; nothing was wrong with it). A test with other tests of its setup (estimation or
-validation) must also lie 20 points below their median: an effect the grey-box lacks on one
-rig lowers all that rig's tests, a broken test only itself (set AE's dual-stage airbag on FULL:
+was flagged; nothing was wrong with it). A test with other tests of its setup (an estimation
+test among the estimation tests; a validation test among both) must also lie 20 points below
+their median, a test flagged being no one's mate: an effect the grey-box lacks on one rig
+lowers all that rig's tests, a broken test only itself (set AE's dual-stage airbag on FULL:
 FULL_001 at 68.9 % against the others' 89.1 was flagged, though its rig-mate FULL_003 scored
-84.2; set Z's swapped spool, SLED_005 at 65.6 %, lies 22.9 below its SLED mates' 88.5).
+84.2; set Z's swapped spool, SLED_005 at 65.6 %, lies 22.9 below its SLED mates' 88.5). The
+tests so kept are said (:func:`low_with_rig`): two tests of one rig broken alike are kept
+too.
 """
 
 from __future__ import annotations
