@@ -17,6 +17,7 @@ from observer_node.loop.closed_loop import EVIDENCE_ROWS, _evidence_rounds, run_
 from observer_node.loop.report import LoopReport
 from observer_node.model import ModelFile
 from observer_node.simulator import PlantConfig, simulate_campaign, simulate_mixed
+from tests.runners import InProcess
 
 # Effects the loop must find at their default magnitude (a 2 ms input delay is too weak to
 # matter at 1 kHz and is not in the pool; see README).
@@ -262,17 +263,6 @@ def test_a_brs_decoder_in_x4_mode_is_left_out_before_the_fit(tmp_path):
     assert r.effects == [] and t.name not in r.estimation
 
 
-class _InProcess:
-    """The loop's runner in this process, so that an effect registered here exists in its
-    tasks too (the local cluster's worker processes would not have it)."""
-
-    workers = 1
-
-    @staticmethod
-    def map(f, args):
-        return [f(*a) for a in args]
-
-
 def _refits_here(monkeypatch) -> None:
     """The loop's refits run in this process, where an effect a test registers is known."""
     from contextlib import contextmanager
@@ -281,7 +271,7 @@ def _refits_here(monkeypatch) -> None:
 
     @contextmanager
     def here(scheduler=None, workers=None):
-        yield _InProcess()
+        yield InProcess()
 
     monkeypatch.setattr(closed_loop, "cluster", here)
 

@@ -44,6 +44,7 @@ from observer_node.loop.screening import (
     spool_gain_outliers,
     velocity_outliers,
 )
+from tests.runners import InProcess
 
 from .conftest import DATA
 
@@ -1034,15 +1035,6 @@ def test_a_transducer_non_linearity_is_a_static_function_of_one_output(campaign)
     assert np.allclose(right.y, data.y, atol=1e-6 * np.max(np.abs(data.y)))
 
 
-class _InProcess:
-    """A cluster of one: the loop's runner, each call in turn."""
-
-    workers = 1
-
-    def map(self, f, args):
-        return [f(*a) for a in args]
-
-
 @pytest.fixture(scope="module")
 def chest(campaign):
     """Four R16 tests, the grey-box fitted on them, and what it reads: as it stands, with a
@@ -1079,7 +1071,7 @@ def test_a_physical_effect_in_both_outputs_is_not_one_transducers_error(chest):
     setups = dict(zip(data.names, data.setups, strict=True))
 
     def other(y: np.ndarray) -> object:
-        return _other_output(_InProcess(), base, [], dataclasses.replace(data, y=y),
+        return _other_output(InProcess(), base, [], dataclasses.replace(data, y=y),
                              folds(data), tried, "cd", setups, 1.0)
 
     found = other(damped)
@@ -1098,13 +1090,13 @@ def test_cross_validation_counts_a_stalled_fold_as_the_caller_says(chest, monkey
     real = refit.fold_scores
     monkeypatch.setattr(rounds, "fold_scores",
                         lambda b, e, d, tr, te: real(b, e, d, tr, te, max_nfev=1))
-    [(start, raw)] = rounds.held_out_fits(_InProcess(), [(base, [])], data, folds(data))
+    [(start, raw)] = rounds.held_out_fits(InProcess(), [(base, [])], data, folds(data))
     assert stalled_in(raw) == list(data.names)
     instead = dict.fromkeys(data.names, 12.5)
-    assert rounds.cross_validate(_InProcess(), [(base, [])], data, folds(data),
+    assert rounds.cross_validate(InProcess(), [(base, [])], data, folds(data),
                                  instead=instead) == [instead]
     own = {n: v.total for n, v in score(*start, data).tests.items()}
-    assert rounds.cross_validate(_InProcess(), [(base, [])], data, folds(data)) == [own]
+    assert rounds.cross_validate(InProcess(), [(base, [])], data, folds(data)) == [own]
 
 
 def test_the_other_outputs_check_counts_a_stalled_fold_as_no_gain(chest, monkeypatch):
@@ -1123,7 +1115,7 @@ def test_the_other_outputs_check_counts_a_stalled_fold_as_no_gain(chest, monkeyp
     assert all(np.isnan(v) for o in ("cr", "cd") for v in stalls[o].values())
     monkeypatch.setattr(rounds, "fold_scores_by_output",
                         lambda b, e, d, tr, te: real(b, e, d, tr, te, max_nfev=1 if e else 15))
-    assert rounds._other_output(_InProcess(), base, [], dataclasses.replace(data, y=damped),
+    assert rounds._other_output(InProcess(), base, [], dataclasses.replace(data, y=damped),
                                 folds(data), tried, "cd", setups, 1.0) is None
 
 
@@ -1138,13 +1130,13 @@ def test_a_transducers_correction_gains_nothing_on_a_fold_that_stalled(chest, mo
     data, base, _, bent = chest
     data = dataclasses.replace(data, y=bent)
     setups = dict(zip(data.names, data.setups, strict=True))
-    cv_now = rounds.cross_validate(_InProcess(), [(base, [])], data, folds(data))[0]
+    cv_now = rounds.cross_validate(InProcess(), [(base, [])], data, folds(data))[0]
 
     def sensor(nfev: int) -> object:
         real = diagnosis.sensor_fold_scores
         monkeypatch.setattr(rounds, "sensor_fold_scores",
                             lambda b, e, d, tr, te: real(b, e, d, tr, te, max_nfev=nfev))
-        return rounds._sensor_candidates(_InProcess(), base, [], data, folds(data), cv_now,
+        return rounds._sensor_candidates(InProcess(), base, [], data, folds(data), cv_now,
                                          setups, 1.0)["cd"]
 
     moving, stalled = sensor(FOLD_NFEV), sensor(1)  # one evaluation: no step

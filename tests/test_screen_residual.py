@@ -7,16 +7,7 @@ from pathlib import Path
 from benchmarks.heldout.make_sets import make
 from benchmarks.screen_faults import draw_campaign, median_sizes
 from benchmarks.screen_residual import SEED, judge
-
-
-class _InProcess:
-    """The loop's Runner, in this process: one campaign needs no cluster."""
-
-    workers = 1
-
-    @staticmethod
-    def map(f, args):
-        return [f(*a) for a in args]
+from tests.runners import InProcess
 
 
 def test_a_rig_with_an_airbag_is_not_taken_for_two_broken_tests(tmp_path: Path) -> None:
@@ -25,7 +16,7 @@ def test_a_rig_with_an_airbag_is_not_taken_for_two_broken_tests(tmp_path: Path) 
     case = draw_campaign(270, SEED, median_sizes())
     make([case], tmp_path, log=False)
     row = judge(case.name, case.expect_broken, ["airbag@FULL"], tmp_path / case.name,
-                _InProcess())
+                InProcess())
     assert row["judged"] and row["setups"]["FULL_002"] == row["setups"]["FULL_004"] == "FULL"
     assert row["others only"] == ["FULL_002", "FULL_004"]
     assert row["shipped"] == []
