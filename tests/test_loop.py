@@ -12,6 +12,7 @@ import numpy as np
 import pytest
 
 from observer_node.daemon.core import ObserverCore
+from observer_node.data.crashtest import CrashDataError
 from observer_node.ident.metrics import Fits, OutputFits
 from observer_node.loop.closed_loop import EVIDENCE_ROWS, _evidence_rounds, run_loop
 from observer_node.loop.report import LoopReport
@@ -573,3 +574,27 @@ def test_a_tie_whose_sides_differ_plans_on_their_paired_differences(tmp_path, ne
     words = f"(about {n_tell} judged estimation tests in all, 6 now, differing"
     assert all(words in p.why_not for p in tied)
     assert (tmp_path / "report.md").read_text().count(words) >= 2
+
+
+def test_a_lone_broken_validation_test_is_said_though_it_cannot_be_left_out(tmp_path):
+    # the only validation test's spool reads 4x from its most wound-in point on: flagged by
+    # its residual, but leaving it out would leave nothing to score. Kept, and said (before,
+    # it was kept in silence: neither in the warnings nor anywhere else)
+    est = simulate_campaign("R16", 6, seed=23, config=PlantConfig(), prefix="EST")
+    (t,) = simulate_campaign("R16", 1, seed=24, config=PlantConfig(), prefix="VAL")
+    wound = np.maximum.accumulate(t.brs)
+    val = [dataclasses.replace(t, brs=wound - 4 * (wound - t.brs))]
+    r = run_loop(est, val, tmp_path, verbose=False, plots=False, ratings=False)
+    assert r.warnings == [] and r.validation == [t.name]
+    assert [(w.test, w.channel) for w in r.flagged_kept] == [(t.name, "residual")]
+    assert "would leave 0" in r.flagged_kept[0].reason
+    report = json.loads((tmp_path / "report.json").read_text())
+    assert [w["test"] for w in report["flagged_kept"]] == [t.name]
+    assert "tests far below the others, kept in the fits" in (tmp_path / "report.md").read_text()
+
+
+def test_a_test_given_in_both_roles_is_refused_before_anything_is_fitted(tmp_path):
+    est = simulate_campaign("R16", 3, seed=23, config=PlantConfig(), prefix="EST")
+    with pytest.raises(CrashDataError, match="given twice"):
+        run_loop(est, est[:1], tmp_path, verbose=False, plots=False, ratings=False)
+    assert not (tmp_path / "report.json").exists()

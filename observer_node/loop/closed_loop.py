@@ -23,6 +23,7 @@
 
 from __future__ import annotations
 
+import dataclasses
 import itertools
 import json
 import textwrap
@@ -33,7 +34,7 @@ from typing import NamedTuple
 import numpy as np
 
 from .. import __version__, plots
-from ..data import CrashTest
+from ..data import CrashTest, check_distinct
 from ..data.crashtest import THESIS_WINDOW_S, CrashDataError
 from ..data.setups import Setup, allowed_setups, assign_setups
 from ..ident import greybox
@@ -125,6 +126,7 @@ class _Screened(NamedTuple):
     folds: list[tuple[list[int], list[int]]]
     cv_now: dict[str, float]  # the grey-box's cross-validated fit_TOT [%] per test
     low: list[BrokenTest]  # far below the others but low with their rig: kept, and said
+    kept: list[BrokenTest]  # flagged, but too few tests would remain: kept, and said
 
 
 def _screened(est_tests: list[CrashTest], val_tests: list[CrashTest], rate_hz: float,
@@ -156,7 +158,10 @@ def _screened(est_tests: list[CrashTest], val_tests: list[CrashTest], rate_hz: f
     judged_est = judged_fits(cv0 or {}, fitted, setup_of)
     outliers = residual_outliers(*judged_est, setup_of)
     low = low_with_rig(judged_est[0], setup_of)
-    if outliers and est.n_tests - len(outliers) >= 2:
+    kept: list[BrokenTest] = []
+    if outliers and est.n_tests - len(outliers) < 2:  # the grey-box needs two tests
+        kept += _kept(outliers, "estimation", est.n_tests - len(outliers))
+    elif outliers:
         broken += outliers
         left_out |= {b.test for b in outliers}
         est_kept = [t for t in est_kept if t.name not in left_out]
@@ -177,12 +182,20 @@ def _screened(est_tests: list[CrashTest], val_tests: list[CrashTest], rate_hz: f
     setup_of |= dict(zip(val.names, val.setups, strict=True))
     val_out = [b for b in residual_outliers(all_fits, (), setup_of) if b.test in val.names]
     low += [b for b in low_with_rig(all_fits, setup_of) if b.test in val.names]
-    if val_out and val.n_tests > len(val_out):
+    if val_out and val.n_tests == len(val_out):  # nothing would be left to score
+        kept += _kept(val_out, "validation", 0)
+    elif val_out:
         broken += val_out
         left_out |= {b.test for b in val_out}
         val_kept = [t for t in val_kept if t.name not in left_out]
         val = make_dataset(val_kept, rate_hz, window_s)
-    return _Screened(est, val, gb, broken, est_kept, folds_, cv_now, low)
+    return _Screened(est, val, gb, broken, est_kept, folds_, cv_now, low, kept)
+
+
+def _kept(flagged: list[BrokenTest], role: str, n_left: int) -> list[BrokenTest]:
+    """Tests the residual check flags that cannot be left out: said, never silent."""
+    return [dataclasses.replace(b, reason=f"{b.reason}; kept in the fits: leaving out every "
+                                f"flagged {role} test would leave {n_left}") for b in flagged]
 
 
 def run_loop(est_tests: list[CrashTest], val_tests: list[CrashTest], out: Path,
@@ -196,7 +209,10 @@ def run_loop(est_tests: list[CrashTest], val_tests: list[CrashTest], out: Path,
     ISO/TS 18571 ratings beside the fits (when the optional package is installed).
     ``groups``: (setup name, test-name pattern) overrides of the setups the metadata gives;
     ``anywhere``: try effects on setups whose metadata rules them out, too. The refits run
-    on Dask: the scheduler at ``scheduler``, else a local cluster of ``workers`` processes."""
+    on Dask: the scheduler at ``scheduler``, else a local cluster of ``workers`` processes.
+    Raises :class:`CrashDataError` for one crash given twice (a test would score the fit it
+    chose) and for too few tests once the broken ones are left out."""
+    check_distinct(estimation=est_tests, validation=val_tests)
     with cluster(scheduler, workers) as runner:
         return _run(est_tests, val_tests, out, rate_hz, window_s, margin, top_k, max_effects,
                     verbose, plots, ratings, groups, anywhere, runner)
@@ -258,7 +274,7 @@ def _run(est_tests: list[CrashTest], val_tests: list[CrashTest], out: Path, rate
         possible=sorted(st.possible, key=lambda p: -round(p.evidence.gain_points, 3)),
         sensor_effects=[st.sensor] if st.sensor else [],
         unexplained=st.left_unexplained or ([] if st.sensor else unexplained(est, y_named)),
-        warnings=broken, low_with_rig=scr.low,
+        warnings=broken, low_with_rig=scr.low, flagged_kept=scr.kept,
         left_out=_with_and_without(broken, base, effects, est_tests, val_tests, scr.est_kept,
                                    val, rate_hz, window_s),
         final=ModelFit(Fits(**fit3(final_val)), base, st.base_se),

@@ -420,6 +420,9 @@ class LoopReport:
     # Tests far below the others whose rig is low with them: kept in the fits (absent from
     # report.json when none)
     low_with_rig: list[BrokenTest] = field(default_factory=list)
+    # Tests flagged far below the others that could not be left out (too few would remain):
+    # kept in the fits (absent from report.json when none)
+    flagged_kept: list[BrokenTest] = field(default_factory=list)
 
     def as_dict(self) -> dict[str, Any]:
         return {
@@ -433,6 +436,8 @@ class LoopReport:
             "warnings": [w.as_dict() for w in self.warnings],
             **({"low_with_rig": [w.as_dict() for w in self.low_with_rig]}
                if self.low_with_rig else {}),
+            **({"flagged_kept": [w.as_dict() for w in self.flagged_kept]}
+               if self.flagged_kept else {}),
             "left_out": self.left_out.as_dict() if self.left_out is not None else {},
             "final": self.final.as_dict(),
             "setups": [s.as_dict() for s in self.setups],

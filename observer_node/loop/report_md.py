@@ -170,6 +170,13 @@ def _markdown_findings(r: LoopReport) -> list[str]:
                   "| test | why kept |", "|---|---|"]
         lines += [f"| {w.test} | {w.reason} |" for w in r.low_with_rig]
         lines.append("")
+    if r.flagged_kept:
+        lines += ["## Warnings: tests far below the others, kept in the fits", "",
+                  "Too few tests would remain without them: every fit and verdict below "
+                  "includes them. Look at them first.", "",
+                  "| test | why |", "|---|---|"]
+        lines += [f"| {w.test} | {w.reason} |" for w in r.flagged_kept]
+        lines.append("")
     for s in r.sensor_effects:
         lines += ["## Sensor effect (not physics)", "",
                   f"- **{s.output.upper()}**: {s.looks_like}",
