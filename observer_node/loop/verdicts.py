@@ -322,8 +322,9 @@ def parameter_warnings(kind: str, params: dict, std_err: dict[str, float],
                 out.append(f"{name} = {ms:.2f} ms is at the searched bound "
                            f"({1000 * DELAY_MAX_S:g} ms)")
             continue
-        if name == "gap" and not 0.005 <= v <= 0.4:
-            out.append(f"gap = {v:.3g} m is not a plausible airbag distance (5..400 mm)")
+        if p is not None and p.within is not None and not p.within[0] <= v <= p.within[1]:
+            out.append(f"{name} = {v:.3g} {unit} is outside what {kind} can be "
+                       f"({p.within[0]:g}..{p.within[1]:g})")
         elif spec.positive(name) and typical and abs(v) < NOTHING * typical:
             out.append(f"{name} = {v:.3g} {unit} is physically nothing (typical {typical:g})")
         elif typical and abs(v) > 1e3 * typical:

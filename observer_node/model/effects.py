@@ -304,7 +304,11 @@ register(Effect(
     "airbag_contact", "physical",
     "airbag: F = max(kab (p - x - gap) + cab (p' - x'), 0) on the sternum once the occupant's "
     "forward excursion p - x exceeds gap (the bag pushes, never pulls; cab: its venting)",
-    (Param("kab", "N/m", 3e4, positive=True), Param("gap", "m", 0.1, positive=True),
+    # gap: where the occupant meets the bag, 5-400 mm of forward excursion; a bag pushing
+    # from the start is a spring to the car, not an airbag (sets Y, AF: gap 0 named for a
+    # knee path and a webbing hysteresis)
+    (Param("kab", "N/m", 3e4, positive=True),
+     Param("gap", "m", 0.1, positive=True, within=(0.005, 0.4)),
      Param("cab", "N s/m", 300.0, positive=True, required=False)),
     force=_airbag,
     c_code=lambda p, num, b: (f"    {{ co_real ex = pos - z[1] - {num(p['gap'])};\n"
