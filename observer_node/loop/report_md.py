@@ -7,6 +7,7 @@ from ..ident.metrics import Fits
 from ..scores import mean_abs_errors
 from .belt_check import BeltPush
 from .report import AcceptedEffect, LoopReport, LoopStep
+from .screening import BrokenTest
 
 
 def markdown(r: LoopReport) -> str:
@@ -145,6 +146,14 @@ def _markdown_effect(e: AcceptedEffect, carried: bool = False) -> list[str]:
             ""]
 
 
+def _kept_table(kept: list[BrokenTest], title: str, note: str, why: str) -> list[str]:
+    """A section for tests far below the others that the fits keep (none: nothing)."""
+    if not kept:
+        return []
+    return ["## " + title, "", note, "", f"| test | {why} |", "|---|---|",
+            *(f"| {w.test} | {w.reason} |" for w in kept), ""]
+
+
 def _markdown_findings(r: LoopReport) -> list[str]:
     """Warnings (broken tests), sensor effects, unexplained structure and possible effects."""
     lines: list[str] = []
@@ -163,20 +172,13 @@ def _markdown_findings(r: LoopReport) -> list[str]:
                 lines.append("- scored on the left-out validation tests too: "
                              + _pct(lo.validation_fit_with_them))
         lines.append("")
-    if r.low_with_rig:
-        lines += ["## Tests far below the others, low with their rig (kept in the fits)", "",
-                  "The grey-box may lack something on that rig; or its tests are broken "
-                  "alike. Look at them before reading an effect on that rig.", "",
-                  "| test | why kept |", "|---|---|"]
-        lines += [f"| {w.test} | {w.reason} |" for w in r.low_with_rig]
-        lines.append("")
-    if r.flagged_kept:
-        lines += ["## Warnings: tests far below the others, kept in the fits", "",
-                  "Too few tests would remain without them: every fit and verdict below "
-                  "includes them. Look at them first.", "",
-                  "| test | why |", "|---|---|"]
-        lines += [f"| {w.test} | {w.reason} |" for w in r.flagged_kept]
-        lines.append("")
+    lines += _kept_table(r.low_with_rig, "Tests far below the others, low with their rig (kept "
+                         "in the fits)", "The grey-box may lack something on that rig; or its "
+                         "tests are broken alike. Look at them before reading an effect on "
+                         "that rig.", "why kept")
+    lines += _kept_table(r.flagged_kept, "Warnings: tests far below the others, kept in the "
+                         "fits", "Too few tests would remain without them: every fit and "
+                         "verdict below includes them. Look at them first.", "why")
     for s in r.sensor_effects:
         lines += ["## Sensor effect (not physics)", "",
                   f"- **{s.output.upper()}**: {s.looks_like}",
