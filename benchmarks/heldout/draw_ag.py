@@ -84,8 +84,26 @@ from .sets import before
 SEED = 42000
 # a case whose draw proved impossible, drawn again, whole, by the next seed's generator (one per
 # redraw, in this order, after the rest), the pairings of everything drawn before still taken:
-# none yet (the set not yet drawn)
-REDRAWN: tuple[tuple[str, int], ...] = ()
+# the belt unloading's first draw, dring_capstan on every rig at mu theta 0.59 (cost 0.53), ran
+# away by test_set_ag_has_no_run_aways's limits (the capstan held the webbing); 42001's,
+# dring_capstan on R16 at 0.59 (cost 0.07), ran away; 42002's, webbing_slack on R16 (a switch),
+# cost 14.08, above the band; 42003's, dring_capstan on R16+SLED at 0.59 (cost 0.59), ran away;
+# the two-effect case's first draw, pelvis_submarine on R16 beside rib_visco on SLED+FULL: the
+# slip force (a form whose effect shrinks as its size grows, by the rule's words) alone at 6000,
+# 17000, 51000, 150000 N cost 9.84, 14.60, 15.03, 15.08, none in band; 42004's belt unloading,
+# webbing_slack on SLED+FULL, cost 12.72, above the band; 42006's, dring_capstan on SLED at
+# 0.59 (cost 1.79), ran away; 42005's two-effect case, airbag_fabric on FULL beside
+# spool_buildup on SLED: the spool alone 0.29 at 13 mm per wrap, its next (39 mm) leaving the
+# spool's radius below zero within 7 rad of pay-out (a run-away); 42008's, spool_buildup on R16
+# beside rib_squeeze on SLED+FULL: the spool alone 0.64, its next 39 mm, a run-away; 42009's,
+# dring_capstan on FULL beside rib_lock on R16+SLED, the capstan at 0.59 ran away (FULL's
+# pay-out held): each impossible; every other draw found a size in band within the rule's four
+# (see ``cases_ag.py``)
+REDRAWN: tuple[tuple[str, int], ...] = (("belt_unloading", 42001), ("belt_unloading", 42002),
+                                       ("belt_unloading", 42003), ("belt_unloading", 42004),
+                                       ("two", 42005), ("belt_unloading", 42006),
+                                       ("belt_unloading", 42007), ("two", 42008), ("two", 42009),
+                                       ("two", 42010))
 EARLIER = before("ag")
 __all__ = ["BROKEN", "BRS_GAIN", "KINDS", "REDRAWN", "SEED", "TRANSDUCER", "draw", "forms",
            "scopes"]
