@@ -25,6 +25,7 @@ from benchmarks.heldout import (
     draw_ad,
     draw_ae,
     draw_af,
+    draw_ag,
     draw_v,
     draw_w,
     draw_x,
@@ -42,6 +43,7 @@ from benchmarks.heldout.cases_ac import BY_NAME_AC, ONE_PHYSICAL_AC
 from benchmarks.heldout.cases_ad import BY_NAME_AD, ONE_PHYSICAL_AD
 from benchmarks.heldout.cases_ae import BY_NAME_AE, ONE_PHYSICAL_AE
 from benchmarks.heldout.cases_af import BY_NAME_AF, ONE_PHYSICAL_AF
+from benchmarks.heldout.cases_ag import BY_NAME_AG, ONE_PHYSICAL_AG
 from benchmarks.heldout.cases_p import BY_NAME_P
 from benchmarks.heldout.cases_q import BY_NAME_Q
 from benchmarks.heldout.cases_r import BY_NAME_R
@@ -3666,8 +3668,9 @@ def _follows_a_reusing_draw(draw_mod: ModuleType, seed: int, earlier: tuple[str,
                             redrawn: list[tuple[str, int]], before: list[cases.Case],
                             two_case: cases.Case) -> None:
     """A set drawn by set W's process from ``seed`` after the sets ``earlier``, its two-effect
-    case reusing a pairing those sets ran (sets Z, AA, AB, AC, AD, AE and AF): the cases follow
-    the draw, and the reused pairing is one the rules allow that no free pairing could replace."""
+    case reusing a pairing those sets ran (sets Z, AA, AB, AC, AD, AE, AF and AG): the cases
+    follow the draw, and the reused pairing is one the rules allow that no free pairing could
+    replace."""
     d = draw_mod.draw(seed)
     assert d == draw_mod.draw()  # reproducible from its seed
     assert earlier == draw_mod.EARLIER and seed == draw_mod.SEED
@@ -3765,9 +3768,10 @@ def set_aa(tmp_path_factory: pytest.TempPathFactory) -> Path:
     return _generate(tmp_path_factory, "aa", WATCHED_AA)
 
 
-@pytest.mark.parametrize("letters", ["x", "y", "z", "aa", "ab", "ac", "ad", "ae", "af"])
+@pytest.mark.parametrize("letters",
+                         ["x", "y", "z", "aa", "ab", "ac", "ad", "ae", "af", "ag"])
 def test_a_drawn_set_is_registered(letters: str, tmp_path: Path) -> None:
-    """Sets X-AF: each is its ``cases_<letters>.SET_<LETTERS>`` under its letters (either
+    """Sets X-AG: each is its ``cases_<letters>.SET_<LETTERS>`` under its letters (either
     case), for sets.select, make_sets and costs, after every set before it."""
     own = getattr(importlib.import_module(f"benchmarks.heldout.cases_{letters}"),
                   f"SET_{letters.upper()}")
@@ -3793,8 +3797,9 @@ def test_sets_before_are_names_not_letters() -> None:
     assert heldout_sets.before("ad") == (*after_aa, "ab", "ac")  # set AD's: A-AC, by name
     assert heldout_sets.before("ae") == (*after_aa, "ab", "ac", "ad")  # set AE's: A-AD
     assert heldout_sets.before("af") == (*after_aa, "ab", "ac", "ad", "ae")  # set AF's: A-AE
-    with pytest.raises(ValueError, match="unknown case set 'ag'"):
-        heldout_sets.before("ag")
+    assert heldout_sets.before("ag") == (*after_aa, "ab", "ac", "ad", "ae", "af")  # AG's: A-AF
+    with pytest.raises(ValueError, match="unknown case set 'ah'"):
+        heldout_sets.before("ah")
     # a draw after AA takes AA's pairings; at this seed, without AA one single draws one of them
     aa = {_pairing(c) for c in SET_AA}
 
@@ -4369,6 +4374,111 @@ def test_set_af_has_no_run_aways(set_af: Path) -> None:
     _no_run_aways(SET_AF, set_af)
 
 
+# ------------------------------------------------------------------ set AG (cases_ag.py)
+
+SET_AG = heldout_sets.case_set("ag")
+BEFORE_AG = _cases_of(heldout_sets.before("ag"))
+# the broken test, the transducer error, and every physical case of one effect (its rigs moved,
+# the others untouched)
+WATCHED_AG = ("hag_broken_brs_quadrature", "hag_cd_sag", *ONE_PHYSICAL_AG)
+# the draws found impossible, drawn again by the next seeds in the order found (draw_ag.REDRAWN)
+REDRAWN_AG: list[tuple[str, int]] = [("belt_unloading", 42001), ("belt_unloading", 42002),
+                                     ("belt_unloading", 42003), ("belt_unloading", 42004),
+                                     ("two", 42005), ("belt_unloading", 42006),
+                                     ("belt_unloading", 42007), ("two", 42008), ("two", 42009),
+                                     ("two", 42010)]
+# the two-effect case, on an earlier set's pairing (none free for it: draw_ag's reuse rule)
+TWO_AG = "hag_two_fung_sled_knee_full"
+
+
+@pytest.fixture(scope="module")
+def set_ag(tmp_path_factory: pytest.TempPathFactory) -> Path:
+    return _generate(tmp_path_factory, "ag", WATCHED_AG)
+
+
+def test_set_ag_covers_the_general_list() -> None:
+    """Set AG as its brief asks: clean cases at 48 and 96 counts; each kind of the library a
+    loop can name, as physics, once in a case of its own; two effects of different kinds on
+    different rigs in one case; a broken estimation test; a transducer error on CD alone (as
+    drawn); a late pulse and a late BRS at delays in 1-5 ms no earlier set used on any input;
+    6 + 6 tests, every rig an estimation part holds held twice or more; an effect on some rigs
+    only rests on two estimation and two validation tests of them beside an estimation test of
+    a rig it spares."""
+    _covers_the_general_list(SET_AG, BEFORE_AG, "cd", ONE_PHYSICAL_AG, draw_ag.KINDS)
+
+
+def test_set_ag_follows_its_draw() -> None:
+    """Set AG's designer's choices are numpy's default_rng(42000)'s (``draw_ag.py``; the draws
+    found impossible drawn again by the next seeds, ``REDRAWN``), followed as drawn: each
+    kind's form, rigs, counts and mix; the two-effect case's kinds, forms, rigs, counts and mix;
+    the delays, their counts and mixes; the transducer error's output, form, counts and mix;
+    the broken test's channel, form, test, counts and mix; the clean cases' mixes. Set AF's
+    process: set W's kinds, pools and mix rules, A-AF's pairings taken, but the two-effect
+    case's: none was free for its rigs (the old rule draws it none), so it reuses one A-AF ran,
+    among those its rules allow."""
+    _follows_a_reusing_draw(draw_ag, 42000,
+                            (*"abcdefghijklmnopqrstuvwxyz", "aa", "ab", "ac", "ad", "ae", "af"),
+                            SET_AG, ONE_PHYSICAL_AG, REDRAWN_AG, BEFORE_AG, BY_NAME_AG[TWO_AG])
+    assert _pairing(BY_NAME_AG[TWO_AG]) == ((0, 4, 2), (0, 4, 2))
+
+
+def test_set_ag_lab_side_is_as_drawn_and_unnamed() -> None:
+    """One broken estimation test, the only thing expected; one transducer error on CD on every
+    test, nothing physical named; AG's physics earlier sets' forms only."""
+    _lab_side_as_drawn(SET_AG, "cd")
+    assert {k for k in _keys(SET_AG) if physics.EFFECTS[k]} <= _keys(BEFORE_AG)
+
+
+@pytest.mark.parametrize("case", sorted(ONE_PHYSICAL_AG))
+def test_set_ag_physics_moves_its_rigs_only(set_ag: Path, case: str) -> None:
+    """Each physical case moves what its form moves on every test of its rigs (the chest's,
+    belt's, bag's and pelvis's forms CR and CD, the pulse untouched; the BRS's off-centre
+    encoder the BRS alone) and leaves the tests of a rig it spares untouched to the bit."""
+    _moves_its_rigs_only(set_ag, BY_NAME_AG[case])
+
+
+def test_set_ag_brs_quadrature_reads_its_edges_times(set_ag: Path) -> None:
+    """The decoder counting five edges a step under the spindle's own counts per rev (set H's
+    form and check, at this set's size, set H's 4 stepped by 1): the broken test's BRS reads
+    five times the spool's angle, in finer steps, but for what 480 counts a rev leave of set
+    H's single-count steps: the spool, a count a sample at most at its own 96, turns two of
+    the decoder's at its fastest; the other channels and tests as without it."""
+    c = BY_NAME_AG["hag_broken_brs_quadrature"]
+    (broken,), (eff,) = c.expect_broken, c.effects
+    bad, good = _brs(set_ag / "on" / c.name, broken), _brs(set_ag / "off" / c.name, broken)
+    assert eff.size == 5 and np.ptp(good) > 20
+    assert np.abs(bad - eff.size * good).max() <= eff.size  # x edges, to a step of the spindle
+    assert np.ptp(bad) > (eff.size - 0.5) * np.ptp(good)
+    assert set(np.abs(np.diff(good))) <= {0.0, 1.0}  # the spindle: a count a sample at most
+    assert set(np.abs(np.diff(bad))) <= {0.0, 1.0, 2.0}  # the decoder's: two at most
+    assert np.count_nonzero(np.diff(bad)) > 3 * np.count_nonzero(np.diff(good))  # finer steps
+    for which in ("cr", "cd", "pulse"):
+        assert np.array_equal(_channel(set_ag / "on" / c.name, broken, which),
+                              _channel(set_ag / "off" / c.name, broken, which))
+    _others_untouched(set_ag, c.name, broken)
+
+
+def test_set_ag_cd_sag_lowers_cd_with_time_only(set_ag: Path) -> None:
+    """CD reads its own signal x (1 - s (1 - e^(-t/tau))) from the trigger on (within the CFC
+    600 filter and the noise), nothing before it, every test (set W's check); CR, pulse and
+    BRS untouched."""
+    c = BY_NAME_AG["hag_cd_sag"]
+    (e,) = c.effects
+    seen = 0
+    for cd, cd0 in _cd_only(set_ag / "on" / c.name, set_ag / "off" / c.name):
+        t = _times(len(cd))
+        gain = 1.0 - e.size * (1.0 - np.exp(-np.maximum(t, 0.0) / lab.CD_SAG_TAU_S))
+        assert np.abs(cd - gain * cd0).max() < 0.2
+        assert np.abs(cd - cd0)[t < -0.002].max() < 0.05
+        assert (cd0 - cd).max() > 1.0
+        seen += 1
+    assert seen == 12
+
+
+def test_set_ag_has_no_run_aways(set_ag: Path) -> None:
+    _no_run_aways(SET_AG, set_ag)
+
+
 def test_more_tests_doubles_the_estimation_tests_only(tmp_path: Path) -> None:
     """``more_tests``: K times each rig's estimation tests, the validation tests and the
     effects as written, another seed (new crashes), a name that says so; the broken test's name
@@ -4423,11 +4533,12 @@ def test_loop_heldout_on_a_folder_without_the_case_is_one_line(tmp_path: Path) -
     assert "--case haa_clean48 --est-times 2 --out" in r.stderr
 
 
-# the drawn sets X-AF: each one's seed, and its cases that reuse an earlier set's pairing by
+# the drawn sets X-AG: each one's seed, and its cases that reuse an earlier set's pairing by
 # its draw's rule (the two-effect case since set Z: none was free for its rigs)
 DRAWN = {"x": (33000, ()), "y": (34000, ()), "z": (35000, (TWO_Z,)),
          "aa": (36000, (TWO_AA,)), "ab": (37000, (TWO_AB,)), "ac": (38000, (TWO_AC,)),
-         "ad": (39000, (TWO_AD,)), "ae": (40000, (TWO_AE,)), "af": (41000, (TWO_AF,))}
+         "ad": (39000, (TWO_AD,)), "ae": (40000, (TWO_AE,)), "af": (41000, (TWO_AF,)),
+         "ag": (42000, (TWO_AG,))}
 
 
 @pytest.mark.parametrize("letters", DRAWN)
