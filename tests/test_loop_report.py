@@ -233,3 +233,14 @@ def test_a_test_low_with_its_rig_is_said_and_kept(r16_loop) -> None:
     md = markdown(said)
     assert "## Tests far below the others, low with their rig (kept in the fits)" in md
     assert f"| F1 | {low.reason} |" in md and "kept in the fits" in low.reason
+
+
+def test_a_sensor_effect_says_the_other_transducer_can_read_alike(r16_loop) -> None:
+    # held-out sets W and AG: a CD pot's sagging excitation was named a sensor effect on CR;
+    # the report must not send the engineer to one transducer only
+    _, r = r16_loop
+    cr = SensorEffect("cr", [], "a static function of CR: the CR transducer's gain", _rule())
+    md = markdown(dataclasses.replace(r, sensor_effects=[cr]))
+    assert "- **CR**: a static function of CR" in md
+    assert "- and the CD transducer's too: an error drifting in time on CD" in md
+    assert "static correction of CR wins it back" in md
