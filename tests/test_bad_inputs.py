@@ -96,6 +96,9 @@ MODEL_CASES: dict[str, tuple[Callable[[dict], object] | bytes, str]] = {
     "stiffening without k3": (_effect({"kind": "chest_stiffening", "parameters": {}}), "k3"),
     "airbag without gap": (_effect({"kind": "airbag_contact",
                                     "parameters": {"kab": 3e4}}), "gap"),
+    # a bag pushing from the start is no airbag (an earlier version could write one)
+    "airbag gap 0": (_effect({"kind": "airbag_contact",
+                              "parameters": {"kab": 3e4, "gap": 1e-9}}), "gap"),
     "pelvis without parameters": (_effect({"kind": "pelvis_coupling"}), "parameters"),
     "effect kind unknown": (_effect({"kind": "warp_drive", "parameters": {}}), "effects[0]"),
     "effect delay 1e6 ticks": (_effect({"kind": "input_delay",
