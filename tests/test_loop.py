@@ -598,3 +598,18 @@ def test_a_test_given_in_both_roles_is_refused_before_anything_is_fitted(tmp_pat
     with pytest.raises(CrashDataError, match="given twice"):
         run_loop(est, est[:1], tmp_path, verbose=False, plots=False, ratings=False)
     assert not (tmp_path / "report.json").exists()
+
+
+def test_a_broken_test_of_three_estimation_tests_is_said(tmp_path):
+    # with three estimation tests the check among them has too few others to judge; beside
+    # the validation tests the broken one is flagged, and was then dropped in silence (a
+    # hostile review): it is said, kept in the fits its model was made with
+    est = simulate_campaign("R16", 3, seed=23, config=PlantConfig(), prefix="EST")
+    val = simulate_campaign("R16", 3, seed=24, config=PlantConfig(), prefix="VAL")
+    t = est[0]
+    wound = np.maximum.accumulate(t.brs)
+    est[0] = dataclasses.replace(t, brs=wound - 4 * (wound - t.brs))
+    r = run_loop(est, val, tmp_path, verbose=False, plots=False, ratings=False)
+    assert r.warnings == [] and t.name in r.estimation
+    assert [(w.test, w.channel) for w in r.flagged_kept] == [(t.name, "residual")]
+    assert "beside the validation tests" in r.flagged_kept[0].reason

@@ -244,3 +244,6 @@ def test_a_sensor_effect_says_the_other_transducer_can_read_alike(r16_loop) -> N
     assert "- **CR**: a static function of CR" in md
     assert "- and the CD transducer's too: an error drifting in time on CD" in md
     assert "static correction of CR wins it back" in md
+    # a lag is read from an input delay, not a static correction: no such line
+    lag = SensorEffect("cd", [], "a lag of about 1.5 ms on CD alone", _rule())
+    assert "transducer's too" not in markdown(dataclasses.replace(r, sensor_effects=[lag]))

@@ -6,7 +6,7 @@ from __future__ import annotations
 from ..ident.metrics import Fits
 from ..scores import mean_abs_errors
 from .belt_check import BeltPush
-from .report import AcceptedEffect, LoopReport, LoopStep
+from .report import AcceptedEffect, LoopReport, LoopStep, SensorEffect
 from .screening import BrokenTest
 
 
@@ -149,6 +149,18 @@ def _markdown_effect(e: AcceptedEffect, carried: bool = False) -> list[str]:
 _OTHER = {"cr": "CD", "cd": "CR"}
 
 
+def _other_transducer(s: SensorEffect) -> list[str]:
+    """The caveat a static correction of one output needs: on held-out sets V, W and AG an
+    error drifting in time on the other output bent the chest model, and this output's static
+    correction won it back (not said of a lag, which is read from an input delay)."""
+    if not s.looks_like.startswith("a static function"):
+        return []
+    o, other = s.output.upper(), _OTHER[s.output]
+    return [f"- and the {other} transducer's too: an error drifting in time on {other} (a "
+            f"sagging excitation, a slow clock) bends the model so that a static correction "
+            f"of {o} wins it back, and reads like this"]
+
+
 def _kept_table(kept: list[BrokenTest], title: str, note: str, why: str) -> list[str]:
     """A section for tests far below the others that the fits keep (none: nothing)."""
     if not kept:
@@ -187,12 +199,7 @@ def _markdown_findings(r: LoopReport) -> list[str]:
                   f"- **{s.output.upper()}**: {s.looks_like}",
                   f"- confidence: {s.confidence}",
                   "- not added to model.json: check the transducer's calibration",
-                  # held-out sets V, W, AG: a gain drifting in time on one output bent the
-                  # chest model, and the other output's static correction won it back
-                  f"- and the {_OTHER[s.output]} transducer's too: an error drifting in time "
-                  f"on {_OTHER[s.output]} (a sagging excitation, a slow clock) bends the "
-                  f"model so that a static correction of {s.output.upper()} wins it back, "
-                  "and reads like this", ""]
+                  *_other_transducer(s), ""]
     for u in r.unexplained:
         gains = ", ".join(f"{k} {v:+.1f}" for k, v in u.gain_points.items())
         lines += ["## Unexplained", "",
