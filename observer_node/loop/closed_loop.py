@@ -162,7 +162,8 @@ def _screened(est_tests: list[CrashTest], val_tests: list[CrashTest], rate_hz: f
     # the grey-box needs two tests (a guard: a test far below the median of the others
     # leaves at least two, as the check stands)
     if outliers and est.n_tests - len(outliers) < 2:
-        kept += _kept(outliers, "estimation", est.n_tests - len(outliers))
+        kept += _kept(outliers, "leaving out every flagged estimation test would leave "
+                      f"{est.n_tests - len(outliers)}")
     elif outliers:
         broken += outliers
         left_out |= {b.test for b in outliers}
@@ -188,11 +189,11 @@ def _screened(est_tests: list[CrashTest], val_tests: list[CrashTest], rate_hz: f
     # An estimation test first flagged here, beside the validation tests (with three
     # estimation tests the check above has too few others to judge): the model is fitted
     # with it, so it is said, not left out (a hostile review found it dropped in silence).
-    kept += [dataclasses.replace(b, reason=f"{b.reason}, beside the validation tests; kept "
-                                 "in the fits: the estimation tests' model was fitted with it")
-             for b in flagged if b.test in est.names and b.test not in left_out]
+    kept += _kept([b for b in flagged if b.test in est.names and b.test not in left_out],
+                  "flagged beside the validation tests, the estimation tests' model was "
+                  "fitted with it")
     if val_out and val.n_tests == len(val_out):  # nothing would be left to score
-        kept += _kept(val_out, "validation", 0)
+        kept += _kept(val_out, "leaving out every flagged validation test would leave 0")
     elif val_out:
         broken += val_out
         left_out |= {b.test for b in val_out}
@@ -201,10 +202,10 @@ def _screened(est_tests: list[CrashTest], val_tests: list[CrashTest], rate_hz: f
     return _Screened(est, val, gb, broken, est_kept, folds_, cv_now, low, kept)
 
 
-def _kept(flagged: list[BrokenTest], role: str, n_left: int) -> list[BrokenTest]:
-    """Tests the residual check flags that cannot be left out: said, never silent."""
-    return [dataclasses.replace(b, reason=f"{b.reason}; kept in the fits: leaving out every "
-                                f"flagged {role} test would leave {n_left}") for b in flagged]
+def _kept(flagged: list[BrokenTest], why: str) -> list[BrokenTest]:
+    """Tests the residual check flags that are not left out: said, never silent."""
+    return [dataclasses.replace(b, reason=f"{b.reason}; kept in the fits: {why}")
+            for b in flagged]
 
 
 def run_loop(est_tests: list[CrashTest], val_tests: list[CrashTest], out: Path,
