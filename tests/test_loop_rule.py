@@ -1537,6 +1537,40 @@ def test_of_two_effects_tied_on_setups_apart_the_one_that_passes_beside_the_othe
     assert not past_the_tie(a, b, both, SETUPS, None, ["B"], 1.0).apart
 
 
+def test_a_side_over_the_bar_beside_a_rival_that_adds_nothing_beside_it_is_named():
+    from observer_node.loop.analysis import Candidate
+    from observer_node.loop.evidence import past_the_tie
+    from observer_node.loop.verdicts import tie_verdict
+    a = _fits([6.0, 5.9, 1.7, 1.6, 16.7, 7.9])  # a webbing's toe on setups B and C, say
+    b = _fits([2.2, 3.5, 0.4, 2.7, 7.9, 3.3])  # an input delay on setup A
+    # beside b, a gains +3.4 points on 5 of 6 tests: over the bar, not above the scatter;
+    # beside a, b adds nothing (set AG's toe beside an input delay)
+    both = _fits([6.9, 6.0, 1.6, 1.5, 16.8, 7.8])
+    past = past_the_tie(a, b, both, SETUPS, ["B", "C"], ["A"], 1.0)
+    assert not past.a_beside_b.accepted and past.a_beside_b.gain_points >= 1.0
+    assert past.b_beside_a.gain_points < 0.25
+    assert past.named == "a" and past.over_bar and past.apart
+    assert past_the_tie(b, a, both, SETUPS, ["A"], ["B", "C"], 1.0).named == "b"
+    line = tie_verdict(Candidate("belt_stiffening", 0.5, {}, setups=["B", "C"]),
+                       Candidate("input_delay", 0.5, {}, setups=["A"]), past)
+    assert line.endswith("belt_stiffening on B+C explains what input_delay did, not the "
+                         "reverse: over the bar beside it, though not above the scatter, "
+                         "where input_delay adds nothing beside it")
+    # the same on one scope: an encompassing test, apart or not
+    assert past_the_tie(a, b, both, SETUPS, None, None, 1.0).named == "a"
+    # the rival still adds a third of a point beside it: not explained away, a true tie
+    both_b = {n: v + (0.4 if n in ("T0", "T1", "T2") else 0.3) for n, v in both.items()}
+    past = past_the_tie(a, b, both_b, SETUPS, None, None, 1.0)
+    assert past.b_beside_a.gain_points >= 0.25 and past.named == ""
+    # under the bar beside the rival: a true tie, however little the rival adds
+    weak = {n: b[n] + g for n, g in zip(b, [0.9, 0.8, 0.7, 0.6, 0.9, 0.8], strict=True)}
+    past = past_the_tie(a, b, weak, SETUPS, None, None, 1.0)
+    assert past.a_beside_b.gain_points < 1.0 and past.named == "" and not past.over_bar
+    # over the bar, but one setup lower beside the rival: not over the bar by the rule
+    low = dict(both, T2=a["T2"] - 1.0, T3=a["T3"] - 1.0)
+    assert past_the_tie(a, b, low, SETUPS, None, None, 1.0).named == ""
+
+
 def test_the_tests_left_out_are_drawn_against_the_others(campaign, tmp_path):
     # report.md points a reviewer to broken.png: one panel per test left out, its channel
     from matplotlib.image import imread

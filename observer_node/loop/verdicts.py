@@ -117,7 +117,11 @@ def tie_verdict(a: Candidate, b: Candidate, past: PastTheTie) -> str:
                 f"({ev.tests_improved} of {ev.tests} tests)"
                 + (", passing the rule" if ev.accepted else ""))
     a_on, b_on = f"{a.kind} on {scope_label(a.setups)}", f"{b.kind} on {scope_label(b.setups)}"
-    if past.apart and past.named in ("a", "b"):
+    if past.over_bar:
+        won, lost = (a_on, b.kind) if past.named == "a" else (b_on, a.kind)
+        verdict = (f"{won} explains what {lost} did, not the reverse: over the bar beside it, "
+                   f"though not above the scatter, where {lost} adds nothing beside it")
+    elif past.apart and past.named in ("a", "b"):
         won, lost = (a_on, b_on) if past.named == "a" else (b_on, a_on)
         verdict = (f"{won} passes beside {lost}, which acts on other setups and is judged "
                    "again beside it")
