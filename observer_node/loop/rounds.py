@@ -554,6 +554,9 @@ def _checked(c: Context, st: State, step: LoopStep, pick: _Pick, fit: Refit
         if pick.carrying:
             st.named_model = (st.base, st.effects)
     if refused:
+        # a rival it explained away is otherwise said nowhere (set AG's toe: an input delay
+        # that passed the rule on its own)
+        refused += f"; before that, {pick.tie_note}" if pick.tie_note else ""
         st.possible.append(PossibleEffect(best.kind, scope_label(best.setups),
                                           [e["kind"] for e in st.effects], pick.ev, refused,
                                           None if edge else by_setup))
