@@ -4490,7 +4490,8 @@ BEFORE_AH = _cases_of(heldout_sets.before("ah"))
 # the others untouched)
 WATCHED_AH = ("hah_broken_cd_stuck_bit", "hah_cr_damped", *ONE_PHYSICAL_AH)
 # the draws found impossible, drawn again by the next seeds in the order found (draw_ah.REDRAWN)
-REDRAWN_AH: list[tuple[str, int]] = []
+REDRAWN_AH: list[tuple[str, int]] = [("brs_late", 43001), ("brs_late", 43002),
+                                     ("brs_late", 43003)]
 # the two-effect case, on an earlier set's pairing (none free for it: draw_ah's reuse rule)
 TWO_AH = "hah_two_maxwell_r16_full_dual_sled"
 
