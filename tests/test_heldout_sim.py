@@ -26,6 +26,7 @@ from benchmarks.heldout import (
     draw_ae,
     draw_af,
     draw_ag,
+    draw_ah,
     draw_v,
     draw_w,
     draw_x,
@@ -44,6 +45,7 @@ from benchmarks.heldout.cases_ad import BY_NAME_AD, ONE_PHYSICAL_AD
 from benchmarks.heldout.cases_ae import BY_NAME_AE, ONE_PHYSICAL_AE
 from benchmarks.heldout.cases_af import BY_NAME_AF, ONE_PHYSICAL_AF
 from benchmarks.heldout.cases_ag import BY_NAME_AG, ONE_PHYSICAL_AG
+from benchmarks.heldout.cases_ah import BY_NAME_AH, ONE_PHYSICAL_AH
 from benchmarks.heldout.cases_p import BY_NAME_P
 from benchmarks.heldout.cases_q import BY_NAME_Q
 from benchmarks.heldout.cases_r import BY_NAME_R
@@ -3668,8 +3670,8 @@ def _follows_a_reusing_draw(draw_mod: ModuleType, seed: int, earlier: tuple[str,
                             redrawn: list[tuple[str, int]], before: list[cases.Case],
                             two_case: cases.Case) -> None:
     """A set drawn by set W's process from ``seed`` after the sets ``earlier``, its two-effect
-    case reusing a pairing those sets ran (sets Z, AA, AB, AC, AD, AE, AF and AG): the cases
-    follow the draw, and the reused pairing is one the rules allow that no free pairing could
+    case reusing a pairing those sets ran (sets Z, AA, AB, AC, AD, AE, AF, AG and AH): the
+    cases follow the draw, and the reused pairing is one the rules allow that no free pairing could
     replace."""
     d = draw_mod.draw(seed)
     assert d == draw_mod.draw()  # reproducible from its seed
@@ -3769,9 +3771,9 @@ def set_aa(tmp_path_factory: pytest.TempPathFactory) -> Path:
 
 
 @pytest.mark.parametrize("letters",
-                         ["x", "y", "z", "aa", "ab", "ac", "ad", "ae", "af", "ag"])
+                         ["x", "y", "z", "aa", "ab", "ac", "ad", "ae", "af", "ag", "ah"])
 def test_a_drawn_set_is_registered(letters: str, tmp_path: Path) -> None:
-    """Sets X-AG: each is its ``cases_<letters>.SET_<LETTERS>`` under its letters (either
+    """Sets X-AH: each is its ``cases_<letters>.SET_<LETTERS>`` under its letters (either
     case), for sets.select, make_sets and costs, after every set before it."""
     own = getattr(importlib.import_module(f"benchmarks.heldout.cases_{letters}"),
                   f"SET_{letters.upper()}")
@@ -3798,8 +3800,9 @@ def test_sets_before_are_names_not_letters() -> None:
     assert heldout_sets.before("ae") == (*after_aa, "ab", "ac", "ad")  # set AE's: A-AD
     assert heldout_sets.before("af") == (*after_aa, "ab", "ac", "ad", "ae")  # set AF's: A-AE
     assert heldout_sets.before("ag") == (*after_aa, "ab", "ac", "ad", "ae", "af")  # AG's: A-AF
-    with pytest.raises(ValueError, match="unknown case set 'ah'"):
-        heldout_sets.before("ah")
+    assert heldout_sets.before("ah") == (*after_aa, "ab", "ac", "ad", "ae", "af", "ag")  # A-AG
+    with pytest.raises(ValueError, match="unknown case set 'ai'"):
+        heldout_sets.before("ai")
     # a draw after AA takes AA's pairings; at this seed, without AA one single draws one of them
     aa = {_pairing(c) for c in SET_AA}
 
@@ -4479,6 +4482,121 @@ def test_set_ag_has_no_run_aways(set_ag: Path) -> None:
     _no_run_aways(SET_AG, set_ag)
 
 
+# ------------------------------------------------------------------ set AH (cases_ah.py)
+
+SET_AH = heldout_sets.case_set("ah")
+BEFORE_AH = _cases_of(heldout_sets.before("ah"))
+# the broken test, the transducer error, and every physical case of one effect (its rigs moved,
+# the others untouched)
+WATCHED_AH = ("hah_broken_cd_stuck_bit", "hah_cr_damped", *ONE_PHYSICAL_AH)
+# the draws found impossible, drawn again by the next seeds in the order found (draw_ah.REDRAWN)
+REDRAWN_AH: list[tuple[str, int]] = [("brs_late", 43001), ("brs_late", 43002),
+                                     ("brs_late", 43003)]
+# the two-effect case, on an earlier set's pairing (none free for it: draw_ah's reuse rule)
+TWO_AH = "hah_two_maxwell_r16_full_dual_sled"
+
+
+@pytest.fixture(scope="module")
+def set_ah(tmp_path_factory: pytest.TempPathFactory) -> Path:
+    return _generate(tmp_path_factory, "ah", WATCHED_AH)
+
+
+def test_set_ah_covers_the_general_list() -> None:
+    """Set AH as its brief asks: clean cases at 48 and 96 counts; each kind of the library a
+    loop can name, as physics, once in a case of its own; two effects of different kinds on
+    different rigs in one case; a broken estimation test; a transducer error on CR alone (as
+    drawn); a late pulse and a late BRS at delays in 1-5 ms no earlier set used on any input;
+    6 + 6 tests, every rig an estimation part holds held twice or more; an effect on some rigs
+    only rests on two estimation and two validation tests of them beside an estimation test of
+    a rig it spares."""
+    _covers_the_general_list(SET_AH, BEFORE_AH, "cr", ONE_PHYSICAL_AH, draw_ah.KINDS)
+
+
+def test_set_ah_follows_its_draw() -> None:
+    """Set AH's designer's choices are numpy's default_rng(43000)'s (``draw_ah.py``; the draws
+    found impossible drawn again by the next seeds, ``REDRAWN``), followed as drawn: each
+    kind's form, rigs, counts and mix; the two-effect case's kinds, forms, rigs, counts and mix;
+    the delays, their counts and mixes; the transducer error's output, form, counts and mix;
+    the broken test's channel, form, test, counts and mix; the clean cases' mixes. Set AG's
+    process: set W's kinds, pools and mix rules, A-AG's pairings taken, but the two-effect
+    case's: none was free for its rigs (the old rule draws it none), so it reuses one A-AG ran,
+    among those its rules allow."""
+    _follows_a_reusing_draw(draw_ah, 43000,
+                            (*"abcdefghijklmnopqrstuvwxyz", "aa", "ab", "ac", "ad", "ae", "af",
+                             "ag"),
+                            SET_AH, ONE_PHYSICAL_AH, REDRAWN_AH, BEFORE_AH, BY_NAME_AH[TWO_AH])
+    assert _pairing(BY_NAME_AH[TWO_AH]) == ((2, 2, 2), (3, 2, 1))
+
+
+def test_set_ah_lab_side_is_as_drawn_and_unnamed() -> None:
+    """One broken estimation test, the only thing expected; one transducer error on CR on every
+    test, nothing physical named; AH's physics earlier sets' forms only."""
+    _lab_side_as_drawn(SET_AH, "cr")
+    assert {k for k in _keys(SET_AH) if physics.EFFECTS[k]} <= _keys(BEFORE_AH)
+
+
+@pytest.mark.parametrize("case", sorted(ONE_PHYSICAL_AH))
+def test_set_ah_physics_moves_its_rigs_only(set_ah: Path, case: str) -> None:
+    """Each physical case moves what its form moves on every test of its rigs (the chest's,
+    belt's, bag's and pelvis's forms CR and CD, the pulse untouched; the BRS's off-centre
+    encoder the BRS alone) and leaves the tests of a rig it spares untouched to the bit."""
+    _moves_its_rigs_only(set_ah, BY_NAME_AH[case])
+
+
+def test_set_ah_cd_stuck_bit_reads_a_bit_high(set_ah: Path) -> None:
+    """A data line of the CD digitiser stuck at 1 (set H's form and check, at this set's
+    size): the recorded channel (J211 sign) reads one bit's weight high wherever that bit
+    should be 0, so CD reads that much less compression in every other band of the bit's
+    weight, and at rest flickers between 0 and minus it; the other channels and tests as
+    without it."""
+    c = BY_NAME_AH["hah_broken_cd_stuck_bit"]
+    (broken,), (eff,) = c.expect_broken, c.effects
+    weight = 2 * lab.CD_ADC_MM / 2 ** lab.ADC_BITS * 2 ** int(eff.size)
+    assert weight == pytest.approx(12.5)
+    bad = _channel(set_ah / "on" / c.name, broken, "cd")
+    good = _channel(set_ah / "off" / c.name, broken, "cd")
+    rest = _times(len(bad)) < 0
+    assert -0.75 * weight < bad[rest].mean() < -0.25 * weight  # a flickering pre-crash line
+    assert np.ptp(bad[rest]) > weight / 2 and np.abs(good[rest]).max() < 0.5
+    low = good - bad
+    assert low.min() > -1.0 and low.max() < weight + 1.0
+    loaded = good > 8
+    share = np.mean(low[loaded] > 0.8 * weight)  # bands of the bit's weight, alternately low
+    assert 0.2 < share < 0.8
+    for which in ("cr", "pulse"):
+        assert np.array_equal(_channel(set_ah / "on" / c.name, broken, which),
+                              _channel(set_ah / "off" / c.name, broken, which))
+    _others_untouched(set_ah, c.name, broken)
+
+
+def test_set_ah_cr_damped_lags_cr_only(set_ah: Path) -> None:
+    """CR reads its own signal through the damped element (within the CFC 180 filter and the
+    noise, which the element filters too), later at its peak (set O's check), every test; CD,
+    pulse and BRS untouched."""
+    c = BY_NAME_AH["hah_cr_damped"]
+    (e,) = c.effects
+    on, off = set_ah / "on" / c.name, set_ah / "off" / c.name
+    seen = 0
+    for folder in sorted(on.glob("*/*")):
+        name = folder.name
+        for which in ("cd", "pulse"):
+            assert np.array_equal(_channel(on, name, which), _channel(off, name, which))
+        assert np.array_equal(_brs(on, name), _brs(off, name))
+        cr, cr0 = _channel(on, name, "cr"), _channel(off, name, "cr")
+        t = _times(len(cr))
+        inner = (t > 0.0) & (t < 0.17)
+        miss = np.abs(cr - lab.damped_element(cr0, e.size))[inner].max()
+        moved = np.abs(cr - cr0).max()
+        assert miss < 1.0 and miss < 0.2 * moved, (name, miss, moved)
+        assert np.argmax(cr) > np.argmax(cr0) and moved > 2.0
+        seen += 1
+    assert seen == 12
+
+
+def test_set_ah_has_no_run_aways(set_ah: Path) -> None:
+    _no_run_aways(SET_AH, set_ah)
+
+
 def test_more_tests_doubles_the_estimation_tests_only(tmp_path: Path) -> None:
     """``more_tests``: K times each rig's estimation tests, the validation tests and the
     effects as written, another seed (new crashes), a name that says so; the broken test's name
@@ -4533,12 +4651,12 @@ def test_loop_heldout_on_a_folder_without_the_case_is_one_line(tmp_path: Path) -
     assert "--case haa_clean48 --est-times 2 --out" in r.stderr
 
 
-# the drawn sets X-AG: each one's seed, and its cases that reuse an earlier set's pairing by
+# the drawn sets X-AH: each one's seed, and its cases that reuse an earlier set's pairing by
 # its draw's rule (the two-effect case since set Z: none was free for its rigs)
 DRAWN = {"x": (33000, ()), "y": (34000, ()), "z": (35000, (TWO_Z,)),
          "aa": (36000, (TWO_AA,)), "ab": (37000, (TWO_AB,)), "ac": (38000, (TWO_AC,)),
          "ad": (39000, (TWO_AD,)), "ae": (40000, (TWO_AE,)), "af": (41000, (TWO_AF,)),
-         "ag": (42000, (TWO_AG,))}
+         "ag": (42000, (TWO_AG,)), "ah": (43000, (TWO_AH,))}
 
 
 @pytest.mark.parametrize("letters", DRAWN)
