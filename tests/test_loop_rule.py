@@ -1551,6 +1551,9 @@ def test_a_side_over_the_bar_beside_a_rival_that_adds_nothing_beside_it_is_named
     assert past.b_beside_a.gain_points < 0.25
     assert past.named == "a" and past.over_bar and past.apart
     assert past_the_tie(b, a, both, SETUPS, ["A"], ["B", "C"], 1.0).named == "b"
+    # ... but only one that passes the rule on its own: a rival over the bar alone is not
+    # named for explaining the winner away (set W's toe, 4 of 6 tests on its own)
+    assert past_the_tie(b, a, both, SETUPS, ["A"], ["B", "C"], 1.0, b_passes=False).named == ""
     line = tie_verdict(Candidate("belt_stiffening", 0.5, {}, setups=["B", "C"]),
                        Candidate("input_delay", 0.5, {}, setups=["A"]), past)
     assert line.endswith("belt_stiffening on B+C explains what input_delay did, not the "

@@ -243,7 +243,8 @@ class PastTheTie:
 
 def past_the_tie(cv_a: dict[str, float], cv_b: dict[str, float], cv_both: dict[str, float],
                  setups: dict[str, str], scope_a: list[str] | None,
-                 scope_b: list[str] | None, margin: float) -> PastTheTie:
+                 scope_b: list[str] | None, margin: float, b_passes: bool = True
+                 ) -> PastTheTie:
     """Look past a tie between effects ``a`` and ``b`` (per-test cross-validated fit_TOT [%]
     with ``a``, with ``b`` and with both): the rule, applied to each beside the other. Where
     one mimics part of the other, it adds nothing once the other is in the model, while the
@@ -266,7 +267,9 @@ def past_the_tie(cv_a: dict[str, float], cv_b: dict[str, float], cv_both: dict[s
     webbing's toe or a knee path over the bar on 4-5 of 6 tests beside an input delay, gain or
     an airbag that added -0.14 to +0.11 points beside it; in the stored runs of the 34 cases
     of sets T-AG with such a tie, no side that was not there gained over the bar beside a
-    rival adding under 0.25)."""
+    rival adding under 0.25). Named so only if it passes the rule on its own: ``a`` does
+    (the round's winner), ``b`` when ``b_passes`` (a rival may be one over the bar alone, as
+    W's and AA's toes were, and the rule names no such effect)."""
     a = judge(cv_b, cv_both, setups, scope_a, margin)
     b = judge(cv_a, cv_both, setups, scope_b, margin)
     apart = (scope_a is not None and scope_b is not None
@@ -278,6 +281,6 @@ def past_the_tie(cv_a: dict[str, float], cv_b: dict[str, float], cv_both: dict[s
         return PastTheTie(named, a, b, apart)
     if over_the_bar(a, margin) and b.gain_points < POSSIBLE_MIN:
         return PastTheTie("a", a, b, apart, over_bar=True)
-    if over_the_bar(b, margin) and a.gain_points < POSSIBLE_MIN:
+    if b_passes and over_the_bar(b, margin) and a.gain_points < POSSIBLE_MIN:
         return PastTheTie("b", a, b, apart, over_bar=True)
     return PastTheTie("", a, b, apart)

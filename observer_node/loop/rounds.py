@@ -299,7 +299,7 @@ def _picked(c: Context, st: State, step: LoopStep, tried: list[Tried], passing: 
                      and scope_label(t[1].setups) == runner_up.scope)
         c.prog.update(f"looking past a tie: {best.kind} and {rival[1].kind} together")
         past = _look_past(c.runner, st.base, st.effects, c.est, c.folds, best, rival[1],
-                          per_test, c.test_setup, c.margin)
+                          per_test, c.test_setup, c.margin, rival[2].accepted)
         tie_note = tie_verdict(best, rival[1], past)
         if not past.named:
             # two explanations the data defend equally are not a finding: both possible
@@ -722,14 +722,15 @@ def _rounded(per_setup: dict[str, float]) -> dict[str, float]:
 
 def _look_past(runner: Runner, base: dict, effects: list[dict], data: Dataset, folds_: Folds,
                a: Candidate, b: Candidate, per_test: dict[int, dict[str, float]],
-               test_setup: dict[str, str], margin: float) -> PastTheTie:
+               test_setup: dict[str, str], margin: float, b_passes: bool) -> PastTheTie:
     """A tie between ``a`` and ``b`` looked past: the model with both cross-validated, and
-    each judged by the rule beside the other."""
+    each judged by the rule beside the other (``b_passes``: ``b`` passes the rule on its
+    own, as ``a``, the round's winner, does)."""
     better = {n: max(v, per_test[id(b)][n]) for n, v in per_test[id(a)].items()}
     cv_both = cross_validate(runner, [(base, [*effects, a.effect(), b.effect()])], data, folds_,
                              instead=better)[0]
     return past_the_tie(per_test[id(a)], per_test[id(b)], cv_both, test_setup, a.setups,
-                        b.setups, margin)
+                        b.setups, margin, b_passes)
 
 
 def _sensor_candidates(runner: Runner, base: dict, effects: list[dict], data: Dataset,
