@@ -471,6 +471,16 @@ def test_a_tie_with_too_few_validation_tests_is_not_judged_by_them(tmp_path, twi
             ) in r.history[-1].decision
 
 
+def test_a_tie_side_acting_on_none_of_the_validation_tests_is_not_told_apart_by_them():
+    # Set AH: a belt stiffening on R16 "told apart" on six FULL validation tests, where it
+    # acts on none: its gain there was the shared base parameters'.
+    from observer_node.loop.rounds import acts_on_none
+    assert acts_on_none(["R16"], ["FULL"] * 6)
+    assert not acts_on_none(["R16", "FULL"], ["FULL", "SLED"])
+    assert not acts_on_none(None, ["FULL"])  # on every setup: it acts on every test
+    assert acts_on_none(["SLED"], [])  # no tests: nothing it acts on
+
+
 def test_a_tie_side_told_apart_but_refused_leaves_nothing_carried(tmp_path, twin, monkeypatch):
     # The second side fits every validation test 10 points worse, so the first is told apart;
     # but its validation total falls 10 points: refused as a carried side would be, and the

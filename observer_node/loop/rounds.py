@@ -9,6 +9,7 @@ ties (:mod:`.verdicts`), then the refit's own checks and the validation tests.
 
 from __future__ import annotations
 
+from collections.abc import Iterable
 from dataclasses import dataclass, field, replace
 from typing import NamedTuple
 
@@ -453,10 +454,14 @@ def _told(c: Context, st: State, pick: _Pick, fit: Refit
                    .tests.items() if n in val_setup} for f in (fit, fit_b))
     sides = ((pick.best.kind, scope_label(pick.best.setups)),
              (pick.runner_up.kind, pick.runner_up.scope) if pick.runner_up else ("", ""))
+    # a side that acts on none of these tests gains there through the base parameters all
+    # rigs share, not by its effect (set AH: a belt stiffening on R16 told apart on six FULL
+    # tests from an input gain on FULL, for a webbing's hysteresis on FULL)
+    blind = [p for p in (pick, other) if acts_on_none(p.best.setups, val_setup.values())]
     for won, won_fit, lost, x, y, recorded in ((pick, fit, other, on_a, on_b, sides),
                                                (other, fit_b, pick, on_b, on_a, sides[::-1])):
         ev = judge(y, x, val_setup, None, c.margin)
-        if ev.accepted:
+        if ev.accepted and not any(won is p for p in blind):
             note = (f"{pick.tie_note}; on the {ev.tests} validation tests of the judged rigs "
                     f"either acts on, {won.best.kind} on {scope_label(won.best.setups)} fits "
                     f"{ev.gain_points:.2f} points better than {lost.best.kind} on "
@@ -472,9 +477,17 @@ def _told(c: Context, st: State, pick: _Pick, fit: Refit
                                 margin_points=round(won.cv - lost.cv, 2),
                                 tie_sides=recorded), won_fit
     d = np.array([on_a[n] - on_b[n] for n in val_setup])
+    why = "".join(f"; {p.best.kind} on {scope_label(p.best.setups)} acts on none of them, "
+                  "so they judge the base parameters, not it" for p in blind)
     return (f"the validation tests of the judged rigs either acts on do not tell them apart "
             f"either ({pick.best.kind} {float(np.mean(d)):+.2f} points against "
-            f"{other.best.kind}, better on {int(np.sum(d > 0))} of {len(d)})")
+            f"{other.best.kind}, better on {int(np.sum(d > 0))} of {len(d)}{why})")
+
+
+def acts_on_none(scope: list[str] | None, setups: Iterable[str]) -> bool:
+    """Whether an effect on ``scope`` (None: every setup) acts on none of the tests of
+    ``setups``."""
+    return scope is not None and not set(scope) & set(setups)
 
 
 def _an_output_lag(c: Context, st: State, step: LoopStep, pick: _Pick, fit: Refit) -> bool:
