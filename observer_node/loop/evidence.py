@@ -267,20 +267,24 @@ def past_the_tie(cv_a: dict[str, float], cv_b: dict[str, float], cv_both: dict[s
     webbing's toe or a knee path over the bar on 4-5 of 6 tests beside an input delay, gain or
     an airbag that added -0.14 to +0.11 points beside it; in the stored runs of the 34 cases
     of sets T-AG with such a tie, no side that was not there gained over the bar beside a
-    rival adding under 0.25). Named so only if it passes the rule on its own: ``a`` does
-    (the round's winner), ``b`` when ``b_passes`` (a rival may be one over the bar alone, as
-    W's and AA's toes were, and the rule names no such effect)."""
+    rival adding under 0.25). A side is named only if it passes the rule on its own, on any
+    of these paths: ``a`` does (the round's winner), ``b`` when ``b_passes`` (a rival may be
+    one over the bar alone, as W's and AA's toes were, and the rule names no such effect)."""
     a = judge(cv_b, cv_both, setups, scope_a, margin)
     b = judge(cv_a, cv_both, setups, scope_b, margin)
     apart = (scope_a is not None and scope_b is not None
              and not set(scope_a) & set(scope_b))
     named = ("both" if a.accepted and b.accepted
              else "a" if a.accepted and (apart or b.gain_points < POSSIBLE_MIN)
-             else "b" if b.accepted and (apart or a.gain_points < POSSIBLE_MIN) else "")
+             else "b" if b_passes and b.accepted and (apart or a.gain_points < POSSIBLE_MIN)
+             else "")
     if named:
         return PastTheTie(named, a, b, apart)
-    if over_the_bar(a, margin) and b.gain_points < POSSIBLE_MIN:
+    # "nothing" under the bar too: at a margin set under 0.25, two sides adding alike beside
+    # each other would each be over it and "nothing"
+    nothing = min(POSSIBLE_MIN, margin)
+    if over_the_bar(a, margin) and b.gain_points < nothing:
         return PastTheTie("a", a, b, apart, over_bar=True)
-    if b_passes and over_the_bar(b, margin) and a.gain_points < POSSIBLE_MIN:
+    if b_passes and over_the_bar(b, margin) and a.gain_points < nothing:
         return PastTheTie("b", a, b, apart, over_bar=True)
     return PastTheTie("", a, b, apart)

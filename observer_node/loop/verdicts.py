@@ -120,7 +120,9 @@ def tie_verdict(a: Candidate, b: Candidate, past: PastTheTie) -> str:
     if past.over_bar:
         won, lost = (a_on, b.kind) if past.named == "a" else (b_on, a.kind)
         verdict = (f"{won} explains what {lost} did, not the reverse: over the bar beside it, "
-                   f"though not above the scatter, where {lost} adds nothing beside it")
+                   f"though not above the scatter, where {lost} adds nothing beside it"
+                   + (f"; {lost} acts on other setups and is judged again beside it"
+                      if past.apart else ""))
     elif past.apart and past.named in ("a", "b"):
         won, lost = (a_on, b_on) if past.named == "a" else (b_on, a_on)
         verdict = (f"{won} passes beside {lost}, which acts on other setups and is judged "
