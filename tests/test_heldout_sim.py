@@ -845,6 +845,50 @@ WATCHED_H = ("hh_broken_cd_stuck_bit", "hh_broken_brs_quadrature", "hh_cr_ac_cou
              "hh_rib_squeeze", "hh_airbag_fabric", "hh_pelvis_submarine")
 
 
+def _cr_damped_lags_cr_only(sets_dir: Path, c: cases.Case) -> None:
+    """Set O's check of a damped CR element, every test of the case: CR through the element
+    (within the CFC 180 filter and the noise), later at its peak; CD, pulse and BRS as
+    without it."""
+    (e,) = c.effects
+    on, off = sets_dir / "on" / c.name, sets_dir / "off" / c.name
+    seen = 0
+    for folder in sorted(on.glob("*/*")):
+        name = folder.name
+        for which in ("cd", "pulse"):
+            assert np.array_equal(_channel(on, name, which), _channel(off, name, which))
+        assert np.array_equal(_brs(on, name), _brs(off, name))
+        cr, cr0 = _channel(on, name, "cr"), _channel(off, name, "cr")
+        t = _times(len(cr))
+        inner = (t > 0.0) & (t < 0.17)
+        miss = np.abs(cr - lab.damped_element(cr0, e.size))[inner].max()
+        moved = np.abs(cr - cr0).max()
+        assert miss < 1.0 and miss < 0.2 * moved, (name, miss, moved)
+        assert np.argmax(cr) > np.argmax(cr0) and moved > 2.0
+        seen += 1
+    assert seen == 12
+
+
+def _cd_stuck_bit_reads_a_bit_high(sets_dir: Path, c: cases.Case, broken: str,
+                                   weight: float) -> None:
+    """Set H's check of a CD data line stuck at 1 on test ``broken`` (``weight`` mm a bit):
+    one bit's weight high wherever it should be 0, a flickering line at rest; the other
+    channels and tests as without it."""
+    bad = _channel(sets_dir / "on" / c.name, broken, "cd")
+    good = _channel(sets_dir / "off" / c.name, broken, "cd")
+    rest = _times(len(bad)) < 0
+    assert -0.75 * weight < bad[rest].mean() < -0.25 * weight  # a flickering pre-crash line
+    assert np.ptp(bad[rest]) > weight / 2 and np.abs(good[rest]).max() < 0.5
+    low = good - bad
+    assert low.min() > -1.0 and low.max() < weight + 1.0
+    loaded = good > 8
+    share = np.mean(low[loaded] > 0.8 * weight)  # bands of the bit's weight, alternately low
+    assert 0.2 < share < 0.8
+    for which in ("cr", "pulse"):
+        assert np.array_equal(_channel(sets_dir / "on" / c.name, broken, which),
+                              _channel(sets_dir / "off" / c.name, broken, which))
+    _others_untouched(sets_dir, c.name, broken)
+
+
 @pytest.fixture(scope="module")
 def set_h(tmp_path_factory: pytest.TempPathFactory) -> Path:
     return _generate(tmp_path_factory, "h", WATCHED_H)
@@ -858,20 +902,7 @@ def test_set_h_cd_stuck_bit_reads_a_bit_high(set_h: Path) -> None:
     (broken,), (eff,) = c.expect_broken, c.effects
     weight = 2 * lab.CD_ADC_MM / 2 ** lab.ADC_BITS * 2 ** int(eff.size)
     assert weight == pytest.approx(6.25)
-    bad = _channel(set_h / "on" / c.name, broken, "cd")
-    good = _channel(set_h / "off" / c.name, broken, "cd")
-    rest = _times(len(bad)) < 0
-    assert -0.75 * weight < bad[rest].mean() < -0.25 * weight  # a flickering pre-crash line
-    assert np.ptp(bad[rest]) > weight / 2 and np.abs(good[rest]).max() < 0.5
-    low = good - bad
-    assert low.min() > -1.0 and low.max() < weight + 1.0
-    loaded = good > 8
-    share = np.mean(low[loaded] > 0.8 * weight)  # bands of the bit's weight, alternately low
-    assert 0.2 < share < 0.8
-    for which in ("cr", "pulse"):
-        assert np.array_equal(_channel(set_h / "on" / c.name, broken, which),
-                              _channel(set_h / "off" / c.name, broken, which))
-    _others_untouched(set_h, c.name, broken)
+    _cd_stuck_bit_reads_a_bit_high(set_h, c, broken, weight)
 
 
 def test_set_h_brs_quadrature_reads_four_times(set_h: Path) -> None:
@@ -1997,23 +2028,7 @@ def test_set_o_cr_damped_lags_cr_only(set_o: Path) -> None:
     """CR reads its own signal through the damped element (within the CFC 180 filter and the
     noise, which the element filters too), later at its peak; CD, pulse and BRS untouched."""
     c = heldout_sets.select(["ho_cr_damped"], "o")[0]
-    (e,) = c.effects
-    on, off = set_o / "on" / c.name, set_o / "off" / c.name
-    seen = 0
-    for folder in sorted(on.glob("*/*")):
-        name = folder.name
-        for which in ("cd", "pulse"):
-            assert np.array_equal(_channel(on, name, which), _channel(off, name, which))
-        assert np.array_equal(_brs(on, name), _brs(off, name))
-        cr, cr0 = _channel(on, name, "cr"), _channel(off, name, "cr")
-        t = _times(len(cr))
-        inner = (t > 0.0) & (t < 0.17)
-        miss = np.abs(cr - lab.damped_element(cr0, e.size))[inner].max()
-        moved = np.abs(cr - cr0).max()
-        assert miss < 1.0 and miss < 0.2 * moved, (name, miss, moved)
-        assert np.argmax(cr) > np.argmax(cr0) and moved > 2.0
-        seen += 1
-    assert seen == 12
+    _cr_damped_lags_cr_only(set_o, c)
 
 
 # ------------------------------------------------------------------ set P (cases_p.py)
@@ -4354,23 +4369,7 @@ def test_set_af_cr_damped_lags_cr_only(set_af: Path) -> None:
     noise, which the element filters too), later at its peak (set O's check), every test; CD,
     pulse and BRS untouched."""
     c = BY_NAME_AF["haf_cr_damped"]
-    (e,) = c.effects
-    on, off = set_af / "on" / c.name, set_af / "off" / c.name
-    seen = 0
-    for folder in sorted(on.glob("*/*")):
-        name = folder.name
-        for which in ("cd", "pulse"):
-            assert np.array_equal(_channel(on, name, which), _channel(off, name, which))
-        assert np.array_equal(_brs(on, name), _brs(off, name))
-        cr, cr0 = _channel(on, name, "cr"), _channel(off, name, "cr")
-        t = _times(len(cr))
-        inner = (t > 0.0) & (t < 0.17)
-        miss = np.abs(cr - lab.damped_element(cr0, e.size))[inner].max()
-        moved = np.abs(cr - cr0).max()
-        assert miss < 1.0 and miss < 0.2 * moved, (name, miss, moved)
-        assert np.argmax(cr) > np.argmax(cr0) and moved > 2.0
-        seen += 1
-    assert seen == 12
+    _cr_damped_lags_cr_only(set_af, c)
 
 
 def test_set_af_has_no_run_aways(set_af: Path) -> None:
@@ -4553,20 +4552,7 @@ def test_set_ah_cd_stuck_bit_reads_a_bit_high(set_ah: Path) -> None:
     (broken,), (eff,) = c.expect_broken, c.effects
     weight = 2 * lab.CD_ADC_MM / 2 ** lab.ADC_BITS * 2 ** int(eff.size)
     assert weight == pytest.approx(12.5)
-    bad = _channel(set_ah / "on" / c.name, broken, "cd")
-    good = _channel(set_ah / "off" / c.name, broken, "cd")
-    rest = _times(len(bad)) < 0
-    assert -0.75 * weight < bad[rest].mean() < -0.25 * weight  # a flickering pre-crash line
-    assert np.ptp(bad[rest]) > weight / 2 and np.abs(good[rest]).max() < 0.5
-    low = good - bad
-    assert low.min() > -1.0 and low.max() < weight + 1.0
-    loaded = good > 8
-    share = np.mean(low[loaded] > 0.8 * weight)  # bands of the bit's weight, alternately low
-    assert 0.2 < share < 0.8
-    for which in ("cr", "pulse"):
-        assert np.array_equal(_channel(set_ah / "on" / c.name, broken, which),
-                              _channel(set_ah / "off" / c.name, broken, which))
-    _others_untouched(set_ah, c.name, broken)
+    _cd_stuck_bit_reads_a_bit_high(set_ah, c, broken, weight)
 
 
 def test_set_ah_cr_damped_lags_cr_only(set_ah: Path) -> None:
@@ -4574,23 +4560,7 @@ def test_set_ah_cr_damped_lags_cr_only(set_ah: Path) -> None:
     noise, which the element filters too), later at its peak (set O's check), every test; CD,
     pulse and BRS untouched."""
     c = BY_NAME_AH["hah_cr_damped"]
-    (e,) = c.effects
-    on, off = set_ah / "on" / c.name, set_ah / "off" / c.name
-    seen = 0
-    for folder in sorted(on.glob("*/*")):
-        name = folder.name
-        for which in ("cd", "pulse"):
-            assert np.array_equal(_channel(on, name, which), _channel(off, name, which))
-        assert np.array_equal(_brs(on, name), _brs(off, name))
-        cr, cr0 = _channel(on, name, "cr"), _channel(off, name, "cr")
-        t = _times(len(cr))
-        inner = (t > 0.0) & (t < 0.17)
-        miss = np.abs(cr - lab.damped_element(cr0, e.size))[inner].max()
-        moved = np.abs(cr - cr0).max()
-        assert miss < 1.0 and miss < 0.2 * moved, (name, miss, moved)
-        assert np.argmax(cr) > np.argmax(cr0) and moved > 2.0
-        seen += 1
-    assert seen == 12
+    _cr_damped_lags_cr_only(set_ah, c)
 
 
 def test_set_ah_has_no_run_aways(set_ah: Path) -> None:

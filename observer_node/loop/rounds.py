@@ -569,12 +569,12 @@ def _checked(c: Context, st: State, step: LoopStep, pick: _Pick, fit: Refit
     if refused:
         # a rival it explained away is otherwise said nowhere (set AG's toe: an input delay
         # that passed the rule on its own)
-        past = f" (before that, {pick.tie_note})" if pick.tie_note else ""
+        tie_words = f" (before that, {pick.tie_note})" if pick.tie_note else ""
         st.possible.append(PossibleEffect(best.kind, scope_label(best.setups),
                                           [e["kind"] for e in st.effects], pick.ev,
-                                          refused + past, None if edge else by_setup))
+                                          refused + tie_words, None if edge else by_setup))
         step.decision = (f"{best.kind} on {scope_label(best.setups)} passes the rule on "
-                         f"the estimation tests, but {refused}: not accepted{past}")
+                         f"the estimation tests, but {refused}: not accepted{tie_words}")
         return None
     return _Checked(share_before, share_after, correlation_tests(resid_old, c.est),
                     correlation_tests(resid_new, c.est), val_fit)
