@@ -93,7 +93,7 @@ def test_loop_improves_campaign_validation_fit(r16_loop):
     for (_, rows), step in zip(rounds, r.history, strict=True):
         assert [row[0] for row in rows] == (
             [f"{t.kind} on {t.scope}" for t in step.tried[:EVIDENCE_ROWS]]
-            + [f"sensor: {o.upper()} static" for o in step.sensor])
+            + [f"sensor: {o.upper()}" for o in step.sensor])
         assert all(row[1] for row in rows)
     assert "evidence.png" in (tmp_path / "report.md").read_text()
     # the criteria a restraint engineer reads, per validation test, before and after

@@ -198,7 +198,7 @@ def test_evidence_png_draws_each_round_as_the_rule_reads_it(
     assert [(r[0], r[4]) for r in rows] == [("airbag_contact on SLED", True),
                                             ("belt_stiffening on SLED", True),
                                             ("pelvis_coupling on all", False),
-                                            ("sensor: CR static", False)]
+                                            ("sensor: CR", False)]
     assert rows[0][1] == rule.test_gain_points and rows[0][3] == rule.ci95_points
     # a long decision is shortened and wrapped, not run off the figure
     assert title.startswith("round 1 (model with no effect): airbag_contact")

@@ -19,7 +19,12 @@ from observer_node.data.setups import assign_setups
 from observer_node.ident.dataset import make_dataset
 from observer_node.ident.metrics import Fits, FitTable, OutputFits
 from observer_node.loop import evidence
-from observer_node.loop.diagnosis import shape_gains, unexplained, without_static
+from observer_node.loop.diagnosis import (
+    sensor_shape,
+    shape_gains,
+    unexplained,
+    without_sensor,
+)
 from observer_node.loop.evidence import MAX_TESTS, Evidence, judge, needed_tests
 from observer_node.loop.screening import (
     PAYOUT_GAP_MS,
@@ -1031,8 +1036,31 @@ def test_a_transducer_non_linearity_is_a_static_function_of_one_output(campaign)
     assert [x.output for x in u] == ["cd"] and u[0].shape == "static"
     assert unexplained(data, y_hat) == []
     # taken out of the measurement, the over-reading leaves what a right transducer reads
-    right = without_static(bent, y_hat, "cd")
+    right = without_sensor(bent, y_hat, "cd")
     assert np.allclose(right.y, data.y, atol=1e-6 * np.max(np.abs(data.y)))
+    assert sensor_shape(bent, y_hat, "cd") == "static"
+
+
+def _sagging(cd_mm: np.ndarray, fs_hz: float, sag: float = 0.3) -> np.ndarray:
+    """CD read through a pot whose excitation sags from contact on, as a recorder's battery
+    does once it starts writing: the gain falls by ``sag`` with a 60 ms time constant."""
+    t_s = np.arange(cd_mm.shape[1]) / fs_hz
+    return cd_mm * (1.0 - sag * (1.0 - np.exp(-t_s / 0.06)))
+
+
+def test_a_transducer_gain_sagging_in_time_is_a_drift_of_one_output(campaign):
+    """CD's gain sagging in time (CR untouched) is no static function of CD: it looks like a
+    drift in time of CD, and taking the fuller correction (static and drift) out of the
+    measurement leaves nearly what a right transducer reads."""
+    data = make_dataset([t for t in campaign if t.name.startswith("R16")][:4], 1000.0)
+    y_hat = data.y.copy()  # a perfect model of the true chest
+    sagged = dataclasses.replace(data, y=data.y.copy())
+    sagged.y[..., 1] = _sagging(data.y[..., 1], data.fs_hz)
+    assert sensor_shape(sagged, y_hat, "cd") == "drift"
+    err = np.abs(sagged.y[:, data.win, 1] - data.y[:, data.win, 1]).max()
+    left = np.abs(without_sensor(sagged, y_hat, "cd", "sensor").y[:, data.win, 1]
+                  - data.y[:, data.win, 1]).max()
+    assert left < 0.2 * err
 
 
 @pytest.fixture(scope="module")
@@ -1149,6 +1177,58 @@ def test_a_transducers_correction_gains_nothing_on_a_fold_that_stalled(chest, mo
     assert Evidence.from_dict(stalled.as_dict()).stalled_tests == stalled.stalled_tests
 
 
+def test_a_sagging_cd_is_blamed_on_cd_by_its_fuller_correction(chest):
+    """A CD pot whose gain sags in time: each output's fuller correction (static and drift)
+    is judged beside its static one, and CD's, which takes the sag itself, passes and gains
+    more than CR's."""
+    from observer_node.loop import rounds
+    from observer_node.loop.diagnosis import FULLER
+    from observer_node.loop.refit import folds, model
+
+    data, base, _, _ = chest
+    with np.errstate(all="ignore"):
+        y = model(base, [], data).simulate(data.pulse_g, data.brs_rad)
+    y[..., 1] = _sagging(y[..., 1], data.fs_hz)
+    data = dataclasses.replace(data, y=y)
+    setups = dict(zip(data.names, data.setups, strict=True))
+    cv_now = rounds.cross_validate(InProcess(), [(base, [])], data, folds(data))[0]
+    ev = rounds._sensor_candidates(InProcess(), base, [], data, folds(data), cv_now, setups,
+                                   1.0)
+    assert set(ev) == {"cr", "cd", "cr" + FULLER, "cd" + FULLER}
+    cd, cr = ev["cd" + FULLER], ev["cr" + FULLER]
+    assert cd.accepted and cd.gain_points > cr.gain_points + 0.5
+    assert cd.gain_points > ev["cd"].gain_points  # the drift takes what the static cannot
+
+
+def test_the_output_blamed_is_the_one_whose_fuller_correction_gains_more():
+    """The static correction says whether a transducer is at fault, the fuller one which
+    (sets W and AG: CD's sag bent the model, and CR's static correction passed, +1.04
+    points, where CD's fuller one gained +1.66 against CR's +1.15). The other output is
+    blamed only when its fuller correction passes the rule and gains more."""
+    from observer_node.loop.diagnosis import FULLER
+    from observer_node.loop.rounds import _which_transducer
+
+    names = [f"T{i}" for i in range(6)]
+    setups = dict.fromkeys(names, "R16")
+
+    def ev(gain: float) -> Evidence:
+        return judge(dict.fromkeys(names, 85.0),
+                     {n: 85.0 + gain + 0.1 * (i % 2) for i, n in enumerate(names)}, setups,
+                     None, 1.0)
+
+    cr, cd_full, cr_full = ev(1.04), ev(1.66), ev(1.15)
+    assert cr.accepted and cd_full.accepted
+    sensor = {"cr": cr, "cd": ev(0.23), "cr" + FULLER: cr_full, "cd" + FULLER: cd_full}
+    assert _which_transducer("cr", cr, sensor) == ("cd", cd_full, True)
+    # CR's own fuller correction gains more: CR stays blamed on its static evidence
+    assert _which_transducer("cr", cr, {**sensor, "cr" + FULLER: ev(1.9)}) == ("cr", cr, False)
+    # CD's gains more but does not pass the rule: nothing switches
+    weak = ev(0.6)
+    assert not weak.accepted
+    assert _which_transducer("cr", cr, {**sensor, "cd" + FULLER: weak,
+                                        "cr" + FULLER: ev(0.5)}) == ("cr", cr, False)
+
+
 def test_a_physical_effect_no_better_than_a_transducer_is_not_named():
     """A physical effect that wins a round where one output's static correction passes the
     rule too is named only if it beats that correction test by test above the scatter (set F:
@@ -1161,7 +1241,7 @@ def test_a_physical_effect_no_better_than_a_transducer_is_not_named():
     close = judge(*_cv([2.9, 1.8, 3.3, 2.2, 2.7, 2.8]), SETUPS, None, 1.0)
     why = untold_from_sensor(stiff, close, "cd", sensor)
     assert sensor.accepted and close.accepted and why is not None
-    assert "static correction of cd" in why and "better on 3 of 6 tests" in why
+    assert "sensor correction of cd" in why and "better on 3 of 6 tests" in why
     clear = judge(*_cv([4.1, 3.5, 4.6, 3.9, 4.0, 4.4]), SETUPS, None, 1.0)
     assert untold_from_sensor(stiff, clear, "cd", sensor) is None
 

@@ -405,7 +405,7 @@ def _evidence_rounds(history: list[LoopStep]) -> list[tuple[str, list[plots.Evid
         rows: list[plots.EvidenceRow] = [
             (f"{t.kind} on {t.scope}", t.evidence.test_gain_points, t.evidence.gain_points,
              t.evidence.ci95_points, t.evidence.accepted) for t in step.tried[:EVIDENCE_ROWS]]
-        rows += [(f"sensor: {o.upper()} static", ev.test_gain_points, ev.gain_points,
+        rows += [(f"sensor: {o.upper()}", ev.test_gain_points, ev.gain_points,
                   ev.ci95_points, ev.accepted) for o, ev in step.sensor.items()]
         had = ", ".join(step.effects_before) or "no effect"
         title = textwrap.shorten(f"round {i + 1} (model with {had}): {step.decision}", 230)

@@ -231,8 +231,9 @@ class PossibleEffect:
 
 @dataclass(frozen=True)
 class SensorEffect:
-    """A static correction of one output that beat every physical effect under the rule:
-    the transducer's gain or non-linearity, reported and not added to the model."""
+    """A sensor correction of one output (a static function of it, or a drift in time) that
+    beat every physical effect under the rule: the transducer's error, reported and not added
+    to the model."""
 
     output: str  # "cr" or "cd"
     after: list[str]  # the effects the model had when it was tried

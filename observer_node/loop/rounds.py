@@ -29,7 +29,15 @@ from .analysis import (
     scope_label,
 )
 from .cluster import Runner
-from .diagnosis import SHAPES, Unexplained, sensor_fold_scores, without_static
+from .diagnosis import (
+    FULLER,
+    SHAPES,
+    Unexplained,
+    sensor_fold_scores,
+    sensor_looks_like,
+    sensor_shape,
+    without_sensor,
+)
 from .evidence import (
     POSSIBLE_MIN,
     Evidence,
@@ -221,24 +229,25 @@ def _cross_validated(c: Context, st: State, ranked: list[Candidate]
 
 def _a_transducer_speaks(c: Context, st: State, step: LoopStep, tried: list[Tried],
                          passing: list[Tried], sensor_ev: dict[str, Evidence]) -> bool:
-    """The sensor family's word on the round: one output's static correction beats physics
+    """The sensor family's word on the round: one output's sensor correction beats physics
     (a sensor effect, or a residual in both outputs no library effect explains), or ties with
     the best physical effect. True when it ends the loop."""
-    best_sensor = max(sensor_ev.items(), key=lambda kv: kv[1].gain_points, default=None)
+    static = [(o, ev) for o, ev in sensor_ev.items() if not o.endswith(FULLER)]
+    best_sensor = max(static, key=lambda kv: kv[1].gain_points, default=None)
     if best_sensor is None or not best_sensor[1].accepted:
         return False
-    o, ev = best_sensor
+    o, ev, fuller = _which_transducer(*best_sensor, sensor_ev)
     if not passing or ev.gain_points > passing[0][2].gain_points:
         # A transducer moves its own output only. If the strongest physical candidate also
         # passes the rule on the other output's fit alone, the residual is in both: physics
         # no library form fits, not this transducer.
         both = _other_output(c.runner, st.base, st.effects, c.est, c.folds, tried, o,
-                             c.test_setup, c.margin)
+                             c.test_setup, c.margin, "sensor" if fuller else "static")
         if both is not None:
             x, ev_other = both
             o2 = _other(o)
             step.decision = (
-                f"a static correction of {o} gains most ({ev.gain_points:+.2f} points), "
+                f"a sensor correction of {o} gains most ({ev.gain_points:+.2f} points), "
                 f"but {x.kind} on {scope_label(x.setups)} also gains "
                 f"{ev_other.gain_points:+.2f} points on {o2}'s fit alone, which a "
                 f"transducer of {o} cannot move: a physical effect in both outputs that "
@@ -252,18 +261,16 @@ def _a_transducer_speaks(c: Context, st: State, step: LoopStep, tried: list[Trie
                             _rounded(ev_other.setup_gain_points),
                             round(2.0 * ev.gain_points, 2))]
             st.possible += _all_possible(
-                passing, st.effects, f"a static correction of {o} gains more "
+                passing, st.effects, f"a sensor correction of {o} gains more "
                 f"({ev.gain_points:+.2f} points) and the residual is in both outputs: no "
                 "library effect explains it")
             return True
         st.sensor = SensorEffect(o, [e["kind"] for e in st.effects],
-                                 f"a static function of {o.upper()}: the {o.upper()} "
-                                 "transducer's gain or non-linearity, not the chest's physics",
-                                 ev)
+                                 sensor_looks_like(_sensor_shape(c, st, o), o), ev)
         step.decision = (f"a sensor effect on {o} explains the residual better than "
                          "any physical effect: reported, not added to the model")
         return True
-    # Physics wins, but one output's static correction passes too: as against a physical
+    # Physics wins, but one output's sensor correction passes too: as against a physical
     # rival, the effect is named only if it beats it test by test above the scatter; else
     # the chest or that transducer, the data cannot tell.
     why = untold_from_sensor(passing[0][1], passing[0][2], o, ev)
@@ -271,13 +278,37 @@ def _a_transducer_speaks(c: Context, st: State, step: LoopStep, tried: list[Trie
         return False
     step.decision = f"{why}; nothing named"
     st.possible += _all_possible(
-        passing, st.effects, f"the data cannot tell it from a static correction of {o} (its "
+        passing, st.effects, f"the data cannot tell it from a sensor correction of {o} (its "
         "transducer's error), which passes the rule too")
     on_o = _own_points(ev)
+    shape = _sensor_shape(c, st, o)
     st.left_unexplained = [Unexplained(
-        o, _gaining(on_o), SHAPES["static"].format(o=o.upper()), "static", _rounded(on_o),
+        o, _gaining(on_o), SHAPES[shape].format(o=o.upper()), shape, _rounded(on_o),
         round(2.0 * sensor_ev[_other(o)].gain_points, 2))]
     return True
+
+
+def _which_transducer(o: str, ev: Evidence, sensor_ev: dict[str, Evidence]
+                      ) -> tuple[str, Evidence, bool]:
+    """The output a passing static correction of ``o`` blames, checked with the fuller
+    corrections (static and drift): an error drifting in time on one output bends the model
+    so that the healthy output's static correction wins it back (sets W and AG). When the
+    other output's fuller correction passes the rule and gains more than ``o``'s, that output
+    is blamed, on its fuller correction's evidence (True: switched)."""
+    o2 = _other(o)
+    mine, theirs = sensor_ev.get(o + FULLER), sensor_ev.get(o2 + FULLER)
+    if mine is not None and theirs is not None and theirs.accepted and (
+            theirs.gain_points > mine.gain_points):
+        return o2, theirs, True
+    return o, ev, False
+
+
+def _sensor_shape(c: Context, st: State, o: str) -> str:
+    """Whether the sensor correction of ``o`` is mostly static or a drift in time, on the
+    estimation tests under the model as it stands."""
+    with np.errstate(all="ignore"):
+        y_hat = model(st.base, st.effects, c.est).simulate(c.est.pulse_g, c.est.brs_rad)
+    return sensor_shape(c.est, y_hat, o)
 
 
 def _picked(c: Context, st: State, step: LoopStep, tried: list[Tried], passing: list[Tried],
@@ -677,10 +708,10 @@ def cross_validate(runner: Runner, models: list[tuple[dict, list[dict]]], data: 
 
 def _other_output(runner: Runner, base: dict, effects: list[dict], data: Dataset,
                   folds_: Folds, tried: list[Tried], o: str, test_setup: dict[str, str],
-                  margin: float) -> tuple[Candidate, Evidence] | None:
+                  margin: float, shape: str = "static") -> tuple[Candidate, Evidence] | None:
     """The strongest physical candidate (the first of ``tried``) judged by the rule on the fit
     of the output other than ``o`` alone, against the model as it stands, both refitted on
-    the tests with ``o``'s static correction taken out; it and that evidence when it passes
+    the tests with ``o``'s correction of ``shape`` taken out; it and that evidence when it passes
     there, else None. Taken out, because a transducer's error bends the fit of the parameters
     both outputs share, and any effect that frees them then gains on the other output too."""
     if not tried:
@@ -688,8 +719,8 @@ def _other_output(runner: Runner, base: dict, effects: list[dict], data: Dataset
     c = tried[0][1]
     o2 = _other(o)
     with np.errstate(all="ignore"):
-        data = without_static(data, model(base, effects, data).simulate(data.pulse_g,
-                                                                         data.brs_rad), o)
+        data = without_sensor(data, model(base, effects, data).simulate(data.pulse_g,
+                                                                         data.brs_rad), o, shape)
     starts = runner.map(_all_tests, [(base, effects, data), (base, [*effects, c.effect()], data)])
     res = runner.map(_fold_by_output, [(b, e, data, tr, te) for b, e in starts
                                        for tr, te in folds_])
@@ -749,8 +780,8 @@ def _look_past(runner: Runner, base: dict, effects: list[dict], data: Dataset, f
 def _sensor_candidates(runner: Runner, base: dict, effects: list[dict], data: Dataset,
                        folds_: Folds, cv_now: dict[str, float], test_setup: dict[str, str],
                        margin: float) -> dict[str, Evidence]:
-    """The sensor family: a static correction of one output, judged by the same rule (a
-    stalled fold's tests at ``cv_now``: no gain)."""
+    """The sensor family: a sensor correction (static and drift) of one output, judged by
+    the same rule (a stalled fold's tests at ``cv_now``: no gain)."""
     res = runner.map(_sensor_fold, [(base, effects, data, tr, te) for tr, te in folds_])
     raw = {o: {n: v for r in res for n, v in r[o].items()} for o in res[0]}
     return {o: _judge_folds(cv_now, cv, test_setup, None, margin) for o, cv in raw.items()}

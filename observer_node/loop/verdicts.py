@@ -96,14 +96,14 @@ def untold(kind: str, runner_up: RunnerUp | None, n_tests: int) -> str | None:
 def untold_from_sensor(c: Candidate, ev: Evidence, output: str, sensor: Evidence
                        ) -> str | None:
     """Why the physical effect ``c`` (its evidence ``ev``) that wins a round cannot be named
-    when a static correction of ``output`` (``sensor``) passes the rule too: it does not beat
+    when a sensor correction of ``output`` (``sensor``) passes the rule too: it does not beat
     that correction test by test above the scatter, as it must beat a physical rival, so the
     data cannot tell the chest from that output's transducer (set F: a rib stiffening
     named for a CD transducer compressing, +2.71 against +2.69 points). None when it does."""
     told_apart, better = beats(ev.test_gain_points, sensor.test_gain_points)
     if told_apart:
         return None
-    return (f"{c.kind} on {scope_label(c.setups)} passes the rule, but does not beat a static "
+    return (f"{c.kind} on {scope_label(c.setups)} passes the rule, but does not beat a sensor "
             f"correction of {output} test by test above the scatter ({ev.gain_points:+.2f} "
             f"against {sensor.gain_points:+.2f} points, better on {better} of {ev.tests} "
             f"tests): the chest or the {output} transducer, the data cannot tell")
