@@ -236,14 +236,17 @@ def test_a_test_low_with_its_rig_is_said_and_kept(r16_loop) -> None:
 
 
 def test_a_sensor_effect_says_the_other_transducer_can_read_alike(r16_loop) -> None:
-    # held-out sets W and AG: a CD pot's sagging excitation was named a sensor effect on CR;
-    # the report must not send the engineer to one transducer only
+    # held-out set V: CR's slow clock was named a sensor effect on CD; the report must not
+    # send the engineer to one transducer only, whichever shape the correction took
     _, r = r16_loop
     cr = SensorEffect("cr", [], "a static function of CR: the CR transducer's gain", _rule())
     md = markdown(dataclasses.replace(r, sensor_effects=[cr]))
     assert "- **CR**: a static function of CR" in md
-    assert "- and the CD transducer's too: an error drifting in time on CD" in md
-    assert "static correction of CR wins it back" in md
+    assert "- and the CD transducer's too: a drift in time on CD" in md
+    assert "a correction of CR wins it back" in md
+    cd = SensorEffect("cd", [], "a drift in time on CD: the CD transducer's gain", _rule())
+    assert "- and the CR transducer's too" in markdown(
+        dataclasses.replace(r, sensor_effects=[cd]))
     # a lag is read from an input delay, not a static correction: no such line
     lag = SensorEffect("cd", [], "a lag of about 1.5 ms on CD alone", _rule())
     assert "transducer's too" not in markdown(dataclasses.replace(r, sensor_effects=[lag]))

@@ -150,15 +150,18 @@ _OTHER = {"cr": "CD", "cd": "CR"}
 
 
 def _other_transducer(s: SensorEffect) -> list[str]:
-    """The caveat a static correction of one output needs: on held-out sets V, W and AG an
-    error drifting in time on the other output bent the chest model, and this output's static
-    correction won it back (not said of a lag, which is read from an input delay)."""
-    if not s.looks_like.startswith("a static function"):
+    """The caveat a correction of one output needs (not said of a lag, which is read from an
+    input delay): the loop checks the other output's correction with a drift in time (sets W
+    and AG: a CD pot's sagging excitation had been named CR's), but an error on the other
+    output of another form still bent the chest model so that this output's correction won
+    it back (set V: CR's clock 8 % slow named CD's)."""
+    if not s.looks_like.startswith(("a static function", "a drift in time")):
         return []
     o, other = s.output.upper(), _OTHER[s.output]
-    return [f"- and the {other} transducer's too: an error drifting in time on {other} (a "
-            f"sagging excitation, a slow clock) bends the model so that a static correction "
-            f"of {o} wins it back, and reads like this"]
+    return [f"- and the {other} transducer's too: a drift in time on {other} (a sagging "
+            f"excitation, a creeping zero) was checked and explains it less, but an error "
+            f"on {other} of another form (a slow clock) bends the model so that a "
+            f"correction of {o} wins it back, and reads like this"]
 
 
 def _kept_table(kept: list[BrokenTest], title: str, note: str, why: str) -> list[str]:
