@@ -1057,6 +1057,9 @@ def test_a_transducer_gain_sagging_in_time_is_a_drift_of_one_output(campaign):
     sagged = dataclasses.replace(data, y=data.y.copy())
     sagged.y[..., 1] = _sagging(data.y[..., 1], data.fs_hz)
     assert sensor_shape(sagged, y_hat, "cd") == "drift"
+    u = unexplained(sagged, y_hat)  # and, where nothing is named, said so in its own words
+    assert [(x.output, x.shape) for x in u] == [("cd", "drift")]
+    assert u[0].looks_like.startswith("a drift in time on CD")
     err = np.abs(sagged.y[:, data.win, 1] - data.y[:, data.win, 1]).max()
     left = np.abs(without_sensor(sagged, y_hat, "cd", "sensor").y[:, data.win, 1]
                   - data.y[:, data.win, 1]).max()

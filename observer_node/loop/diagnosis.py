@@ -2,12 +2,14 @@
 
 A transducer's error (a gain or a static non-linearity of one channel, or one drifting in time)
 leaves its mark in one output only, as a function of that output; physics moves the chest, so
-it shows in both CR and CD. Two shapes are looked for per output, each fitted by least squares
-to the residual:
+it shows in both CR and CD. Three shapes are looked for per output, each fitted by least
+squares to the residual:
 
 - ``static``: a static function of the output, y² and y³ of the model's own estimate (a
   transducer over- or under-reading at large values);
-- ``lag``: the estimate's rate dy/dt (a time shift or a rate term the model lacks).
+- ``lag``: the estimate's rate dy/dt (a time shift or a rate term the model lacks);
+- ``drift``: t y, t dy/dt and t, with t the time since contact (a gain that sags or creeps,
+  a slow clock, a zero that drifts: its error grows with time, not with the value).
 
 Their size is given as the fit points [%, eq. 3.15] the correction would add. The sensor
 candidate (:func:`sensor_fold_scores`) is the static correction of one output, fitted on
@@ -46,7 +48,7 @@ SHAPES = {"static": "a static function of {o} (a transducer's non-linearity: its
                   "and the strongest physical candidate on the other both gain, so it is in "
                   "{o} and in the other output, not one transducer's error"}
 
-FITTED = ("static", "lag")  # the shapes fitted to a residual ("both" is judged by the loop)
+FITTED = ("static", "lag", "drift")  # the shapes fitted to a residual ("both": the loop's)
 
 
 def _basis(y_hat: np.ndarray, shape: str, fs_hz: float, scale: float = 0.0) -> np.ndarray:
