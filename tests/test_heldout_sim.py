@@ -27,6 +27,7 @@ from benchmarks.heldout import (
     draw_af,
     draw_ag,
     draw_ah,
+    draw_ai,
     draw_v,
     draw_w,
     draw_x,
@@ -46,6 +47,7 @@ from benchmarks.heldout.cases_ae import BY_NAME_AE, ONE_PHYSICAL_AE
 from benchmarks.heldout.cases_af import BY_NAME_AF, ONE_PHYSICAL_AF
 from benchmarks.heldout.cases_ag import BY_NAME_AG, ONE_PHYSICAL_AG
 from benchmarks.heldout.cases_ah import BY_NAME_AH, ONE_PHYSICAL_AH
+from benchmarks.heldout.cases_ai import BY_NAME_AI, ONE_PHYSICAL_AI
 from benchmarks.heldout.cases_p import BY_NAME_P
 from benchmarks.heldout.cases_q import BY_NAME_Q
 from benchmarks.heldout.cases_r import BY_NAME_R
@@ -887,6 +889,42 @@ def _cd_stuck_bit_reads_a_bit_high(sets_dir: Path, c: cases.Case, broken: str,
         assert np.array_equal(_channel(sets_dir / "on" / c.name, broken, which),
                               _channel(sets_dir / "off" / c.name, broken, which))
     _others_untouched(sets_dir, c.name, broken)
+
+
+def _brs_quadrature_reads_its_edges_times(sets_dir: Path, c: cases.Case) -> None:
+    """Set AG's check of a BRS decoder counting ``size`` edges a step under the spindle's own
+    counts per rev (set H's form past its x4): the broken test's BRS reads that many times the
+    spool's angle, in finer steps, two of the decoder's a sample at most where the spindle
+    turns one; the other channels and tests as without it."""
+    (broken,), (eff,) = c.expect_broken, c.effects
+    bad, good = _brs(sets_dir / "on" / c.name, broken), _brs(sets_dir / "off" / c.name, broken)
+    assert np.ptp(good) > 20
+    assert np.abs(bad - eff.size * good).max() <= eff.size  # x edges, to a step of the spindle
+    assert np.ptp(bad) > (eff.size - 0.5) * np.ptp(good)
+    assert set(np.abs(np.diff(good))) <= {0.0, 1.0}  # the spindle: a count a sample at most
+    assert set(np.abs(np.diff(bad))) <= {0.0, 1.0, 2.0}  # the decoder's: two at most
+    assert np.count_nonzero(np.diff(bad)) > 3 * np.count_nonzero(np.diff(good))  # finer steps
+    for which in ("cr", "cd", "pulse"):
+        assert np.array_equal(_channel(sets_dir / "on" / c.name, broken, which),
+                              _channel(sets_dir / "off" / c.name, broken, which))
+    _others_untouched(sets_dir, c.name, broken)
+
+
+def _cd_pot_nonlinear_over_reads_cd_only(sets_dir: Path, c: cases.Case) -> None:
+    """Set AE's check of the CD pot's cubic non-linearity, every test of the case: CD over-reads
+    its twin by a (d / 25 mm)^2 of it, within 10 % (and the noise) over the test's upper 40 % of
+    deflection, nothing at rest; CR, pulse and BRS as without it."""
+    (e,) = c.effects
+    seen = 0
+    for cd, cd0 in _cd_only(sets_dir / "on" / c.name, sets_dir / "off" / c.name):
+        big = cd0 > 0.6 * cd0.max()
+        want = e.size * cd0 * (np.maximum(cd0, 0.0) / 25.0) ** 2
+        assert big.sum() > 100 and np.all((cd - cd0)[big] > 0.5 * want[big])
+        assert np.allclose((cd - cd0)[big], want[big], rtol=0.1, atol=0.3)
+        rest = _times(len(cd)) < 0
+        assert np.abs(cd[rest] - cd0[rest]).max() < 0.05
+        seen += 1
+    assert seen == 12
 
 
 @pytest.fixture(scope="module")
@@ -3685,9 +3723,9 @@ def _follows_a_reusing_draw(draw_mod: ModuleType, seed: int, earlier: tuple[str,
                             redrawn: list[tuple[str, int]], before: list[cases.Case],
                             two_case: cases.Case) -> None:
     """A set drawn by set W's process from ``seed`` after the sets ``earlier``, its two-effect
-    case reusing a pairing those sets ran (sets Z, AA, AB, AC, AD, AE, AF, AG and AH): the
-    cases follow the draw, and the reused pairing is one the rules allow that no free pairing could
-    replace."""
+    case reusing a pairing those sets ran (sets Z, AA, AB, AC, AD, AE, AF, AG, AH and AI): the
+    cases follow the draw, and the reused pairing is one the rules allow that no free pairing
+    could replace."""
     d = draw_mod.draw(seed)
     assert d == draw_mod.draw()  # reproducible from its seed
     assert earlier == draw_mod.EARLIER and seed == draw_mod.SEED
@@ -3786,9 +3824,10 @@ def set_aa(tmp_path_factory: pytest.TempPathFactory) -> Path:
 
 
 @pytest.mark.parametrize("letters",
-                         ["x", "y", "z", "aa", "ab", "ac", "ad", "ae", "af", "ag", "ah"])
+                         ["x", "y", "z", "aa", "ab", "ac", "ad", "ae", "af", "ag", "ah",
+                          "ai"])
 def test_a_drawn_set_is_registered(letters: str, tmp_path: Path) -> None:
-    """Sets X-AH: each is its ``cases_<letters>.SET_<LETTERS>`` under its letters (either
+    """Sets X-AI: each is its ``cases_<letters>.SET_<LETTERS>`` under its letters (either
     case), for sets.select, make_sets and costs, after every set before it."""
     own = getattr(importlib.import_module(f"benchmarks.heldout.cases_{letters}"),
                   f"SET_{letters.upper()}")
@@ -3816,8 +3855,10 @@ def test_sets_before_are_names_not_letters() -> None:
     assert heldout_sets.before("af") == (*after_aa, "ab", "ac", "ad", "ae")  # set AF's: A-AE
     assert heldout_sets.before("ag") == (*after_aa, "ab", "ac", "ad", "ae", "af")  # AG's: A-AF
     assert heldout_sets.before("ah") == (*after_aa, "ab", "ac", "ad", "ae", "af", "ag")  # A-AG
-    with pytest.raises(ValueError, match="unknown case set 'ai'"):
-        heldout_sets.before("ai")
+    assert heldout_sets.before("ai") == (*after_aa, "ab", "ac", "ad", "ae", "af", "ag",
+                                         "ah")  # A-AH
+    with pytest.raises(ValueError, match="unknown case set 'aj'"):
+        heldout_sets.before("aj")
     # a draw after AA takes AA's pairings; at this seed, without AA one single draws one of them
     aa = {_pairing(c) for c in SET_AA}
 
@@ -4265,18 +4306,7 @@ def test_set_ae_cd_pot_nonlinear_over_reads_cd_only(set_ae: Path) -> None:
     """CD over-reads its twin by the cubic term, a (d / 25 mm)^2 of it (set A's form), every
     test: within 10 % of it (and the noise) over the test's upper 40 % of deflection (some
     tests peak under 25 mm), nothing at rest; CR, pulse and BRS untouched."""
-    c = BY_NAME_AE["hae_cd_pot_nonlinear"]
-    (e,) = c.effects
-    seen = 0
-    for cd, cd0 in _cd_only(set_ae / "on" / c.name, set_ae / "off" / c.name):
-        big = cd0 > 0.6 * cd0.max()
-        want = e.size * cd0 * (np.maximum(cd0, 0.0) / 25.0) ** 2
-        assert big.sum() > 100 and np.all((cd - cd0)[big] > 0.5 * want[big])
-        assert np.allclose((cd - cd0)[big], want[big], rtol=0.1, atol=0.3)
-        rest = _times(len(cd)) < 0
-        assert np.abs(cd[rest] - cd0[rest]).max() < 0.05
-        seen += 1
-    assert seen == 12
+    _cd_pot_nonlinear_over_reads_cd_only(set_ae, BY_NAME_AE["hae_cd_pot_nonlinear"])
 
 
 def test_set_ae_has_no_run_aways(set_ae: Path) -> None:
@@ -4446,18 +4476,8 @@ def test_set_ag_brs_quadrature_reads_its_edges_times(set_ag: Path) -> None:
     H's single-count steps: the spool, a count a sample at most at its own 96, turns two of
     the decoder's at its fastest; the other channels and tests as without it."""
     c = BY_NAME_AG["hag_broken_brs_quadrature"]
-    (broken,), (eff,) = c.expect_broken, c.effects
-    bad, good = _brs(set_ag / "on" / c.name, broken), _brs(set_ag / "off" / c.name, broken)
-    assert eff.size == 5 and np.ptp(good) > 20
-    assert np.abs(bad - eff.size * good).max() <= eff.size  # x edges, to a step of the spindle
-    assert np.ptp(bad) > (eff.size - 0.5) * np.ptp(good)
-    assert set(np.abs(np.diff(good))) <= {0.0, 1.0}  # the spindle: a count a sample at most
-    assert set(np.abs(np.diff(bad))) <= {0.0, 1.0, 2.0}  # the decoder's: two at most
-    assert np.count_nonzero(np.diff(bad)) > 3 * np.count_nonzero(np.diff(good))  # finer steps
-    for which in ("cr", "cd", "pulse"):
-        assert np.array_equal(_channel(set_ag / "on" / c.name, broken, which),
-                              _channel(set_ag / "off" / c.name, broken, which))
-    _others_untouched(set_ag, c.name, broken)
+    assert c.effects[0].size == 5
+    _brs_quadrature_reads_its_edges_times(set_ag, c)
 
 
 def test_set_ag_cd_sag_lowers_cd_with_time_only(set_ag: Path) -> None:
@@ -4567,6 +4587,87 @@ def test_set_ah_has_no_run_aways(set_ah: Path) -> None:
     _no_run_aways(SET_AH, set_ah)
 
 
+# ------------------------------------------------------------------ set AI (cases_ai.py)
+
+SET_AI = heldout_sets.case_set("ai")
+BEFORE_AI = _cases_of(heldout_sets.before("ai"))
+# the broken test, the transducer error, and every physical case of one effect (its rigs moved,
+# the others untouched)
+WATCHED_AI = ("hai_broken_brs_quadrature", "hai_cd_pot_nonlinear", *ONE_PHYSICAL_AI)
+# the draws found impossible, drawn again by the next seeds in the order found (draw_ai.REDRAWN)
+REDRAWN_AI: list[tuple[str, int]] = [("belt_unloading", 44001), ("input_gain", 44002),
+                                     ("belt_unloading", 44003), ("input_gain", 44004),
+                                     ("two", 44005), ("belt_unloading", 44006), ("two", 44007)]
+# the two-effect case, on an earlier set's pairing (none free for it: draw_ai's reuse rule)
+TWO_AI = "hai_two_relief_full_bumper_r16_sled"
+
+
+@pytest.fixture(scope="module")
+def set_ai(tmp_path_factory: pytest.TempPathFactory) -> Path:
+    return _generate(tmp_path_factory, "ai", WATCHED_AI)
+
+
+def test_set_ai_covers_the_general_list() -> None:
+    """Set AI as its brief asks: clean cases at 48 and 96 counts; each kind of the library a
+    loop can name, as physics, once in a case of its own; two effects of different kinds on
+    different rigs in one case; a broken estimation test; a transducer error on CD alone (as
+    drawn); a late pulse and a late BRS at delays in 1-5 ms no earlier set used on any input;
+    6 + 6 tests, every rig an estimation part holds held twice or more; an effect on some rigs
+    only rests on two estimation and two validation tests of them beside an estimation test of
+    a rig it spares."""
+    _covers_the_general_list(SET_AI, BEFORE_AI, "cd", ONE_PHYSICAL_AI, draw_ai.KINDS)
+
+
+def test_set_ai_follows_its_draw() -> None:
+    """Set AI's designer's choices are numpy's default_rng(44000)'s (``draw_ai.py``; the draws
+    found impossible drawn again by the next seeds, ``REDRAWN``), followed as drawn: each
+    kind's form, rigs, counts and mix; the two-effect case's kinds, forms, rigs, counts and mix;
+    the delays, their counts and mixes; the transducer error's output, form, counts and mix;
+    the broken test's channel, form, test, counts and mix; the clean cases' mixes. Set AH's
+    process: set W's kinds, pools and mix rules, A-AH's pairings taken, but the two-effect
+    case's: none was free for its rigs (the old rule draws it none), so it reuses one A-AH ran,
+    among those its rules allow."""
+    _follows_a_reusing_draw(draw_ai, 44000,
+                            (*"abcdefghijklmnopqrstuvwxyz", "aa", "ab", "ac", "ad", "ae", "af",
+                             "ag", "ah"),
+                            SET_AI, ONE_PHYSICAL_AI, REDRAWN_AI, BEFORE_AI, BY_NAME_AI[TWO_AI])
+    assert _pairing(BY_NAME_AI[TWO_AI]) == ((2, 2, 2), (0, 2, 4))
+
+
+def test_set_ai_lab_side_is_as_drawn_and_unnamed() -> None:
+    """One broken estimation test, the only thing expected; one transducer error on CD on every
+    test, nothing physical named; AI's physics earlier sets' forms only."""
+    _lab_side_as_drawn(SET_AI, "cd")
+    assert {k for k in _keys(SET_AI) if physics.EFFECTS[k]} <= _keys(BEFORE_AI)
+
+
+@pytest.mark.parametrize("case", sorted(ONE_PHYSICAL_AI))
+def test_set_ai_physics_moves_its_rigs_only(set_ai: Path, case: str) -> None:
+    """Each physical case moves what its form moves on every test of its rigs (the chest's,
+    belt's, bag's and pelvis's forms CR and CD, the pulse untouched; the BRS's off-centre
+    encoder the BRS alone) and leaves the tests of a rig it spares untouched to the bit."""
+    _moves_its_rigs_only(set_ai, BY_NAME_AI[case])
+
+
+def test_set_ai_brs_quadrature_reads_its_edges_times(set_ai: Path) -> None:
+    """The decoder counting six edges a step under the spindle's own 128 counts per rev (set
+    AG's check, at this set's size, AG's 5 stepped by 1): the broken test's BRS reads six times
+    the spool's angle, in finer steps; the other channels and tests as without it."""
+    c = BY_NAME_AI["hai_broken_brs_quadrature"]
+    assert c.effects[0].size == 6 and c.counts_per_rev == 128
+    _brs_quadrature_reads_its_edges_times(set_ai, c)
+
+
+def test_set_ai_cd_pot_nonlinear_over_reads_cd_only(set_ai: Path) -> None:
+    """CD over-reads its twin by the cubic term, a (d / 25 mm)^2 of it (set A's form, set AE's
+    check), every test; CR, pulse and BRS untouched."""
+    _cd_pot_nonlinear_over_reads_cd_only(set_ai, BY_NAME_AI["hai_cd_pot_nonlinear"])
+
+
+def test_set_ai_has_no_run_aways(set_ai: Path) -> None:
+    _no_run_aways(SET_AI, set_ai)
+
+
 def test_more_tests_doubles_the_estimation_tests_only(tmp_path: Path) -> None:
     """``more_tests``: K times each rig's estimation tests, the validation tests and the
     effects as written, another seed (new crashes), a name that says so; the broken test's name
@@ -4621,12 +4722,12 @@ def test_loop_heldout_on_a_folder_without_the_case_is_one_line(tmp_path: Path) -
     assert "--case haa_clean48 --est-times 2 --out" in r.stderr
 
 
-# the drawn sets X-AH: each one's seed, and its cases that reuse an earlier set's pairing by
+# the drawn sets X-AI: each one's seed, and its cases that reuse an earlier set's pairing by
 # its draw's rule (the two-effect case since set Z: none was free for its rigs)
 DRAWN = {"x": (33000, ()), "y": (34000, ()), "z": (35000, (TWO_Z,)),
          "aa": (36000, (TWO_AA,)), "ab": (37000, (TWO_AB,)), "ac": (38000, (TWO_AC,)),
          "ad": (39000, (TWO_AD,)), "ae": (40000, (TWO_AE,)), "af": (41000, (TWO_AF,)),
-         "ag": (42000, (TWO_AG,)), "ah": (43000, (TWO_AH,))}
+         "ag": (42000, (TWO_AG,)), "ah": (43000, (TWO_AH,)), "ai": (44000, (TWO_AI,))}
 
 
 @pytest.mark.parametrize("letters", DRAWN)

@@ -27,7 +27,8 @@ AD (``cases_ad``, written after set AC by another engineer, its choices drawn, t
 AE (``cases_ae``, written after set AD by another engineer, its choices drawn, the same way), set
 AF (``cases_af``, written after set AE by another engineer, its choices drawn, the same way), set
 AG (``cases_ag``, written after set AF by another engineer, its choices drawn, the same way), set
-AH (``cases_ah``, written after set AG by another engineer, its choices drawn, the same way)."""
+AH (``cases_ah``, written after set AG by another engineer, its choices drawn, the same way), set
+AI (``cases_ai``, written after set AH by another engineer, its choices drawn, the same way)."""
 
 from __future__ import annotations
 
@@ -40,6 +41,7 @@ from .cases_ae import SET_AE
 from .cases_af import SET_AF
 from .cases_ag import SET_AG
 from .cases_ah import SET_AH
+from .cases_ai import SET_AI
 from .cases_b import SET_B
 from .cases_c import SET_C
 from .cases_d import SET_D
@@ -73,7 +75,7 @@ _BY_NAME: dict[str, list[Case]] = {
     "o": SET_O, "p": SET_P, "q": SET_Q, "r": SET_R, "s": SET_S, "t": SET_T, "u": SET_U,
     "v": SET_V, "w": SET_W, "x": SET_X, "y": SET_Y, "z": SET_Z,
     "aa": SET_AA, "ab": SET_AB, "ac": SET_AC, "ad": SET_AD, "ae": SET_AE,
-    "af": SET_AF, "ag": SET_AG, "ah": SET_AH}
+    "af": SET_AF, "ag": SET_AG, "ah": SET_AH, "ai": SET_AI}
 SETS = tuple(_BY_NAME)
 
 
@@ -84,17 +86,18 @@ def before(name: str) -> tuple[str, ...]:
     ``"ac"``; before set AE, those, ``"aa"``, ``"ab"``, ``"ac"`` and ``"ad"``; before set AF,
     those, ``"aa"``, ``"ab"``, ``"ac"``, ``"ad"`` and ``"ae"``; before set AG, those, ``"aa"``,
     ``"ab"``, ``"ac"``, ``"ad"``, ``"ae"`` and ``"af"``; before set AH, those, ``"aa"``,
-    ``"ab"``, ``"ac"``, ``"ad"``, ``"ae"``, ``"af"`` and ``"ag"``); ValueError for an unknown
-    name. Names, not letters: set AA is one set, not set A twice."""
+    ``"ab"``, ``"ac"``, ``"ad"``, ``"ae"``, ``"af"`` and ``"ag"``; before set AI, those,
+    ``"aa"``, ``"ab"``, ``"ac"``, ``"ad"``, ``"ae"``, ``"af"``, ``"ag"`` and ``"ah"``);
+    ValueError for an unknown name. Names, not letters: set AA is one set, not set A twice."""
     _known(name)
     return SETS[:SETS.index(name)]
 
 
 def case_set(name: str) -> list[Case]:
-    """Set A (``cases``), or set B ... Z, AA, AB, AC, AD, AE, AF, AG, AH (``cases_b`` ...
+    """Set A (``cases``), or set B ... Z, AA, AB, AC, AD, AE, AF, AG, AH, AI (``cases_b`` ...
     ``cases_z``, ``cases_aa``, ``cases_ab``, ``cases_ac``, ``cases_ad``, ``cases_ae``,
-    ``cases_af``, ``cases_ag``, ``cases_ah``) by its lower-case letters; ValueError for another
-    name."""
+    ``cases_af``, ``cases_ag``, ``cases_ah``, ``cases_ai``) by its lower-case letters;
+    ValueError for another name."""
     _known(name)
     return list(_BY_NAME[name])
 
