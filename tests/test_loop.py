@@ -14,7 +14,7 @@ import pytest
 from observer_node.daemon.core import ObserverCore
 from observer_node.data.crashtest import CrashDataError
 from observer_node.ident.metrics import Fits, OutputFits
-from observer_node.loop.closed_loop import EVIDENCE_ROWS, _evidence_rounds, run_loop
+from observer_node.loop.closed_loop import EVIDENCE_ROWS, _evidence_rounds, _sensor_label, run_loop
 from observer_node.loop.report import LoopReport
 from observer_node.model import ModelFile
 from observer_node.simulator import PlantConfig, simulate_campaign, simulate_mixed
@@ -93,7 +93,7 @@ def test_loop_improves_campaign_validation_fit(r16_loop):
     for (_, rows), step in zip(rounds, r.history, strict=True):
         assert [row[0] for row in rows] == (
             [f"{t.kind} on {t.scope}" for t in step.tried[:EVIDENCE_ROWS]]
-            + [f"sensor: {o.upper()}" for o in step.sensor])
+            + [f"sensor: {_sensor_label(o)}" for o in step.sensor])
         assert all(row[1] for row in rows)
     assert "evidence.png" in (tmp_path / "report.md").read_text()
     # the criteria a restraint engineer reads, per validation test, before and after

@@ -198,7 +198,7 @@ def test_evidence_png_draws_each_round_as_the_rule_reads_it(
     assert [(r[0], r[4]) for r in rows] == [("airbag_contact on SLED", True),
                                             ("belt_stiffening on SLED", True),
                                             ("pelvis_coupling on all", False),
-                                            ("sensor: CR", False)]
+                                            ("sensor: CR static", False)]
     assert rows[0][1] == rule.test_gain_points and rows[0][3] == rule.ci95_points
     # a long decision is shortened and wrapped, not run off the figure
     assert title.startswith("round 1 (model with no effect): airbag_contact")
@@ -242,11 +242,15 @@ def test_a_sensor_effect_says_the_other_transducer_can_read_alike(r16_loop) -> N
     cr = SensorEffect("cr", [], "a static function of CR: the CR transducer's gain", _rule())
     md = markdown(dataclasses.replace(r, sensor_effects=[cr]))
     assert "- **CR**: a static function of CR" in md
-    assert "- and the CD transducer's too: a drift in time on CD" in md
+    assert "- and the CD transducer's too: an error on CD can bend the model" in md
     assert "a correction of CR wins it back" in md
     cd = SensorEffect("cd", [], "a drift in time on CD: the CD transducer's gain", _rule())
     assert "- and the CR transducer's too" in markdown(
         dataclasses.replace(r, sensor_effects=[cd]))
+    # both named (the data cannot tell which): said once, for both, and no caveat
+    both = markdown(dataclasses.replace(r, sensor_effects=[cr, cd]))
+    assert "which transducer, the data cannot tell" in both and "- one of CR and CD" in both
+    assert "transducer's too" not in both
     # a lag is read from an input delay, not a static correction: no such line
     lag = SensorEffect("cd", [], "a lag of about 1.5 ms on CD alone", _rule())
     assert "transducer's too" not in markdown(dataclasses.replace(r, sensor_effects=[lag]))

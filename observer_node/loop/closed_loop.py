@@ -55,7 +55,7 @@ from ..scores import scores
 from .analysis import correlation_tests
 from .belt_check import belt_pushes, slack_gains
 from .cluster import Runner, cluster
-from .diagnosis import unexplained
+from .diagnosis import FULLER, unexplained
 from .evidence import SETUP_TOLERANCE, SIGN_P
 from .refit import MAX_FOLDS, folds, model, refit, score
 from .report import (
@@ -282,8 +282,8 @@ def _run(est_tests: list[CrashTest], val_tests: list[CrashTest], out: Path, rate
         effects=st.accepted,
         # by the gain as reported (rounded to 0.001 points): ties keep the order tried
         possible=sorted(st.possible, key=lambda p: -round(p.evidence.gain_points, 3)),
-        sensor_effects=[st.sensor] if st.sensor else [],
-        unexplained=st.left_unexplained or ([] if st.sensor else unexplained(est, y_named)),
+        sensor_effects=st.sensors,
+        unexplained=st.left_unexplained or ([] if st.sensors else unexplained(est, y_named)),
         warnings=broken, low_with_rig=scr.low, flagged_kept=scr.kept,
         left_out=_with_and_without(broken, base, effects, est_tests, val_tests, scr.est_kept,
                                    val, rate_hz, window_s),
@@ -398,6 +398,12 @@ def _model_file(base: dict, effects: list[dict], est: Dataset, rate_hz: float,
 EVIDENCE_ROWS = 6
 
 
+def _sensor_label(key: str) -> str:
+    """A sensor candidate's row: "CR static", or "CR static+drift" (which output only)."""
+    o = key.removesuffix(FULLER).upper()
+    return f"{o} static+drift (which output)" if key.endswith(FULLER) else f"{o} static"
+
+
 def _evidence_rounds(history: list[LoopStep]) -> list[tuple[str, list[plots.EvidenceRow]]]:
     """Each round's candidates and sensor candidates, as evidence.png draws them."""
     rounds = []
@@ -405,7 +411,7 @@ def _evidence_rounds(history: list[LoopStep]) -> list[tuple[str, list[plots.Evid
         rows: list[plots.EvidenceRow] = [
             (f"{t.kind} on {t.scope}", t.evidence.test_gain_points, t.evidence.gain_points,
              t.evidence.ci95_points, t.evidence.accepted) for t in step.tried[:EVIDENCE_ROWS]]
-        rows += [(f"sensor: {o.upper()}", ev.test_gain_points, ev.gain_points,
+        rows += [(f"sensor: {_sensor_label(o)}", ev.test_gain_points, ev.gain_points,
                   ev.ci95_points, ev.accepted) for o, ev in step.sensor.items()]
         had = ", ".join(step.effects_before) or "no effect"
         title = textwrap.shorten(f"round {i + 1} (model with {had}): {step.decision}", 230)

@@ -18,14 +18,14 @@ with physics under the same rule (:mod:`.evidence`). Beside it each fold fits th
 correction (``sensor``): the static function and a drift in time (``drift``: t y, t dy/dt and
 t, with t the time since contact: a gain that sags or creeps, a slow clock, a zero that
 drifts). The static correction says whether a transducer is at fault; the fuller one says
-which: an error drifting in time on one output bends the chest model, and a static correction
-of the *other*, healthy output wins back what it bent (held-out sets W and AG: a CD pot's
-sagging excitation named CR's). The fuller correction does not decide whether, since with
-its freedom it also takes up physics (set AH's Fung rib stiffening: +2.9 points on CD, where
-the static one gains 0.6). Before one is named, the loop checks the "one output only"
-(:func:`without_sensor`, ``both``): if the strongest physical candidate still passes the rule
-on the other output's fit once the correction is taken out of the data, the residual is in
-both outputs, and it is physics no effect of the library explains.
+which, judged test by test: an error drifting in time on one output bends the chest model,
+and a static correction of the *other*, healthy output wins back what it bent (held-out sets
+W and AG: a CD pot's sagging excitation named CR's). The fuller correction does not decide
+whether, since with its freedom it also takes up physics (set AH's Fung rib stiffening: +2.9
+points on CD, where the static one gains 0.6). Before one is named, the loop checks the "one
+output only" (:func:`without_sensor`, ``both``): if the strongest physical candidate still
+passes the rule on the other output's fit once the correction is taken out of the data, the
+residual is in both outputs, and it is physics no effect of the library explains.
 """
 
 from __future__ import annotations
@@ -42,8 +42,8 @@ from .refit import FOLD_NFEV, model, refit_from, stalled_by_output
 SHAPES = {"static": "a static function of {o} (a transducer's non-linearity: its error grows "
                     "with the value)",
           "lag": "a lag or rate term in {o} (proportional to its rate of change)",
-          "drift": "a drift in time on {o} (a transducer's gain, zero or clock changing during "
-                   "the crash: its error grows with the time since contact)",
+          "drift": "a drift in time on {o} (its error grows with the time since contact: a "
+                   "transducer's gain, zero or clock changing, or a term the model lacks)",
           "both": "a physical effect the library lacks: a static correction of one output "
                   "and the strongest physical candidate on the other both gain, so it is in "
                   "{o} and in the other output, not one transducer's error"}
@@ -58,6 +58,8 @@ def _basis(y_hat: np.ndarray, shape: str, fs_hz: float, scale: float = 0.0) -> n
     output's unit) keeps the powers well conditioned, default the largest |estimate|."""
     if shape == "lag":
         return np.gradient(y_hat, 1.0 / fs_hz, axis=1)[..., None]
+    if shape not in ("static", "drift", "sensor"):
+        raise ValueError(f"unknown shape {shape!r}")
     s = scale or float(np.max(np.abs(y_hat))) or 1.0
     u = y_hat / s
     static = [u ** 2, u ** 3, u]
@@ -65,7 +67,7 @@ def _basis(y_hat: np.ndarray, shape: str, fs_hz: float, scale: float = 0.0) -> n
         return np.stack(static, axis=-1)
     n = y_hat.shape[1]
     t = np.broadcast_to(np.arange(n) / n, y_hat.shape)
-    du = np.gradient(u, axis=1) * (n / 20.0)  # du/dt over the record, /20: about u's size
+    du = np.gradient(u, axis=1) * (n / 20.0)  # du/dt over the record (the scale is lstsq's)
     drift = [t * u, t * du, t]
     return np.stack(drift if shape == "drift" else static + drift, axis=-1)
 
@@ -129,7 +131,7 @@ def unexplained(data: Dataset, y_hat: np.ndarray, min_points: float = 1.0
             out.append(Unexplained(
                 o, where, SHAPES[shape].format(o=o.upper()), shape,
                 {s: round(v, 2) for s, v in per_setup.items()},
-                round(float(np.mean([np.mean(v) for v in gains[_other(o)].values()])), 2)))
+                round(float(np.mean(gains[_other(o)][shape])), 2)))
     return out
 
 

@@ -149,19 +149,21 @@ def _markdown_effect(e: AcceptedEffect, carried: bool = False) -> list[str]:
 _OTHER = {"cr": "CD", "cd": "CR"}
 
 
-def _other_transducer(s: SensorEffect) -> list[str]:
+def _other_transducer(s: SensorEffect, named: list[str]) -> list[str]:
     """The caveat a correction of one output needs (not said of a lag, which is read from an
-    input delay): the loop checks the other output's correction with a drift in time (sets W
-    and AG: a CD pot's sagging excitation had been named CR's), but an error on the other
-    output of another form still bent the chest model so that this output's correction won
-    it back (set V: CR's clock 8 % slow named CD's)."""
+    input delay, nor when both outputs are named): an error on the other output can bend the
+    chest model so that this output's correction wins it back. The loop checks the other
+    output with a drift in time (sets W and AG: a CD pot's sagging excitation had been named
+    CR's); that did not catch set V's CR clock or set AI's CD pot non-linearity."""
     if not s.looks_like.startswith(("a static function", "a drift in time")):
         return []
     o, other = s.output.upper(), _OTHER[s.output]
-    return [f"- and the {other} transducer's too: a drift in time on {other} (a sagging "
-            f"excitation, a creeping zero) was checked and explains it less, but an error "
-            f"on {other} of another form (a slow clock) bends the model so that a "
-            f"correction of {o} wins it back, and reads like this"]
+    if other.lower() in named:
+        return []
+    return [f"- and the {other} transducer's too: an error on {other} can bend the model so "
+            f"that a correction of {o} wins it back; the loop checked {other} with a drift "
+            f"in time, which finds a sagging gain, not every such error (a slow clock, a "
+            f"static non-linearity)"]
 
 
 def _kept_table(kept: list[BrokenTest], title: str, note: str, why: str) -> list[str]:
@@ -197,12 +199,18 @@ def _markdown_findings(r: LoopReport) -> list[str]:
     lines += _kept_table(r.flagged_kept, "Warnings: tests far below the others, kept in the "
                          "fits", "Too few tests would remain without them: every fit and "
                          "verdict below includes them. Look at them first.", "why")
+    named = [s.output for s in r.sensor_effects]
+    if len(named) > 1:
+        lines += ["## Sensor effect (not physics): which transducer, the data cannot tell",
+                  "", f"- one of {' and '.join(o.upper() for o in named)}: check both; each "
+                  "correction passes the rule, and neither beats the other test by test "
+                  "above the scatter", ""]
     for s in r.sensor_effects:
         lines += ["## Sensor effect (not physics)", "",
                   f"- **{s.output.upper()}**: {s.looks_like}",
                   f"- confidence: {s.confidence}",
                   "- not added to model.json: check the transducer's calibration",
-                  *_other_transducer(s), ""]
+                  *_other_transducer(s, named), ""]
     for u in r.unexplained:
         gains = ", ".join(f"{k} {v:+.1f}" for k, v in u.gain_points.items())
         lines += ["## Unexplained", "",

@@ -122,7 +122,7 @@ class State:
     carried: list[AcceptedEffect] = field(default_factory=list)  # one side of a tie
     named_model: tuple[dict, list[dict]] | None = None  # the model without the carried one
     possible: list[PossibleEffect] = field(default_factory=list)
-    sensor: SensorEffect | None = None
+    sensors: list[SensorEffect] = field(default_factory=list)  # one, or two: cannot tell
     left_unexplained: list[Unexplained] = field(default_factory=list)  # no effect, no
     # transducer: what the rounds left
     first_ranking: list[RankedCandidate] = field(default_factory=list)
@@ -236,13 +236,13 @@ def _a_transducer_speaks(c: Context, st: State, step: LoopStep, tried: list[Trie
     best_sensor = max(static, key=lambda kv: kv[1].gain_points, default=None)
     if best_sensor is None or not best_sensor[1].accepted:
         return False
-    o, ev, fuller = _which_transducer(*best_sensor, sensor_ev)
+    o, ev = best_sensor  # whether a transducer is at fault: the static correction says
     if not passing or ev.gain_points > passing[0][2].gain_points:
         # A transducer moves its own output only. If the strongest physical candidate also
         # passes the rule on the other output's fit alone, the residual is in both: physics
         # no library form fits, not this transducer.
         both = _other_output(c.runner, st.base, st.effects, c.est, c.folds, tried, o,
-                             c.test_setup, c.margin, "sensor" if fuller else "static")
+                             c.test_setup, c.margin)
         if both is not None:
             x, ev_other = both
             o2 = _other(o)
@@ -265,10 +265,14 @@ def _a_transducer_speaks(c: Context, st: State, step: LoopStep, tried: list[Trie
                 f"({ev.gain_points:+.2f} points) and the residual is in both outputs: no "
                 "library effect explains it")
             return True
-        st.sensor = SensorEffect(o, [e["kind"] for e in st.effects],
-                                 sensor_looks_like(_sensor_shape(c, st, o), o), ev)
-        step.decision = (f"a sensor effect on {o} explains the residual better than "
-                         "any physical effect: reported, not added to the model")
+        blamed, which = _which_transducer(o, sensor_ev)
+        kinds = [e["kind"] for e in st.effects]
+        st.sensors = [SensorEffect(x, kinds, _sensor_words(c, st, x, x != o or len(blamed) > 1),
+                                   ev if x == o else sensor_ev[x + FULLER])
+                      for x in blamed]
+        step.decision = (f"a sensor effect on {' or '.join(blamed)} explains the residual "
+                         f"better than any physical effect{which}: reported, not added to "
+                         "the model")
         return True
     # Physics wins, but one output's sensor correction passes too: as against a physical
     # rival, the effect is named only if it beats it test by test above the scatter; else
@@ -281,34 +285,43 @@ def _a_transducer_speaks(c: Context, st: State, step: LoopStep, tried: list[Trie
         passing, st.effects, f"the data cannot tell it from a sensor correction of {o} (its "
         "transducer's error), which passes the rule too")
     on_o = _own_points(ev)
-    shape = _sensor_shape(c, st, o)
     st.left_unexplained = [Unexplained(
-        o, _gaining(on_o), SHAPES[shape].format(o=o.upper()), shape, _rounded(on_o),
+        o, _gaining(on_o), SHAPES["static"].format(o=o.upper()), "static", _rounded(on_o),
         round(2.0 * sensor_ev[_other(o)].gain_points, 2))]
     return True
 
 
-def _which_transducer(o: str, ev: Evidence, sensor_ev: dict[str, Evidence]
-                      ) -> tuple[str, Evidence, bool]:
-    """The output a passing static correction of ``o`` blames, checked with the fuller
-    corrections (static and drift): an error drifting in time on one output bends the model
-    so that the healthy output's static correction wins it back (sets W and AG). When the
-    other output's fuller correction passes the rule and gains more than ``o``'s, that output
-    is blamed, on its fuller correction's evidence (True: switched)."""
+def _which_transducer(o: str, sensor_ev: dict[str, Evidence]) -> tuple[list[str], str]:
+    """Which transducer a sensor effect found by ``o``'s static correction blames, and the
+    decision's words for it. An error drifting in time on one output bends the chest model
+    so that the healthy output's static correction wins it back (sets W and AG: a CD pot's
+    sagging excitation named CR's). So each output's fuller correction (static and drift) is
+    judged too: when the other output's passes the rule and beats ``o``'s test by test above
+    the scatter, the other output is blamed; when it passes but does not, the data cannot
+    tell which (both are named); else ``o``. The fuller corrections only say which: with
+    their freedom they take up physics too, so the static one says whether."""
     o2 = _other(o)
     mine, theirs = sensor_ev.get(o + FULLER), sensor_ev.get(o2 + FULLER)
-    if mine is not None and theirs is not None and theirs.accepted and (
-            theirs.gain_points > mine.gain_points):
-        return o2, theirs, True
-    return o, ev, False
+    if mine is None or theirs is None or not theirs.accepted:
+        return [o], ""
+    told, better = beats(theirs.test_gain_points, mine.test_gain_points)
+    versus = (f"{o2}'s correction with a drift in time gains {theirs.gain_points:+.2f} "
+              f"points against {o}'s {mine.gain_points:+.2f}, better on {better} of "
+              f"{theirs.tests} tests")
+    if told:
+        return [o2], f", though {o}'s static correction found it: {versus}, above the scatter"
+    return [o, o2], f"; which transducer, the data cannot tell: {versus}"
 
 
-def _sensor_shape(c: Context, st: State, o: str) -> str:
-    """Whether the sensor correction of ``o`` is mostly static or a drift in time, on the
-    estimation tests under the model as it stands."""
+def _sensor_words(c: Context, st: State, o: str, fuller: bool) -> str:
+    """A sensor effect on ``o`` in the report's words: a static function of it, or, when
+    its fuller correction carries the verdict and a drift in time wins more of its residual
+    than a static function does, a drift in time."""
+    if not fuller:
+        return sensor_looks_like("static", o)
     with np.errstate(all="ignore"):
         y_hat = model(st.base, st.effects, c.est).simulate(c.est.pulse_g, c.est.brs_rad)
-    return sensor_shape(c.est, y_hat, o)
+    return sensor_looks_like(sensor_shape(c.est, y_hat, o), o)
 
 
 def _picked(c: Context, st: State, step: LoopStep, tried: list[Tried], passing: list[Tried],
@@ -537,12 +550,12 @@ def _an_output_lag(c: Context, st: State, step: LoopStep, pick: _Pick, fit: Refi
     ms = 1000.0 * float(np.mean([fit.effects[-1]["parameters"][n]
                                  for n in ("n_pulse", "n_brs")])) / c.rate_hz
     rest = "cd" if lag == "cr" else "cr"
-    st.sensor = SensorEffect(
+    st.sensors = [SensorEffect(
         lag, [e["kind"] for e in st.effects],
         f"a lag of about {ms:.1f} ms on {lag.upper()} alone: both inputs delayed alike "
         f"is the outputs' timing, and {lag.upper()} gained {gains[lag]:+.1f} points "
         f"where {rest.upper()} gained {gains[rest]:+.1f}: the {lag.upper()} "
-        "transducer or its filter, not the inputs", pick.ev)
+        "transducer or its filter, not the inputs", pick.ev)]
     step.decision = (f"input_delay on {scope_label(best.setups)} passes the rule, but "
                      f"it delays both inputs alike and helps {lag} alone: reported as "
                      f"a lag of the {lag} transducer, not added to the model")
@@ -708,10 +721,10 @@ def cross_validate(runner: Runner, models: list[tuple[dict, list[dict]]], data: 
 
 def _other_output(runner: Runner, base: dict, effects: list[dict], data: Dataset,
                   folds_: Folds, tried: list[Tried], o: str, test_setup: dict[str, str],
-                  margin: float, shape: str = "static") -> tuple[Candidate, Evidence] | None:
+                  margin: float) -> tuple[Candidate, Evidence] | None:
     """The strongest physical candidate (the first of ``tried``) judged by the rule on the fit
     of the output other than ``o`` alone, against the model as it stands, both refitted on
-    the tests with ``o``'s correction of ``shape`` taken out; it and that evidence when it passes
+    the tests with ``o``'s static correction taken out; it and that evidence when it passes
     there, else None. Taken out, because a transducer's error bends the fit of the parameters
     both outputs share, and any effect that frees them then gains on the other output too."""
     if not tried:
@@ -720,7 +733,7 @@ def _other_output(runner: Runner, base: dict, effects: list[dict], data: Dataset
     o2 = _other(o)
     with np.errstate(all="ignore"):
         data = without_sensor(data, model(base, effects, data).simulate(data.pulse_g,
-                                                                         data.brs_rad), o, shape)
+                                                                         data.brs_rad), o)
     starts = runner.map(_all_tests, [(base, effects, data), (base, [*effects, c.effect()], data)])
     res = runner.map(_fold_by_output, [(b, e, data, tr, te) for b, e in starts
                                        for tr, te in folds_])

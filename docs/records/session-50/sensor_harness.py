@@ -1,7 +1,10 @@
 """Round-1 sensor evidence per basis variant, from the loop's own baseline fit (no full loop)."""
-import json, sys
+import json
+import sys
 from pathlib import Path
+
 import numpy as np
+
 from observer_node.data import load_tests
 from observer_node.ident.dataset import make_dataset
 from observer_node.loop import diagnosis
@@ -38,30 +41,32 @@ def main(sets, s, case, report_dir):
     data = make_dataset(est_tests, 1000.0)
     bm = Path(report_dir) / "baseline-model.json"
     if bm.exists():
-        base = {k: v["value"] for k, v in json.load(open(bm))["parameters"].items()}
+        base = {k: v["value"] for k, v in json.loads(bm.read_text())["parameters"].items()}
     else:
         from observer_node.ident import greybox
         base = dict(greybox.fit_greybox(data).params)
     fl = folds(data)
-    test_setup = dict(zip(data.names, data.setups))
+    test_setup = dict(zip(data.names, data.setups, strict=False))
     with np.errstate(all="ignore"):
         now = {}
         for tr, te in fl:
             now.update(fold_scores(base, [], data, tr, te))
         out = []
-        fits = [diagnosis.refit_from(base, [], data.subset(tr), diagnosis.FOLD_NFEV) for tr, _ in fl]
+        fits = [diagnosis.refit_from(base, [], data.subset(tr), diagnosis.FOLD_NFEV)
+                for tr, _ in fl]
         real_refit = diagnosis.refit_from
         for name, cols in VARIANTS.items():
             diagnosis._basis = make_basis(cols)
             raw = {"cr": {}, "cd": {}}
-            for (tr, te), f in zip(fl, fits):
+            for (tr, te), f in zip(fl, fits, strict=False):
                 diagnosis.refit_from = lambda *a, f=f, **k: f
                 r = diagnosis.sensor_fold_scores(base, [], data, tr, te)
                 diagnosis.refit_from = real_refit
                 for o in raw:
                     raw[o].update(r[o])
             ev = {o: _judge_folds(now, raw[o], test_setup, None, 1.0) for o in raw}
-            out.append(f"{name}: " + " ".join(f"{o}{e.gain_points:+.2f}{'*' if e.accepted else ''}" for o, e in ev.items()))
+            out.append(f"{name}: " + " ".join(
+                f"{o}{e.gain_points:+.2f}{'*' if e.accepted else ''}" for o, e in ev.items()))
     print(f"{case:22s} " + " | ".join(out), flush=True)
 
 if __name__ == "__main__":

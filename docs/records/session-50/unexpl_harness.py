@@ -1,12 +1,16 @@
-"""In-sample shape gains per output (max over setups) on the grey-box as fitted: static, lag, drift."""
-import json, sys
+"""In-sample shape gains per output (max over setups) on the grey-box as fitted:
+static, lag, drift."""
+import sys
 from pathlib import Path
+
 import numpy as np
+
 from observer_node.data import load_tests
-from observer_node.ident.dataset import make_dataset
 from observer_node.ident import greybox
+from observer_node.ident.dataset import make_dataset
 from observer_node.loop import diagnosis
 from observer_node.loop.refit import model
+
 
 def main(sets, s, case):
     data = make_dataset(load_tests([Path(sets) / s / case / "est"]), 1000.0)
@@ -21,8 +25,10 @@ def main(sets, s, case):
         parts = []
         for shape in ("static", "lag", "drift"):
             X = diagnosis._basis(yh[..., k], shape, data.fs_hz)[:, data.win]
-            g = diagnosis._fits(y[..., k], yw[..., k] + X @ diagnosis._solve(y[..., k] - yw[..., k], X)) - b
-            per = max(float(np.mean([g[i] for i, t in enumerate(data.setups) if t == su])) for su in setups)
+            fix = X @ diagnosis._solve(y[..., k] - yw[..., k], X)
+            g = diagnosis._fits(y[..., k], yw[..., k] + fix) - b
+            per = max(float(np.mean([g[i] for i, t in enumerate(data.setups) if t == su]))
+                      for su in setups)
             parts.append(f"{shape[:2]}{per:.2f}")
         out.append(o + ":" + ",".join(parts))
     print(f"{case:24s} " + "  ".join(out), flush=True)
