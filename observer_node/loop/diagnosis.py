@@ -152,13 +152,8 @@ def without_sensor(data: Dataset, y_hat: np.ndarray, output: str, shape: str = "
 def sensor_shape(data: Dataset, y_hat: np.ndarray, output: str) -> str:
     """The shape of a sensor correction of ``output``, ``static`` or ``drift``: whichever
     alone wins more of its residual (in-sample, on the model's estimate ``y_hat``)."""
-    k = OUTPUT_NAMES.index(output)
-    y, yh = data.y[:, data.win, k], y_hat[:, data.win, k]
-    gain = {}
-    for shape in ("static", "drift"):
-        X = _basis(y_hat[..., k], shape, data.fs_hz)[:, data.win]
-        gain[shape] = float(np.mean(_fits(y, yh + X @ _solve(y - yh, X)) - _fits(y, yh)))
-    return max(gain, key=lambda sh: gain[sh])
+    gains = shape_gains(data, y_hat)[output]
+    return max(("static", "drift"), key=lambda sh: float(np.mean(gains[sh])))
 
 
 def sensor_looks_like(shape: str, output: str) -> str:
