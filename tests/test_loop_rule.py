@@ -1238,6 +1238,57 @@ def test_the_output_blamed_is_told_by_the_fuller_corrections_test_by_test():
     assert _which_transducer("cr", {**sensor, "cd" + FULLER: weak}) == (["cr"], "")
 
 
+def test_which_transducer_is_asked_whether_physics_loses_to_it_or_cannot_be_told(chest):
+    """Where a physical effect cannot be told from one output's static correction, what is
+    left unexplained names the transducer the fuller corrections blame, as where a transducer
+    wins the round (set V's slow CR clock was left 'unexplained: CD'): the other output, in
+    the shape of its fuller correction; both when they cannot tell; else the static one's."""
+    from observer_node.loop.diagnosis import FULLER
+    from observer_node.loop.refit import model
+    from observer_node.loop.rounds import State, blamed_transducers, untold_transducer
+
+    data, base, _, _ = chest
+    with np.errstate(all="ignore"):
+        y = model(base, [], data).simulate(data.pulse_g, data.brs_rad)
+    y[..., 1] = _sagging(y[..., 1], data.fs_hz)
+    data = dataclasses.replace(data, y=y)
+    st = State(base, {}, [], {}, FitTable(Fits.of(0.0, 0.0), {}))
+    names = [f"FULL_{i:03d}" for i in (1, 3, 5, 7, 9, 11)]
+    setups = dict.fromkeys(names, "FULL")
+
+    def ev(gains: list[float]) -> Evidence:
+        return judge(dict.fromkeys(names, 85.0),
+                     {n: 85.0 + g for n, g in zip(names, gains, strict=True)}, setups, None,
+                     1.0)
+
+    sensor = {"cr": ev([1.0, 1.1, 0.9, 1.2, 1.0, 1.1]), "cd": ev([0.2] * 6),
+              "cr" + FULLER: ev([1.35, -0.06, 1.22, 1.43, 1.40, 1.57]),
+              "cd" + FULLER: ev([2.3, 2.6, 2.4, 2.7, 2.5, 2.8])}
+    which, left = untold_transducer(data, st, "cr", sensor)
+    assert "above the scatter" in which
+    assert [(u.output, u.shape) for u in left] == [("cd", "drift")]
+    assert left[0].gain_points == {"FULL": 5.1} and "drift in time on CD" in left[0].looks_like
+    # CD's fuller correction passes without beating CR's: both, CR by its static correction
+    close = ev([1.52, 3.21, 1.23, 1.55, 1.24, 1.21])
+    which, left = untold_transducer(data, st, "cr", {**sensor, "cd" + FULLER: close})
+    assert "the data cannot tell" in which
+    assert [(u.output, u.shape) for u in left] == [("cr", "static"), ("cd", "drift")]
+    # CD's does not pass: CR alone, as its static correction found
+    weak = ev([0.6, 0.4, 0.7, 0.5, 0.6, 0.5])
+    which, left = untold_transducer(data, st, "cr", {**sensor, "cd" + FULLER: weak})
+    assert which == "" and [(u.output, u.shape) for u in left] == [("cr", "static")]
+    assert left[0].gain_points == {"FULL": round(2 * sensor["cr"].gain_points, 2)}
+    # a transducer that beats physics is reported the same way: where both are named, the
+    # output its static correction found reads as a static function of it, whatever its
+    # residual looks like in-sample, the other as its fuller correction's shape
+    which, sensors = blamed_transducers(data, st, "cr", {**sensor, "cd" + FULLER: close})
+    assert [x.output for x in sensors] == ["cr", "cd"] and "the data cannot tell" in which
+    assert sensors[0].looks_like.startswith("a static function of CR")
+    assert sensors[0].evidence is sensor["cr"]
+    assert sensors[1].looks_like.startswith("a drift in time on CD")
+    assert sensors[1].evidence is close
+
+
 def test_a_physical_effect_no_better_than_a_transducer_is_not_named():
     """A physical effect that wins a round where one output's static correction passes the
     rule too is named only if it beats that correction test by test above the scatter (set F:

@@ -265,11 +265,8 @@ def _a_transducer_speaks(c: Context, st: State, step: LoopStep, tried: list[Trie
                 f"({ev.gain_points:+.2f} points) and the residual is in both outputs: no "
                 "library effect explains it")
             return True
-        blamed, which = _which_transducer(o, sensor_ev)
-        kinds = [e["kind"] for e in st.effects]
-        st.sensors = [SensorEffect(x, kinds, _sensor_words(c, st, x, x != o or len(blamed) > 1),
-                                   ev if x == o else sensor_ev[x + FULLER])
-                      for x in blamed]
+        which, st.sensors = blamed_transducers(c.est, st, o, sensor_ev)
+        blamed = [x.output for x in st.sensors]
         step.decision = (f"a sensor effect on {' or '.join(blamed)} explains the residual "
                          f"better than any physical effect{which}: reported, not added to "
                          "the model")
@@ -280,15 +277,33 @@ def _a_transducer_speaks(c: Context, st: State, step: LoopStep, tried: list[Trie
     why = untold_from_sensor(passing[0][1], passing[0][2], o, ev)
     if why is None:
         return False
-    step.decision = f"{why}; nothing named"
+    which, st.left_unexplained = untold_transducer(c.est, st, o, sensor_ev)
+    step.decision = f"{why}{which}; nothing named"
     st.possible += _all_possible(
         passing, st.effects, f"the data cannot tell it from a sensor correction of {o} (its "
         "transducer's error), which passes the rule too")
-    on_o = _own_points(ev)
-    st.left_unexplained = [Unexplained(
-        o, _gaining(on_o), SHAPES["static"].format(o=o.upper()), "static", _rounded(on_o),
-        round(2.0 * sensor_ev[_other(o)].gain_points, 2))]
     return True
+
+
+def untold_transducer(est: Dataset, st: State, o: str, sensor_ev: dict[str, Evidence]
+                      ) -> tuple[str, list[Unexplained]]:
+    """What is left unexplained where physics cannot be told from ``o``'s static correction:
+    the transducer (or both) the fuller corrections blame, as where a transducer wins
+    (``_which_transducer``; set V's slow CR clock was left 'unexplained: CD' without it), with
+    the decision's words. Another output than ``o`` is described by the shape of its fuller
+    correction, the evidence that blamed it."""
+    blamed, which = _which_transducer(o, sensor_ev)
+    left = []
+    for x in blamed:
+        if x == o:
+            shape, points = "static", _own_points(sensor_ev[o])
+        else:
+            shape, points = sensor_shape(est, _estimate(est, st), x), _own_points(
+                sensor_ev[x + FULLER])
+        left.append(Unexplained(x, _gaining(points), SHAPES[shape].format(o=x.upper()), shape,
+                                _rounded(points),
+                                round(2.0 * sensor_ev[_other(x)].gain_points, 2)))
+    return which, left
 
 
 def _which_transducer(o: str, sensor_ev: dict[str, Evidence]) -> tuple[list[str], str]:
@@ -313,15 +328,30 @@ def _which_transducer(o: str, sensor_ev: dict[str, Evidence]) -> tuple[list[str]
     return [o, o2], f"; which transducer, the data cannot tell: {versus}"
 
 
-def _sensor_words(c: Context, st: State, o: str, fuller: bool) -> str:
-    """A sensor effect on ``o`` in the report's words: a static function of it, or, when
-    its fuller correction carries the verdict and a drift in time wins more of its residual
-    than a static function does, a drift in time."""
-    if not fuller:
-        return sensor_looks_like("static", o)
+def blamed_transducers(est: Dataset, st: State, o: str, sensor_ev: dict[str, Evidence]
+                       ) -> tuple[str, list[SensorEffect]]:
+    """The sensor effects a transducer that beats physics is reported as: the output the
+    fuller corrections blame (``_which_transducer``), or both, with the decision's words. An
+    output blamed by its static correction reads as a static function of it; another, by
+    its fuller correction, in that correction's shape (static, or a drift in time where the
+    drift wins more of its residual)."""
+    blamed, which = _which_transducer(o, sensor_ev)
+    kinds = [e["kind"] for e in st.effects]
+    out = []
+    for x in blamed:
+        if x == o:
+            out.append(SensorEffect(x, kinds, sensor_looks_like("static", x), sensor_ev[x]))
+        else:
+            shape = sensor_shape(est, _estimate(est, st), x)
+            out.append(SensorEffect(x, kinds, sensor_looks_like(shape, x),
+                                    sensor_ev[x + FULLER]))
+    return which, out
+
+
+def _estimate(est: Dataset, st: State) -> np.ndarray:
+    """The model's estimate of the estimation tests' outputs, as the rounds leave it."""
     with np.errstate(all="ignore"):
-        y_hat = model(st.base, st.effects, c.est).simulate(c.est.pulse_g, c.est.brs_rad)
-    return sensor_looks_like(sensor_shape(c.est, y_hat, o), o)
+        return model(st.base, st.effects, est).simulate(est.pulse_g, est.brs_rad)
 
 
 def _picked(c: Context, st: State, step: LoopStep, tried: list[Tried], passing: list[Tried],
