@@ -1226,33 +1226,24 @@ def test_the_output_blamed_is_told_by_the_fuller_corrections_test_by_test():
     sensor = {"cr": ev([1.0] * 6), "cd": ev([0.2] * 6), "cr" + FULLER: cr_full,
               "cd" + FULLER: cd_full}
     blamed, words = _which_transducer("cr", sensor)
-    assert blamed == ["cr", "cd"] and "the data cannot tell" in words
+    assert blamed == ["cr", "cd"]
     assert "+1.66 points against cr's +1.15, better on 4 of 6 tests" in words
     # CD's fuller correction better on every test, by more than the scatter: CD alone
     clear = ev([2.3, 2.6, 2.4, 2.7, 2.5, 2.8])
     blamed, words = _which_transducer("cr", {**sensor, "cd" + FULLER: clear})
-    assert blamed == ["cd"] and "above the scatter" in words
+    assert blamed == ["cd"] and "better on 6 of 6 tests" in words
     # CD's does not pass the rule: CR as its static correction found
     weak = ev([0.6, 0.4, 0.7, 0.5, 0.6, 0.5])
     assert not weak.accepted
     assert _which_transducer("cr", {**sensor, "cd" + FULLER: weak}) == (["cr"], "")
 
 
-def test_which_transducer_is_asked_whether_physics_loses_to_it_or_cannot_be_told(chest):
-    """Where a physical effect cannot be told from one output's static correction, what is
-    left unexplained names the transducer the fuller corrections blame, as where a transducer
-    wins the round (set V's slow CR clock was left 'unexplained: CD'): the other output, in
-    the shape of its fuller correction; both when they cannot tell; else the static one's."""
+def _transducer_evidence() -> tuple[dict[str, Evidence], dict[str, Evidence]]:
+    """Sensor evidence where CR's static correction passes (+1.05 points) and CD's fuller
+    correction is told apart from CR's above the scatter, and the fuller ones of both outputs
+    (``close``: CD's passing without beating CR's; ``weak``: CD's not passing)."""
     from observer_node.loop.diagnosis import FULLER
-    from observer_node.loop.refit import model
-    from observer_node.loop.rounds import State, blamed_transducers, untold_transducer
 
-    data, base, _, _ = chest
-    with np.errstate(all="ignore"):
-        y = model(base, [], data).simulate(data.pulse_g, data.brs_rad)
-    y[..., 1] = _sagging(y[..., 1], data.fs_hz)
-    data = dataclasses.replace(data, y=y)
-    st = State(base, {}, [], {}, FitTable(Fits.of(0.0, 0.0), {}))
     names = [f"FULL_{i:03d}" for i in (1, 3, 5, 7, 9, 11)]
     setups = dict.fromkeys(names, "FULL")
 
@@ -1264,29 +1255,107 @@ def test_which_transducer_is_asked_whether_physics_loses_to_it_or_cannot_be_told
     sensor = {"cr": ev([1.0, 1.1, 0.9, 1.2, 1.0, 1.1]), "cd": ev([0.2] * 6),
               "cr" + FULLER: ev([1.35, -0.06, 1.22, 1.43, 1.40, 1.57]),
               "cd" + FULLER: ev([2.3, 2.6, 2.4, 2.7, 2.5, 2.8])}
-    which, left = untold_transducer(data, st, "cr", sensor)
-    assert "above the scatter" in which
+    others = {"close": ev([1.52, 3.21, 1.23, 1.55, 1.24, 1.21]),
+              "weak": ev([0.6, 0.4, 0.7, 0.5, 0.6, 0.5]),
+              "physics": ev([1.2, 1.0, 1.3, 0.9, 1.4, 1.0])}
+    return sensor, others
+
+
+def _both_sagging(chest):
+    """The chest fixture's tests as its grey-box reads them, CD through a sagging pot (30 %)
+    and CR through a slightly sagging amplifier (10 %): in-sample, each output's residual
+    looks like a drift in time."""
+    from observer_node.loop.refit import model
+    from observer_node.loop.rounds import State
+
+    data, base, _, _ = chest
+    with np.errstate(all="ignore"):
+        y = model(base, [], data).simulate(data.pulse_g, data.brs_rad)
+    y[..., 1] = _sagging(y[..., 1], data.fs_hz)
+    y[..., 0] = _sagging(y[..., 0], data.fs_hz, sag=0.1)
+    return dataclasses.replace(data, y=y), State(base, {}, [], {}, FitTable(Fits.of(0, 0), {}))
+
+
+def test_what_is_left_unexplained_names_the_transducer_the_fuller_corrections_blame(chest):
+    """Where a physical effect cannot be told from one output's static correction, what is
+    left unexplained names the transducer the fuller corrections blame, as where a transducer
+    wins the round (set V's slow CR clock was left 'unexplained: CD'): the other output,
+    described by its fuller correction; both, each saying so, when they cannot tell; else the
+    static one's."""
+    from observer_node.loop.diagnosis import FULLER
+    from observer_node.loop.rounds import untold_transducer
+
+    data, st = _both_sagging(chest)
+    sensor, other = _transducer_evidence()
+    left = untold_transducer(data, st, "cr", ["cd"], sensor)
     assert [(u.output, u.shape) for u in left] == [("cd", "drift")]
-    assert left[0].gain_points == {"FULL": 5.1} and "drift in time on CD" in left[0].looks_like
-    # CD's fuller correction passes without beating CR's: both, CR by its static correction
-    close = ev([1.52, 3.21, 1.23, 1.55, 1.24, 1.21])
-    which, left = untold_transducer(data, st, "cr", {**sensor, "cd" + FULLER: close})
-    assert "the data cannot tell" in which
+    u = left[0]
+    assert u.gain_points == {"FULL": round(2 * sensor["cd" + FULLER].gain_points, 2)}
+    assert u.other_output_gain_points == round(2 * sensor["cr" + FULLER].gain_points, 2)
+    assert "drift in time on CD" in u.looks_like and "together, whose gains" in u.looks_like
+    left = untold_transducer(data, st, "cr", ["cr", "cd"],
+                             {**sensor, "cd" + FULLER: other["close"]})
     assert [(u.output, u.shape) for u in left] == [("cr", "static"), ("cd", "drift")]
-    # CD's does not pass: CR alone, as its static correction found
-    weak = ev([0.6, 0.4, 0.7, 0.5, 0.6, 0.5])
-    which, left = untold_transducer(data, st, "cr", {**sensor, "cd" + FULLER: weak})
-    assert which == "" and [(u.output, u.shape) for u in left] == [("cr", "static")]
+    assert all("which of CR and CD, the data cannot tell" in u.looks_like for u in left)
+    left = untold_transducer(data, st, "cr", ["cr"], sensor)
+    assert [(u.output, u.shape) for u in left] == [("cr", "static")]
     assert left[0].gain_points == {"FULL": round(2 * sensor["cr"].gain_points, 2)}
-    # a transducer that beats physics is reported the same way: where both are named, the
-    # output its static correction found reads as a static function of it, whatever its
-    # residual looks like in-sample, the other as its fuller correction's shape
-    which, sensors = blamed_transducers(data, st, "cr", {**sensor, "cd" + FULLER: close})
-    assert [x.output for x in sensors] == ["cr", "cd"] and "the data cannot tell" in which
+    assert left[0].other_output_gain_points == round(2 * sensor["cd"].gain_points, 2)
+
+
+def test_a_transducer_found_by_its_static_correction_reads_static_beside_the_other(chest):
+    """Where a transducer beats physics and both outputs are named, the one its static
+    correction found reads as a static function of it, though its residual looks like a
+    drift in time in-sample (here CR's does); the other as its fuller correction's shape."""
+    from observer_node.loop.diagnosis import FULLER, sensor_shape
+    from observer_node.loop.refit import model
+    from observer_node.loop.rounds import blamed_transducers
+
+    data, st = _both_sagging(chest)
+    with np.errstate(all="ignore"):
+        y_hat = model(st.base, [], data).simulate(data.pulse_g, data.brs_rad)
+    assert sensor_shape(data, y_hat, "cr") == "drift"  # what the old words would have said
+    sensor, other = _transducer_evidence()
+    close = other["close"]
+    sensors = blamed_transducers(data, st, "cr", ["cr", "cd"], {**sensor, "cd" + FULLER: close})
+    assert [x.output for x in sensors] == ["cr", "cd"]
     assert sensors[0].looks_like.startswith("a static function of CR")
     assert sensors[0].evidence is sensor["cr"]
     assert sensors[1].looks_like.startswith("a drift in time on CD")
     assert sensors[1].evidence is close
+
+
+def test_a_round_physics_cannot_win_from_a_transducer_asks_which_transducer(chest):
+    """The round itself: a physical effect passes, gains more than CR's static correction on
+    the mean but does not beat it test by test, and CD's fuller correction beats CR's: nothing
+    named, CD left unexplained, the decision and the possible effect saying CD's."""
+    from observer_node.loop.analysis import Candidate
+    from observer_node.loop.diagnosis import FULLER
+    from observer_node.loop.report import LoopStep
+    from observer_node.loop.rounds import Context, _a_transducer_speaks
+
+    data, st = _both_sagging(chest)
+    sensor, other = _transducer_evidence()
+    pelvis = Candidate("pelvis_coupling", 0.3, {"kp": 1e-6, "cp": 500.0})
+    phys = other["physics"]
+    assert phys.accepted and phys.gain_points > sensor["cr"].gain_points
+    c = Context(None, data, None, None, {}, set(), [], {}, 1.0, 1, 1000.0, None)  # type: ignore[arg-type]
+    step = LoopStep([], 85.0, [], [], sensor)
+    assert _a_transducer_speaks(c, st, step, [], [(86.2, pelvis, phys)], sensor)
+    assert [u.output for u in st.left_unexplained] == ["cd"]
+    assert "if a transducer, cd's rather than cr's" in step.decision
+    assert step.decision.endswith("above the scatter; nothing named")
+    assert [p.why_not for p in st.possible] == [
+        "the data cannot tell it from a sensor correction of cd (its transducer's error), "
+        "which passes the rule too"]
+    # CD's fuller correction passing without beating CR's: both, said once in the decision
+    st2 = dataclasses.replace(st, left_unexplained=[], possible=[])
+    step2 = LoopStep([], 85.0, [], [], sensor)
+    both = {**sensor, "cd" + FULLER: other["close"]}
+    assert _a_transducer_speaks(c, st2, step2, [], [(86.2, pelvis, phys)], both)
+    assert [u.output for u in st2.left_unexplained] == ["cr", "cd"]
+    assert "if a transducer, cr's or cd's, the data cannot tell" in step2.decision
+    assert "sensor correction of cr or cd" in st2.possible[0].why_not
 
 
 def test_a_physical_effect_no_better_than_a_transducer_is_not_named():

@@ -265,56 +265,71 @@ def _a_transducer_speaks(c: Context, st: State, step: LoopStep, tried: list[Trie
                 f"({ev.gain_points:+.2f} points) and the residual is in both outputs: no "
                 "library effect explains it")
             return True
-        which, st.sensors = blamed_transducers(c.est, st, o, sensor_ev)
-        blamed = [x.output for x in st.sensors]
+        blamed, versus = _which_transducer(o, sensor_ev)
+        st.sensors = blamed_transducers(c.est, st, o, blamed, sensor_ev)
+        which = ("" if blamed == [o] else
+                 f", though {o}'s static correction found it: {versus}, above the scatter"
+                 if len(blamed) == 1 else
+                 f"; which transducer, the data cannot tell: {versus}")
         step.decision = (f"a sensor effect on {' or '.join(blamed)} explains the residual "
                          f"better than any physical effect{which}: reported, not added to "
                          "the model")
         return True
     # Physics wins, but one output's sensor correction passes too: as against a physical
     # rival, the effect is named only if it beats it test by test above the scatter; else
-    # the chest or that transducer, the data cannot tell.
+    # the chest or a transducer, the data cannot tell, and which transducer is asked as above.
     why = untold_from_sensor(passing[0][1], passing[0][2], o, ev)
     if why is None:
         return False
-    which, st.left_unexplained = untold_transducer(c.est, st, o, sensor_ev)
+    blamed, versus = _which_transducer(o, sensor_ev)
+    st.left_unexplained = untold_transducer(c.est, st, o, blamed, sensor_ev)
+    which = ("" if blamed == [o] else
+             f"; if a transducer, {blamed[0]}'s rather than {o}'s: {versus}, above the scatter"
+             if len(blamed) == 1 else
+             f"; if a transducer, {o}'s or {blamed[1]}'s, the data cannot tell: {versus}")
     step.decision = f"{why}{which}; nothing named"
     st.possible += _all_possible(
-        passing, st.effects, f"the data cannot tell it from a sensor correction of {o} (its "
-        "transducer's error), which passes the rule too")
+        passing, st.effects, f"the data cannot tell it from a sensor correction of "
+        f"{' or '.join(blamed)} (its transducer's error), which passes the rule too")
     return True
 
 
-def untold_transducer(est: Dataset, st: State, o: str, sensor_ev: dict[str, Evidence]
-                      ) -> tuple[str, list[Unexplained]]:
+def untold_transducer(est: Dataset, st: State, o: str, blamed: list[str],
+                      sensor_ev: dict[str, Evidence]) -> list[Unexplained]:
     """What is left unexplained where physics cannot be told from ``o``'s static correction:
-    the transducer (or both) the fuller corrections blame, as where a transducer wins
-    (``_which_transducer``; set V's slow CR clock was left 'unexplained: CD' without it), with
-    the decision's words. Another output than ``o`` is described by the shape of its fuller
-    correction, the evidence that blamed it."""
-    blamed, which = _which_transducer(o, sensor_ev)
+    the ``blamed`` transducer or transducers (``_which_transducer``), as where a transducer
+    wins (set V's slow CR clock was left 'unexplained: CD' without it). ``o`` is described by
+    its static correction; another output by its fuller one (static and drift together), the
+    evidence that blamed it, its shape the one of the two that alone wins more of its
+    residual in-sample."""
     left = []
     for x in blamed:
-        if x == o:
-            shape, points = "static", _own_points(sensor_ev[o])
-        else:
-            shape, points = sensor_shape(est, _estimate(est, st), x), _own_points(
-                sensor_ev[x + FULLER])
-        left.append(Unexplained(x, _gaining(points), SHAPES[shape].format(o=x.upper()), shape,
-                                _rounded(points),
-                                round(2.0 * sensor_ev[_other(x)].gain_points, 2)))
-    return which, left
+        key = x if x == o else x + FULLER
+        shape = "static" if x == o else sensor_shape(est, _estimate(est, st), x)
+        looks = SHAPES[shape].format(o=x.upper())
+        if x != o:
+            looks += ("; judged by a correction of the static function and a drift in time "
+                      "together, whose gains these are")
+        if len(blamed) > 1:
+            looks += (f"; or the other output's transducer: which of {o.upper()} and "
+                      f"{blamed[1].upper()}, the data cannot tell, check both")
+        points = _own_points(sensor_ev[key])
+        other = key.replace(x, _other(x), 1)  # the same correction on the other output
+        left.append(Unexplained(x, _gaining(points), looks, shape, _rounded(points),
+                                round(2.0 * sensor_ev[other].gain_points, 2)))
+    return left
 
 
 def _which_transducer(o: str, sensor_ev: dict[str, Evidence]) -> tuple[list[str], str]:
-    """Which transducer a sensor effect found by ``o``'s static correction blames, and the
-    decision's words for it. An error drifting in time on one output bends the chest model
-    so that the healthy output's static correction wins it back (sets W and AG: a CD pot's
-    sagging excitation named CR's). So each output's fuller correction (static and drift) is
-    judged too: when the other output's passes the rule and beats ``o``'s test by test above
-    the scatter, the other output is blamed; when it passes but does not, the data cannot
-    tell which (both are named); else ``o``. The fuller corrections only say which: with
-    their freedom they take up physics too, so the static one says whether."""
+    """Which transducer a sensor correction found by ``o``'s static correction blames, and
+    the fuller corrections' comparison in words ("" when they leave it on ``o``). An error
+    drifting in time on one output bends the chest model so that the healthy output's static
+    correction wins it back (sets W and AG: a CD pot's sagging excitation named CR's). So
+    each output's fuller correction (static and drift) is judged too: when the other
+    output's passes the rule and beats ``o``'s test by test above the scatter, the other
+    output alone is blamed; when it passes but does not, the data cannot tell which (both,
+    ``o`` first); else ``o``. The fuller corrections only say which: with their freedom they
+    take up physics too, so the static one says whether."""
     o2 = _other(o)
     mine, theirs = sensor_ev.get(o + FULLER), sensor_ev.get(o2 + FULLER)
     if mine is None or theirs is None or not theirs.accepted:
@@ -323,19 +338,15 @@ def _which_transducer(o: str, sensor_ev: dict[str, Evidence]) -> tuple[list[str]
     versus = (f"{o2}'s correction with a drift in time gains {theirs.gain_points:+.2f} "
               f"points against {o}'s {mine.gain_points:+.2f}, better on {better} of "
               f"{theirs.tests} tests")
-    if told:
-        return [o2], f", though {o}'s static correction found it: {versus}, above the scatter"
-    return [o, o2], f"; which transducer, the data cannot tell: {versus}"
+    return ([o2] if told else [o, o2]), versus
 
 
-def blamed_transducers(est: Dataset, st: State, o: str, sensor_ev: dict[str, Evidence]
-                       ) -> tuple[str, list[SensorEffect]]:
-    """The sensor effects a transducer that beats physics is reported as: the output the
-    fuller corrections blame (``_which_transducer``), or both, with the decision's words. An
-    output blamed by its static correction reads as a static function of it; another, by
-    its fuller correction, in that correction's shape (static, or a drift in time where the
-    drift wins more of its residual)."""
-    blamed, which = _which_transducer(o, sensor_ev)
+def blamed_transducers(est: Dataset, st: State, o: str, blamed: list[str],
+                       sensor_ev: dict[str, Evidence]) -> list[SensorEffect]:
+    """The sensor effects a transducer that beats physics is reported as, one per ``blamed``
+    output (``_which_transducer``). ``o``, found by its static correction, reads as a static
+    function of it; another, blamed by its fuller correction, in whichever of the static
+    function and a drift in time alone wins more of its residual in-sample."""
     kinds = [e["kind"] for e in st.effects]
     out = []
     for x in blamed:
@@ -345,7 +356,7 @@ def blamed_transducers(est: Dataset, st: State, o: str, sensor_ev: dict[str, Evi
             shape = sensor_shape(est, _estimate(est, st), x)
             out.append(SensorEffect(x, kinds, sensor_looks_like(shape, x),
                                     sensor_ev[x + FULLER]))
-    return which, out
+    return out
 
 
 def _estimate(est: Dataset, st: State) -> np.ndarray:
