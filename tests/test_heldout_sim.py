@@ -4691,7 +4691,8 @@ BEFORE_AJ = _cases_of(heldout_sets.before("aj"))
 # the others untouched)
 WATCHED_AJ = ("haj_broken_pulse_zero_shift", "haj_cr_zero_shift", *ONE_PHYSICAL_AJ)
 # the draws found impossible, drawn again by the next seeds in the order found (draw_aj.REDRAWN)
-REDRAWN_AJ: list[tuple[str, int]] = []
+REDRAWN_AJ: list[tuple[str, int]] = [("pelvis_coupling", 45001), ("brs_late", 45002),
+                                     ("brs_late", 45003), ("brs_late", 45004)]
 # the two-effect case, on an earlier set's pairing (none free for it: draw_aj's reuse rule)
 TWO_AJ = "haj_two_relief_sled_lumbar_r16_full"
 
