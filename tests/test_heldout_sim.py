@@ -28,6 +28,7 @@ from benchmarks.heldout import (
     draw_ag,
     draw_ah,
     draw_ai,
+    draw_aj,
     draw_v,
     draw_w,
     draw_x,
@@ -48,6 +49,7 @@ from benchmarks.heldout.cases_af import BY_NAME_AF, ONE_PHYSICAL_AF
 from benchmarks.heldout.cases_ag import BY_NAME_AG, ONE_PHYSICAL_AG
 from benchmarks.heldout.cases_ah import BY_NAME_AH, ONE_PHYSICAL_AH
 from benchmarks.heldout.cases_ai import BY_NAME_AI, ONE_PHYSICAL_AI
+from benchmarks.heldout.cases_aj import BY_NAME_AJ, ONE_PHYSICAL_AJ
 from benchmarks.heldout.cases_p import BY_NAME_P
 from benchmarks.heldout.cases_q import BY_NAME_Q
 from benchmarks.heldout.cases_r import BY_NAME_R
@@ -432,17 +434,23 @@ def test_set_c_forms_leave_sets_a_and_b_alone(tmp_path: Path) -> None:
         assert _files(tmp_path / "alone" / c.name) == _files(tmp_path / "mixed" / c.name)
 
 
-def test_set_c_pulse_zero_shift_stays(set_c: Path) -> None:
-    c = heldout_sets.select(["hc_broken_pulse_shift"], "c")[0]
+def _pulse_zero_shift_stays(sets_dir: Path, c: cases.Case) -> None:
+    """Set C's check of the broken test's pulse channel shifting its zero by ``size`` g at
+    ``lab.SHIFT_AT_S``: untouched before, ``size`` high from then on (still so at rest); the
+    other channels and tests as without it."""
     (broken,), (eff,) = c.expect_broken, c.effects
-    bad = _channel(set_c / "on" / c.name, broken, "pulse")
-    good = _channel(set_c / "off" / c.name, broken, "pulse")
+    bad = _channel(sets_dir / "on" / c.name, broken, "pulse")
+    good = _channel(sets_dir / "off" / c.name, broken, "pulse")
     t = -0.020 + np.arange(len(bad)) / 10_000
     after = t >= lab.SHIFT_AT_S - 1e-9
     assert np.array_equal(bad[~after], good[~after])
     assert np.allclose(bad[after] - good[after], eff.size, atol=1e-5)
     assert abs(bad[-200:].mean()) > eff.size - 1 > abs(good[-200:].mean())  # car at rest
-    _others_untouched(set_c, c.name, broken)
+    _others_untouched(sets_dir, c.name, broken)
+
+
+def test_set_c_pulse_zero_shift_stays(set_c: Path) -> None:
+    _pulse_zero_shift_stays(set_c, heldout_sets.select(["hc_broken_pulse_shift"], "c")[0])
 
 
 def test_set_c_neck_is_physics_on_both_outputs(set_c: Path) -> None:
@@ -3723,9 +3731,9 @@ def _follows_a_reusing_draw(draw_mod: ModuleType, seed: int, earlier: tuple[str,
                             redrawn: list[tuple[str, int]], before: list[cases.Case],
                             two_case: cases.Case) -> None:
     """A set drawn by set W's process from ``seed`` after the sets ``earlier``, its two-effect
-    case reusing a pairing those sets ran (sets Z, AA, AB, AC, AD, AE, AF, AG, AH and AI): the
-    cases follow the draw, and the reused pairing is one the rules allow that no free pairing
-    could replace."""
+    case reusing a pairing those sets ran (sets Z, AA, AB, AC, AD, AE, AF, AG, AH, AI and AJ):
+    the cases follow the draw, and the reused pairing is one the rules allow that no free
+    pairing could replace."""
     d = draw_mod.draw(seed)
     assert d == draw_mod.draw()  # reproducible from its seed
     assert earlier == draw_mod.EARLIER and seed == draw_mod.SEED
@@ -3825,9 +3833,9 @@ def set_aa(tmp_path_factory: pytest.TempPathFactory) -> Path:
 
 @pytest.mark.parametrize("letters",
                          ["x", "y", "z", "aa", "ab", "ac", "ad", "ae", "af", "ag", "ah",
-                          "ai"])
+                          "ai", "aj"])
 def test_a_drawn_set_is_registered(letters: str, tmp_path: Path) -> None:
-    """Sets X-AI: each is its ``cases_<letters>.SET_<LETTERS>`` under its letters (either
+    """Sets X-AJ: each is its ``cases_<letters>.SET_<LETTERS>`` under its letters (either
     case), for sets.select, make_sets and costs, after every set before it."""
     own = getattr(importlib.import_module(f"benchmarks.heldout.cases_{letters}"),
                   f"SET_{letters.upper()}")
@@ -3857,8 +3865,10 @@ def test_sets_before_are_names_not_letters() -> None:
     assert heldout_sets.before("ah") == (*after_aa, "ab", "ac", "ad", "ae", "af", "ag")  # A-AG
     assert heldout_sets.before("ai") == (*after_aa, "ab", "ac", "ad", "ae", "af", "ag",
                                          "ah")  # A-AH
-    with pytest.raises(ValueError, match="unknown case set 'aj'"):
-        heldout_sets.before("aj")
+    assert heldout_sets.before("aj") == (*after_aa, "ab", "ac", "ad", "ae", "af", "ag",
+                                         "ah", "ai")  # A-AI
+    with pytest.raises(ValueError, match="unknown case set 'ak'"):
+        heldout_sets.before("ak")
     # a draw after AA takes AA's pairings; at this seed, without AA one single draws one of them
     aa = {_pairing(c) for c in SET_AA}
 
@@ -3925,12 +3935,11 @@ def test_set_aa_pulse_rail_clips_the_broken_tests_pulse(set_aa: Path) -> None:
     _others_untouched(set_aa, c.name, broken)
 
 
-def test_set_aa_cr_zero_shift_steps_cr_only(set_aa: Path) -> None:
-    """CR reads right until it first passes 20 g, then its size (g) high to the end (set K's
-    check), every test; CD, the pulse and the BRS untouched."""
-    c = BY_NAME_AA["haa_cr_zero_shift"]
+def _cr_zero_shift_steps_cr_only(sets_dir: Path, c: cases.Case) -> None:
+    """Set K's check of the CR zero shift, every test (set AA's): CR reads right until it first
+    passes 20 g, then its size (g) high to the end; CD, the pulse and the BRS untouched."""
     (e,) = c.effects
-    on, off = set_aa / "on" / c.name, set_aa / "off" / c.name
+    on, off = sets_dir / "on" / c.name, sets_dir / "off" / c.name
     seen = 0
     for folder in sorted(on.glob("*/*")):
         name = folder.name
@@ -3943,6 +3952,12 @@ def test_set_aa_cr_zero_shift_steps_cr_only(set_aa: Path) -> None:
         assert (cr - cr0)[-50:].mean() == pytest.approx(e.size, abs=0.2)
         seen += 1
     assert seen == 12
+
+
+def test_set_aa_cr_zero_shift_steps_cr_only(set_aa: Path) -> None:
+    """CR reads right until it first passes 20 g, then its size (g) high to the end (set K's
+    check), every test; CD, the pulse and the BRS untouched."""
+    _cr_zero_shift_steps_cr_only(set_aa, BY_NAME_AA["haa_cr_zero_shift"])
 
 
 def test_set_aa_has_no_run_aways(set_aa: Path) -> None:
@@ -4668,6 +4683,86 @@ def test_set_ai_has_no_run_aways(set_ai: Path) -> None:
     _no_run_aways(SET_AI, set_ai)
 
 
+# ------------------------------------------------------------------ set AJ (cases_aj.py)
+
+SET_AJ = heldout_sets.case_set("aj")
+BEFORE_AJ = _cases_of(heldout_sets.before("aj"))
+# the broken test, the transducer error, and every physical case of one effect (its rigs moved,
+# the others untouched)
+WATCHED_AJ = ("haj_broken_pulse_zero_shift", "haj_cr_zero_shift", *ONE_PHYSICAL_AJ)
+# the draws found impossible, drawn again by the next seeds in the order found (draw_aj.REDRAWN)
+REDRAWN_AJ: list[tuple[str, int]] = [("pelvis_coupling", 45001), ("brs_late", 45002),
+                                     ("brs_late", 45003), ("brs_late", 45004)]
+# the two-effect case, on an earlier set's pairing (none free for it: draw_aj's reuse rule)
+TWO_AJ = "haj_two_relief_sled_lumbar_r16_full"
+
+
+@pytest.fixture(scope="module")
+def set_aj(tmp_path_factory: pytest.TempPathFactory) -> Path:
+    return _generate(tmp_path_factory, "aj", WATCHED_AJ)
+
+
+def test_set_aj_covers_the_general_list() -> None:
+    """Set AJ as its brief asks: clean cases at 48 and 96 counts; each kind of the library a
+    loop can name, as physics, once in a case of its own; two effects of different kinds on
+    different rigs in one case; a broken estimation test; a transducer error on CR alone (as
+    drawn); a late pulse and a late BRS at delays in 1-5 ms no earlier set used on any input;
+    6 + 6 tests, every rig an estimation part holds held twice or more; an effect on some rigs
+    only rests on two estimation and two validation tests of them beside an estimation test of
+    a rig it spares."""
+    _covers_the_general_list(SET_AJ, BEFORE_AJ, "cr", ONE_PHYSICAL_AJ, draw_aj.KINDS)
+
+
+def test_set_aj_follows_its_draw() -> None:
+    """Set AJ's designer's choices are numpy's default_rng(45000)'s (``draw_aj.py``; the draws
+    found impossible drawn again by the next seeds, ``REDRAWN``), followed as drawn: each
+    kind's form, rigs, counts and mix; the two-effect case's kinds, forms, rigs, counts and mix;
+    the delays, their counts and mixes; the transducer error's output, form, counts and mix;
+    the broken test's channel, form, test, counts and mix; the clean cases' mixes. Set AI's
+    process: set W's kinds, pools and mix rules, A-AI's pairings taken, but the two-effect
+    case's: none was free for its rigs (the old rule draws it none), so it reuses one A-AI ran,
+    among those its rules allow."""
+    _follows_a_reusing_draw(draw_aj, 45000,
+                            (*"abcdefghijklmnopqrstuvwxyz", "aa", "ab", "ac", "ad", "ae", "af",
+                             "ag", "ah", "ai"),
+                            SET_AJ, ONE_PHYSICAL_AJ, REDRAWN_AJ, BEFORE_AJ, BY_NAME_AJ[TWO_AJ])
+    assert _pairing(BY_NAME_AJ[TWO_AJ]) == ((2, 2, 2), (3, 2, 1))
+
+
+def test_set_aj_lab_side_is_as_drawn_and_unnamed() -> None:
+    """One broken estimation test, the only thing expected; one transducer error on CR on every
+    test, nothing physical named; AJ's physics earlier sets' forms only."""
+    _lab_side_as_drawn(SET_AJ, "cr")
+    assert {k for k in _keys(SET_AJ) if physics.EFFECTS[k]} <= _keys(BEFORE_AJ)
+
+
+@pytest.mark.parametrize("case", sorted(ONE_PHYSICAL_AJ))
+def test_set_aj_physics_moves_its_rigs_only(set_aj: Path, case: str) -> None:
+    """Each physical case moves what its form moves on every test of its rigs (the chest's,
+    belt's, bag's and pelvis's forms CR and CD, the pulse untouched; the BRS's off-centre
+    encoder the BRS alone) and leaves the tests of a rig it spares untouched to the bit."""
+    _moves_its_rigs_only(set_aj, BY_NAME_AJ[case])
+
+
+def test_set_aj_pulse_zero_shift_stays(set_aj: Path) -> None:
+    """The broken test's tunnel accelerometer shifts its zero by its size at 11 ms and stays
+    shifted (set C's form and check, at this set's size); the other channels and tests as
+    without it."""
+    c = BY_NAME_AJ["haj_broken_pulse_zero_shift"]
+    assert c.expect_broken == ("SLED_007",)
+    _pulse_zero_shift_stays(set_aj, c)
+
+
+def test_set_aj_cr_zero_shift_steps_cr_only(set_aj: Path) -> None:
+    """CR reads right until it first passes 20 g, then its size (g) high to the end (set K's
+    and set AA's check), every test; CD, the pulse and the BRS untouched."""
+    _cr_zero_shift_steps_cr_only(set_aj, BY_NAME_AJ["haj_cr_zero_shift"])
+
+
+def test_set_aj_has_no_run_aways(set_aj: Path) -> None:
+    _no_run_aways(SET_AJ, set_aj)
+
+
 def test_more_tests_doubles_the_estimation_tests_only(tmp_path: Path) -> None:
     """``more_tests``: K times each rig's estimation tests, the validation tests and the
     effects as written, another seed (new crashes), a name that says so; the broken test's name
@@ -4722,12 +4817,13 @@ def test_loop_heldout_on_a_folder_without_the_case_is_one_line(tmp_path: Path) -
     assert "--case haa_clean48 --est-times 2 --out" in r.stderr
 
 
-# the drawn sets X-AI: each one's seed, and its cases that reuse an earlier set's pairing by
+# the drawn sets X-AJ: each one's seed, and its cases that reuse an earlier set's pairing by
 # its draw's rule (the two-effect case since set Z: none was free for its rigs)
 DRAWN = {"x": (33000, ()), "y": (34000, ()), "z": (35000, (TWO_Z,)),
          "aa": (36000, (TWO_AA,)), "ab": (37000, (TWO_AB,)), "ac": (38000, (TWO_AC,)),
          "ad": (39000, (TWO_AD,)), "ae": (40000, (TWO_AE,)), "af": (41000, (TWO_AF,)),
-         "ag": (42000, (TWO_AG,)), "ah": (43000, (TWO_AH,)), "ai": (44000, (TWO_AI,))}
+         "ag": (42000, (TWO_AG,)), "ah": (43000, (TWO_AH,)), "ai": (44000, (TWO_AI,)),
+         "aj": (45000, (TWO_AJ,))}
 
 
 @pytest.mark.parametrize("letters", DRAWN)
