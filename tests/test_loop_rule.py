@@ -1203,6 +1203,14 @@ def test_a_sagging_cd_is_blamed_on_cd_by_its_fuller_correction(chest):
     assert cd.gain_points > ev["cd"].gain_points  # the drift takes what the static cannot
 
 
+def _on_six_full_tests(gains: list[float]) -> Evidence:
+    """A correction's evidence under the rule from its fit gains [points] on six FULL tests."""
+    names = [f"FULL_{i:03d}" for i in (1, 3, 5, 7, 9, 11)]
+    return judge(dict.fromkeys(names, 85.0),
+                 {n: 85.0 + g for n, g in zip(names, gains, strict=True)},
+                 dict.fromkeys(names, "FULL"), None, 1.0)
+
+
 def test_the_output_blamed_is_told_by_the_fuller_corrections_test_by_test():
     """The static correction says whether a transducer is at fault, the fuller ones which.
     The other output is blamed only when its fuller correction passes the rule and beats the
@@ -1212,14 +1220,7 @@ def test_the_output_blamed_is_told_by_the_fuller_corrections_test_by_test():
     from observer_node.loop.diagnosis import FULLER
     from observer_node.loop.rounds import _which_transducer
 
-    names = [f"FULL_{i:03d}" for i in (1, 3, 5, 7, 9, 11)]
-    setups = dict.fromkeys(names, "FULL")
-
-    def ev(gains: list[float]) -> Evidence:
-        return judge(dict.fromkeys(names, 85.0),
-                     {n: 85.0 + g for n, g in zip(names, gains, strict=True)}, setups, None,
-                     1.0)
-
+    ev = _on_six_full_tests
     cr_full = ev([1.35, -0.06, 1.22, 1.43, 1.40, 1.57])
     cd_full = ev([1.52, 3.21, 1.23, 1.55, 1.24, 1.21])
     assert cd_full.accepted and cr_full.accepted
@@ -1244,14 +1245,7 @@ def _transducer_evidence() -> tuple[dict[str, Evidence], dict[str, Evidence]]:
     (``close``: CD's passing without beating CR's; ``weak``: CD's not passing)."""
     from observer_node.loop.diagnosis import FULLER
 
-    names = [f"FULL_{i:03d}" for i in (1, 3, 5, 7, 9, 11)]
-    setups = dict.fromkeys(names, "FULL")
-
-    def ev(gains: list[float]) -> Evidence:
-        return judge(dict.fromkeys(names, 85.0),
-                     {n: 85.0 + g for n, g in zip(names, gains, strict=True)}, setups, None,
-                     1.0)
-
+    ev = _on_six_full_tests
     sensor = {"cr": ev([1.0, 1.1, 0.9, 1.2, 1.0, 1.1]), "cd": ev([0.2] * 6),
               "cr" + FULLER: ev([1.35, -0.06, 1.22, 1.43, 1.40, 1.57]),
               "cd" + FULLER: ev([2.3, 2.6, 2.4, 2.7, 2.5, 2.8])}
