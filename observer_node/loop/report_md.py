@@ -154,7 +154,8 @@ def _other_transducer(s: SensorEffect, named: list[str]) -> list[str]:
     input delay, nor when both outputs are named): an error on the other output can bend the
     chest model so that this output's correction wins it back. The loop checks the other
     output with a drift in time (sets W and AG: a CD pot's sagging excitation had been named
-    CR's); that did not catch set V's CR clock or set AI's CD pot non-linearity."""
+    CR's); that tells set V's CR clock only as "CR or CD" and missed set AI's CD pot
+    non-linearity."""
     if not s.looks_like.startswith(("a static function", "a drift in time")):
         return []
     o, other = s.output.upper(), _OTHER[s.output]
