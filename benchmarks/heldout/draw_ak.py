@@ -93,8 +93,15 @@ from .sets import before
 SEED = 46000
 # a case whose draw proved impossible, drawn again, whole, by the next seed's generator (one per
 # redraw, in this order, after the rest), the pairings of everything drawn before still taken:
-# none yet (the set not yet drawn)
-REDRAWN: tuple[tuple[str, int], ...] = ()
+# found at the draw, before any size or cost: a one-effect case takes only a free pairing, and
+# chest_rate_damping's first draw (rib_maxwell on FULL), airbag_contact's (airbag_sealed on
+# FULL) and input_gain's (brs_eccentric on R16+SLED) had none left (``drawn`` gives them none),
+# impossible as drawn, as set W's and set Y's two-effect draws without a pairing were; 46002's
+# bag (airbag_relief on SLED+FULL) and 46004-46009's (each on FULL) none either (see
+# ``cases_ak.py``)
+REDRAWN: tuple[tuple[str, int], ...] = (
+    ("chest_rate_damping", 46001), ("airbag_contact", 46002), ("input_gain", 46003),
+    *(("airbag_contact", s) for s in range(46004, 46011)))
 EARLIER = before("ak")
 __all__ = ["BROKEN", "BRS_GAIN", "KINDS", "REDRAWN", "SEED", "TRANSDUCER", "draw", "forms",
            "scopes"]
