@@ -97,8 +97,8 @@ SEED = 46000
 # chest_rate_damping's first draw (rib_maxwell on FULL), airbag_contact's (airbag_sealed on
 # FULL) and input_gain's (brs_eccentric on R16+SLED) had none left (``drawn`` gives them none),
 # impossible as drawn, as set W's and set Y's two-effect draws without a pairing were; 46002's
-# bag (airbag_relief on SLED+FULL) and 46004-46009's (each on FULL) none either (see
-# ``cases_ak.py``)
+# bag (airbag_relief on SLED+FULL) and 46004-46009's (each on FULL) none either; every draw
+# then found a size in band within the rule's four, none running away (see ``cases_ak.py``)
 REDRAWN: tuple[tuple[str, int], ...] = (
     ("chest_rate_damping", 46001), ("airbag_contact", 46002), ("input_gain", 46003),
     *(("airbag_contact", s) for s in range(46004, 46011)))
