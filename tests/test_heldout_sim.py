@@ -29,6 +29,7 @@ from benchmarks.heldout import (
     draw_ah,
     draw_ai,
     draw_aj,
+    draw_ak,
     draw_v,
     draw_w,
     draw_x,
@@ -50,6 +51,7 @@ from benchmarks.heldout.cases_ag import BY_NAME_AG, ONE_PHYSICAL_AG
 from benchmarks.heldout.cases_ah import BY_NAME_AH, ONE_PHYSICAL_AH
 from benchmarks.heldout.cases_ai import BY_NAME_AI, ONE_PHYSICAL_AI
 from benchmarks.heldout.cases_aj import BY_NAME_AJ, ONE_PHYSICAL_AJ
+from benchmarks.heldout.cases_ak import BY_NAME_AK, ONE_PHYSICAL_AK
 from benchmarks.heldout.cases_p import BY_NAME_P
 from benchmarks.heldout.cases_q import BY_NAME_Q
 from benchmarks.heldout.cases_r import BY_NAME_R
@@ -2310,13 +2312,12 @@ def test_set_q_cr_late_moves_cr_only(set_q: Path) -> None:
         assert _best_lag(cr, cr0) == round(e.size * physics.FS_HZ)
 
 
-def test_set_q_cd_rc_filter_lags_cd_only(set_q: Path) -> None:
-    """CD is its own twin's through the RC low-pass (within the noise), later at its peak and
-    no higher, every test; CR, pulse and BRS untouched."""
-    c = heldout_sets.select(["hq_cd_rc_filter"], "q")[0]
+def _cd_rc_filter_lags_cd_only(sets_dir: Path, c: cases.Case) -> None:
+    """Set Q's check of CD's RC low-pass, every test: CD is its own twin's through the filter
+    (within the noise), later at its peak and no higher; CR, pulse and BRS untouched."""
     (e,) = c.effects
     seen = 0
-    for cd, cd0 in _cd_only(set_q / "on" / c.name, set_q / "off" / c.name):
+    for cd, cd0 in _cd_only(sets_dir / "on" / c.name, sets_dir / "off" / c.name):
         inner = (_times(len(cd)) > 0.0) & (_times(len(cd)) < 0.17)
         miss = np.abs(cd - lab.rc_filter(cd0, e.size))[inner].max()
         moved = np.abs(cd - cd0).max()
@@ -2324,6 +2325,12 @@ def test_set_q_cd_rc_filter_lags_cd_only(set_q: Path) -> None:
         assert np.argmax(cd) > np.argmax(cd0) and cd.max() <= cd0.max() + 0.1
         seen += 1
     assert seen == 12
+
+
+def test_set_q_cd_rc_filter_lags_cd_only(set_q: Path) -> None:
+    """CD is its own twin's through the RC low-pass (within the noise), later at its peak and
+    no higher, every test; CR, pulse and BRS untouched."""
+    _cd_rc_filter_lags_cd_only(set_q, heldout_sets.select(["hq_cd_rc_filter"], "q")[0])
 
 
 def test_set_q_dummy_late_moves_both_outputs_alike(set_q: Path) -> None:
@@ -2474,18 +2481,23 @@ def test_set_r_rib_foam_moves_the_chest_not_the_inputs(set_r: Path) -> None:
         assert min(moved) > 0.3, (name, moved)
 
 
-def test_set_r_cd_reversed_reads_negative(set_r: Path) -> None:
-    """The broken test's CD is its twin's negated (the chest read as opening); its CR, pulse
-    and BRS untouched; every other test untouched."""
-    c = BY_NAME_R["hr_broken_cd_reversed"]
+def _cd_reversed_reads_negative(sets_dir: Path, c: cases.Case) -> None:
+    """Set R's check of the broken test's reversed CD: its twin's negated (the chest read as
+    opening); its CR, pulse and BRS untouched; every other test untouched."""
     (broken,) = c.expect_broken
-    on, off = set_r / "on" / c.name, set_r / "off" / c.name
+    on, off = sets_dir / "on" / c.name, sets_dir / "off" / c.name
     bad, good = _channel(on, broken, "cd"), _channel(off, broken, "cd")
     assert np.array_equal(bad, -good) and good.max() > 10 and bad.min() < -10
     for which in ("cr", "pulse"):
         assert np.array_equal(_channel(on, broken, which), _channel(off, broken, which))
     assert np.array_equal(_brs(on, broken), _brs(off, broken))
-    _others_untouched(set_r, c.name, broken)
+    _others_untouched(sets_dir, c.name, broken)
+
+
+def test_set_r_cd_reversed_reads_negative(set_r: Path) -> None:
+    """The broken test's CD is its twin's negated (the chest read as opening); its CR, pulse
+    and BRS untouched; every other test untouched."""
+    _cd_reversed_reads_negative(set_r, BY_NAME_R["hr_broken_cd_reversed"])
 
 
 def test_set_r_slew_follows_no_faster_than_its_rate() -> None:
@@ -3731,8 +3743,8 @@ def _follows_a_reusing_draw(draw_mod: ModuleType, seed: int, earlier: tuple[str,
                             redrawn: list[tuple[str, int]], before: list[cases.Case],
                             two_case: cases.Case) -> None:
     """A set drawn by set W's process from ``seed`` after the sets ``earlier``, its two-effect
-    case reusing a pairing those sets ran (sets Z, AA, AB, AC, AD, AE, AF, AG, AH, AI and AJ):
-    the cases follow the draw, and the reused pairing is one the rules allow that no free
+    case reusing a pairing those sets ran (sets Z, AA, AB, AC, AD, AE, AF, AG, AH, AI, AJ and
+    AK): the cases follow the draw, and the reused pairing is one the rules allow that no free
     pairing could replace."""
     d = draw_mod.draw(seed)
     assert d == draw_mod.draw()  # reproducible from its seed
@@ -3833,9 +3845,9 @@ def set_aa(tmp_path_factory: pytest.TempPathFactory) -> Path:
 
 @pytest.mark.parametrize("letters",
                          ["x", "y", "z", "aa", "ab", "ac", "ad", "ae", "af", "ag", "ah",
-                          "ai", "aj"])
+                          "ai", "aj", "ak"])
 def test_a_drawn_set_is_registered(letters: str, tmp_path: Path) -> None:
-    """Sets X-AJ: each is its ``cases_<letters>.SET_<LETTERS>`` under its letters (either
+    """Sets X-AK: each is its ``cases_<letters>.SET_<LETTERS>`` under its letters (either
     case), for sets.select, make_sets and costs, after every set before it."""
     own = getattr(importlib.import_module(f"benchmarks.heldout.cases_{letters}"),
                   f"SET_{letters.upper()}")
@@ -3867,8 +3879,10 @@ def test_sets_before_are_names_not_letters() -> None:
                                          "ah")  # A-AH
     assert heldout_sets.before("aj") == (*after_aa, "ab", "ac", "ad", "ae", "af", "ag",
                                          "ah", "ai")  # A-AI
-    with pytest.raises(ValueError, match="unknown case set 'ak'"):
-        heldout_sets.before("ak")
+    assert heldout_sets.before("ak") == (*after_aa, "ab", "ac", "ad", "ae", "af", "ag",
+                                         "ah", "ai", "aj")  # A-AJ
+    with pytest.raises(ValueError, match="unknown case set 'al'"):
+        heldout_sets.before("al")
     # a draw after AA takes AA's pairings; at this seed, without AA one single draws one of them
     aa = {_pairing(c) for c in SET_AA}
 
@@ -4763,6 +4777,91 @@ def test_set_aj_has_no_run_aways(set_aj: Path) -> None:
     _no_run_aways(SET_AJ, set_aj)
 
 
+# ------------------------------------------------------------------ set AK (cases_ak.py)
+
+SET_AK = heldout_sets.case_set("ak")
+BEFORE_AK = _cases_of(heldout_sets.before("ak"))
+# the broken test, the transducer error, and every physical case of one effect (its rigs moved,
+# the others untouched)
+WATCHED_AK = ("hak_broken_cd_reversed", "hak_cd_rc_filter", *ONE_PHYSICAL_AK)
+# the draws found impossible, drawn again by the next seeds in the order found (draw_ak.REDRAWN):
+# the first ten at the draw, each left no free pairing
+REDRAWN_AK: list[tuple[str, int]] = [("chest_rate_damping", 46001), ("airbag_contact", 46002),
+                                     ("input_gain", 46003),
+                                     *(("airbag_contact", s) for s in range(46004, 46011))]
+# the two-effect case, on an earlier set's pairing (none free for it: draw_ak's reuse rule)
+TWO_AK = "hak_two_pelvis_knee_full_knee_r16_sled"
+
+
+@pytest.fixture(scope="module")
+def set_ak(tmp_path_factory: pytest.TempPathFactory) -> Path:
+    return _generate(tmp_path_factory, "ak", WATCHED_AK)
+
+
+def test_set_ak_covers_the_general_list() -> None:
+    """Set AK as its brief asks: clean cases at 48 and 96 counts; each kind of the library a
+    loop can name, as physics, once in a case of its own; two effects of different kinds on
+    different rigs in one case; a broken estimation test; a transducer error on CD alone (as
+    drawn); a late pulse and a late BRS at delays in 1-5 ms no earlier set used on any input;
+    6 + 6 tests, every rig an estimation part holds held twice or more; an effect on some rigs
+    only rests on two estimation and two validation tests of them beside an estimation test of
+    a rig it spares."""
+    _covers_the_general_list(SET_AK, BEFORE_AK, "cd", ONE_PHYSICAL_AK, draw_ak.KINDS)
+
+
+def test_set_ak_follows_its_draw() -> None:
+    """Set AK's designer's choices are numpy's default_rng(46000)'s (``draw_ak.py``; the draws
+    found impossible drawn again by the next seeds, ``REDRAWN``), followed as drawn: each
+    kind's form, rigs, counts and mix; the two-effect case's kinds, forms, rigs, counts and mix;
+    the delays, their counts and mixes; the transducer error's output, form, counts and mix;
+    the broken test's channel, form, test, counts and mix; the clean cases' mixes. Set AJ's
+    process: set W's kinds, pools and mix rules, A-AJ's pairings taken, but the two-effect
+    case's: none was free for its rigs (the old rule draws it none), so it reuses one A-AJ ran,
+    among those its rules allow. The first ten redraws are one-effect draws left no free
+    pairing (impossible as drawn, found at the draw)."""
+    _follows_a_reusing_draw(draw_ak, 46000,
+                            (*"abcdefghijklmnopqrstuvwxyz", "aa", "ab", "ac", "ad", "ae", "af",
+                             "ag", "ah", "ai", "aj"),
+                            SET_AK, ONE_PHYSICAL_AK, REDRAWN_AK, BEFORE_AK, BY_NAME_AK[TWO_AK])
+    assert _pairing(BY_NAME_AK[TWO_AK]) == ((2, 2, 2), (3, 0, 3))
+    d = draw_ak.draw()
+    assert [first["est"] for _, _, first in d["rejected"][:10]] == [None] * 10
+
+
+def test_set_ak_lab_side_is_as_drawn_and_unnamed() -> None:
+    """One broken estimation test, the only thing expected; one transducer error on CD on every
+    test, nothing physical named; AK's physics earlier sets' forms only."""
+    _lab_side_as_drawn(SET_AK, "cd")
+    assert {k for k in _keys(SET_AK) if physics.EFFECTS[k]} <= _keys(BEFORE_AK)
+
+
+@pytest.mark.parametrize("case", sorted(ONE_PHYSICAL_AK))
+def test_set_ak_physics_moves_its_rigs_only(set_ak: Path, case: str) -> None:
+    """Each physical case moves what its form moves on every test of its rigs (the chest's,
+    belt's, bag's and pelvis's forms CR and CD, the pulse untouched; the BRS's off-centre
+    encoder the BRS alone) and leaves the tests of a rig it spares untouched to the bit."""
+    _moves_its_rigs_only(set_ak, BY_NAME_AK[case])
+
+
+def test_set_ak_cd_reversed_reads_negative(set_ak: Path) -> None:
+    """The broken test's CD is its twin's negated (the chest read as opening; set R's form and
+    check); its CR, pulse and BRS untouched; every other test untouched."""
+    c = BY_NAME_AK["hak_broken_cd_reversed"]
+    assert c.expect_broken == ("FULL_005",)
+    _cd_reversed_reads_negative(set_ak, c)
+
+
+def test_set_ak_cd_rc_filter_lags_cd_only(set_ak: Path) -> None:
+    """CD is its own twin's through the RC low-pass (within the noise), later at its peak and
+    no higher (set Q's check, at this set's corner), every test; CR, pulse and BRS
+    untouched."""
+    _cd_rc_filter_lags_cd_only(set_ak, BY_NAME_AK["hak_cd_rc_filter"])
+
+
+def test_set_ak_has_no_run_aways(set_ak: Path) -> None:
+    _no_run_aways(SET_AK, set_ak)
+
+
 def test_more_tests_doubles_the_estimation_tests_only(tmp_path: Path) -> None:
     """``more_tests``: K times each rig's estimation tests, the validation tests and the
     effects as written, another seed (new crashes), a name that says so; the broken test's name
@@ -4817,13 +4916,13 @@ def test_loop_heldout_on_a_folder_without_the_case_is_one_line(tmp_path: Path) -
     assert "--case haa_clean48 --est-times 2 --out" in r.stderr
 
 
-# the drawn sets X-AJ: each one's seed, and its cases that reuse an earlier set's pairing by
+# the drawn sets X-AK: each one's seed, and its cases that reuse an earlier set's pairing by
 # its draw's rule (the two-effect case since set Z: none was free for its rigs)
 DRAWN = {"x": (33000, ()), "y": (34000, ()), "z": (35000, (TWO_Z,)),
          "aa": (36000, (TWO_AA,)), "ab": (37000, (TWO_AB,)), "ac": (38000, (TWO_AC,)),
          "ad": (39000, (TWO_AD,)), "ae": (40000, (TWO_AE,)), "af": (41000, (TWO_AF,)),
          "ag": (42000, (TWO_AG,)), "ah": (43000, (TWO_AH,)), "ai": (44000, (TWO_AI,)),
-         "aj": (45000, (TWO_AJ,))}
+         "aj": (45000, (TWO_AJ,)), "ak": (46000, (TWO_AK,))}
 
 
 @pytest.mark.parametrize("letters", DRAWN)

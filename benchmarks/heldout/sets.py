@@ -29,7 +29,8 @@ AF (``cases_af``, written after set AE by another engineer, its choices drawn, t
 AG (``cases_ag``, written after set AF by another engineer, its choices drawn, the same way), set
 AH (``cases_ah``, written after set AG by another engineer, its choices drawn, the same way), set
 AI (``cases_ai``, written after set AH by another engineer, its choices drawn, the same way), set
-AJ (``cases_aj``, written after set AI by another engineer, its choices drawn, the same way)."""
+AJ (``cases_aj``, written after set AI by another engineer, its choices drawn, the same way), set
+AK (``cases_ak``, written after set AJ by another engineer, its choices drawn, the same way)."""
 
 from __future__ import annotations
 
@@ -44,6 +45,7 @@ from .cases_ag import SET_AG
 from .cases_ah import SET_AH
 from .cases_ai import SET_AI
 from .cases_aj import SET_AJ
+from .cases_ak import SET_AK
 from .cases_b import SET_B
 from .cases_c import SET_C
 from .cases_d import SET_D
@@ -78,7 +80,7 @@ _BY_NAME: dict[str, list[Case]] = {
     "v": SET_V, "w": SET_W, "x": SET_X, "y": SET_Y, "z": SET_Z,
     "aa": SET_AA, "ab": SET_AB, "ac": SET_AC, "ad": SET_AD, "ae": SET_AE,
     "af": SET_AF, "ag": SET_AG, "ah": SET_AH, "ai": SET_AI,
-    "aj": SET_AJ}
+    "aj": SET_AJ, "ak": SET_AK}
 SETS = tuple(_BY_NAME)
 
 
@@ -92,17 +94,18 @@ def before(name: str) -> tuple[str, ...]:
     ``"ab"``, ``"ac"``, ``"ad"``, ``"ae"``, ``"af"`` and ``"ag"``; before set AI, those,
     ``"aa"``, ``"ab"``, ``"ac"``, ``"ad"``, ``"ae"``, ``"af"``, ``"ag"`` and ``"ah"``; before set
     AJ, those, ``"aa"``, ``"ab"``, ``"ac"``, ``"ad"``, ``"ae"``, ``"af"``, ``"ag"``, ``"ah"`` and
-    ``"ai"``); ValueError for an unknown name. Names, not letters: set AA is one set, not set A
-    twice."""
+    ``"ai"``; before set AK, those, ``"aa"``, ``"ab"``, ``"ac"``, ``"ad"``, ``"ae"``, ``"af"``,
+    ``"ag"``, ``"ah"``, ``"ai"`` and ``"aj"``); ValueError for an unknown name. Names, not
+    letters: set AA is one set, not set A twice."""
     _known(name)
     return SETS[:SETS.index(name)]
 
 
 def case_set(name: str) -> list[Case]:
-    """Set A (``cases``), or set B ... Z, AA, AB, AC, AD, AE, AF, AG, AH, AI, AJ (``cases_b``
-    ... ``cases_z``, ``cases_aa``, ``cases_ab``, ``cases_ac``, ``cases_ad``, ``cases_ae``,
-    ``cases_af``, ``cases_ag``, ``cases_ah``, ``cases_ai``, ``cases_aj``) by its lower-case
-    letters; ValueError for another name."""
+    """Set A (``cases``), or set B ... Z, AA, AB, AC, AD, AE, AF, AG, AH, AI, AJ, AK
+    (``cases_b`` ... ``cases_z``, ``cases_aa``, ``cases_ab``, ``cases_ac``, ``cases_ad``,
+    ``cases_ae``, ``cases_af``, ``cases_ag``, ``cases_ah``, ``cases_ai``, ``cases_aj``,
+    ``cases_ak``) by its lower-case letters; ValueError for another name."""
     _known(name)
     return list(_BY_NAME[name])
 
