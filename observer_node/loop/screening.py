@@ -168,15 +168,7 @@ is no other test's reference):
   decoder's lost counts fit no other crash, and had named an innocent partner in 2 of 26 fresh
   draws, ``benchmarks/screen_faults.py``; the only test of its setup has no side to be seen from
   and is named one-sided). Added after held-out set J, whose crossed files no other check found
-  (one was the only FULL estimation test). The spool must be out of step at the first fifth
-  of its pay-out too, further from every other test of its setup than they lie apart and
-  than 4 ms (half the gap asked at the half): a spool of another crash, or a decoder losing
-  counts from the first, is out of step from the start, while an encoder ring off its centre
-  warps the angle read once a turn and can move one test's half alone. Set AJ's ring (R16
-  only, 0.43 rad) put one clean R16 test's half 9.5 ms from its rig-mates', its first fifth
-  1.8 ms from the nearest (within their 3.9 ms), and the test was left out. The broken
-  tests this check found on sets A-AJ lie 5.8-13.0 ms out at the start (a decoder's slow
-  polls the nearest). Added in session 52.
+  (one was the only FULL estimation test).
 - **CR and CD out of step**: the chest's acceleration and its deflection are one motion, so
   on one rig the time from CR's half peak to CD's (each from its value at rest) varies little:
   on the bundled campaign it lies within 0.7 ms on every rig (CR leads by 1.2-2.2 ms). A test
@@ -380,7 +372,6 @@ PAYOUT_ALPHA = 0.001  # two-sided, of the others' Student-t prediction interval
 # no clean rig's scatter: a clean bundled test lies at most 14.3 ms from the nearest of
 # three or more of its rig's others, however drawn
 PAYOUT_SURE_MS = 20.0
-PAYOUT_START = 0.2  # of the spool's pay-out: where a spool of another crash is out of step too
 PARTNER_GAP_MS = 2.0
 PULSE_COPY_APART = 3.0  # times: the copy lies this much farther out of its rig's scatter
 STEP_GAP_MS = 3.0
@@ -941,11 +932,10 @@ def _flight_ms(test: CrashTest, end_s: float) -> float:
     return int(np.argmax(flight_m >= FREE_FLIGHT_M)) * dt_s * 1000.0
 
 
-def _payout_lag_ms(test: CrashTest, end_s: float, brs: np.ndarray | None = None,
-                   share: float = 0.5) -> float:
-    """Time [ms] from the car's 50 mm free flight to ``share`` of the spool's pay-out (of
-    ``brs``, recorded on the test's clock, the test's own by default; half by default); NaN
-    when the window holds neither (see the module's docstring)."""
+def _payout_lag_ms(test: CrashTest, end_s: float, brs: np.ndarray | None = None) -> float:
+    """Time [ms] from the car's 50 mm free flight to half the spool's pay-out (of ``brs``,
+    recorded on the test's clock, the test's own by default); NaN when the window holds
+    neither (see the module's docstring)."""
     i0, i1 = test.index_of(0.0), test.index_of(end_s) + 1
     flight_ms = _flight_ms(test, end_s)
     b = np.asarray((test.brs if brs is None else brs)[i0:i1], dtype=float)
@@ -954,15 +944,14 @@ def _payout_lag_ms(test: CrashTest, end_s: float, brs: np.ndarray | None = None,
     paid_counts = _paid_counts(b)
     if paid_counts.max() < 2:  # 2 counts: the encoder's noise
         return float("nan")
-    k_share = int(np.argmax(paid_counts >= share * paid_counts.max()))
-    return k_share * 1000.0 / test.fs_hz - flight_ms
+    k_half = int(np.argmax(paid_counts >= 0.5 * paid_counts.max()))
+    return k_half * 1000.0 / test.fs_hz - flight_ms
 
 
 def payout_outliers(tests: list[CrashTest], end_s: float) -> list[BrokenTest]:
     """Tests whose BRS pays out out of step with their own pulse, against the other tests of
     their setup (``CrashTest.setup``, see :func:`~observer_node.data.setups.assign_setups`)."""
     lag = {t.name: (t.setup, _payout_lag_ms(t, end_s)) for t in tests}
-    start = {t.name: (t.setup, _payout_lag_ms(t, end_s, share=PAYOUT_START)) for t in tests}
     out = []
     for x in tests:
         setup, own = lag[x.name]
@@ -971,7 +960,7 @@ def payout_outliers(tests: list[CrashTest], end_s: float) -> list[BrokenTest]:
         if not np.isfinite(own) or len(rest) < PAYOUT_MIN_OTHERS:
             continue
         gap, spread = float(np.min(np.abs(rest - own))), float(np.ptp(rest))
-        if not (gap > PAYOUT_GAP_MS and gap > spread and _out_from_start(x, start)):
+        if not (gap > PAYOUT_GAP_MS and gap > spread):
             continue
         # Out of step by the gap; named when that is beyond the dummy's scatter (or beyond
         # any rig's we hold, whatever few tests say of it), or when its spool and another
@@ -990,20 +979,6 @@ def payout_outliers(tests: list[CrashTest], end_s: float) -> list[BrokenTest]:
     for b in out:  # a test out of step on its own may be another's partner too: once, first why
         first.setdefault(b.test, b)
     return list(first.values())
-
-
-def _out_from_start(x: CrashTest, start: dict[str, tuple[str, float]]) -> bool:
-    """Whether ``x``'s spool is out of step at the first fifth of its pay-out too: further
-    from every other test of its setup than they lie apart, and than half the gap asked at
-    the half. A spool of another crash, or a decoder losing counts from the first, is out of
-    step from the start; an encoder ring off its centre warps the angle read once a turn,
-    and may move one test's half pay-out alone (see the module's docstring)."""
-    others = np.array([v for n, (s, v) in start.items() if n != x.name and s == x.setup
-                       and np.isfinite(v)])
-    own = start[x.name][1]
-    if not (np.isfinite(own) and len(others)):
-        return True  # nothing to read it by: the half alone judges, as before
-    return bool(np.min(np.abs(others - own)) > max(np.ptp(others), PAYOUT_GAP_MS / 2))
 
 
 def _scatter(name: str, lag: dict[str, tuple[str, float]]) -> tuple[float, int]:
