@@ -57,7 +57,7 @@ from observer_node.ident.dataset import Dataset, make_dataset
 from observer_node.loop.closed_loop import run_loop
 from observer_node.loop.evidence import Evidence, judge
 from observer_node.loop.refit import Refit, finite, fold_scores, folds, refit, score, where_stalled
-from observer_node.loop.report import LoopReport
+from observer_node.loop.report import AcceptedEffect, LoopReport
 from observer_node.model.effects import EFFECTS
 
 
@@ -163,9 +163,37 @@ def run_case(case: Case, sets: Path, work: Path, workers: int | None) -> dict:
            "carried": carried, "refused": refused, "refused_unjudged": refused_unjudged,
            "before": r.baseline.fit.total, "after": r.final.fit.total,
            "seconds": seconds, "possible": [f"{p.kind}@{p.scope}" for p in r.possible]}
+    row["named"] = [_how_named(e, r) for e in r.effects]
     row["reachable"] = _reachable(case, r, est, val, found == expected)
     row["truth"] = _truth_by_the_rule(case, r, est)
     return row
+
+
+def _how_named(e: AcceptedEffect, r: LoopReport) -> dict:
+    """How a named effect got its name, for counting mimics against truths across sets
+    without rerunning them: the rule's paired gain [points], its 95 % interval, tests
+    improved, the sign test's p, the mean gain [points] on the tests it acts on and on the
+    others (a gain outside its scope is the shared base parameters'), its warnings (a tie
+    told apart by the validation tests among them) and its runner-up."""
+    ev = e.evidence.rule
+    inside = set(e.applies_to or ev.test_gain_points)
+    gains = ev.test_gain_points
+    return {"effect": f"{e.kind}@{_sim_scope(e.setups or [], r)}",
+            "gain_points": round(ev.gain_points, 2),
+            "ci95_points": [round(v, 2) for v in ev.ci95_points],
+            "tests_improved": ev.tests_improved, "tests": ev.tests,
+            "sign_test_p": round(ev.sign_test_p, 3),
+            "gain_in_scope_points": _mean_or_none([g for n, g in gains.items() if n in inside]),
+            "gain_out_of_scope_points": _mean_or_none(
+                [g for n, g in gains.items() if n not in inside]),
+            "warnings": e.warnings,
+            "told_by_validation": any("by the validation tests" in w for w in e.warnings),
+            "runner_up": (None if e.evidence.runner_up is None
+                          else f"{e.evidence.runner_up.kind}@{e.evidence.runner_up.scope}")}
+
+
+def _mean_or_none(xs: list[float]) -> float | None:
+    return round(float(np.mean(xs)), 2) if xs else None
 
 
 def _truth_by_the_rule(case: Case, r: LoopReport, est_tests: list) -> dict | None:

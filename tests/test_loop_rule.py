@@ -2027,3 +2027,44 @@ def test_a_search_grid_scored_as_one_simulation_scores_each_point_as_alone(campa
         analysis.optimize.least_squares = scipy_own
     assert batched[:2] == one_by_one[:2] and np.array_equal(batched[2], one_by_one[2])
     assert batched[1] != {"kab": 3e4, "gap": 0.1, "cab": 300.0}  # it did fit
+
+
+def test_the_heldout_benchmark_says_how_an_effect_was_named() -> None:
+    """The held-out benchmark's JSON keeps, per named effect, the rule's numbers, its gain on
+    the tests it acts on apart from the others' (which only the shared base parameters can
+    give), and whether the validation tests told a tie apart for it: set AK's webbing knee,
+    an airbag on SLED whose FULL tests gained 2.4 points through the base."""
+    from types import SimpleNamespace
+
+    from benchmarks.loop_heldout import _how_named
+    from observer_node.loop.report import AcceptedEffect
+
+    gains = {"FULL_001": 2.13, "FULL_003": -0.24, "FULL_005": 2.89, "FULL_007": 4.64,
+             "SLED_001": 6.28, "SLED_003": 6.87}
+    rule = {"gain_points": 3.76, "ci95_points": [0.94, 6.58], "gain_in_scope_points": 6.572,
+            "test_gain_points": gains, "tests_improved": 5, "tests": 6, "sign_test_p": 0.109,
+            "setup_gain_points": {"FULL": 2.35, "SLED": 6.57}, "accepted": True, "reason": "",
+            "tests_to_defend": None, "stalled_tests": []}
+    runner_up = {"kind": "belt_stiffening", "scope": "SLED", "cv_fit": 91.57,
+                 "told_apart": False, "tests_better": 5, "passes_rule": True, "over_bar": False}
+    evidence = {"ranking_share": 0.545, "scope_shares": None, "rule": rule,
+                "explained_share_before": 0.36, "explained_share_after": 0.0,
+                "cv_fit_before": 88.25, "cv_fit_after": 92.01, "runner_up": runner_up,
+                "margin_points": 0.44, "other_scope": None,
+                "input_xcorr_rms_ratio_before": 0.22, "input_xcorr_rms_ratio_after": 0.4,
+                "input_xcorr_max_ratio_before": 0.78, "input_xcorr_max_ratio_after": 1.58}
+    told = ("named over a tie by the validation tests, test by test (its runner-up, below): "
+            "the estimation tests could not tell them apart")
+    e = AcceptedEffect.from_dict({
+        "kind": "airbag_contact", "description": "", "std_err": {},
+        "parameters": {"kab": 1.8e4, "gap": 0.083, "cab": 373.0}, "setups": ["SLED"],
+        "applies_to": ["SLED_001", "SLED_003", "SLED_002"], "warnings": [told],
+        "confidence": "", "evidence": evidence, "fit": {"cr": 89.8, "cd": 90.4, "total": 90.1}})
+    report = SimpleNamespace(setups=[SimpleNamespace(name="SLED", tests=["SLED_001"])])
+    row = _how_named(e, report)  # type: ignore[arg-type]
+    assert row["effect"] == "airbag_contact@SLED"
+    assert row["gain_in_scope_points"] == pytest.approx(6.58, abs=0.01)
+    assert row["gain_out_of_scope_points"] == pytest.approx(2.36, abs=0.01)
+    assert row["told_by_validation"] and row["runner_up"] == "belt_stiffening@SLED"
+    assert (row["tests_improved"], row["tests"], row["sign_test_p"]) == (5, 6, 0.109)
+    assert row["ci95_points"] == [0.94, 6.58]
