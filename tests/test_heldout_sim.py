@@ -4875,14 +4875,15 @@ BEFORE_AL = _cases_of(heldout_sets.before("al"))
 # the broken test, the transducer error, and every physical case of one effect (its rigs moved,
 # the others untouched)
 WATCHED_AL = ("hal_broken_cr_hum", "hal_cd_sag", *ONE_PHYSICAL_AL)
-# the draws found impossible, drawn again by the next seeds in the order found (draw_al.REDRAWN)
-REDRAWN_AL: list[tuple[str, int]] = []
+# the draws found impossible, drawn again by the next seeds in the order found (draw_al.REDRAWN):
+# none at the draw; the spool's build-up on FULL at its sizes (its next size a run-away)
+REDRAWN_AL: list[tuple[str, int]] = [("input_gain", 47001)]
 # the two-effect case
 TWO_AL = "hal_two_knee_sled_eccentric_full"
 # the cases on an earlier set's pairing, in the draw's order (none free for their rigs:
 # draw_al's reuse rule, set Z's extended to every case)
 REUSED_AL = ("hal_bumper_r16_sled", "hal_squeeze_sled_full", "hal_fabric_sled_full",
-             "hal_submarine_sled_full", "hal_buildup_full", TWO_AL)
+             "hal_submarine_sled_full", "hal_eccentric_sled_full", TWO_AL)
 
 
 @pytest.fixture(scope="module")
@@ -4904,12 +4905,21 @@ def test_set_al_covers_the_general_list() -> None:
 def _drawn_in_order(d: dict) -> list[tuple[dict, list[tuple[str, ...]], bool]]:
     """A draw's cases in the order ``drawn`` draws their pairings (each kind's one-effect case,
     the two-effect case, the late pulse, the late BRS, the transducer error, the broken test,
-    the clean cases; a redraw after the rest), each with the rigs its pairing's rules see and
-    whether every rig of each effect is estimated twice or more."""
-    out = [(v, [v["rigs"]], False) for v in d["single"].values()]
+    the clean cases; a rejected draw in its place, its redraw after the rest), each with the
+    rigs its pairing's rules see and whether every rig of each effect is estimated twice or
+    more. Rejected one-effect draws only (set AL's)."""
+    now = {what: [*[first for w, _, first in d["rejected"] if w == what][1:],
+                  d["single"][what]] for what in {w for w, _, _ in d["rejected"]}}
+    assert set(now) <= set(d["single"])
+    firsts = {w: f for w, _, f in reversed(d["rejected"])}
+    out = [(firsts.get(k, v), [firsts.get(k, v)["rigs"]], False)
+           for k, v in d["single"].items()]
     out.append((d["two"], list(d["two"]["rigs"]), True))
     out += [(d[k], [cases.ALL], False) for k in ("pulse_late", "brs_late")]
     out += [(d[k], [], False) for k in ("transducer", "broken", "clean48", "clean96")]
+    for what, _, _ in d["rejected"]:
+        v = now[what].pop(0)
+        out.append((v, [v["rigs"]], False))
     return out
 
 
@@ -4944,7 +4954,12 @@ def test_set_al_follows_its_draw() -> None:
             assert pick not in ran | taken
         taken.add(pick)
     reused = {_pairing(BY_NAME_AL[n]) for n in REUSED_AL}
-    assert {(v["est"], v["val"]) for v, _, _ in _drawn_in_order(d) if v["reused"]} == reused
+    assert {(v["est"], v["val"]) for v, _, _ in _drawn_in_order(d)[:-1] if v["reused"]} == (
+        reused - {_pairing(BY_NAME_AL["hal_eccentric_sled_full"])} | {((2, 0, 4), (2, 0, 4))})
+    # the redrawn input gain: its first draw the spool's build-up on FULL (reused too)
+    ((_, _, first),) = d["rejected"]
+    assert (first["form"], first["rigs"], first["reused"]) == ("spool_buildup", ("FULL",), True)
+    assert first != d["single"]["input_gain"] and d["single"]["input_gain"]["reused"]
     assert _pairing(BY_NAME_AL[TWO_AL]) == ((0, 3, 3), (1, 3, 2)) and d["two"]["reused"]
     # set AK's rule (the reuse the two-effect case's alone) draws the first of them none
     assert draw_w.drawn(47000, draw_al.EARLIER, reuse_two=True)["single"][
