@@ -30,6 +30,7 @@ from benchmarks.heldout import (
     draw_ai,
     draw_aj,
     draw_ak,
+    draw_al,
     draw_v,
     draw_w,
     draw_x,
@@ -52,6 +53,7 @@ from benchmarks.heldout.cases_ah import BY_NAME_AH, ONE_PHYSICAL_AH
 from benchmarks.heldout.cases_ai import BY_NAME_AI, ONE_PHYSICAL_AI
 from benchmarks.heldout.cases_aj import BY_NAME_AJ, ONE_PHYSICAL_AJ
 from benchmarks.heldout.cases_ak import BY_NAME_AK, ONE_PHYSICAL_AK
+from benchmarks.heldout.cases_al import BY_NAME_AL, ONE_PHYSICAL_AL
 from benchmarks.heldout.cases_p import BY_NAME_P
 from benchmarks.heldout.cases_q import BY_NAME_Q
 from benchmarks.heldout.cases_r import BY_NAME_R
@@ -752,11 +754,13 @@ def test_set_f_brs_counter_resets_to_zero(set_f: Path) -> None:
     _others_untouched(set_f, c.name, broken)
 
 
-def test_set_f_cr_hum_is_on_cr_from_the_start(set_f: Path) -> None:
-    c = heldout_sets.select(["hf_broken_cr_hum"], "f")[0]
+def _cr_hum_is_on_cr_from_the_start(sets_dir: Path, c: cases.Case) -> None:
+    """Set F's check of the broken test's mains hum on CR: a sine of its amplitude on the flat
+    pre-crash line, strongest at the mains frequency; its CD and pulse untouched; every other
+    test untouched."""
     (broken,), (eff,) = c.expect_broken, c.effects
-    bad = _channel(set_f / "on" / c.name, broken, "cr")
-    good = _channel(set_f / "off" / c.name, broken, "cr")
+    bad = _channel(sets_dir / "on" / c.name, broken, "cr")
+    good = _channel(sets_dir / "off" / c.name, broken, "cr")
     t = _times(len(bad))
     hum = bad - good
     assert np.abs(hum[t < 0]).max() > 0.8 * eff.size  # before the crash: the flat line hums
@@ -764,9 +768,13 @@ def test_set_f_cr_hum_is_on_cr_from_the_start(set_f: Path) -> None:
     assert np.fft.rfftfreq(len(hum), 1e-4)[np.argmax(spectrum)] == pytest.approx(
         lab.HUM_HZ, abs=5)
     for which in ("cd", "pulse"):
-        assert np.array_equal(_channel(set_f / "on" / c.name, broken, which),
-                              _channel(set_f / "off" / c.name, broken, which))
-    _others_untouched(set_f, c.name, broken)
+        assert np.array_equal(_channel(sets_dir / "on" / c.name, broken, which),
+                              _channel(sets_dir / "off" / c.name, broken, which))
+    _others_untouched(sets_dir, c.name, broken)
+
+
+def test_set_f_cr_hum_is_on_cr_from_the_start(set_f: Path) -> None:
+    _cr_hum_is_on_cr_from_the_start(set_f, heldout_sets.select(["hf_broken_cr_hum"], "f")[0])
 
 
 def test_set_f_cd_compresses_cd_only(set_f: Path) -> None:
@@ -3454,13 +3462,13 @@ def test_set_w_brs_reversed_counts_the_broken_test_the_other_way(set_w: Path) ->
     _others_untouched(set_w, c.name, broken)
 
 
-def test_set_w_cd_sag_lowers_cd_with_time_only(set_w: Path) -> None:
-    """CD reads its own signal x (1 - s (1 - e^(-t/tau))) from the trigger on (within the CFC
-    600 filter and the noise), nothing before it, every test; CR, pulse and BRS untouched."""
-    c = BY_NAME_W["hw_cd_sag"]
+def _cd_sag_lowers_cd_with_time_only(sets_dir: Path, c: cases.Case) -> None:
+    """Set W's check of CD's sagging excitation, every test: CD reads its own signal x (1 - s
+    (1 - e^(-t/tau))) from the trigger on (within the CFC 600 filter and the noise), nothing
+    before it; CR, pulse and BRS untouched."""
     (e,) = c.effects
     seen = 0
-    for cd, cd0 in _cd_only(set_w / "on" / c.name, set_w / "off" / c.name):
+    for cd, cd0 in _cd_only(sets_dir / "on" / c.name, sets_dir / "off" / c.name):
         t = _times(len(cd))
         gain = 1.0 - e.size * (1.0 - np.exp(-np.maximum(t, 0.0) / lab.CD_SAG_TAU_S))
         assert np.abs(cd - gain * cd0).max() < 0.2
@@ -3468,6 +3476,12 @@ def test_set_w_cd_sag_lowers_cd_with_time_only(set_w: Path) -> None:
         assert (cd0 - cd).max() > 1.0
         seen += 1
     assert seen == 12
+
+
+def test_set_w_cd_sag_lowers_cd_with_time_only(set_w: Path) -> None:
+    """CD reads its own signal x (1 - s (1 - e^(-t/tau))) from the trigger on (within the CFC
+    600 filter and the noise), nothing before it, every test; CR, pulse and BRS untouched."""
+    _cd_sag_lowers_cd_with_time_only(set_w, BY_NAME_W["hw_cd_sag"])
 
 
 def test_set_w_cd_clock_stretches_cd_only(tmp_path: Path) -> None:
@@ -3845,9 +3859,9 @@ def set_aa(tmp_path_factory: pytest.TempPathFactory) -> Path:
 
 @pytest.mark.parametrize("letters",
                          ["x", "y", "z", "aa", "ab", "ac", "ad", "ae", "af", "ag", "ah",
-                          "ai", "aj", "ak"])
+                          "ai", "aj", "ak", "al"])
 def test_a_drawn_set_is_registered(letters: str, tmp_path: Path) -> None:
-    """Sets X-AK: each is its ``cases_<letters>.SET_<LETTERS>`` under its letters (either
+    """Sets X-AL: each is its ``cases_<letters>.SET_<LETTERS>`` under its letters (either
     case), for sets.select, make_sets and costs, after every set before it."""
     own = getattr(importlib.import_module(f"benchmarks.heldout.cases_{letters}"),
                   f"SET_{letters.upper()}")
@@ -3881,8 +3895,10 @@ def test_sets_before_are_names_not_letters() -> None:
                                          "ah", "ai")  # A-AI
     assert heldout_sets.before("ak") == (*after_aa, "ab", "ac", "ad", "ae", "af", "ag",
                                          "ah", "ai", "aj")  # A-AJ
-    with pytest.raises(ValueError, match="unknown case set 'al'"):
-        heldout_sets.before("al")
+    assert heldout_sets.before("al") == (*after_aa, "ab", "ac", "ad", "ae", "af", "ag",
+                                         "ah", "ai", "aj", "ak")  # A-AK
+    with pytest.raises(ValueError, match="unknown case set 'am'"):
+        heldout_sets.before("am")
     # a draw after AA takes AA's pairings; at this seed, without AA one single draws one of them
     aa = {_pairing(c) for c in SET_AA}
 
@@ -4513,17 +4529,7 @@ def test_set_ag_cd_sag_lowers_cd_with_time_only(set_ag: Path) -> None:
     """CD reads its own signal x (1 - s (1 - e^(-t/tau))) from the trigger on (within the CFC
     600 filter and the noise), nothing before it, every test (set W's check); CR, pulse and
     BRS untouched."""
-    c = BY_NAME_AG["hag_cd_sag"]
-    (e,) = c.effects
-    seen = 0
-    for cd, cd0 in _cd_only(set_ag / "on" / c.name, set_ag / "off" / c.name):
-        t = _times(len(cd))
-        gain = 1.0 - e.size * (1.0 - np.exp(-np.maximum(t, 0.0) / lab.CD_SAG_TAU_S))
-        assert np.abs(cd - gain * cd0).max() < 0.2
-        assert np.abs(cd - cd0)[t < -0.002].max() < 0.05
-        assert (cd0 - cd).max() > 1.0
-        seen += 1
-    assert seen == 12
+    _cd_sag_lowers_cd_with_time_only(set_ag, BY_NAME_AG["hag_cd_sag"])
 
 
 def test_set_ag_has_no_run_aways(set_ag: Path) -> None:
@@ -4862,6 +4868,138 @@ def test_set_ak_has_no_run_aways(set_ak: Path) -> None:
     _no_run_aways(SET_AK, set_ak)
 
 
+# ------------------------------------------------------------------ set AL (cases_al.py)
+
+SET_AL = heldout_sets.case_set("al")
+BEFORE_AL = _cases_of(heldout_sets.before("al"))
+# the broken test, the transducer error, and every physical case of one effect (its rigs moved,
+# the others untouched)
+WATCHED_AL = ("hal_broken_cr_hum", "hal_cd_sag", *ONE_PHYSICAL_AL)
+# the draws found impossible, drawn again by the next seeds in the order found (draw_al.REDRAWN):
+# none at the draw; the spool's build-up on FULL at its sizes (its next size a run-away)
+REDRAWN_AL: list[tuple[str, int]] = [("input_gain", 47001)]
+# the two-effect case
+TWO_AL = "hal_two_knee_sled_eccentric_full"
+# the cases on an earlier set's pairing, in the draw's order (none free for their rigs:
+# draw_al's reuse rule, set Z's extended to every case)
+REUSED_AL = ("hal_bumper_r16_sled", "hal_squeeze_sled_full", "hal_fabric_sled_full",
+             "hal_submarine_sled_full", "hal_eccentric_sled_full", TWO_AL)
+
+
+@pytest.fixture(scope="module")
+def set_al(tmp_path_factory: pytest.TempPathFactory) -> Path:
+    return _generate(tmp_path_factory, "al", WATCHED_AL)
+
+
+def test_set_al_covers_the_general_list() -> None:
+    """Set AL as its brief asks: clean cases at 48 and 96 counts; each kind of the library a
+    loop can name, as physics, once in a case of its own; two effects of different kinds on
+    different rigs in one case; a broken estimation test; a transducer error on CD alone (as
+    drawn); a late pulse and a late BRS at delays in 1-5 ms no earlier set used on any input;
+    6 + 6 tests, every rig an estimation part holds held twice or more; an effect on some rigs
+    only rests on two estimation and two validation tests of them beside an estimation test of
+    a rig it spares."""
+    _covers_the_general_list(SET_AL, BEFORE_AL, "cd", ONE_PHYSICAL_AL, draw_al.KINDS)
+
+
+def _drawn_in_order(d: dict) -> list[tuple[dict, list[tuple[str, ...]], bool]]:
+    """A draw's cases in the order ``drawn`` draws their pairings (each kind's one-effect case,
+    the two-effect case, the late pulse, the late BRS, the transducer error, the broken test,
+    the clean cases; a rejected draw in its place, its redraw after the rest), each with the
+    rigs its pairing's rules see and whether every rig of each effect is estimated twice or
+    more. Rejected one-effect draws only (set AL's)."""
+    now = {what: [*[first for w, _, first in d["rejected"] if w == what][1:],
+                  d["single"][what]] for what in {w for w, _, _ in d["rejected"]}}
+    assert set(now) <= set(d["single"])
+    firsts = {w: f for w, _, f in reversed(d["rejected"])}
+    out = [(firsts.get(k, v), [firsts.get(k, v)["rigs"]], False)
+           for k, v in d["single"].items()]
+    out.append((d["two"], list(d["two"]["rigs"]), True))
+    out += [(d[k], [cases.ALL], False) for k in ("pulse_late", "brs_late")]
+    out += [(d[k], [], False) for k in ("transducer", "broken", "clean48", "clean96")]
+    for what, _, _ in d["rejected"]:
+        v = now[what].pop(0)
+        out.append((v, [v["rigs"]], False))
+    return out
+
+
+def test_set_al_follows_its_draw() -> None:
+    """Set AL's designer's choices are numpy's default_rng(47000)'s (``draw_al.py``; no draw
+    found impossible, ``REDRAWN`` empty), followed as drawn: each kind's form, rigs, counts and
+    mix; the two-effect case's kinds, forms, rigs, counts and mix; the delays, their counts and
+    mixes; the transducer error's output, form, counts and mix; the broken test's channel, form,
+    test, counts and mix; the clean cases' mixes. Set AK's process with set AL's one change:
+    any case with no pairing free for its rigs reuses one A-AK ran, among those its rules
+    allow; every other case takes a free one (run by no earlier set, nor drawn before it)."""
+    d = draw_al.draw(47000)
+    assert d == draw_al.draw()  # reproducible from its seed
+    earlier = (*"abcdefghijklmnopqrstuvwxyz", "aa", "ab", "ac", "ad", "ae", "af", "ag", "ah",
+               "ai", "aj", "ak")
+    assert earlier == draw_al.EARLIER and draw_al.SEED == 47000
+    assert (draw_al.KINDS, draw_al.BRS_GAIN) == (draw_w.KINDS, draw_w.BRS_GAIN)
+    assert (draw_al.TRANSDUCER, draw_al.BROKEN) == (draw_w.TRANSDUCER, draw_w.BROKEN)
+    _singles_follow(d, SET_AL, ONE_PHYSICAL_AL, draw_al)
+    assert [(w, s) for w, s, _ in d["rejected"]] == list(draw_al.REDRAWN) == REDRAWN_AL
+    _the_rest_follows(d, SET_AL, draw_al)
+    # each case's pairing: free when one was left for its rigs, else one A-AK ran
+    ran, taken = {_pairing(c) for c in BEFORE_AL}, set()
+    for v, rigs, each in _drawn_in_order(d):
+        allowed = {(e, w) for e in draw_v.EST_MIXES for w in draw_v.VAL_MIXES
+                   if draw_v._ok(e, w, rigs, each=each)}
+        pick = (v["est"], v["val"])
+        assert pick in allowed
+        if v["reused"]:
+            assert pick in ran and allowed <= ran | taken  # none was free
+        else:
+            assert pick not in ran | taken
+        taken.add(pick)
+    reused = {_pairing(BY_NAME_AL[n]) for n in REUSED_AL}
+    assert {(v["est"], v["val"]) for v, _, _ in _drawn_in_order(d)[:-1] if v["reused"]} == (
+        reused - {_pairing(BY_NAME_AL["hal_eccentric_sled_full"])} | {((2, 0, 4), (2, 0, 4))})
+    # the redrawn input gain: its first draw the spool's build-up on FULL (reused too)
+    ((_, _, first),) = d["rejected"]
+    assert (first["form"], first["rigs"], first["reused"]) == ("spool_buildup", ("FULL",), True)
+    assert first != d["single"]["input_gain"] and d["single"]["input_gain"]["reused"]
+    assert _pairing(BY_NAME_AL[TWO_AL]) == ((0, 3, 3), (1, 3, 2)) and d["two"]["reused"]
+    # set AK's rule (the reuse the two-effect case's alone) draws the first of them none
+    assert draw_w.drawn(47000, draw_al.EARLIER, reuse_two=True)["single"][
+        "chest_stiffening"]["est"] is None
+
+
+def test_set_al_lab_side_is_as_drawn_and_unnamed() -> None:
+    """One broken estimation test, the only thing expected; one transducer error on CD on every
+    test, nothing physical named; AL's physics earlier sets' forms only."""
+    _lab_side_as_drawn(SET_AL, "cd")
+    assert {k for k in _keys(SET_AL) if physics.EFFECTS[k]} <= _keys(BEFORE_AL)
+
+
+@pytest.mark.parametrize("case", sorted(ONE_PHYSICAL_AL))
+def test_set_al_physics_moves_its_rigs_only(set_al: Path, case: str) -> None:
+    """Each physical case moves what its form moves on every test of its rigs (the chest's,
+    belt's, bag's and pelvis's forms and the spool's build-up CR and CD, the pulse untouched)
+    and leaves the tests of a rig it spares untouched to the bit."""
+    _moves_its_rigs_only(set_al, BY_NAME_AL[case])
+
+
+def test_set_al_cr_hum_is_on_cr_from_the_start(set_al: Path) -> None:
+    """The broken test's CR hums at the mains frequency, its amplitude on the flat pre-crash
+    line (set F's form and check); its CD and pulse untouched; every other test untouched."""
+    c = BY_NAME_AL["hal_broken_cr_hum"]
+    assert c.expect_broken == ("SLED_005",)
+    _cr_hum_is_on_cr_from_the_start(set_al, c)
+
+
+def test_set_al_cd_sag_lowers_cd_with_time_only(set_al: Path) -> None:
+    """CD reads its own signal x (1 - s (1 - e^(-t/tau))) from the trigger on (within the CFC
+    600 filter and the noise), nothing before it, every test (set W's check, at this set's
+    sag); CR, pulse and BRS untouched."""
+    _cd_sag_lowers_cd_with_time_only(set_al, BY_NAME_AL["hal_cd_sag"])
+
+
+def test_set_al_has_no_run_aways(set_al: Path) -> None:
+    _no_run_aways(SET_AL, set_al)
+
+
 def test_more_tests_doubles_the_estimation_tests_only(tmp_path: Path) -> None:
     """``more_tests``: K times each rig's estimation tests, the validation tests and the
     effects as written, another seed (new crashes), a name that says so; the broken test's name
@@ -4916,13 +5054,14 @@ def test_loop_heldout_on_a_folder_without_the_case_is_one_line(tmp_path: Path) -
     assert "--case haa_clean48 --est-times 2 --out" in r.stderr
 
 
-# the drawn sets X-AK: each one's seed, and its cases that reuse an earlier set's pairing by
-# its draw's rule (the two-effect case since set Z: none was free for its rigs)
+# the drawn sets X-AL: each one's seed, and its cases that reuse an earlier set's pairing by
+# its draw's rule (the two-effect case since set Z: none was free for its rigs; since set AL any
+# case left none free)
 DRAWN = {"x": (33000, ()), "y": (34000, ()), "z": (35000, (TWO_Z,)),
          "aa": (36000, (TWO_AA,)), "ab": (37000, (TWO_AB,)), "ac": (38000, (TWO_AC,)),
          "ad": (39000, (TWO_AD,)), "ae": (40000, (TWO_AE,)), "af": (41000, (TWO_AF,)),
          "ag": (42000, (TWO_AG,)), "ah": (43000, (TWO_AH,)), "ai": (44000, (TWO_AI,)),
-         "aj": (45000, (TWO_AJ,)), "ak": (46000, (TWO_AK,))}
+         "aj": (45000, (TWO_AJ,)), "ak": (46000, (TWO_AK,)), "al": (47000, REUSED_AL)}
 
 
 @pytest.mark.parametrize("letters", DRAWN)

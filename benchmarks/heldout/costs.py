@@ -3,7 +3,7 @@
 on each case, and on its twin with every effect off (same dummies, pulses and noise).
 
     python -m benchmarks.heldout.costs
-        [--set a|b|c|d|e|f|g|h|i|j|k|l|m|n|o|p|q|r|s|t|u|v|w|x|y|z|aa|ab|ac|ad|ae|af|ag|ah|ai|aj|ak]
+        [--set a|b|...|z|aa|ab|ac|ad|ae|af|ag|ah|ai|aj|ak|al]
         [--case NAME ...] [--work DIR]
 
 About 40 s per case on this machine (two identifications, two evaluations).

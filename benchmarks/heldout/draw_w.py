@@ -88,7 +88,7 @@ def draw(seed: int = SEED) -> dict:
 
 
 def drawn(seed: int, earlier: tuple[str, ...], redrawn: tuple[tuple[str, int], ...] = (),
-          reuse_two: bool = False) -> dict:
+          reuse_two: bool = False, reuse_all: bool = False) -> dict:
     """A set's choices drawn by ``default_rng(seed)`` in the order the module docstring gives,
     the (estimation, validation) pairings of the sets ``earlier`` (their names) taken; then
     each case of ``redrawn`` drawn again, whole, by its seed's generator, in that order (set
@@ -98,7 +98,14 @@ def drawn(seed: int, earlier: tuple[str, ...], redrawn: tuple[tuple[str, int], .
     no pairing is free for the two-effect case, its pairing is drawn by the same generator,
     uniformly, among the pairings the ``earlier`` sets ran that its rules allow (every rig of
     either effect estimated twice or more, and the rest), instead of none; the case then
-    carries ``"reused": True`` (``False`` when a free one was drawn)."""
+    carries ``"reused": True`` (``False`` when a free one was drawn).
+
+    ``reuse_all`` (set AL's rule; off for sets W-AK, whose draws it leaves as they were): set
+    Z's rule extended to every case, the one-effect cases, the delays, the transducer error,
+    the broken test and the clean cases as well as the two-effect case: when no pairing is free
+    for a case's rigs, its pairing is drawn by the same generator, uniformly, among the pairings
+    the ``earlier`` sets ran that its rules allow (the pool is theirs alone, as set Z's, not
+    narrowed by this draw's own picks); every case then carries ``"reused"``."""
     if isinstance(earlier, str):  # "abc...zaa" would read set AA as set A twice
         raise TypeError("earlier: the sets' names (sets.before), not a string of letters")
     rng = np.random.default_rng(seed)
@@ -112,7 +119,7 @@ def drawn(seed: int, earlier: tuple[str, ...], redrawn: tuple[tuple[str, int], .
             ) -> tuple[tuple[int, ...], tuple[int, ...]] | None:
         free = [(e, v) for e in EST_MIXES for v in VAL_MIXES
                 if (e, v) not in used and _ok(e, v, effects, each)]
-        if not free and reuse:  # none free: among those the earlier sets ran (reuse_two)
+        if not free and reuse:  # none free: among those the earlier sets ran (reuse_two, _all)
             free = [(e, v) for e in EST_MIXES for v in VAL_MIXES
                     if (e, v) in ran and _ok(e, v, effects, each)]
         if not free:  # every pairing the rules allow already run: impossible as drawn
@@ -130,8 +137,12 @@ def drawn(seed: int, earlier: tuple[str, ...], redrawn: tuple[tuple[str, int], .
         sc = scopes(kind)
         scope = sc[int(rng.integers(len(sc)))]
         n = counts()
-        est, val = mix([scope]) or (None, None)
-        return {"form": form, "rigs": scope, "counts": n, "est": est, "val": val}
+        est, val = mix([scope], reuse=reuse_all) or (None, None)
+        return {"form": form, "rigs": scope, "counts": n, "est": est, "val": val,
+                **reused(est, val)}
+
+    def reused(est: tuple[int, ...] | None, val: tuple[int, ...] | None) -> dict:
+        return {"reused": (est, val) in ran} if reuse_all else {}
 
     def pair() -> dict:  # the two-effect case: two kinds, their forms, disjoint rigs
         while True:  # (no bag on R16)
@@ -144,8 +155,9 @@ def drawn(seed: int, earlier: tuple[str, ...], redrawn: tuple[tuple[str, int], .
         two = {"kinds": (ka, kb), "forms": (fa[int(rng.integers(len(fa)))],
                                              fb[int(rng.integers(len(fb)))]),
                "rigs": (sa, sb), "counts": counts()}
-        two["est"], two["val"] = mix([sa, sb], each=True, reuse=reuse_two) or (None, None)
-        if reuse_two:
+        two["est"], two["val"] = mix([sa, sb], each=True, reuse=reuse_two or reuse_all
+                                     ) or (None, None)
+        if reuse_two or reuse_all:
             two["reused"] = (two["est"], two["val"]) in ran
         return two
 
@@ -155,8 +167,8 @@ def drawn(seed: int, earlier: tuple[str, ...], redrawn: tuple[tuple[str, int], .
             if d not in used_delays:
                 break
         used_delays.add(d)
-        est, val = mix([ALL]) or (None, None)
-        return {"delay_s": d, "counts": counts(), "est": est, "val": val}
+        est, val = mix([ALL], reuse=reuse_all) or (None, None)
+        return {"delay_s": d, "counts": counts(), "est": est, "val": val, **reused(est, val)}
 
     out: dict = {"seed": seed, "single": {}, "rejected": []}
     for kind in KINDS:
@@ -166,20 +178,23 @@ def drawn(seed: int, earlier: tuple[str, ...], redrawn: tuple[tuple[str, int], .
         out[key] = late()
     output = str(rng.choice(["cr", "cd"]))
     transducer: dict[str, Any] = {"output": output, "counts": counts()}
-    transducer["est"], transducer["val"] = mix([]) or (None, None)
+    transducer["est"], transducer["val"] = mix([], reuse=reuse_all) or (None, None)
+    transducer.update(reused(transducer["est"], transducer["val"]))
     out["transducer"] = transducer
     pool = TRANSDUCER[output]
     transducer["form"] = pool[int(rng.integers(len(pool)))]
     channel = str(rng.choice(["pulse", "brs", "cr", "cd"]))
     broken: dict[str, Any] = {"channel": channel, "counts": counts()}
-    broken["est"], broken["val"] = mix([]) or (None, None)
+    broken["est"], broken["val"] = mix([], reuse=reuse_all) or (None, None)
+    broken.update(reused(broken["est"], broken["val"]))
     est_rigs = [r for r, n in zip(ALL, broken["est"], strict=True) for _ in range(n)]
     k = int(rng.integers(6))
     broken["test"] = f"{est_rigs[k]}_{1 + 2 * est_rigs[:k].count(est_rigs[k]):03d}"
     broken["form"] = BROKEN[channel][int(rng.integers(len(BROKEN[channel])))]
     out["broken"] = broken
     for n in (48, 96):
-        out[f"clean{n}"] = dict(zip(("est", "val"), mix([]) or (None, None), strict=True))
+        est, val = mix([], reuse=reuse_all) or (None, None)
+        out[f"clean{n}"] = {"est": est, "val": val, **reused(est, val)}
     if redrawn:  # the draws found impossible, drawn again (in this order, after the rest)
         for what, again in redrawn:
             rng = np.random.default_rng(again)
@@ -216,7 +231,8 @@ def show(d: dict) -> None:
     """Print a draw of :func:`drawn`, one line per case."""
     for kind, v in d["single"].items():
         print(f"{kind:<19} {v['form']:<18} {'+'.join(v['rigs']):<14} {v['counts']:>3} "
-              f"est {v['est']} val {v['val']}")
+              f"est {v['est']} val {v['val']}"
+              + (" (an earlier set's pairing, reused)" if v.get("reused") else ""))
     t = d["two"]
     print(f"two: {t['kinds']} {t['forms']} {t['rigs']} {t['counts']} est {t['est']} "
           f"val {t['val']}" + (" (an earlier set's pairing, reused)" if t.get("reused") else ""))
