@@ -1,10 +1,10 @@
 #!/bin/bash
 # rerun the named physical cases of sets AD-AK (latest outputs), one at a time, reports kept
-cd /work/wt-a
+cd "$(git -C "$(dirname "$0")" rev-parse --show-toplevel)"  # the checkout whose loop is rerun
 PY=/work/main/.venv/bin/python
-S=${1:-/work/runs/s53/named}  
+S=${1:-/work/runs/s53/named}  # where the sets and outputs go
 while read set case; do
-  [ -d $S/sets/$case ] || PYTHONPATH=/work/wt-a $PY -m benchmarks.heldout.make_sets --out $S/sets --set $set --case $case > /dev/null 2>&1
+  [ -d $S/sets/$case ] || PYTHONPATH=. $PY -m benchmarks.heldout.make_sets --out $S/sets --set $set --case $case > /dev/null 2>&1
   [ -f $S/$case/report.json ] && continue
   /work/main/.venv/bin/observer-node loop --estimate $S/sets/$case/est --validate $S/sets/$case/val --out $S/$case --quiet > $S/$case.log 2>&1
   echo "$case $?" >> $S/done.txt
