@@ -25,7 +25,12 @@ Trial forms (registered for the run only, never in the library):
   diagnostic: does the clip or the memory cost the fit?);
 - ``belt_off_chest``: the belt leaves the chest: its whole force k2 e + c2 e' is gone where
   the penetration e < 0 (the webbing off the sternum), whatever its sign where e > 0 (the
-  flesh under the belt damps either way while in contact). For ``belt_unloading`` cases.
+  flesh under the belt damps either way while in contact). For ``belt_unloading`` cases;
+- ``belt_knee``: a webbing whose stiffness steps up past a knee: kbk max(e - e0, 0) on the
+  sternum (e = w - s, the belt penetration; e0 within 5-80 mm, started from the best of a
+  grid by the in-sample fit), a bilinear load-elongation curve, for ``belt_stiffening``
+  cases. Screened with ``--against airbag_contact`` too: on a bag's cases, does the knee
+  pass as the bag does (a mimic in waiting)?
 
 The memory forms keep e_peak across a simulation's ticks in the screen's own closure (one
 per form), reset where a simulation starts (the state at rest): the library's forces have no
@@ -38,7 +43,10 @@ clip alone: below the peak its spring lies under the grey-box's k2 e by k2 h (e_
 (1 - h), so it also pulls less there.
 
     python -m benchmarks.form_screen --form brs_ring --set z --case hz_eccentric_r16_sled \\
-        [--sets DIR]
+        [--sets DIR] [--against KIND]
+
+``--against KIND`` judges the trial form on the scope of the case's expected KIND instead of
+the kind the form stands in for (the library's KIND form beside it).
 """
 
 from __future__ import annotations
@@ -55,7 +63,7 @@ from benchmarks.loop_heldout import by_the_rule, cases_and_sets
 from observer_node.data import load_tests
 from observer_node.ident import greybox
 from observer_node.ident.dataset import make_dataset
-from observer_node.loop.refit import score
+from observer_node.loop.refit import refit, score
 from observer_node.model.effects import EFFECTS, Effect, Kinematics, Param, Search, registered
 
 MARGIN = 1.0  # the loop's default margin [points]
@@ -104,6 +112,10 @@ def _set_memory(clip: bool) -> Any:
     return force
 
 
+def _knee(p: Mapping[str, Any], k: Kinematics, b: Mapping[str, float]) -> tuple[Any, Any]:
+    return k.zero, p["kbk"] * np.maximum(k.e - p["e0"], 0.0)
+
+
 def _off_chest(p: Mapping[str, Any], k: Kinematics, b: Mapping[str, float]
                ) -> tuple[Any, Any]:
     return k.zero, -(b["k2"] * k.e + b["c2"] * k.ed) * (k.e < 0.0)
@@ -129,11 +141,36 @@ FORMS: dict[str, tuple[str, Effect, dict[str, float]]] = {
     "belt_off_chest": ("belt_unloading", Effect(
         "trial_belt_off_chest", "physical", "no belt force while the belt is off the chest",
         force=_off_chest, search=Search("switch")), {}),
+    "belt_knee": ("belt_stiffening", Effect(
+        "trial_belt_knee", "physical", "webbing stiffer past a knee in its penetration",
+        (Param("kbk", "N/m", 3e4, positive=True),
+         Param("e0", "m", 0.03, positive=True, within=(0.005, 0.08))),
+        force=_knee, search=Search("grid", "e0", (0.01, 0.02, 0.03, 0.045, 0.06))),
+        {"kbk": 3e4, "e0": 0.03}),
 }
 
 
-def screen(form: str, case_set: str, names: list[str], sets: Path) -> None:
+def _grid_start(trial: Effect, start: dict[str, float], where: dict, base: dict,
+                est: Any) -> dict[str, float]:
+    """A form's start: as given, or the best in-sample of its grid (a knee or a gap fitted
+    from one start stays where the gradient is flat; the library's airbag too)."""
+    if trial.search.method != "grid":
+        return start
+    best: tuple[float, dict[str, float]] = (-np.inf, start)
+    for v in trial.search.grid:
+        eff = {"kind": trial.kind, "parameters": {**start, trial.search.over: v}, **where}
+        with np.errstate(all="ignore"):
+            fit = refit(base, [eff], est, max_nfev=40)
+            total = score(fit.base, fit.effects, est).fit.total
+        if np.isfinite(total) and total > best[0]:
+            best = (total, dict(fit.effects[0]["parameters"]))
+    return best[1]
+
+
+def screen(form: str, case_set: str, names: list[str], sets: Path,
+           against: str | None = None) -> None:
     kind, trial, start = FORMS[form]
+    kind = against or kind
     print(f"{'case':<28}{'form':<24}{'rule':<18}{'val %':>7}  parameters", flush=True)
     for case in select(names, case_set):
         expected = [(k, s) for k, s in case.expect if k == kind]
@@ -149,15 +186,16 @@ def screen(form: str, case_set: str, names: list[str], sets: Path) -> None:
         where = {} if scope == "all" else {
             "setups": sorted({rig_setup[r] for r in scope.split("+") if r in rig_setup})}
         with registered(trial):
-            for label, effect in ((kind, {"kind": kind, "parameters": dict(EFFECTS[kind].typical),
-                                          **where}),
-                                  (form, {"kind": trial.kind, "parameters": start, **where})):
+            first = _grid_start(trial, start, where, base, est)
+            lib = _grid_start(EFFECTS[kind], dict(EFFECTS[kind].typical), where, base, est)
+            for label, effect in ((kind, {"kind": kind, "parameters": lib, **where}),
+                                  (form, {"kind": trial.kind, "parameters": first, **where})):
                 ev, fit = by_the_rule(base, [effect], est, MARGIN)
                 with np.errstate(all="ignore"):
                     val_fit = score(fit.base, fit.effects, val).fit.total
                 rule = ("passes" if ev.accepted else "fails") + \
                     f" {ev.gain_points:+.1f} {ev.tests_improved}/{ev.tests}"
-                params = {k: round(v, 4) for k, v in fit.effects[0]["parameters"].items()}
+                params = {k: round(float(v), 4) for k, v in fit.effects[0]["parameters"].items()}
                 print(f"{case.name:<28}{label:<24}{rule:<18}{val_fit:7.1f}  {params or ''}",
                       flush=True)
 
@@ -170,9 +208,11 @@ def main() -> None:
     ap.add_argument("--case", dest="cases", action="append", metavar="NAME", required=True)
     ap.add_argument("--sets", type=Path, help="the generated sets (default: generated into a "
                     "temporary folder)")
+    ap.add_argument("--against", choices=sorted(EFFECTS), help="judge the form on this "
+                    "expected kind's scope instead (a rival's cases)")
     a = ap.parse_args()
     _, sets = cases_and_sets("form_screen", a.case_set, a.cases, a.sets)
-    screen(a.form, a.case_set, a.cases, sets)
+    screen(a.form, a.case_set, a.cases, sets, a.against)
 
 
 if __name__ == "__main__":

@@ -65,6 +65,21 @@ def test_the_belt_off_the_chest_loses_its_whole_force_only_there() -> None:
     assert force({}, on, BASE)[1] == 0.0
 
 
+def test_the_webbing_knee_pulls_only_past_its_knee() -> None:
+    """kbk max(e - e0, 0) on the sternum: nothing up to the knee, a straight line past it,
+    nothing on the spine; the grid it starts from lies inside its range."""
+    _, trial, _ = FORMS["belt_knee"]
+    assert trial.force is not None
+    p = {"kbk": 5e4, "e0": 0.02}
+    below = kinematics(_state(0.0, 0.015), 0.0, 0.0, 0.0, BASE)
+    past = kinematics(_state(0.0, 0.03), 0.0, 0.0, 0.0, BASE)
+    assert trial.force(p, below, BASE) == (0.0, 0.0)
+    spine, sternum = trial.force(p, past, BASE)
+    assert spine == 0.0 and sternum == pytest.approx(5e4 * 0.01)
+    lo, hi = next(q.within for q in trial.params if q.name == "e0") or (0.0, 0.0)
+    assert trial.search.over == "e0" and all(lo <= v <= hi for v in trial.search.grid)
+
+
 @pytest.mark.parametrize("form", ["belt_set_memory", "belt_set_memory_push"])
 def test_a_memory_form_gives_each_run_the_same_outputs(form: str) -> None:
     """Run alone, run again, run stacked with other trial parameters (as a fit's Jacobian
