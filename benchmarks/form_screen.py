@@ -150,15 +150,15 @@ FORMS: dict[str, tuple[str, Effect, dict[str, float]]] = {
 }
 
 
-def _grid_start(trial: Effect, start: dict[str, float], where: dict, base: dict,
+def _grid_start(form: Effect, start: dict[str, float], where: dict, base: dict,
                 est: Any) -> dict[str, float]:
     """A form's start: as given, or the best in-sample of its grid (a knee or a gap fitted
     from one start stays where the gradient is flat; the library's airbag too)."""
-    if trial.search.method != "grid":
+    if form.search.method != "grid":
         return start
     best: tuple[float, dict[str, float]] = (-np.inf, start)
-    for v in trial.search.grid:
-        eff = {"kind": trial.kind, "parameters": {**start, trial.search.over: v}, **where}
+    for v in form.search.grid:
+        eff = {"kind": form.kind, "parameters": {**start, form.search.over: v}, **where}
         with np.errstate(all="ignore"):
             fit = refit(base, [eff], est, max_nfev=40)
             total = score(fit.base, fit.effects, est).fit.total
