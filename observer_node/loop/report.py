@@ -362,7 +362,7 @@ class LoopSettings:
     rate_hz: float
     window_s: tuple[float, float]
     margin: float
-    top_k: int
+    top_k: int | None
     groups: list[str]  # NAME=PATTERN
     allow_anywhere: bool
     workers: int
