@@ -235,6 +235,21 @@ def test_a_test_low_with_its_rig_is_said_and_kept(r16_loop) -> None:
     assert f"| F1 | {low.reason} |" in md and "kept in the fits" in low.reason
 
 
+def test_a_named_airbag_says_a_webbing_knee_looks_alike(r16_loop) -> None:
+    # sets AK and AL named an airbag on SLED for a webbing that stiffens past a knee, and
+    # the knee passed the rule on every bag case the bag passed on (session 54's screen): the
+    # report says so beside the airbag, and beside no effect without a look-alike
+    _, r = r16_loop
+    assert r.effects, "the fixture's loop names an effect"
+    plain = markdown(r)
+    assert all(e.kind != "airbag_contact" for e in r.effects) and "- looks alike:" not in plain
+    bag = dataclasses.replace(r.effects[0], kind="airbag_contact")
+    md = markdown(dataclasses.replace(r, effects=[bag]))
+    assert md.count("- looks alike: a webbing that stiffens past a knee") == 1
+    _, section = md.split("## airbag_contact\n", 1)
+    assert "- looks alike:" in section.split("\n## ", 1)[0]  # in the bag's own section
+
+
 def test_a_sensor_effect_says_the_other_transducer_can_read_alike(r16_loop) -> None:
     # held-out set V: CR's slow clock was named a sensor effect on CD; the report must not
     # send the engineer to one transducer only, whichever shape the correction took

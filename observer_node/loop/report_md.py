@@ -4,6 +4,7 @@
 from __future__ import annotations
 
 from ..ident.metrics import Fits
+from ..model.effects import EFFECTS
 from ..scores import mean_abs_errors
 from .belt_check import BeltPush
 from .report import AcceptedEffect, LoopReport, LoopStep, SensorEffect
@@ -133,6 +134,7 @@ def _markdown_effect(e: AcceptedEffect, carried: bool = False) -> list[str]:
             f"- parameters (± standard error): {params or '(none)'}",
             f"- confidence (cross-validated, paired over tests): {e.confidence}",
             *(f"- **warning**: {w}" for w in e.warnings),
+            *_looks_alike(e.kind),
             *([rival] if rival else []),
             f"- explained {100 * ev.explained_share_before:.1f} % of the residual before"
             f" the refit, {100 * ev.explained_share_after:.1f} % after",
@@ -144,6 +146,12 @@ def _markdown_effect(e: AcceptedEffect, carried: bool = False) -> list[str]:
             f"{ev.input_xcorr_max_ratio_before:.2f} -> "
             f"{ev.input_xcorr_max_ratio_after:.2f})",
             ""]
+
+
+def _looks_alike(kind: str) -> list[str]:
+    """What the library lacks that the data reads as ``kind`` (the effect's ``looks_alike``)."""
+    e = EFFECTS.get(kind)
+    return [f"- looks alike: {e.looks_alike}"] if e is not None and e.looks_alike else []
 
 
 _OTHER = {"cr": "CD", "cd": "CR"}
