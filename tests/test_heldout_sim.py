@@ -4926,19 +4926,22 @@ def _drawn_in_order(d: dict) -> list[tuple[dict, list[tuple[str, ...]], bool]]:
     the two-effect case, the late pulse, the late BRS, the transducer error, the broken test,
     the clean cases; a rejected draw in its place, its redraw after the rest), each with the
     rigs its pairing's rules see and whether every rig of each effect is estimated twice or
-    more. Rejected one-effect draws only (set AL's)."""
-    now = {what: [*[first for w, _, first in d["rejected"] if w == what][1:],
-                  d["single"][what]] for what in {w for w, _, _ in d["rejected"]}}
-    assert set(now) <= set(d["single"])
+    more. Rejected one-effect draws (set AL's) and rejected delays (set AM's)."""
+    def final(what: str) -> dict:
+        return d["single"][what] if what in d["single"] else d[what]
+
+    now = {what: [*[first for w, _, first in d["rejected"] if w == what][1:], final(what)]
+           for what in {w for w, _, _ in d["rejected"]}}
+    assert set(now) <= {*d["single"], "pulse_late", "brs_late"}
     firsts = {w: f for w, _, f in reversed(d["rejected"])}
     out = [(firsts.get(k, v), [firsts.get(k, v)["rigs"]], False)
            for k, v in d["single"].items()]
     out.append((d["two"], list(d["two"]["rigs"]), True))
-    out += [(d[k], [cases.ALL], False) for k in ("pulse_late", "brs_late")]
+    out += [(firsts.get(k, d[k]), [cases.ALL], False) for k in ("pulse_late", "brs_late")]
     out += [(d[k], [], False) for k in ("transducer", "broken", "clean48", "clean96")]
     for what, _, _ in d["rejected"]:
         v = now[what].pop(0)
-        out.append((v, [v["rigs"]], False))
+        out.append((v, [v["rigs"]] if what in d["single"] else [cases.ALL], False))
     return out
 
 
@@ -5026,14 +5029,27 @@ BEFORE_AM = _cases_of(heldout_sets.before("am"))
 # the broken test, the transducer error, and every physical case of one effect (its rigs moved,
 # the others untouched)
 WATCHED_AM = ("ham_broken_cr_rail", "ham_cr_gain", *ONE_PHYSICAL_AM)
-# the draws found impossible, drawn again by the next seeds in the order found (draw_am.REDRAWN)
-REDRAWN_AM: list[tuple[str, int]] = []
+# the draws found impossible, drawn again by the next seeds in the order found (draw_am.REDRAWN):
+# none at the draw; at the sizes the belt unloading thirteen times (capstans running away, webbing
+# slack above the band), the late BRS below its band, the pelvis's slip force (its next a run-away)
+REDRAWN_AM: list[tuple[str, int]] = [
+    ("belt_unloading", 48001), ("brs_late", 48002), ("belt_unloading", 48003),
+    ("pelvis_coupling", 48004), *(("belt_unloading", s) for s in range(48005, 48016))]
+# each rejected draw, in that order: its form (or delay), rigs and whether its pairing was reused
+REJECTED_AM = [("dring_capstan", ("SLED",), True), (0.00236, None, False),
+               ("dring_capstan", ("FULL",), True), ("pelvis_submarine", ("R16", "FULL"), True),
+               ("webbing_slack", ("FULL",), True), ("webbing_slack", ("R16", "SLED"), True),
+               ("webbing_slack", cases.ALL, True), ("dring_capstan", ("R16", "FULL"), True),
+               ("dring_capstan", ("FULL",), True), ("webbing_slack", ("R16",), False),
+               ("webbing_slack", ("FULL",), True), ("webbing_slack", ("R16", "FULL"), True),
+               ("webbing_slack", ("SLED",), True), ("dring_capstan", ("R16", "FULL"), True),
+               ("webbing_slack", ("FULL",), True)]
 # the two-effect case
 TWO_AM = "ham_two_lumbar_r16_fabric_sled"
 # the cases on an earlier set's pairing, in the draw's order (none free for their rigs:
 # set AL's reuse rule, taken by draw_am as it stands)
-REUSED_AM = ("ham_bilinear_sled", "ham_valve_r16_sled", "ham_capstan_sled", "ham_relief_full",
-             "ham_submarine_r16_full", "ham_eccentric_r16_full", TWO_AM)
+REUSED_AM = ("ham_bilinear_sled", "ham_valve_r16_sled", "ham_set_r16_full", "ham_relief_full",
+             "ham_pelvis_knee_full", "ham_eccentric_r16_full", TWO_AM, "ham_brs_late_2p76ms")
 
 
 @pytest.fixture(scope="module")
@@ -5053,13 +5069,14 @@ def test_set_am_covers_the_general_list() -> None:
 
 
 def test_set_am_follows_its_draw() -> None:
-    """Set AM's designer's choices are numpy's default_rng(48000)'s (``draw_am.py``; no draw
-    found impossible, ``REDRAWN`` empty), followed as drawn: each kind's form, rigs, counts and
-    mix; the two-effect case's kinds, forms, rigs, counts and mix; the delays, their counts and
-    mixes; the transducer error's output, form, counts and mix; the broken test's channel, form,
-    test, counts and mix; the clean cases' mixes. Set AL's process, no change: any case with no
-    pairing free for its rigs reuses one A-AL ran, among those its rules allow; every other
-    case takes a free one (run by no earlier set, nor drawn before it)."""
+    """Set AM's designer's choices are numpy's default_rng(48000)'s (``draw_am.py``; fifteen
+    draws found impossible at the sizes, ``REDRAWN``), followed as drawn: each kind's form,
+    rigs, counts and mix; the two-effect case's kinds, forms, rigs, counts and mix; the delays,
+    their counts and mixes; the transducer error's output, form, counts and mix; the broken
+    test's channel, form, test, counts and mix; the clean cases' mixes. Set AL's process, no
+    change: any case with no pairing free for its rigs reuses one A-AL ran, among those its
+    rules allow; every other case takes a free one (run by no earlier set, nor drawn before
+    it)."""
     d = draw_am.draw(48000)
     assert d == draw_am.draw()  # reproducible from its seed
     earlier = (*"abcdefghijklmnopqrstuvwxyz", "aa", "ab", "ac", "ad", "ae", "af", "ag", "ah",
@@ -5083,7 +5100,14 @@ def test_set_am_follows_its_draw() -> None:
             assert pick not in ran | taken
         taken.add(pick)
     reused = {_pairing(BY_NAME_AM[n]) for n in REUSED_AM}
-    assert {(v["est"], v["val"]) for v, _, _ in _drawn_in_order(d) if v["reused"]} == reused
+    final = [*d["single"].values(), d["two"], *(d[k] for k in (
+        "pulse_late", "brs_late", "transducer", "broken", "clean48", "clean96"))]
+    assert {(v["est"], v["val"]) for v in final if v["reused"]} == reused
+    # the rejected draws, each in its place (rigs as drawn; a delay by its delay)
+    assert [(f.get("form", f.get("delay_s")), f.get("rigs"), f["reused"])
+            for _, _, f in d["rejected"]] == REJECTED_AM
+    # two of AM's draws ran the same earlier pairing (the pool is A-AL's, not narrowed by AM's)
+    assert d["rejected"][8][2]["est"] == d["single"]["pelvis_coupling"]["est"] == (0, 3, 3)
     assert _pairing(BY_NAME_AM[TWO_AM]) == ((2, 2, 2), (3, 3, 0)) and d["two"]["reused"]
     # without set AL's reuse (the two-effect case's alone, set AK's) the first of them draws none
     assert draw_w.drawn(48000, draw_am.EARLIER, reuse_two=True)["single"][

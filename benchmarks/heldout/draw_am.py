@@ -117,8 +117,15 @@ SEED = 48000
 # a case whose draw proved impossible, drawn again, whole, by the next seed's generator (one per
 # redraw, in this order, after the rest), the pairings of everything drawn before still taken:
 # none at the draw (every case drew a pairing: a free one, or, with none free, one A-AL ran);
-# the sizes not yet set (see ``cases_am.py``)
-REDRAWN: tuple[tuple[str, int], ...] = ()
+# at the sizes, fifteen, in the order found: the belt unloading's first draw (a capstan on SLED)
+# ran away at its first size; the late BRS's first delay cost below its band; the capstan on
+# FULL ran away; the pelvis's slip force above the band, its next size a run-away; then the
+# belt unloading eleven times more (webbing slack, a switch, above the band each time; capstans
+# running away at their first size), until webbing_set on R16+FULL came in band at its first
+# size (see ``cases_am.py``)
+REDRAWN: tuple[tuple[str, int], ...] = (
+    ("belt_unloading", 48001), ("brs_late", 48002), ("belt_unloading", 48003),
+    ("pelvis_coupling", 48004), *(("belt_unloading", s) for s in range(48005, 48016)))
 EARLIER = before("am")
 __all__ = ["BROKEN", "BRS_GAIN", "KINDS", "REDRAWN", "SEED", "TRANSDUCER", "draw", "forms",
            "scopes"]
