@@ -31,6 +31,7 @@ from benchmarks.heldout import (
     draw_aj,
     draw_ak,
     draw_al,
+    draw_am,
     draw_v,
     draw_w,
     draw_x,
@@ -54,6 +55,7 @@ from benchmarks.heldout.cases_ai import BY_NAME_AI, ONE_PHYSICAL_AI
 from benchmarks.heldout.cases_aj import BY_NAME_AJ, ONE_PHYSICAL_AJ
 from benchmarks.heldout.cases_ak import BY_NAME_AK, ONE_PHYSICAL_AK
 from benchmarks.heldout.cases_al import BY_NAME_AL, ONE_PHYSICAL_AL
+from benchmarks.heldout.cases_am import BY_NAME_AM, ONE_PHYSICAL_AM
 from benchmarks.heldout.cases_p import BY_NAME_P
 from benchmarks.heldout.cases_q import BY_NAME_Q
 from benchmarks.heldout.cases_r import BY_NAME_R
@@ -301,13 +303,15 @@ def test_set_b_pulse_clips_at_its_rail(set_b: Path) -> None:
     _others_untouched(set_b, c.name, broken)
 
 
-@pytest.mark.parametrize(("case", "hit", "spared"), [("hb_cr_gain", "cr", "cd"),
-                                                     ("hb_cd_knee", "cd", "cr")])
-def test_set_b_transducer_touches_one_output(set_b: Path, case: str, hit: str,
-                                             spared: str) -> None:
-    (eff,) = heldout_sets.select([case], "b")[0].effects
-    for folder in sorted((set_b / "on" / case).glob("*/*")):
-        on, off = set_b / "on" / case, set_b / "off" / case
+def _transducer_touches_one_output(sets_dir: Path, c: cases.Case, hit: str,
+                                   spared: str) -> None:
+    """Set B's check of a transducer error on one output, every test: the other output and the
+    pulse untouched; CR's sensitivity error the same factor at every level (CD's knee right up
+    to the knee, low beyond it by the second segment's slope)."""
+    case = c.name
+    (eff,) = c.effects
+    for folder in sorted((sets_dir / "on" / case).glob("*/*")):
+        on, off = sets_dir / "on" / case, sets_dir / "off" / case
         assert np.array_equal(_channel(on, folder.name, spared),
                               _channel(off, folder.name, spared))
         assert np.array_equal(_channel(on, folder.name, "pulse"),
@@ -321,6 +325,13 @@ def test_set_b_transducer_touches_one_output(set_b: Path, case: str, hit: str,
             assert y[peak] < y0[peak] - 1 and y[peak] == pytest.approx(want, abs=0.5)
             below = y0 < eff.size - 1
             assert np.allclose(y[below], y0[below], atol=0.3)
+
+
+@pytest.mark.parametrize(("case", "hit", "spared"), [("hb_cr_gain", "cr", "cd"),
+                                                     ("hb_cd_knee", "cd", "cr")])
+def test_set_b_transducer_touches_one_output(set_b: Path, case: str, hit: str,
+                                             spared: str) -> None:
+    _transducer_touches_one_output(set_b, heldout_sets.select([case], "b")[0], hit, spared)
 
 
 # ------------------------------------------------------------------ set C (cases_c.py)
@@ -3183,14 +3194,13 @@ def test_set_v_physics_moves_its_rigs_only(set_v: Path, case: str) -> None:
     assert seen >= 4
 
 
-def test_set_v_cr_rail_clips_the_broken_tests_cr_only(set_v: Path) -> None:
-    """The broken test's CR is flat at the rail (through CFC 180) where its twin's passes it,
-    its twin's where the twin's stays well inside; its CD, pulse and BRS untouched; every other
-    test untouched."""
-    c = BY_NAME_V["hv_broken_cr_rail"]
+def _cr_rail_clips_the_broken_tests_cr_only(sets_dir: Path, c: cases.Case) -> None:
+    """Set V's check of the broken test's CR rail: flat at the rail (through CFC 180) where its
+    twin's passes it, its twin's where the twin's stays well inside; its CD, pulse and BRS
+    untouched; every other test untouched."""
     (broken,) = c.expect_broken
     (e,) = c.effects
-    on, off = set_v / "on" / c.name, set_v / "off" / c.name
+    on, off = sets_dir / "on" / c.name, sets_dir / "off" / c.name
     bad, good = _channel(on, broken, "cr"), _channel(off, broken, "cr")
     assert good.max() > e.size + 8.0  # the spine decelerated far past the range
     assert bad.max() < e.size + 1.0 and bad.max() > e.size - 1.0
@@ -3199,7 +3209,14 @@ def test_set_v_cr_rail_clips_the_broken_tests_cr_only(set_v: Path) -> None:
     for which in ("cd", "pulse"):
         assert np.array_equal(_channel(on, broken, which), _channel(off, broken, which))
     assert np.array_equal(_brs(on, broken), _brs(off, broken))
-    _others_untouched(set_v, c.name, broken)
+    _others_untouched(sets_dir, c.name, broken)
+
+
+def test_set_v_cr_rail_clips_the_broken_tests_cr_only(set_v: Path) -> None:
+    """The broken test's CR is flat at the rail (through CFC 180) where its twin's passes it,
+    its twin's where the twin's stays well inside; its CD, pulse and BRS untouched; every other
+    test untouched."""
+    _cr_rail_clips_the_broken_tests_cr_only(set_v, BY_NAME_V["hv_broken_cr_rail"])
 
 
 def test_set_v_clock_stretches_the_time_base() -> None:
@@ -3859,9 +3876,9 @@ def set_aa(tmp_path_factory: pytest.TempPathFactory) -> Path:
 
 @pytest.mark.parametrize("letters",
                          ["x", "y", "z", "aa", "ab", "ac", "ad", "ae", "af", "ag", "ah",
-                          "ai", "aj", "ak", "al"])
+                          "ai", "aj", "ak", "al", "am"])
 def test_a_drawn_set_is_registered(letters: str, tmp_path: Path) -> None:
-    """Sets X-AL: each is its ``cases_<letters>.SET_<LETTERS>`` under its letters (either
+    """Sets X-AM: each is its ``cases_<letters>.SET_<LETTERS>`` under its letters (either
     case), for sets.select, make_sets and costs, after every set before it."""
     own = getattr(importlib.import_module(f"benchmarks.heldout.cases_{letters}"),
                   f"SET_{letters.upper()}")
@@ -3897,8 +3914,10 @@ def test_sets_before_are_names_not_letters() -> None:
                                          "ah", "ai", "aj")  # A-AJ
     assert heldout_sets.before("al") == (*after_aa, "ab", "ac", "ad", "ae", "af", "ag",
                                          "ah", "ai", "aj", "ak")  # A-AK
-    with pytest.raises(ValueError, match="unknown case set 'am'"):
-        heldout_sets.before("am")
+    assert heldout_sets.before("am") == (*after_aa, "ab", "ac", "ad", "ae", "af", "ag",
+                                         "ah", "ai", "aj", "ak", "al")  # A-AL
+    with pytest.raises(ValueError, match="unknown case set 'an'"):
+        heldout_sets.before("an")
     # a draw after AA takes AA's pairings; at this seed, without AA one single draws one of them
     aa = {_pairing(c) for c in SET_AA}
 
@@ -4907,19 +4926,22 @@ def _drawn_in_order(d: dict) -> list[tuple[dict, list[tuple[str, ...]], bool]]:
     the two-effect case, the late pulse, the late BRS, the transducer error, the broken test,
     the clean cases; a rejected draw in its place, its redraw after the rest), each with the
     rigs its pairing's rules see and whether every rig of each effect is estimated twice or
-    more. Rejected one-effect draws only (set AL's)."""
-    now = {what: [*[first for w, _, first in d["rejected"] if w == what][1:],
-                  d["single"][what]] for what in {w for w, _, _ in d["rejected"]}}
-    assert set(now) <= set(d["single"])
+    more. Rejected one-effect draws (set AL's) and rejected delays (set AM's)."""
+    def final(what: str) -> dict:
+        return d["single"][what] if what in d["single"] else d[what]
+
+    now = {what: [*[first for w, _, first in d["rejected"] if w == what][1:], final(what)]
+           for what in {w for w, _, _ in d["rejected"]}}
+    assert set(now) <= {*d["single"], "pulse_late", "brs_late"}
     firsts = {w: f for w, _, f in reversed(d["rejected"])}
     out = [(firsts.get(k, v), [firsts.get(k, v)["rigs"]], False)
            for k, v in d["single"].items()]
     out.append((d["two"], list(d["two"]["rigs"]), True))
-    out += [(d[k], [cases.ALL], False) for k in ("pulse_late", "brs_late")]
+    out += [(firsts.get(k, d[k]), [cases.ALL], False) for k in ("pulse_late", "brs_late")]
     out += [(d[k], [], False) for k in ("transducer", "broken", "clean48", "clean96")]
     for what, _, _ in d["rejected"]:
         v = now[what].pop(0)
-        out.append((v, [v["rigs"]], False))
+        out.append((v, [v["rigs"]] if what in d["single"] else [cases.ALL], False))
     return out
 
 
@@ -5000,6 +5022,132 @@ def test_set_al_has_no_run_aways(set_al: Path) -> None:
     _no_run_aways(SET_AL, set_al)
 
 
+# ------------------------------------------------------------------ set AM (cases_am.py)
+
+SET_AM = heldout_sets.case_set("am")
+BEFORE_AM = _cases_of(heldout_sets.before("am"))
+# the broken test, the transducer error, and every physical case of one effect (its rigs moved,
+# the others untouched)
+WATCHED_AM = ("ham_broken_cr_rail", "ham_cr_gain", *ONE_PHYSICAL_AM)
+# the draws found impossible, drawn again by the next seeds in the order found (draw_am.REDRAWN):
+# none at the draw; at the sizes the belt unloading thirteen times (capstans running away, webbing
+# slack above the band), the late BRS below its band, the pelvis's slip force (its next a run-away)
+REDRAWN_AM: list[tuple[str, int]] = [
+    ("belt_unloading", 48001), ("brs_late", 48002), ("belt_unloading", 48003),
+    ("pelvis_coupling", 48004), *(("belt_unloading", s) for s in range(48005, 48016))]
+# each rejected draw, in that order: its form (or delay), rigs and whether its pairing was reused
+REJECTED_AM = [("dring_capstan", ("SLED",), True), (0.00236, None, False),
+               ("dring_capstan", ("FULL",), True), ("pelvis_submarine", ("R16", "FULL"), True),
+               ("webbing_slack", ("FULL",), True), ("webbing_slack", ("R16", "SLED"), True),
+               ("webbing_slack", cases.ALL, True), ("dring_capstan", ("R16", "FULL"), True),
+               ("dring_capstan", ("FULL",), True), ("webbing_slack", ("R16",), False),
+               ("webbing_slack", ("FULL",), True), ("webbing_slack", ("R16", "FULL"), True),
+               ("webbing_slack", ("SLED",), True), ("dring_capstan", ("R16", "FULL"), True),
+               ("webbing_slack", ("FULL",), True)]
+# the two-effect case
+TWO_AM = "ham_two_lumbar_r16_fabric_sled"
+# the cases on an earlier set's pairing, in the draw's order (none free for their rigs:
+# set AL's reuse rule, taken by draw_am as it stands)
+REUSED_AM = ("ham_bilinear_sled", "ham_valve_r16_sled", "ham_set_r16_full", "ham_relief_full",
+             "ham_pelvis_knee_full", "ham_eccentric_r16_full", TWO_AM, "ham_brs_late_2p76ms")
+
+
+@pytest.fixture(scope="module")
+def set_am(tmp_path_factory: pytest.TempPathFactory) -> Path:
+    return _generate(tmp_path_factory, "am", WATCHED_AM)
+
+
+def test_set_am_covers_the_general_list() -> None:
+    """Set AM as its brief asks: clean cases at 48 and 96 counts; each kind of the library a
+    loop can name, as physics, once in a case of its own; two effects of different kinds on
+    different rigs in one case; a broken estimation test; a transducer error on CR alone (as
+    drawn); a late pulse and a late BRS at delays in 1-5 ms no earlier set used on any input;
+    6 + 6 tests, every rig an estimation part holds held twice or more; an effect on some rigs
+    only rests on two estimation and two validation tests of them beside an estimation test of
+    a rig it spares."""
+    _covers_the_general_list(SET_AM, BEFORE_AM, "cr", ONE_PHYSICAL_AM, draw_am.KINDS)
+
+
+def test_set_am_follows_its_draw() -> None:
+    """Set AM's designer's choices are numpy's default_rng(48000)'s (``draw_am.py``; fifteen
+    draws found impossible at the sizes, ``REDRAWN``), followed as drawn: each kind's form,
+    rigs, counts and mix; the two-effect case's kinds, forms, rigs, counts and mix; the delays,
+    their counts and mixes; the transducer error's output, form, counts and mix; the broken
+    test's channel, form, test, counts and mix; the clean cases' mixes. Set AL's process, no
+    change: any case with no pairing free for its rigs reuses one A-AL ran, among those its
+    rules allow; every other case takes a free one (run by no earlier set, nor drawn before
+    it)."""
+    d = draw_am.draw(48000)
+    assert d == draw_am.draw()  # reproducible from its seed
+    earlier = (*"abcdefghijklmnopqrstuvwxyz", "aa", "ab", "ac", "ad", "ae", "af", "ag", "ah",
+               "ai", "aj", "ak", "al")
+    assert earlier == draw_am.EARLIER and draw_am.SEED == 48000
+    assert (draw_am.KINDS, draw_am.BRS_GAIN) == (draw_w.KINDS, draw_w.BRS_GAIN)
+    assert (draw_am.TRANSDUCER, draw_am.BROKEN) == (draw_w.TRANSDUCER, draw_w.BROKEN)
+    _singles_follow(d, SET_AM, ONE_PHYSICAL_AM, draw_am)
+    assert [(w, s) for w, s, _ in d["rejected"]] == list(draw_am.REDRAWN) == REDRAWN_AM
+    _the_rest_follows(d, SET_AM, draw_am)
+    # each case's pairing: free when one was left for its rigs, else one A-AL ran
+    ran, taken = {_pairing(c) for c in BEFORE_AM}, set()
+    for v, rigs, each in _drawn_in_order(d):
+        allowed = {(e, w) for e in draw_v.EST_MIXES for w in draw_v.VAL_MIXES
+                   if draw_v._ok(e, w, rigs, each=each)}
+        pick = (v["est"], v["val"])
+        assert pick in allowed
+        if v["reused"]:
+            assert pick in ran and allowed <= ran | taken  # none was free
+        else:
+            assert pick not in ran | taken
+        taken.add(pick)
+    reused = {_pairing(BY_NAME_AM[n]) for n in REUSED_AM}
+    final = [*d["single"].values(), d["two"], *(d[k] for k in (
+        "pulse_late", "brs_late", "transducer", "broken", "clean48", "clean96"))]
+    assert {(v["est"], v["val"]) for v in final if v["reused"]} == reused
+    # the rejected draws, each in its place (rigs as drawn; a delay by its delay)
+    assert [(f.get("form", f.get("delay_s")), f.get("rigs"), f["reused"])
+            for _, _, f in d["rejected"]] == REJECTED_AM
+    # two of AM's draws ran the same earlier pairing (the pool is A-AL's, not narrowed by AM's)
+    assert d["rejected"][8][2]["est"] == d["single"]["pelvis_coupling"]["est"] == (0, 3, 3)
+    assert _pairing(BY_NAME_AM[TWO_AM]) == ((2, 2, 2), (3, 3, 0)) and d["two"]["reused"]
+    # without set AL's reuse (the two-effect case's alone, set AK's) the first of them draws none
+    assert draw_w.drawn(48000, draw_am.EARLIER, reuse_two=True)["single"][
+        "chest_stiffening"]["est"] is None
+
+
+def test_set_am_lab_side_is_as_drawn_and_unnamed() -> None:
+    """One broken estimation test, the only thing expected; one transducer error on CR on every
+    test, nothing physical named; AM's physics earlier sets' forms only."""
+    _lab_side_as_drawn(SET_AM, "cr")
+    assert {k for k in _keys(SET_AM) if physics.EFFECTS[k]} <= _keys(BEFORE_AM)
+
+
+@pytest.mark.parametrize("case", sorted(ONE_PHYSICAL_AM))
+def test_set_am_physics_moves_its_rigs_only(set_am: Path, case: str) -> None:
+    """Each physical case moves what its form moves on every test of its rigs (the chest's,
+    belt's, bag's and pelvis's forms and the encoder ring CR and CD, the pulse untouched) and
+    leaves the tests of a rig it spares untouched to the bit."""
+    _moves_its_rigs_only(set_am, BY_NAME_AM[case])
+
+
+def test_set_am_cr_rail_clips_the_broken_tests_cr_only(set_am: Path) -> None:
+    """The broken test's CR is flat at the rail (through CFC 180) where its twin's passes it,
+    its twin's where the twin's stays well inside (set V's form and check); its CD, pulse and
+    BRS untouched; every other test untouched."""
+    c = BY_NAME_AM["ham_broken_cr_rail"]
+    assert c.expect_broken == ("R16_005",)
+    _cr_rail_clips_the_broken_tests_cr_only(set_am, c)
+
+
+def test_set_am_cr_gain_touches_cr_only(set_am: Path) -> None:
+    """CR reads high by the same factor at every level, every test (set B's form and check, at
+    this set's gain); CD and pulse untouched."""
+    _transducer_touches_one_output(set_am, BY_NAME_AM["ham_cr_gain"], "cr", "cd")
+
+
+def test_set_am_has_no_run_aways(set_am: Path) -> None:
+    _no_run_aways(SET_AM, set_am)
+
+
 def test_more_tests_doubles_the_estimation_tests_only(tmp_path: Path) -> None:
     """``more_tests``: K times each rig's estimation tests, the validation tests and the
     effects as written, another seed (new crashes), a name that says so; the broken test's name
@@ -5054,14 +5202,15 @@ def test_loop_heldout_on_a_folder_without_the_case_is_one_line(tmp_path: Path) -
     assert "--case haa_clean48 --est-times 2 --out" in r.stderr
 
 
-# the drawn sets X-AL: each one's seed, and its cases that reuse an earlier set's pairing by
+# the drawn sets X-AM: each one's seed, and its cases that reuse an earlier set's pairing by
 # its draw's rule (the two-effect case since set Z: none was free for its rigs; since set AL any
 # case left none free)
 DRAWN = {"x": (33000, ()), "y": (34000, ()), "z": (35000, (TWO_Z,)),
          "aa": (36000, (TWO_AA,)), "ab": (37000, (TWO_AB,)), "ac": (38000, (TWO_AC,)),
          "ad": (39000, (TWO_AD,)), "ae": (40000, (TWO_AE,)), "af": (41000, (TWO_AF,)),
          "ag": (42000, (TWO_AG,)), "ah": (43000, (TWO_AH,)), "ai": (44000, (TWO_AI,)),
-         "aj": (45000, (TWO_AJ,)), "ak": (46000, (TWO_AK,)), "al": (47000, REUSED_AL)}
+         "aj": (45000, (TWO_AJ,)), "ak": (46000, (TWO_AK,)), "al": (47000, REUSED_AL),
+         "am": (48000, REUSED_AM)}
 
 
 @pytest.mark.parametrize("letters", DRAWN)
