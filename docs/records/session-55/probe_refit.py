@@ -20,9 +20,10 @@ def ls(fun, x0, **kw):
 
 rf.optimize = types.SimpleNamespace(least_squares=ls)
 
+from pathlib import Path  # noqa: E402
+
 from benchmarks.heldout import sets as hs  # noqa: E402
 from benchmarks.loop_heldout import run_case  # noqa: E402
-from pathlib import Path  # noqa: E402
 
 if __name__ == "__main__":
     case = hs.select([sys.argv[1]], "am")[0]
