@@ -121,7 +121,8 @@ from .sets import before
 SEED = 49000
 # a case whose draw proved impossible, drawn again, whole, by the next seed's generator (one per
 # redraw, in this order, after the rest), the pairings of everything drawn before still taken:
-# none yet (the set not yet drawn)
+# none at the draw (every case drew a pairing: a free one, or, with none free, one A-AM ran);
+# the sizes not yet set (see ``cases_an.py``)
 REDRAWN: tuple[tuple[str, int], ...] = ()
 EARLIER = before("an")
 __all__ = ["BROKEN", "BRS_GAIN", "KINDS", "REDRAWN", "SEED", "TRANSDUCER", "draw", "forms",
