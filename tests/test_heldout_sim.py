@@ -4947,22 +4947,27 @@ def _drawn_in_order(d: dict) -> list[tuple[dict, list[tuple[str, ...]], bool]]:
     the two-effect case, the late pulse, the late BRS, the transducer error, the broken test,
     the clean cases; a rejected draw in its place, its redraw after the rest), each with the
     rigs its pairing's rules see and whether every rig of each effect is estimated twice or
-    more. Rejected one-effect draws (set AL's) and rejected delays (set AM's)."""
+    more. Rejected one-effect draws (set AL's), rejected delays (set AM's) and a rejected
+    two-effect case (set AN's)."""
     def final(what: str) -> dict:
         return d["single"][what] if what in d["single"] else d[what]
 
     now = {what: [*[first for w, _, first in d["rejected"] if w == what][1:], final(what)]
            for what in {w for w, _, _ in d["rejected"]}}
-    assert set(now) <= {*d["single"], "pulse_late", "brs_late"}
+    assert set(now) <= {*d["single"], "two", "pulse_late", "brs_late"}
     firsts = {w: f for w, _, f in reversed(d["rejected"])}
     out = [(firsts.get(k, v), [firsts.get(k, v)["rigs"]], False)
            for k, v in d["single"].items()]
-    out.append((d["two"], list(d["two"]["rigs"]), True))
+    two = firsts.get("two", d["two"])
+    out.append((two, list(two["rigs"]), True))
     out += [(firsts.get(k, d[k]), [cases.ALL], False) for k in ("pulse_late", "brs_late")]
     out += [(d[k], [], False) for k in ("transducer", "broken", "clean48", "clean96")]
     for what, _, _ in d["rejected"]:
         v = now[what].pop(0)
-        out.append((v, [v["rigs"]] if what in d["single"] else [cases.ALL], False))
+        if what == "two":
+            out.append((v, list(v["rigs"]), True))
+        else:
+            out.append((v, [v["rigs"]] if what in d["single"] else [cases.ALL], False))
     return out
 
 
@@ -5176,13 +5181,18 @@ BEFORE_AN = _cases_of(heldout_sets.before("an"))
 # the broken test, the transducer error, and every physical case of one effect (its rigs moved,
 # the others untouched)
 WATCHED_AN = ("han_broken_cd_dropout", "han_cd_arm_lift", *ONE_PHYSICAL_AN)
-# the draws found impossible, drawn again by the next seeds in the order found (draw_an.REDRAWN)
-REDRAWN_AN: list[tuple[str, int]] = []
+# the draws found impossible, drawn again by the next seeds in the order found (draw_an.REDRAWN):
+# none at the draw; at the sizes the belt unloading once (its capstan running away at its first
+# size), the two-effect case once (the stepped Maxwell ribs alone fell out of the band)
+REDRAWN_AN: list[tuple[str, int]] = [("belt_unloading", 49001), ("two", 49002)]
+# each rejected draw, in that order: its form (or forms), rigs and whether its pairing was reused
+REJECTED_AN = [("dring_capstan", ("R16", "FULL"), True),
+               (("pelvis_knee", "rib_maxwell"), (("R16", "SLED"), ("FULL",)), True)]
 # the two-effect case
-TWO_AN = "han_two_pelvis_knee_r16_sled_maxwell_full"
+TWO_AN = "han_two_bumper_sled_full_pelvis_knee_r16"
 # the cases on an earlier set's pairing, in the draw's order (none free for their rigs:
 # set AL's reuse rule, taken by draw_an as it stands)
-REUSED_AN = ("han_fung_r16_sled", "han_squeeze_sled", "han_capstan_r16_full",
+REUSED_AN = ("han_fung_r16_sled", "han_squeeze_sled", "han_hysteresis_sled_full",
              "han_power_r16_sled", "han_dual_sled_full", "han_pelvis_knee_r16_full",
              "han_eccentric_sled_full", TWO_AN, "han_brs_late_4p65ms")
 
@@ -5204,13 +5214,13 @@ def test_set_an_covers_the_general_list() -> None:
 
 
 def test_set_an_follows_its_draw() -> None:
-    """Set AN's designer's choices are numpy's default_rng(49000)'s (``draw_an.py``; no draw
-    found impossible, ``REDRAWN`` empty), followed as drawn: each kind's form, rigs, counts and
-    mix; the two-effect case's kinds, forms, rigs, counts and mix; the delays, their counts and
-    mixes; the transducer error's output, form, counts and mix; the broken test's channel, form,
-    test, counts and mix; the clean cases' mixes. Set AM's process, no change: any case with no
-    pairing free for its rigs reuses one A-AM ran, among those its rules allow; every other
-    case takes a free one (run by no earlier set, nor drawn before it)."""
+    """Set AN's designer's choices are numpy's default_rng(49000)'s (``draw_an.py``; two draws
+    found impossible at the sizes, ``REDRAWN``), followed as drawn: each kind's form, rigs,
+    counts and mix; the two-effect case's kinds, forms, rigs, counts and mix; the delays, their
+    counts and mixes; the transducer error's output, form, counts and mix; the broken test's
+    channel, form, test, counts and mix; the clean cases' mixes. Set AM's process, no change:
+    any case with no pairing free for its rigs reuses one A-AM ran, among those its rules
+    allow; every other case takes a free one (run by no earlier set, nor drawn before it)."""
     d = draw_an.draw(49000)
     assert d == draw_an.draw()  # reproducible from its seed
     earlier = (*"abcdefghijklmnopqrstuvwxyz", "aa", "ab", "ac", "ad", "ae", "af", "ag", "ah",
@@ -5237,7 +5247,10 @@ def test_set_an_follows_its_draw() -> None:
     final = [*d["single"].values(), d["two"], *(d[k] for k in (
         "pulse_late", "brs_late", "transducer", "broken", "clean48", "clean96"))]
     assert {(v["est"], v["val"]) for v in final if v["reused"]} == reused
-    assert _pairing(BY_NAME_AN[TWO_AN]) == ((2, 2, 2), (1, 2, 3)) and d["two"]["reused"]
+    # the rejected draws, each in its place (rigs as drawn; the two-effect case by its forms)
+    assert [(f.get("form", f.get("forms")), f.get("rigs"), f["reused"])
+            for _, _, f in d["rejected"]] == REJECTED_AN
+    assert _pairing(BY_NAME_AN[TWO_AN]) == ((2, 2, 2), (3, 3, 0)) and d["two"]["reused"]
     # without set AL's reuse (the two-effect case's alone, set AK's) the first of them draws none
     assert draw_w.drawn(49000, draw_an.EARLIER, reuse_two=True)["single"][
         "chest_stiffening"]["est"] is None
