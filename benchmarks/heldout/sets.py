@@ -33,7 +33,8 @@ AJ (``cases_aj``, written after set AI by another engineer, its choices drawn, t
 AK (``cases_ak``, written after set AJ by another engineer, its choices drawn, the same way), set
 AL (``cases_al``, written after set AK by another engineer, its choices drawn, the same way but
 that any case left no free pairing reuses an earlier set's), set AM (``cases_am``, written after
-set AL by another engineer, its choices drawn, set AL's way)."""
+set AL by another engineer, its choices drawn, set AL's way), set AN (``cases_an``, written after
+set AM by another engineer, its choices drawn, set AM's way)."""
 
 from __future__ import annotations
 
@@ -51,6 +52,7 @@ from .cases_aj import SET_AJ
 from .cases_ak import SET_AK
 from .cases_al import SET_AL
 from .cases_am import SET_AM
+from .cases_an import SET_AN
 from .cases_b import SET_B
 from .cases_c import SET_C
 from .cases_d import SET_D
@@ -85,7 +87,8 @@ _BY_NAME: dict[str, list[Case]] = {
     "v": SET_V, "w": SET_W, "x": SET_X, "y": SET_Y, "z": SET_Z,
     "aa": SET_AA, "ab": SET_AB, "ac": SET_AC, "ad": SET_AD, "ae": SET_AE,
     "af": SET_AF, "ag": SET_AG, "ah": SET_AH, "ai": SET_AI,
-    "aj": SET_AJ, "ak": SET_AK, "al": SET_AL, "am": SET_AM}
+    "aj": SET_AJ, "ak": SET_AK, "al": SET_AL, "am": SET_AM,
+    "an": SET_AN}
 SETS = tuple(_BY_NAME)
 
 
@@ -103,18 +106,20 @@ def before(name: str) -> tuple[str, ...]:
     ``"ag"``, ``"ah"``, ``"ai"`` and ``"aj"``; before set AL, those, ``"aa"``, ``"ab"``,
     ``"ac"``, ``"ad"``, ``"ae"``, ``"af"``, ``"ag"``, ``"ah"``, ``"ai"``, ``"aj"`` and
     ``"ak"``; before set AM, those, ``"aa"``, ``"ab"``, ``"ac"``, ``"ad"``, ``"ae"``, ``"af"``,
-    ``"ag"``, ``"ah"``, ``"ai"``, ``"aj"``, ``"ak"`` and ``"al"``); ValueError for an unknown
-    name. Names, not letters: set AA is one set, not set A twice."""
+    ``"ag"``, ``"ah"``, ``"ai"``, ``"aj"``, ``"ak"`` and ``"al"``; before set AN, those,
+    ``"aa"``, ``"ab"``, ``"ac"``, ``"ad"``, ``"ae"``, ``"af"``, ``"ag"``, ``"ah"``, ``"ai"``,
+    ``"aj"``, ``"ak"``, ``"al"`` and ``"am"``); ValueError for an unknown name. Names, not
+    letters: set AA is one set, not set A twice."""
     _known(name)
     return SETS[:SETS.index(name)]
 
 
 def case_set(name: str) -> list[Case]:
-    """Set A (``cases``), or set B ... Z, AA, AB, AC, AD, AE, AF, AG, AH, AI, AJ, AK, AL, AM
-    (``cases_b`` ... ``cases_z``, ``cases_aa``, ``cases_ab``, ``cases_ac``, ``cases_ad``,
+    """Set A (``cases``), or set B ... Z, AA, AB, AC, AD, AE, AF, AG, AH, AI, AJ, AK, AL, AM,
+    AN (``cases_b`` ... ``cases_z``, ``cases_aa``, ``cases_ab``, ``cases_ac``, ``cases_ad``,
     ``cases_ae``, ``cases_af``, ``cases_ag``, ``cases_ah``, ``cases_ai``, ``cases_aj``,
-    ``cases_ak``, ``cases_al``, ``cases_am``) by its lower-case letters; ValueError for another
-    name."""
+    ``cases_ak``, ``cases_al``, ``cases_am``, ``cases_an``) by its lower-case letters;
+    ValueError for another name."""
     _known(name)
     return list(_BY_NAME[name])
 
