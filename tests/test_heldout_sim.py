@@ -4971,6 +4971,23 @@ def _drawn_in_order(d: dict) -> list[tuple[dict, list[tuple[str, ...]], bool]]:
     return out
 
 
+def _pairings_follow(d: dict, before: list[cases.Case]) -> None:
+    """Each case's pairing in a reuse-all draw (sets AL on): one its rules allow; free (run by
+    no earlier set, nor drawn before it) when one was left for its rigs, else one of
+    ``before``'s."""
+    ran, taken = {_pairing(c) for c in before}, set()
+    for v, rigs, each in _drawn_in_order(d):
+        allowed = {(e, w) for e in draw_v.EST_MIXES for w in draw_v.VAL_MIXES
+                   if draw_v._ok(e, w, rigs, each=each)}
+        pick = (v["est"], v["val"])
+        assert pick in allowed
+        if v["reused"]:
+            assert pick in ran and allowed <= ran | taken  # none was free
+        else:
+            assert pick not in ran | taken
+        taken.add(pick)
+
+
 def test_set_al_follows_its_draw() -> None:
     """Set AL's designer's choices are numpy's default_rng(47000)'s (``draw_al.py``; no draw
     found impossible, ``REDRAWN`` empty), followed as drawn: each kind's form, rigs, counts and
@@ -4990,17 +5007,7 @@ def test_set_al_follows_its_draw() -> None:
     assert [(w, s) for w, s, _ in d["rejected"]] == list(draw_al.REDRAWN) == REDRAWN_AL
     _the_rest_follows(d, SET_AL, draw_al)
     # each case's pairing: free when one was left for its rigs, else one A-AK ran
-    ran, taken = {_pairing(c) for c in BEFORE_AL}, set()
-    for v, rigs, each in _drawn_in_order(d):
-        allowed = {(e, w) for e in draw_v.EST_MIXES for w in draw_v.VAL_MIXES
-                   if draw_v._ok(e, w, rigs, each=each)}
-        pick = (v["est"], v["val"])
-        assert pick in allowed
-        if v["reused"]:
-            assert pick in ran and allowed <= ran | taken  # none was free
-        else:
-            assert pick not in ran | taken
-        taken.add(pick)
+    _pairings_follow(d, BEFORE_AL)
     reused = {_pairing(BY_NAME_AL[n]) for n in REUSED_AL}
     assert {(v["est"], v["val"]) for v, _, _ in _drawn_in_order(d)[:-1] if v["reused"]} == (
         reused - {_pairing(BY_NAME_AL["hal_eccentric_sled_full"])} | {((2, 0, 4), (2, 0, 4))})
@@ -5114,17 +5121,7 @@ def test_set_am_follows_its_draw() -> None:
     assert [(w, s) for w, s, _ in d["rejected"]] == list(draw_am.REDRAWN) == REDRAWN_AM
     _the_rest_follows(d, SET_AM, draw_am)
     # each case's pairing: free when one was left for its rigs, else one A-AL ran
-    ran, taken = {_pairing(c) for c in BEFORE_AM}, set()
-    for v, rigs, each in _drawn_in_order(d):
-        allowed = {(e, w) for e in draw_v.EST_MIXES for w in draw_v.VAL_MIXES
-                   if draw_v._ok(e, w, rigs, each=each)}
-        pick = (v["est"], v["val"])
-        assert pick in allowed
-        if v["reused"]:
-            assert pick in ran and allowed <= ran | taken  # none was free
-        else:
-            assert pick not in ran | taken
-        taken.add(pick)
+    _pairings_follow(d, BEFORE_AM)
     reused = {_pairing(BY_NAME_AM[n]) for n in REUSED_AM}
     final = [*d["single"].values(), d["two"], *(d[k] for k in (
         "pulse_late", "brs_late", "transducer", "broken", "clean48", "clean96"))]
@@ -5232,17 +5229,7 @@ def test_set_an_follows_its_draw() -> None:
     assert [(w, s) for w, s, _ in d["rejected"]] == list(draw_an.REDRAWN) == REDRAWN_AN
     _the_rest_follows(d, SET_AN, draw_an)
     # each case's pairing: free when one was left for its rigs, else one A-AM ran
-    ran, taken = {_pairing(c) for c in BEFORE_AN}, set()
-    for v, rigs, each in _drawn_in_order(d):
-        allowed = {(e, w) for e in draw_v.EST_MIXES for w in draw_v.VAL_MIXES
-                   if draw_v._ok(e, w, rigs, each=each)}
-        pick = (v["est"], v["val"])
-        assert pick in allowed
-        if v["reused"]:
-            assert pick in ran and allowed <= ran | taken  # none was free
-        else:
-            assert pick not in ran | taken
-        taken.add(pick)
+    _pairings_follow(d, BEFORE_AN)
     reused = {_pairing(BY_NAME_AN[n]) for n in REUSED_AN}
     final = [*d["single"].values(), d["two"], *(d[k] for k in (
         "pulse_late", "brs_late", "transducer", "broken", "clean48", "clean96"))]
