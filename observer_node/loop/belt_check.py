@@ -8,7 +8,7 @@ slack belt scored there when it was tried, so an engineer reads the model's rebo
 care. It reads the linear belt's force, as the slack belt's switch does: a belt stiffening or
 a spool's gain adds to it and is not counted. On the independent held-out sets the identified
 belt pushed for 25-59 of a test's 151 ms, by 1.5-3.3 kN, most of it in the rebound, and the
-slack belt cost 4-23 points (docs/loop.md).
+slack belt cost 4-23 points (docs/loop-evidence.md).
 """
 
 from __future__ import annotations

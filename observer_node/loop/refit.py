@@ -45,8 +45,8 @@ class _Slot(NamedTuple):
 
     A positive size is fitted as v * scale with the optimiser's bound v >= 0, not as |v|: the
     kink of |v| at 0 made trf reject every step from a fit near it, so a fold's refit never
-    left the all-test fit and scored its held-out test in-sample (docs/loop.md, "Folds that
-    stall")."""
+    left the all-test fit and scored its held-out test in-sample (docs/loop-evidence.md,
+    "Folds that stall")."""
 
     i: int
     name: str
@@ -222,7 +222,8 @@ def score(base: dict, effects: list[dict], data: Dataset) -> FitTable:
 #: leave one test out up to this many estimation tests; beyond, this many folds
 MAX_FOLDS = 6
 #: iterations a fold's refit gets from the all-test fit: leaving a test or two out moves
-#: the solution a little, so it converges in a few (checked against cold folds, docs/loop.md)
+#: the solution a little, so it converges in a few (checked against cold folds,
+#: docs/loop-evidence.md)
 FOLD_NFEV = 15
 
 

@@ -28,7 +28,7 @@ Per channel, on the recorded samples from first contact to the end of the scorin
   the record's last 20 ms, when it ends 20 ms or more after the scoring window, the pulse (its
   pre-crash bias removed) must read under 1.5 g and 5 % of its peak (rolling friction is well
   under 1 g); the post-test zero check of SAE J211 and ISO 6487. Added after held-out set C
-  missed such a test (docs/loop.md). The zero is the median of the pre-contact samples
+  missed such a test (docs/loop-evidence.md). The zero is the median of the pre-contact samples
   (``CrashTest.pulse_bias_g``), which a late trigger's crash onset in that window does not
   move: 5 ms of onset in a 20 ms window move its mean by 1-3 g, its median by under 0.3 g;
 - **a counter jump** (the BRS): a spindle speeds up and slows down through the webbing's mass,
@@ -159,7 +159,7 @@ is no other test's reference):
   gap alone named a clean test in 538 (R16_006, whose lag lies 5.4 ms below every other R16
   test's, in 309; the FULL tests, whose lags fall in two groups, in most of the rest); now in 26
   (FULL_001 in 15, R16_006 in 9). The held-out sets' five broken tests it found are still found;
-  on fresh draws (``benchmarks/screen_faults.py``) see docs/loop.md. Its partner, when the files
+  on fresh draws (``benchmarks/screen_faults.py``): docs/loop-evidence.md. Its partner, if the files
   were crossed: the one test of another setup whose spool, read against the flagged test's pulse,
   lands within 2 ms of a lag of the flagged test's setup (set J's: 0.1 ms, the next test 10.0;
   crossed by hand on the bundled campaign: 0.3, the next 5.3), unless its own setup (three or more

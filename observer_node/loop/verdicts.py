@@ -84,7 +84,7 @@ def untold(kind: str, runner_up: RunnerUp | None, n_tests: int) -> str | None:
     weaker). Named with a "?" until 2026-11-25 (of
     five such names on held-out sets D and E, three were effects not there: a coin flip);
     then not named at all, which cost three right names on set G and two of the library's
-    held-out cases (docs/loop.md). Since then the loop looks past the tie
+    held-out cases (docs/loop-evidence.md). Since then the loop looks past the tie
     (:func:`~observer_node.loop.evidence.past_the_tie`): each effect beside the other."""
     if runner_up is None or not runner_up.rival:
         return None
@@ -209,7 +209,7 @@ def nothing_left(kind: str, params: dict) -> str | None:
     tests hold (held-out set AC: a belt stiffening of 6.3 N/m^3, typical 1e8, named on
     every rig for a BRS read through an eccentric ring, +1.5 points on 6 of 6 tests, while
     its all-test fit was the model without it's to 0.001 points; its folds' refits never
-    left that fit, so each scored its held-out test in-sample, docs/loop.md). That stall
+    left that fit, so each scored its held-out test in-sample, docs/loop-evidence.md). That stall
     was the refit's (a positive size fitted as |v|, a kink at 0), mended in session 45 (a
     bound, and a stalled fold counts no gain: ``refit.fold_scores``); on set AC this check
     has not fired since. It stays as a backstop: an effect refitted to nothing is never a
@@ -269,8 +269,8 @@ def where_it_falls(by_setup: list[SetupValidation]) -> str:
     a judged clean rig fall 8 points, hidden in a pool by the rise where it acts), that those
     setups' tests cannot tell the effect from a mimic. Nothing of the kind when a test ran away: its
     -1000 % says nothing of an effect. On the independent held-out sets' stored refusals
-    (docs/loop.md, "Where the validation fit falls") each setup so named lacked an effect in
-    the model: the refused kind or one it mimics; their designs put one there."""
+    (docs/loop-evidence.md, "Where the validation fit falls") each setup so named lacked an
+    effect in the model: the refused kind or one it mimics; their designs put one there."""
     def label(v: SetupValidation) -> str:
         notes = [f"{v.tests} test{'s' if v.tests != 1 else ''}",
                  *(["not judged"] if not v.judged else []),

@@ -323,8 +323,8 @@ register(Effect(
     needs=(re.compile(r"HARD SEAT|RIGID SEAT|NO INTERIOR|WITHOUT INTERIOR|NO AIRBAG|"
                       r"WITHOUT AIRBAG|AIRBAG DEACTIVATED", re.IGNORECASE),
            "an airbag needs an interior with an airbag"),
-    # session 54's screen (docs/loop.md, "A webbing knee, screened"): a knee passed on every
-    # bag case the bag passed on, within 0.6 points in 8 of 9; sets AK and AL named a bag
+    # session 54's screen (docs/loop-evidence.md, "A webbing knee, screened"): a knee passed on
+    # every bag case the bag passed on, within 0.6 points in 8 of 9; sets AK and AL named a bag
     # on SLED for a webbing knee
     looks_alike="a webbing that stiffens past a knee of its pay-out (not in the library) "
                 "gives the same signature on sled and full-scale rigs: on the held-out bag "
