@@ -159,7 +159,7 @@ is no other test's reference):
   gap alone named a clean test in 538 (R16_006, whose lag lies 5.4 ms below every other R16
   test's, in 309; the FULL tests, whose lags fall in two groups, in most of the rest); now in 26
   (FULL_001 in 15, R16_006 in 9). The held-out sets' five broken tests it found are still found;
-  on fresh draws (``benchmarks/screen_faults.py``): docs/loop-evidence.md. Its partner, if the files
+  on fresh draws (``benchmarks/screen_faults.py``) see docs/loop.md. Its partner, when the files
   were crossed: the one test of another setup whose spool, read against the flagged test's pulse,
   lands within 2 ms of a lag of the flagged test's setup (set J's: 0.1 ms, the next test 10.0;
   crossed by hand on the bundled campaign: 0.3, the next 5.3), unless its own setup (three or more
