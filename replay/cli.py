@@ -23,7 +23,7 @@ from collections import Counter
 
 from observer_node.dbc import Codec, fd_frame_time_s, frame_bits
 from observer_node.dbc.bus import add_bus_arguments, open_bus
-from observer_node.errors import ObserverError, UsageError
+from observer_node.errors import ObserverError, OneLineParser, UsageError
 
 from .player import bus_sender, play
 from .schedule import Schedule, concat, restamp_counters
@@ -49,8 +49,8 @@ def _remap(s: str) -> tuple[int, int]:
 
 
 def build_parser() -> argparse.ArgumentParser:
-    p = argparse.ArgumentParser(prog="crash-replay", description=__doc__,
-                                formatter_class=argparse.RawDescriptionHelpFormatter)
+    p = OneLineParser(prog="crash-replay", description=__doc__,
+                      formatter_class=argparse.RawDescriptionHelpFormatter)
     p.add_argument("sources", nargs="+", metavar="SOURCE",
                    help="crash test (ISO-MME folder, .zip, .mme, .csv), folder of tests, "
                    "campaign-a[/PATTERN], .mcap recording, or .log/.asc/.blf/.trc/.mf4 bus log")

@@ -364,6 +364,67 @@ def test_a_test_given_as_estimation_and_validation_is_refused(tmp_path, capsys):
     assert not out.exists()
 
 
+# Options of the loop a hostile user tried (session 56): each one line and exit 2, before any
+# fit or cluster, naming the option, and no output folder left behind.
+LOOP_OPTION_CASES: dict[str, tuple[list[str], str]] = {
+    "rate 0": (["--rate", "0"], "--rate"),
+    "rate nan": (["--rate", "nan"], "--rate"),
+    "window nan": (["--window", "nan", "0.15"], "--window"),
+    "window reversed": (["--window", "0.1", "0.05"], "--window 0.1 0.05"),
+    "window negative": (["--window", "-0.1", "0.15"], "--window"),
+    "window 5 ms": (["--window", "0.01", "0.015"], "--window"),
+    "margin nan": (["--margin", "nan"], "--margin"),
+    "margin inf": (["--margin", "inf"], "--margin"),
+    "margin negative": (["--margin", "-5"], "--margin"),
+    "scheduler not a url": (["--scheduler", "not a url"], "--scheduler"),
+    "scheduler http": (["--scheduler", "http://localhost:8786"], "unknown scheme 'http'"),
+    "scheduler no port": (["--scheduler", "tcp://localhost"], "--scheduler"),
+    "group matching nothing": (["--group", "X=NOPE_*"], "--group X=NOPE_*: matches none"),
+    "pulse code is the CR's": (["--pulse-code", "11CHST0000H3ACXC"],
+                               "11CHST0000H3ACXC is given as both the crash pulse and the CR"),
+    "pulse code matching two": (["--pulse-code", "11CHST0000H3????"], "matches 2 channels"),
+}
+
+
+def _exit_code(argv: list[str]) -> int:
+    """``observer-node ARGV``'s exit code, argparse's own refusals (SystemExit) included."""
+    try:
+        return cli.main(argv)
+    except SystemExit as e:
+        return int(e.code or 0)
+
+
+@pytest.mark.parametrize("case", sorted(LOOP_OPTION_CASES))
+def test_bad_loop_option(case, tmp_path, capsys):
+    extra, says = LOOP_OPTION_CASES[case]
+    out = tmp_path / "out"
+    code = _exit_code(["loop", "--estimate", "campaign-a/R16_00[13]", "--validate",
+                     "campaign-a/R16_002", "--out", str(out), "--quiet", "--workers", "1",
+                     *extra])
+    _expect_one_line_error(code, capsys.readouterr().err, says)
+    assert not out.exists()
+
+
+def test_an_output_folder_that_cannot_be_one_is_refused_before_any_work(tmp_path, capsys):
+    afile = tmp_path / "afile"
+    afile.write_text("not a folder")
+    for out, says in ((afile, "is a file"), (afile / "x", "cannot be made: ")):
+        for command in (["loop", "--estimate", "campaign-a/R16_00[13]", "--validate",
+                         "campaign-a/R16_002", "--quiet"], ["evaluate", "--quiet"], ["bench"]):
+            code = cli.main([*command, "--out", str(out)])
+            _expect_one_line_error(code, capsys.readouterr().err, says)
+    assert afile.read_text() == "not a folder"
+
+
+def test_one_estimation_test_is_refused_saying_what_the_loop_needs(tmp_path, capsys):
+    out = tmp_path / "out"
+    code = cli.main(["loop", "--estimate", str(DATA / "R16_001"), "--validate",
+                     str(DATA / "R16_002"), "--out", str(out), "--quiet", "--workers", "1"])
+    _expect_one_line_error(code, capsys.readouterr().err,
+                           "too few tests: 1 estimation and 1 validation test(s)")
+    assert not out.exists()
+
+
 def test_one_crash_under_two_names_is_refused(tmp_path, capsys):
     """A copied test renamed (another name, the same samples) would count one crash twice."""
     copy = tmp_path / "R16_009"

@@ -1379,6 +1379,25 @@ def test_an_unreachable_scheduler_is_one_line_and_exit_2(tmp_path):
     assert "tcp://127.0.0.1:9" in p.stderr
 
 
+def test_a_server_that_never_answers_is_given_up_on(tmp_path):
+    """A port that accepts and says nothing (a web server, a wrong port): Dask's timeout
+    covers the connection, not its handshake, which would wait forever (a hostile user's
+    finding, session 56)."""
+    import socket
+    import time
+
+    from observer_node.loop.cluster import ClusterError, _connect
+
+    with socket.socket() as silent:
+        silent.bind(("127.0.0.1", 0))
+        silent.listen()
+        address = f"tcp://127.0.0.1:{silent.getsockname()[1]}"
+        t0 = time.monotonic()
+        with pytest.raises(ClusterError, match="no answer within 6 s"):
+            _connect(address, timeout_s=1.0)
+        assert time.monotonic() - t0 < 30
+
+
 def test_gains_of_varying_size_on_every_test_are_accepted():
     """A belt that unloads far more in two crashes than in the other two: the t-interval
     reaches below zero, but four of four tests improve (sign test p = 0.0625)."""

@@ -62,6 +62,12 @@ def test_csv_roundtrip_and_errors(tmp_path: Path):
     p.write_text("\n".join(lines))
     with pytest.raises(CrashDataError, match=r"t\.csv:41: non-numeric"):
         read_csv(p)
+    # a column twice in the header: named as such, not as a row's width (session 56)
+    header = next(i for i, line in enumerate(lines) if line.lower().startswith("time"))
+    lines[header] += "," + lines[header].split(",")[1]
+    p.write_text("\n".join(lines))
+    with pytest.raises(CrashDataError, match=rf"t\.csv:{header + 1}: column '\w+' appears twice"):
+        read_csv(p)
 
 
 def test_split_halves_odd_estimates_even_validates(campaign):

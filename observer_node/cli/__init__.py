@@ -29,7 +29,7 @@ import argparse
 import sys
 
 from .. import __version__
-from ..errors import ObserverError
+from ..errors import ObserverError, OneLineParser
 from . import analyze, bench, evaluate, export, export_c, identify, loop, run, simulate
 
 # One module per command, each with add_subparser(subparsers) and its _do_COMMAND(args); in
@@ -38,8 +38,8 @@ COMMANDS = (bench, loop, identify, evaluate, simulate, run, analyze, export, exp
 
 
 def build_parser() -> argparse.ArgumentParser:
-    p = argparse.ArgumentParser(prog="observer-node", description=__doc__,
-                                formatter_class=argparse.RawDescriptionHelpFormatter)
+    p = OneLineParser(prog="observer-node", description=__doc__,
+                formatter_class=argparse.RawDescriptionHelpFormatter)
     p.add_argument("--version", action="version", version=f"%(prog)s {__version__}")
     sub = p.add_subparsers(dest="command", required=True, metavar="COMMAND")
     for command in COMMANDS:

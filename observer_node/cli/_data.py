@@ -5,6 +5,9 @@ module's."""
 from __future__ import annotations
 
 import argparse
+import math
+import os
+from pathlib import Path
 
 from ..data import (
     BUNDLED_NAME,
@@ -15,10 +18,55 @@ from ..data import (
     load_tests,
 )
 from ..data.crashtest import THESIS_WINDOW_S
+from ..errors import UsageError
 
 TESTS_HELP = (f"an ISO-MME test folder, .zip or .csv, a folder of them, or "
               f"{BUNDLED_NAME}[/PATTERN]")
 RATE_HZ = 1000.0  # the DBC's sensor rate: one TunnelAccel frame, one tick per ms
+MIN_WINDOW_S = 0.02  # a scoring window shorter than this holds too little of a crash to judge
+
+
+def finite(text: str) -> float:
+    """An argparse type: a finite number (nan and inf would pass ``float`` and fail far on)."""
+    try:
+        x = float(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"not a number: {text!r}") from None
+    if not math.isfinite(x):
+        raise argparse.ArgumentTypeError(f"not a finite number: {text!r}")
+    return x
+
+
+def positive(text: str) -> float:
+    """An argparse type: a finite number above zero."""
+    x = finite(text)
+    if x <= 0:
+        raise argparse.ArgumentTypeError(f"must be above zero: {text!r}")
+    return x
+
+
+def non_negative(text: str) -> float:
+    """An argparse type: a finite number, zero or above."""
+    x = finite(text)
+    if x < 0:
+        raise argparse.ArgumentTypeError(f"must be zero or above: {text!r}")
+    return x
+
+
+def out_folder(path: str, option: str = "--out") -> Path:
+    """``path`` as an output folder, checked before any work: it is a folder or can be made
+    one (the nearest existing parent a writable folder). Not created here, so a command that
+    fails on its input leaves nothing behind."""
+    p = Path(path)
+    probe = p
+    while not probe.exists() and probe != probe.parent:
+        probe = probe.parent
+    if not probe.is_dir():
+        what = "is a file" if probe == p else f"cannot be made: {probe} is a file"
+        raise UsageError(f"{option} {path}: {what}")
+    if not os.access(probe, os.W_OK | os.X_OK):
+        raise UsageError(f"{option} {path}: cannot write in {probe} (permission denied)")
+    return p
 
 
 def add_data_arguments(p: argparse.ArgumentParser, data: str | None) -> None:
@@ -42,12 +90,13 @@ def add_data_arguments(p: argparse.ArgumentParser, data: str | None) -> None:
     g.add_argument("--counts-per-rev", type=int, metavar="N",
                    help="BRS counts per spindle revolution (default: from the test's comments)")
     start, end = THESIS_WINDOW_S
-    g.add_argument("--window", nargs=2, type=float, metavar=("START", "END"),
-                   help=f"scoring window in s (default {start:g} {end:g}, the thesis's)")
+    g.add_argument("--window", nargs=2, type=non_negative, metavar=("START", "END"),
+                   help=f"scoring window in s from time zero, at least {MIN_WINDOW_S:g} s "
+                   f"long (default {start:g} {end:g}, the thesis's)")
 
 
 def add_rate_argument(p: argparse.ArgumentParser, what: str = "") -> None:
-    p.add_argument("--rate", type=float, default=RATE_HZ,
+    p.add_argument("--rate", type=positive, default=RATE_HZ,
                    help=f"tick rate in Hz{what} (default %(default)g, the bus rate)")
 
 
@@ -60,8 +109,15 @@ def channel_codes(a: argparse.Namespace) -> ChannelCodes:
 
 
 def window(a: argparse.Namespace) -> tuple[float, float]:
-    """The scoring window in s: --window, else the thesis's."""
-    return (a.window[0], a.window[1]) if a.window else THESIS_WINDOW_S
+    """The scoring window in s: --window, else the thesis's; one line for a window that ends
+    before it starts or is too short to hold a crash."""
+    if not a.window:
+        return THESIS_WINDOW_S
+    start, end = a.window
+    if end - start < MIN_WINDOW_S:
+        raise UsageError(f"--window {start:g} {end:g}: END must come at least {MIN_WINDOW_S:g} s "
+                         "after START (a crash's chest response lasts about 0.1 s)")
+    return (start, end)
 
 
 def load(a: argparse.Namespace) -> list[CrashTest]:

@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 import argparse
-from pathlib import Path
 
 from . import _data
 
@@ -30,8 +29,8 @@ def _do_evaluate(a: argparse.Namespace) -> int:
     from ..iso18571 import grade
     from ..model.modelfile import ModelFile
 
+    out = _data.out_folder(a.out)
     tests = _data.load(a)
-    out = Path(a.out)
     if a.model:
         mf = ModelFile.load(a.model)
         # without --window, the model's own window

@@ -22,7 +22,7 @@ def add_subparser(subparsers: argparse._SubParsersAction[argparse.ArgumentParser
     s.add_argument("--nmax", type=int, default=6,
                    help="ARX: largest order searched (default %(default)s)")
     s.add_argument("--order", type=int, default=7, help="N4SID: model order (default %(default)s)")
-    s.add_argument("--m1", type=float, default=20.0,
+    s.add_argument("--m1", type=_data.positive, default=20.0,
                    help="grey-box: fixed spine mass in kg that sets the mass scale "
                    "(default %(default)g)")
     s.add_argument("--name", help="model name stored in the file")

@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 import argparse
-from pathlib import Path
 
 from ..errors import UsageError
 from ..loop.cluster import MAX_LOCAL_WORKERS
@@ -40,7 +39,7 @@ def add_subparser(subparsers: argparse._SubParsersAction[argparse.ArgumentParser
                    help="held-out tests the report scores before and after (never fitted on; "
                    "they refuse an effect whose fit they lower and may tell a tie apart)")
     s.add_argument("--out", required=True, help="output folder")
-    s.add_argument("--margin", type=float, default=1.0,
+    s.add_argument("--margin", type=_data.non_negative, default=1.0,
                    help="mean paired fit_TOT points an effect must add in cross-validation "
                    "(default %(default)g)")
     s.add_argument("--group", action="append", metavar="NAME=PATTERN",
@@ -64,19 +63,25 @@ def add_subparser(subparsers: argparse._SubParsersAction[argparse.ArgumentParser
 
 def _do_loop(a: argparse.Namespace) -> int:
     from ..data import check_distinct, load_tests
-    from ..data.setups import parse_groups
+    from ..data.setups import check_groups, parse_groups
     from ..loop.closed_loop import run_loop
+    from ..loop.cluster import check_address
 
     if a.workers is not None and a.workers < 1:
         raise UsageError(f"--workers {a.workers}: needs at least one worker")
+    out = _data.out_folder(a.out)
+    window_s, groups = _data.window(a), parse_groups(a.group)
+    if a.scheduler:
+        check_address(a.scheduler)
     codes, cpr = _data.channel_codes(a), a.counts_per_rev
     est = load_tests(a.estimate, codes, cpr)
     val = load_tests(a.validate, codes, cpr)
     check_distinct(estimation=est, validation=val)
-    r = run_loop(est, val, Path(a.out), a.rate, _data.window(a), a.margin,
-                 verbose=not a.quiet, groups=parse_groups(a.group),
+    check_groups(groups, [t.name for t in (*est, *val)])
+    r = run_loop(est, val, out, a.rate, window_s, a.margin,
+                 verbose=not a.quiet, groups=groups,
                  anywhere=a.allow_anywhere, scheduler=a.scheduler, workers=a.workers)
-    print((Path(a.out) / "report.md").read_text())
+    print((out / "report.md").read_text())
     print(f"wrote {a.out}/report.json, report.md, model.json and plots "
           f"({r.seconds} s)")
     return 0

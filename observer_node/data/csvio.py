@@ -75,7 +75,10 @@ def read_csv(path: str | Path, counts_per_rev: int | None = None) -> CrashTest:
         m = re.fullmatch(r"\s*([A-Za-z_]+)\s*(?:\[(.*)\])?\s*", col)
         if not m:
             raise CrashDataError(f"{path}:{header_line}: bad column header {col!r}")
-        columns[m.group(1).lower()] = (i, (m.group(2) or "").strip())
+        name = m.group(1).lower()
+        if name in columns:  # which of the two is the test's, only the file's author knows
+            raise CrashDataError(f"{path}:{header_line}: column {name!r} appears twice")
+        columns[name] = (i, (m.group(2) or "").strip())
     for need in ("time", "pulse", "brs"):
         if need not in columns:
             raise CrashDataError(f"{path}:{header_line}: missing column {need!r}")

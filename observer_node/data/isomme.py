@@ -42,7 +42,8 @@ VELOCITY_KEY = "Velocity test object 1"  # m/s; test object 1 is the vehicle or 
 
 @dataclass(frozen=True)
 class ChannelCodes:
-    """Channel codes searched for each signal, first match wins; ``?`` matches any character."""
+    """Channel codes searched for each signal, the first code a test has wins; ``?`` matches any
+    character, and a code that matches more than one of a test's channels is an error."""
 
     pulse: tuple[str, ...] = ("S0SLED000000ACXP", "10TUNN000000ACXP")
     brs: tuple[str, ...] = ("11RETR0000B1AN0P",)
@@ -315,14 +316,18 @@ def read_isomme(
 
     def pick(label: str, patterns: tuple[str, ...], required: bool) -> Channel | None:
         for p in patterns:
-            for code, ch in channels.items():
-                if _match(code, p):
-                    if code in twins:  # a backup or a second sensor: which is the test's?
-                        raise CrashDataError(
-                            f"{src.path}: {len(twins[code])} channel files hold the {label} "
-                            f"channel {code} ({', '.join(c.path for c in twins[code])}); "
-                            "keep the one the test used")
-                    return ch
+            hits = sorted(code for code in channels if _match(code, p))
+            if len(hits) > 1:  # which one the user meant, only the user knows
+                raise CrashDataError(f"{src.path}: {label} code {p} matches {len(hits)} "
+                                     f"channels ({', '.join(hits)}); give one code")
+            if hits:
+                code = hits[0]
+                if code in twins:  # a backup or a second sensor: which is the test's?
+                    raise CrashDataError(
+                        f"{src.path}: {len(twins[code])} channel files hold the {label} "
+                        f"channel {code} ({', '.join(c.path for c in twins[code])}); "
+                        "keep the one the test used")
+                return channels[code]
         if required:
             raise CrashDataError(
                 f"{src.path}: missing {label} channel (looked for {', '.join(patterns)}; "
@@ -335,6 +340,16 @@ def read_isomme(
     cr_ch = pick("CR", codes.cr, require_outputs)
     cd_ch = pick("CD", codes.cd, require_outputs)
     assert pulse_ch is not None and brs_ch is not None
+    seen: dict[str, str] = {}
+    for label, picked in (("crash pulse", pulse_ch), ("BRS", brs_ch), ("CR", cr_ch),
+                          ("CD", cd_ch)):
+        if picked is None:
+            continue
+        if picked.code in seen:  # one channel as input and output would fit 100 %
+            raise CrashDataError(f"{src.path}: channel {picked.code} is given as both the "
+                                 f"{seen[picked.code]} and the {label}; check the channel "
+                                 "codes")
+        seen[picked.code] = label
 
     used = [c for c in (pulse_ch, brs_ch, cr_ch, cd_ch) if c is not None]
     t0, dt = _time_base(pulse_ch, channels)

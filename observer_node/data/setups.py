@@ -57,6 +57,15 @@ def parse_groups(specs: list[str] | None) -> list[tuple[str, str]]:
     return out
 
 
+def check_groups(groups: list[tuple[str, str]], names: list[str]) -> None:
+    """One line naming a ``--group`` whose pattern matches none of the tests (a typo would
+    otherwise leave the tests to their metadata, silently)."""
+    for name, pattern in groups:
+        if not any(fnmatch.fnmatchcase(n, pattern) for n in names):
+            raise CrashDataError(f"--group {name}={pattern}: matches none of the tests "
+                                 f"({', '.join(names)})")
+
+
 def words(text: str) -> list[str]:
     """The words and numbers of ``text`` (any script), a number with the sign that stands
     before it after a space ("-10 DEG" is not "+10 DEG"; "3-POINT" is "3 POINT", "FULL-56"

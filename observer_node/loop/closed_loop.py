@@ -140,8 +140,13 @@ def _screened(est_tests: list[CrashTest], val_tests: list[CrashTest], rate_hz: f
     est_kept = [t for t in est_tests if t.name not in left_out]
     val_kept = [t for t in val_tests if t.name not in left_out]
     if len(est_kept) < 2 or not val_kept:
-        raise CrashDataError("too few tests left after leaving out broken ones: "
-                             + "; ".join(f"{b.test} {b.channel}: {b.reason}" for b in broken))
+        have = (f"{len(est_kept)} estimation and {len(val_kept)} validation test(s)"
+                " (the loop needs two estimation tests, to cross-validate, and one validation "
+                "test)")
+        raise CrashDataError(
+            f"too few tests: {have}"
+            + ("; left out as broken: " + "; ".join(f"{b.test} {b.channel}: {b.reason}"
+                                                     for b in broken) if broken else ""))
     est = make_dataset(est_kept, rate_hz, window_s)
     val = make_dataset(val_kept, rate_hz, window_s)
     prog.update(f"identifying the thesis grey-box model (using {runner.workers} worker(s))")
@@ -238,9 +243,9 @@ def _run(est_tests: list[CrashTest], val_tests: list[CrashTest], out: Path, rate
          anywhere: bool, runner: Runner) -> LoopReport:
     t_start = time.monotonic()
     prog = Progress("loop", enabled=verbose)
-    out.mkdir(parents=True, exist_ok=True)
     setups = assign_setups([*est_tests, *val_tests], groups)
     scr = _screened(est_tests, val_tests, rate_hz, window_s, runner, prog)
+    out.mkdir(parents=True, exist_ok=True)  # after what can refuse the tests: none left behind
     est, val, gb, broken = scr.est, scr.val, scr.gb, scr.broken
     est_setups = list(dict.fromkeys(est.setups))
     rigs_judged, not_judged = judged_setups(est, val)

@@ -10,12 +10,14 @@ from __future__ import annotations
 
 import logging
 import os
+import threading
 from collections.abc import Callable, Iterator
 from contextlib import contextmanager
 from typing import Any
 
 from ..errors import ObserverError
 
+CONNECT_TIMEOUT_S = 10.0  # to reach a scheduler given by --scheduler
 MAX_LOCAL_WORKERS = 4  # the local cluster's default: one worker per core, at most this many
 # one BLAS thread per worker process, set before the workers import numpy
 _WORKER_ENV = {"OPENBLAS_NUM_THREADS": "1", "OMP_NUM_THREADS": "1", "MKL_NUM_THREADS": "1"}
@@ -42,16 +44,55 @@ class Runner:
         return list(self.client.gather(futures))
 
 
+def check_address(scheduler: str) -> None:
+    """One line for a scheduler address Dask cannot parse (``tcp://HOST:PORT``), before the
+    tests are read."""
+    from distributed.comm.addressing import parse_address, parse_host_port
+    from distributed.comm.registry import backends
+
+    try:
+        scheme, loc = parse_address(scheduler, strict=False)
+        if scheme not in backends:
+            raise ValueError(f"unknown scheme {scheme!r} (Dask knows {', '.join(backends)})")
+        if scheme in ("tcp", "tls", "ws", "wss"):
+            parse_host_port(loc)
+    except (ValueError, TypeError) as e:
+        raise ClusterError(f"--scheduler {scheduler}: not a Dask scheduler address "
+                           f"(tcp://HOST:PORT): {e}") from None
+
+
+def _connect(scheduler: str, timeout_s: float = CONNECT_TIMEOUT_S) -> Any:
+    """A Client on the scheduler at ``scheduler``, or one line saying why not. Dask's own
+    timeout covers the connection, not the handshake after it: a server that accepts and never
+    answers (a web server on the port) would hold the loop forever, so the whole connection
+    runs in a thread that is given up on after ``timeout_s``."""
+    from dask.distributed import Client
+
+    check_address(scheduler)
+    got: dict[str, Any] = {}
+
+    def connect() -> None:
+        try:
+            got["client"] = Client(scheduler, timeout=f"{timeout_s}s")
+        except Exception as e:  # whatever stops the connection is reported below
+            got["error"] = e
+
+    t = threading.Thread(target=connect, name="dask-connect", daemon=True)
+    t.start()
+    t.join(timeout_s + 5)
+    if "client" in got:
+        return got["client"]
+    why = got.get("error") or f"no answer within {timeout_s + 5:g} s (is it a Dask scheduler?)"
+    raise ClusterError(f"cannot reach the Dask scheduler at {scheduler}: {why}")
+
+
 @contextmanager
 def cluster(scheduler: str | None = None, workers: int | None = None) -> Iterator[Runner]:
     """A :class:`Runner` on the cluster at ``scheduler``, or on a local one for this call."""
     from dask.distributed import Client, LocalCluster
 
     if scheduler:
-        try:
-            client = Client(scheduler, timeout="10s")
-        except (OSError, TimeoutError) as e:
-            raise ClusterError(f"cannot reach the Dask scheduler at {scheduler}: {e}") from e
+        client = _connect(scheduler)
         try:
             yield Runner(client)
         finally:
