@@ -1398,6 +1398,31 @@ def test_a_server_that_never_answers_is_given_up_on(tmp_path):
         assert time.monotonic() - t0 < 30
 
 
+def test_ctrl_c_during_the_refits_ends_in_one_line_and_exit_130(tmp_path):
+    """Ctrl-C while the refits run on Dask: "interrupted", exit 130, no page of tracebacks
+    from the gather's waiting tasks nor from the workers (a hostile user's finding, session
+    56)."""
+    import os
+    import signal
+
+    p = subprocess.Popen([sys.executable, "-m", "observer_node", "loop", "--estimate",
+                          "campaign-a/R16_00[135]", "--validate", "campaign-a/R16_002", "--out",
+                          str(tmp_path / "out"), "--workers", "1"],
+                         stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True,
+                         start_new_session=True)
+    assert p.stderr is not None
+    seen = []
+    for line in p.stderr:  # the progress lines; interrupt once the refits are under way
+        seen.append(line)
+        if "refitting with" in line or "cross-validating" in line:
+            os.killpg(p.pid, signal.SIGINT)  # to the whole group, as a terminal's Ctrl-C
+            break
+    rest = p.stderr.read()
+    assert p.wait(timeout=120) == 130, "".join(seen) + rest
+    assert "Traceback" not in rest and "exception was never retrieved" not in rest, rest
+    assert rest.strip().splitlines()[-1] == "observer-node: interrupted"
+
+
 def test_gains_of_varying_size_on_every_test_are_accepted():
     """A belt that unloads far more in two crashes than in the other two: the t-interval
     reaches below zero, but four of four tests improve (sign test p = 0.0625)."""

@@ -55,6 +55,7 @@ def main(argv: list[str] | None = None) -> int:
         print(f"observer-node: error: {e}", file=sys.stderr)
         return e.exit_code
     except KeyboardInterrupt:
+        print("observer-node: interrupted", file=sys.stderr)
         return 130
     except BrokenPipeError:
         return 0

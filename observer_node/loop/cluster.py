@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import logging
 import os
+import signal
 import threading
 from collections.abc import Callable, Iterator
 from contextlib import contextmanager
@@ -41,7 +42,13 @@ class Runner:
         if not args:
             return []
         futures = [self.client.submit(f, *a, pure=False) for a in args]
-        return list(self.client.gather(futures))
+        try:
+            return list(self.client.gather(futures))
+        except KeyboardInterrupt:
+            # Ctrl-C: the gather's waiting tasks end with an error nobody retrieves, which
+            # asyncio would print as a page of tracebacks while the client closes
+            logging.getLogger("asyncio").setLevel(logging.CRITICAL)
+            raise
 
 
 def check_address(scheduler: str) -> None:
@@ -99,9 +106,18 @@ def cluster(scheduler: str | None = None, workers: int | None = None) -> Iterato
             client.close()
         return
     n = workers or min(MAX_LOCAL_WORKERS, len(os.sched_getaffinity(0)))
-    local = LocalCluster(n_workers=n, threads_per_worker=1, processes=True,
-                         dashboard_address=":0", silence_logs=logging.CRITICAL,
-                         env=_WORKER_ENV)
+    # Ctrl-C reaches every process of the terminal's group: the workers are started with it
+    # ignored (Python keeps an ignored SIGINT ignored), so that this process alone stops
+    # them, and the user sees one line rather than a traceback from each worker
+    main = threading.current_thread() is threading.main_thread()  # where signals are set
+    sigint = signal.signal(signal.SIGINT, signal.SIG_IGN) if main else None
+    try:
+        local = LocalCluster(n_workers=n, threads_per_worker=1, processes=True,
+                             dashboard_address=":0", silence_logs=logging.CRITICAL,
+                             env=_WORKER_ENV)
+    finally:
+        if main:
+            signal.signal(signal.SIGINT, sigint)
     client = Client(local)
     try:
         yield Runner(client)
