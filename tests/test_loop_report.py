@@ -250,6 +250,15 @@ def test_a_named_airbag_says_a_webbing_knee_looks_alike(r16_loop) -> None:
     assert "- looks alike:" in section.split("\n## ", 1)[0]  # in the bag's own section
 
 
+def test_a_test_named_like_another_setup_is_asked_about(r16_loop) -> None:
+    _, r = r16_loop
+    assert "Check the metadata" not in markdown(r)
+    odd = dataclasses.replace(r.setups[0], named_elsewhere={"SLED_009": "SLED"})
+    md = markdown(dataclasses.replace(r, setups=[odd, *r.setups[1:]]))
+    assert md.count("**Check the metadata:** SLED_009 is named like setup SLED's tests, but "
+                    f"its .mme (type of test, title, test object) puts it in {odd.name}") == 1
+
+
 def test_a_sensor_effect_says_the_other_transducer_can_read_alike(r16_loop) -> None:
     # held-out set V: CR's slow clock was named a sensor effect on CD; the report must not
     # send the engineer to one transducer only, whichever shape the correction took

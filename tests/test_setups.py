@@ -69,6 +69,25 @@ def test_a_title_punctuated_another_way_is_the_same_rig():
         "Test", "5.5", "ms", "3", "POINT", "FULL", "56", "30"]
 
 
+def test_a_test_whose_metadata_says_another_rig_than_its_name_is_kept_and_said():
+    """R16_005 with SLED's title (a copied .mme): the metadata decides, as the rule says,
+    and the setup names the test for the report to ask about it (a hostile user's finding,
+    session 56)."""
+    tests = load_tests(["campaign-a"])
+    sled = next(x for x in tests if x.name == "SLED_001").meta
+    t = next(x for x in tests if x.name == "R16_005")
+    t.meta.update({k: sled[k] for k in ("Type of the test", "Title", "Name of test object 1")})
+    by = {s.name: s for s in assign_setups(tests)}
+    sled_rig = next(x for x in tests if x.name == "SLED_001").setup  # its tests' prefixes differ
+    assert t.setup == sled_rig and "R16_005" in by[sled_rig].tests
+    assert by[sled_rig].named_elsewhere == {"R16_005": "R16"}
+    assert by[sled_rig].as_dict()["named_like"] == {"R16_005": "R16"}
+    assert not by["R16"].named_elsewhere and not by["FULL"].named_elsewhere
+    # grouped by the user, nothing to ask
+    by = {s.name: s for s in assign_setups(tests, [("R16", "R16_*")])}
+    assert not any(s.named_elsewhere for s in by.values())
+
+
 def test_names_without_a_separator_are_grouped_by_metadata_and_overridden_by_group():
     cfg = {s: PlantConfig(noise=False) for s in ("R16", "SLED", "FULL")}
     tests = simulate_mixed({"R16": 2, "SLED": 2, "FULL": 2}, 3, cfg, prefix="T")

@@ -13,6 +13,10 @@ The rule, in order:
 3. A test with none of these keys (a CSV without a header) is grouped by its name prefix
    when the name has one, else it joins setup UNKNOWN.
 
+A test the metadata puts with tests of another name (R16_005 among SLED_*: a copied ``.mme``)
+stays where the metadata says, and its setup names it (``named_elsewhere``) for the report to
+ask about it.
+
 Placement: an effect that needs what a rig does not have is impossible there (its ``needs`` in
 :mod:`observer_node.model.effects`). Today that is the airbag, impossible where the metadata
 (title, type, comments) says hard seat, no interior or no airbag. ``loop --allow-anywhere``
@@ -40,10 +44,14 @@ class Setup:
     how: str  # "--group PATTERN", "metadata: <key values>" or "name prefix"
     text: str = ""  # the metadata the placement rules read
     impossible: dict[str, str] = field(default_factory=dict)  # effect -> why not
+    # tests the metadata put here though their name is that of another setup's tests (a
+    # copied .mme, a mislabelled test): kept where the metadata says, and said
+    named_elsewhere: dict[str, str] = field(default_factory=dict)  # test -> the other setup
 
     def as_dict(self) -> dict:
         return {"name": self.name, "tests": self.tests, "rule": self.how,
-                **({"impossible": self.impossible} if self.impossible else {})}
+                **({"impossible": self.impossible} if self.impossible else {}),
+                **({"named_like": self.named_elsewhere} if self.named_elsewhere else {})}
 
 
 def parse_groups(specs: list[str] | None) -> list[tuple[str, str]]:
@@ -112,7 +120,28 @@ def assign_setups(tests: list[CrashTest], groups: list[tuple[str, str]] | None =
         for t in members:
             t.setup = names[key]
         out.append(Setup(names[key], [t.name for t in members], how[key], text, impossible))
+    _name_checks(out, by_key, names)
     return out
+
+
+def _name_checks(setups: list[Setup], by_key: dict[tuple, list[CrashTest]],
+                 names: dict[tuple, str]) -> None:
+    """Fill each metadata setup's ``named_elsewhere``: a test whose name prefix is not its
+    own setup's (the prefix most of its tests share) but another setup's."""
+    common: dict[str, str | None] = {}
+    for key, members in by_key.items():
+        prefixes = [_prefix(t.name) for t in members]
+        top = max(set(prefixes), key=prefixes.count)
+        common[names[key]] = top if prefixes.count(top) * 2 > len(prefixes) else None
+    by_prefix = {pre: name for name, pre in common.items() if pre}
+    for setup, (key, members) in zip(setups, by_key.items(), strict=True):
+        if key[0] != "meta":
+            continue
+        for t in members:
+            pre = _prefix(t.name)
+            other = by_prefix.get(pre or "")
+            if other is not None and other != setup.name and pre != common[setup.name]:
+                setup.named_elsewhere[t.name] = other
 
 
 def _names(by_key: dict[tuple, list[CrashTest]]) -> dict[tuple, str]:

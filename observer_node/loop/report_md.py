@@ -21,6 +21,10 @@ def markdown(r: LoopReport) -> str:
     lines += [f"| {s.name} | {', '.join(s.tests)} | {s.how} | "
               f"{'; '.join(f'{k} ({v})' for k, v in s.impossible.items()) or '-'} |"
               for s in r.setups]
+    lines += [f"\n**Check the metadata:** {t} is named like setup {other}'s tests, but its "
+              f".mme (type of test, title, test object) puts it in {s.name}, where it is "
+              "kept; if its name is right, correct the .mme or use --group."
+              for s in r.setups for t, other in s.named_elsewhere.items()]
     if r.not_judged:
         lines += ["", "**Not judged** (too few estimation tests to tell an effect there from "
                   "one test's scatter; nothing is claimed about them, and an effect named on "
