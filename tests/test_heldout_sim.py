@@ -5296,15 +5296,22 @@ BEFORE_AO = _cases_of(heldout_sets.before("ao"))
 # the broken test, the transducer error, and every physical case of one effect (its rigs moved,
 # the others untouched)
 WATCHED_AO = ("hao_broken_cr_hum", "hao_cr_late", *ONE_PHYSICAL_AO)
-# the draws found impossible, drawn again by the next seeds in the order found (draw_ao.REDRAWN)
-REDRAWN_AO: list[tuple[str, int]] = []
+# the draws found impossible, drawn again by the next seeds in the order found (draw_ao.REDRAWN):
+# none at the draw; at the sizes the pelvis once (its slip force running away at its first
+# size), the input gain once (the spool below the band, its next size a run-away), the late BRS
+# twice (1.23 and 2.65 ms below the delay's band)
+REDRAWN_AO: list[tuple[str, int]] = [("pelvis_coupling", 50001), ("input_gain", 50002),
+                                     ("brs_late", 50003), ("brs_late", 50004)]
+# each rejected draw, in that order: its form (or delay), rigs and whether its pairing was reused
+REJECTED_AO = [("pelvis_submarine", ("SLED", "FULL"), True), ("spool_buildup", ("R16",), True),
+               (0.00123, None, True), (0.00265, None, True)]
 # the two-effect case
 TWO_AO = "hao_two_bilinear_r16_sled_power_full"
 # the cases on an earlier set's pairing, in the draw's order (none free for their rigs:
 # set AL's reuse rule, taken by draw_ao as it stands)
 REUSED_AO = ("hao_bilinear_r16_sled", "hao_friction_sled_full", "hao_hysteresis_full",
-             "hao_toe_r16_full", "hao_fabric_full", "hao_submarine_sled_full", "hao_spool_r16",
-             TWO_AO, "hao_pulse_late_2p21ms", "hao_brs_late_1p23ms")
+             "hao_toe_r16_full", "hao_fabric_full", "hao_pelvis_knee_full", "hao_eccentric_sled",
+             TWO_AO, "hao_pulse_late_2p21ms", "hao_brs_late_4p68ms")
 
 
 @pytest.fixture(scope="module")
@@ -5324,13 +5331,13 @@ def test_set_ao_covers_the_general_list() -> None:
 
 
 def test_set_ao_follows_its_draw() -> None:
-    """Set AO's designer's choices are numpy's default_rng(50000)'s (``draw_ao.py``; no draw
-    found impossible, ``REDRAWN`` empty), followed as drawn: each kind's form, rigs, counts and
-    mix; the two-effect case's kinds, forms, rigs, counts and mix; the delays, their counts and
-    mixes; the transducer error's output, form, counts and mix; the broken test's channel, form,
-    test, counts and mix; the clean cases' mixes. Set AN's process, no change: any case with no
-    pairing free for its rigs reuses one A-AN ran, among those its rules allow; every other
-    case takes a free one (run by no earlier set, nor drawn before it)."""
+    """Set AO's designer's choices are numpy's default_rng(50000)'s (``draw_ao.py``; four draws
+    found impossible at the sizes, ``REDRAWN``), followed as drawn: each kind's form, rigs,
+    counts and mix; the two-effect case's kinds, forms, rigs, counts and mix; the delays, their
+    counts and mixes; the transducer error's output, form, counts and mix; the broken test's
+    channel, form, test, counts and mix; the clean cases' mixes. Set AN's process, no change:
+    any case with no pairing free for its rigs reuses one A-AN ran, among those its rules
+    allow; every other case takes a free one (run by no earlier set, nor drawn before it)."""
     d = draw_ao.draw(50000)
     assert d == draw_ao.draw()  # reproducible from its seed
     earlier = (*"abcdefghijklmnopqrstuvwxyz", "aa", "ab", "ac", "ad", "ae", "af", "ag", "ah",
@@ -5347,6 +5354,9 @@ def test_set_ao_follows_its_draw() -> None:
     final = [*d["single"].values(), d["two"], *(d[k] for k in (
         "pulse_late", "brs_late", "transducer", "broken", "clean48", "clean96"))]
     assert {(v["est"], v["val"]) for v in final if v["reused"]} == reused
+    # the rejected draws, each in its place (rigs as drawn; a delay by its delay)
+    assert [(f.get("form", f.get("delay_s")), f.get("rigs"), f["reused"])
+            for _, _, f in d["rejected"]] == REJECTED_AO
     assert _pairing(BY_NAME_AO[TWO_AO]) == ((2, 2, 2), (1, 1, 4)) and d["two"]["reused"]
     # without set AL's reuse (the two-effect case's alone, set AK's) the first of them draws none
     assert draw_w.drawn(50000, draw_ao.EARLIER, reuse_two=True)["single"][

@@ -114,6 +114,24 @@ A-AN as the earlier sets:
    50002, ...) in the order found, after the rest, the pairings of everything drawn before
    still taken (``REDRAWN``; a case with none free, an earlier set's, by the reuse above).
 
+Judged at the sizes by these words (written down with the sizes, after the draw, before any
+loop run; no rule changed, the rules above as they were committed before the first draw): "the
+order found" (6) is the order in which the impossibilities became known in the sizing as it
+ran: the slip force's run-away found by the test at the first sizes, before any cost; then the
+first sizes costed one at a time in ``cases_ao.py``'s order (``costs --set ao``'s), each
+impossibility known at the cost that made it so (the spool's at its first cost, its next size
+a run-away by the spool's radius without costing it, as set AI judged; so the input gain's
+redraw by 50002 before the late BRS's by 50003); the redraws after the rest at their first
+sizes, then the steps. A rejected redraw is drawn again by the next seed, as set AM's belt
+unloading was (the late BRS twice: 50003, 50004). In the two-effect case the effect stepped
+by rule 4 is chosen once, when each alone is first in band and the two together are not (the
+higher alone then), and stays the stepped effect through its steps even once its cost alone
+falls below the other's, as set AF's and set AI's toes were stepped; the size it had then is
+the first of its four. A cost just past an edge is out of band (6.02 above 6; no rounding to
+the band). A transducer error whose size is a delay (cr_late) is banded as a transducer error,
+1.5-6, not as one of the drawn delays. The run-away check of a redraw's sizes is against the
+set at the first sizes with each rejected draw's tests replaced by its redraw's.
+
     python -m benchmarks.heldout.draw_ao [--seed 50000]
 """
 
@@ -128,8 +146,14 @@ from .sets import before
 SEED = 50000
 # a case whose draw proved impossible, drawn again, whole, by the next seed's generator (one per
 # redraw, in this order, after the rest), the pairings of everything drawn before still taken:
-# none yet (the set not yet drawn)
-REDRAWN: tuple[tuple[str, int], ...] = ()
+# none at the draw (every case drew a pairing: a free one, or, with none free, one A-AN ran);
+# at the sizes, four, in the order found: the pelvis's first draw (a slip force on SLED+FULL)
+# ran away at its first size; the input gain's spool build-up cost below the band, its next
+# size a run-away by the spool's radius; the late BRS's first delay, 1.23 ms, and its redraw,
+# 2.65 ms, cost below the delay's band; pelvis_knee on FULL, brs_eccentric on SLED and the late
+# BRS at 4.68 ms came in band at their first sizes (see ``cases_ao.py``)
+REDRAWN: tuple[tuple[str, int], ...] = (("pelvis_coupling", 50001), ("input_gain", 50002),
+                                         ("brs_late", 50003), ("brs_late", 50004))
 EARLIER = before("ao")
 __all__ = ["BROKEN", "BRS_GAIN", "KINDS", "REDRAWN", "SEED", "TRANSDUCER", "draw", "forms",
            "scopes"]
