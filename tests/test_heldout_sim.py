@@ -33,6 +33,7 @@ from benchmarks.heldout import (
     draw_al,
     draw_am,
     draw_an,
+    draw_ao,
     draw_v,
     draw_w,
     draw_x,
@@ -58,6 +59,7 @@ from benchmarks.heldout.cases_ak import BY_NAME_AK, ONE_PHYSICAL_AK
 from benchmarks.heldout.cases_al import BY_NAME_AL, ONE_PHYSICAL_AL
 from benchmarks.heldout.cases_am import BY_NAME_AM, ONE_PHYSICAL_AM
 from benchmarks.heldout.cases_an import BY_NAME_AN, ONE_PHYSICAL_AN
+from benchmarks.heldout.cases_ao import BY_NAME_AO, ONE_PHYSICAL_AO
 from benchmarks.heldout.cases_p import BY_NAME_P
 from benchmarks.heldout.cases_q import BY_NAME_Q
 from benchmarks.heldout.cases_r import BY_NAME_R
@@ -2326,12 +2328,11 @@ def _best_lag(y: np.ndarray, y0: np.ndarray) -> int:
     return int(np.argmin(miss))
 
 
-def test_set_q_cr_late_moves_cr_only(set_q: Path) -> None:
-    """CR is its own twin's written late (within the CFC 180 filter's noise), every test; CD,
-    pulse and BRS untouched."""
-    c = heldout_sets.select(["hq_cr_late"], "q")[0]
+def _cr_late_moves_cr_only(sets_dir: Path, c: cases.Case) -> None:
+    """Set Q's check of CR's late digitiser: CR is its own twin's written late (within the CFC
+    180 filter's noise), every test; CD, pulse and BRS untouched."""
     (e,) = c.effects
-    for name, on, off in _twelve(set_q / "on" / c.name, set_q / "off" / c.name):
+    for name, on, off in _twelve(sets_dir / "on" / c.name, sets_dir / "off" / c.name):
         for which in ("cd", "pulse"):
             assert np.array_equal(_channel(on, name, which), _channel(off, name, which))
         assert np.array_equal(_brs(on, name), _brs(off, name))
@@ -2341,6 +2342,12 @@ def test_set_q_cr_late_moves_cr_only(set_q: Path) -> None:
         moved = np.abs(cr - cr0).max()
         assert miss < 1.0 and miss < 0.2 * moved and moved > 2.0, (name, miss, moved)
         assert _best_lag(cr, cr0) == round(e.size * physics.FS_HZ)
+
+
+def test_set_q_cr_late_moves_cr_only(set_q: Path) -> None:
+    """CR is its own twin's written late (within the CFC 180 filter's noise), every test; CD,
+    pulse and BRS untouched."""
+    _cr_late_moves_cr_only(set_q, heldout_sets.select(["hq_cr_late"], "q")[0])
 
 
 def _cd_rc_filter_lags_cd_only(sets_dir: Path, c: cases.Case) -> None:
@@ -3888,9 +3895,9 @@ def set_aa(tmp_path_factory: pytest.TempPathFactory) -> Path:
 
 @pytest.mark.parametrize("letters",
                          ["x", "y", "z", "aa", "ab", "ac", "ad", "ae", "af", "ag", "ah",
-                          "ai", "aj", "ak", "al", "am", "an"])
+                          "ai", "aj", "ak", "al", "am", "an", "ao"])
 def test_a_drawn_set_is_registered(letters: str, tmp_path: Path) -> None:
-    """Sets X-AN: each is its ``cases_<letters>.SET_<LETTERS>`` under its letters (either
+    """Sets X-AO: each is its ``cases_<letters>.SET_<LETTERS>`` under its letters (either
     case), for sets.select, make_sets and costs, after every set before it."""
     own = getattr(importlib.import_module(f"benchmarks.heldout.cases_{letters}"),
                   f"SET_{letters.upper()}")
@@ -3930,8 +3937,10 @@ def test_sets_before_are_names_not_letters() -> None:
                                          "ah", "ai", "aj", "ak", "al")  # A-AL
     assert heldout_sets.before("an") == (*after_aa, "ab", "ac", "ad", "ae", "af", "ag",
                                          "ah", "ai", "aj", "ak", "al", "am")  # A-AM
-    with pytest.raises(ValueError, match="unknown case set 'ao'"):
-        heldout_sets.before("ao")
+    assert heldout_sets.before("ao") == (*after_aa, "ab", "ac", "ad", "ae", "af", "ag",
+                                         "ah", "ai", "aj", "ak", "al", "am", "an")  # A-AN
+    with pytest.raises(ValueError, match="unknown case set 'ap'"):
+        heldout_sets.before("ap")
     # a draw after AA takes AA's pairings; at this seed, without AA one single draws one of them
     aa = {_pairing(c) for c in SET_AA}
 
@@ -5280,6 +5289,114 @@ def test_set_an_has_no_run_aways(set_an: Path) -> None:
     _no_run_aways(SET_AN, set_an)
 
 
+# ------------------------------------------------------------------ set AO (cases_ao.py)
+
+SET_AO = heldout_sets.case_set("ao")
+BEFORE_AO = _cases_of(heldout_sets.before("ao"))
+# the broken test, the transducer error, and every physical case of one effect (its rigs moved,
+# the others untouched)
+WATCHED_AO = ("hao_broken_cr_hum", "hao_cr_late", *ONE_PHYSICAL_AO)
+# the draws found impossible, drawn again by the next seeds in the order found (draw_ao.REDRAWN):
+# none at the draw; at the sizes the pelvis once (its slip force running away at its first
+# size), the input gain once (the spool below the band, its next size a run-away), the late BRS
+# twice (1.23 and 2.65 ms below the delay's band)
+REDRAWN_AO: list[tuple[str, int]] = [("pelvis_coupling", 50001), ("input_gain", 50002),
+                                     ("brs_late", 50003), ("brs_late", 50004)]
+# each rejected draw, in that order: its form (or delay), rigs and whether its pairing was reused
+REJECTED_AO = [("pelvis_submarine", ("SLED", "FULL"), True), ("spool_buildup", ("R16",), True),
+               (0.00123, None, True), (0.00265, None, True)]
+# the two-effect case
+TWO_AO = "hao_two_bilinear_r16_sled_power_full"
+# the cases on an earlier set's pairing, in the draw's order (none free for their rigs:
+# set AL's reuse rule, taken by draw_ao as it stands)
+REUSED_AO = ("hao_bilinear_r16_sled", "hao_friction_sled_full", "hao_hysteresis_full",
+             "hao_toe_r16_full", "hao_fabric_full", "hao_pelvis_knee_full", "hao_eccentric_sled",
+             TWO_AO, "hao_pulse_late_2p21ms", "hao_brs_late_4p68ms")
+
+
+@pytest.fixture(scope="module")
+def set_ao(tmp_path_factory: pytest.TempPathFactory) -> Path:
+    return _generate(tmp_path_factory, "ao", WATCHED_AO)
+
+
+def test_set_ao_covers_the_general_list() -> None:
+    """Set AO as its brief asks: clean cases at 48 and 96 counts; each kind of the library a
+    loop can name, as physics, once in a case of its own; two effects of different kinds on
+    different rigs in one case; a broken estimation test; a transducer error on CR alone (as
+    drawn); a late pulse and a late BRS at delays in 1-5 ms no earlier set used on any input;
+    6 + 6 tests, every rig an estimation part holds held twice or more; an effect on some rigs
+    only rests on two estimation and two validation tests of them beside an estimation test of
+    a rig it spares."""
+    _covers_the_general_list(SET_AO, BEFORE_AO, "cr", ONE_PHYSICAL_AO, draw_ao.KINDS)
+
+
+def test_set_ao_follows_its_draw() -> None:
+    """Set AO's designer's choices are numpy's default_rng(50000)'s (``draw_ao.py``; four draws
+    found impossible at the sizes, ``REDRAWN``), followed as drawn: each kind's form, rigs,
+    counts and mix; the two-effect case's kinds, forms, rigs, counts and mix; the delays, their
+    counts and mixes; the transducer error's output, form, counts and mix; the broken test's
+    channel, form, test, counts and mix; the clean cases' mixes. Set AN's process, no change:
+    any case with no pairing free for its rigs reuses one A-AN ran, among those its rules
+    allow; every other case takes a free one (run by no earlier set, nor drawn before it)."""
+    d = draw_ao.draw(50000)
+    assert d == draw_ao.draw()  # reproducible from its seed
+    earlier = (*"abcdefghijklmnopqrstuvwxyz", "aa", "ab", "ac", "ad", "ae", "af", "ag", "ah",
+               "ai", "aj", "ak", "al", "am", "an")
+    assert earlier == draw_ao.EARLIER and draw_ao.SEED == 50000
+    assert (draw_ao.KINDS, draw_ao.BRS_GAIN) == (draw_w.KINDS, draw_w.BRS_GAIN)
+    assert (draw_ao.TRANSDUCER, draw_ao.BROKEN) == (draw_w.TRANSDUCER, draw_w.BROKEN)
+    _singles_follow(d, SET_AO, ONE_PHYSICAL_AO, draw_ao)
+    assert [(w, s) for w, s, _ in d["rejected"]] == list(draw_ao.REDRAWN) == REDRAWN_AO
+    _the_rest_follows(d, SET_AO, draw_ao)
+    # each case's pairing: free when one was left for its rigs, else one A-AN ran
+    _pairings_follow(d, BEFORE_AO)
+    reused = {_pairing(BY_NAME_AO[n]) for n in REUSED_AO}
+    final = [*d["single"].values(), d["two"], *(d[k] for k in (
+        "pulse_late", "brs_late", "transducer", "broken", "clean48", "clean96"))]
+    assert {(v["est"], v["val"]) for v in final if v["reused"]} == reused
+    # the rejected draws, each in its place (rigs as drawn; a delay by its delay)
+    assert [(f.get("form", f.get("delay_s")), f.get("rigs"), f["reused"])
+            for _, _, f in d["rejected"]] == REJECTED_AO
+    assert _pairing(BY_NAME_AO[TWO_AO]) == ((2, 2, 2), (1, 1, 4)) and d["two"]["reused"]
+    # without set AL's reuse (the two-effect case's alone, set AK's) the first of them draws none
+    assert draw_w.drawn(50000, draw_ao.EARLIER, reuse_two=True)["single"][
+        "chest_stiffening"]["est"] is None
+
+
+def test_set_ao_lab_side_is_as_drawn_and_unnamed() -> None:
+    """One broken estimation test, the only thing expected; one transducer error on CR on every
+    test, nothing physical named; AO's physics earlier sets' forms only."""
+    _lab_side_as_drawn(SET_AO, "cr")
+    assert {k for k in _keys(SET_AO) if physics.EFFECTS[k]} <= _keys(BEFORE_AO)
+
+
+@pytest.mark.parametrize("case", sorted(ONE_PHYSICAL_AO))
+def test_set_ao_physics_moves_its_rigs_only(set_ao: Path, case: str) -> None:
+    """Each physical case moves what its form moves on every test of its rigs (the chest's,
+    belt's, bag's and pelvis's forms and the spool's build-up CR and CD, the pulse untouched)
+    and leaves the tests of a rig it spares untouched to the bit."""
+    _moves_its_rigs_only(set_ao, BY_NAME_AO[case])
+
+
+def test_set_ao_cr_hum_is_on_cr_from_the_start(set_ao: Path) -> None:
+    """The broken test's CR hums at the mains frequency from before the crash, its amplitude on
+    the flat pre-crash line (set AL's form and check, set F's before it), its CD and pulse
+    untouched; every other test untouched."""
+    c = BY_NAME_AO["hao_broken_cr_hum"]
+    assert c.expect_broken == ("FULL_007",)
+    _cr_hum_is_on_cr_from_the_start(set_ao, c)
+
+
+def test_set_ao_cr_late_moves_cr_only(set_ao: Path) -> None:
+    """CR is its own twin's written late (within the CFC 180 filter's noise), every test (set
+    Q's form and check, at this set's delay); CD, pulse and BRS untouched."""
+    _cr_late_moves_cr_only(set_ao, BY_NAME_AO["hao_cr_late"])
+
+
+def test_set_ao_has_no_run_aways(set_ao: Path) -> None:
+    _no_run_aways(SET_AO, set_ao)
+
+
 def test_more_tests_doubles_the_estimation_tests_only(tmp_path: Path) -> None:
     """``more_tests``: K times each rig's estimation tests, the validation tests and the
     effects as written, another seed (new crashes), a name that says so; the broken test's name
@@ -5334,7 +5451,7 @@ def test_loop_heldout_on_a_folder_without_the_case_is_one_line(tmp_path: Path) -
     assert "--case haa_clean48 --est-times 2 --out" in r.stderr
 
 
-# the drawn sets X-AN: each one's seed, and its cases that reuse an earlier set's pairing by
+# the drawn sets X-AO: each one's seed, and its cases that reuse an earlier set's pairing by
 # its draw's rule (the two-effect case since set Z: none was free for its rigs; since set AL any
 # case left none free)
 DRAWN = {"x": (33000, ()), "y": (34000, ()), "z": (35000, (TWO_Z,)),
@@ -5342,7 +5459,7 @@ DRAWN = {"x": (33000, ()), "y": (34000, ()), "z": (35000, (TWO_Z,)),
          "ad": (39000, (TWO_AD,)), "ae": (40000, (TWO_AE,)), "af": (41000, (TWO_AF,)),
          "ag": (42000, (TWO_AG,)), "ah": (43000, (TWO_AH,)), "ai": (44000, (TWO_AI,)),
          "aj": (45000, (TWO_AJ,)), "ak": (46000, (TWO_AK,)), "al": (47000, REUSED_AL),
-         "am": (48000, REUSED_AM), "an": (49000, REUSED_AN)}
+         "am": (48000, REUSED_AM), "an": (49000, REUSED_AN), "ao": (50000, REUSED_AO)}
 
 
 @pytest.mark.parametrize("letters", DRAWN)

@@ -34,7 +34,8 @@ AK (``cases_ak``, written after set AJ by another engineer, its choices drawn, t
 AL (``cases_al``, written after set AK by another engineer, its choices drawn, the same way but
 that any case left no free pairing reuses an earlier set's), set AM (``cases_am``, written after
 set AL by another engineer, its choices drawn, set AL's way), set AN (``cases_an``, written after
-set AM by another engineer, its choices drawn, set AM's way)."""
+set AM by another engineer, its choices drawn, set AM's way), set AO (``cases_ao``, written after
+set AN by another engineer, its choices drawn, set AN's way)."""
 
 from __future__ import annotations
 
@@ -53,6 +54,7 @@ from .cases_ak import SET_AK
 from .cases_al import SET_AL
 from .cases_am import SET_AM
 from .cases_an import SET_AN
+from .cases_ao import SET_AO
 from .cases_b import SET_B
 from .cases_c import SET_C
 from .cases_d import SET_D
@@ -88,7 +90,7 @@ _BY_NAME: dict[str, list[Case]] = {
     "aa": SET_AA, "ab": SET_AB, "ac": SET_AC, "ad": SET_AD, "ae": SET_AE,
     "af": SET_AF, "ag": SET_AG, "ah": SET_AH, "ai": SET_AI,
     "aj": SET_AJ, "ak": SET_AK, "al": SET_AL, "am": SET_AM,
-    "an": SET_AN}
+    "an": SET_AN, "ao": SET_AO}
 SETS = tuple(_BY_NAME)
 
 
@@ -108,18 +110,20 @@ def before(name: str) -> tuple[str, ...]:
     ``"ak"``; before set AM, those, ``"aa"``, ``"ab"``, ``"ac"``, ``"ad"``, ``"ae"``, ``"af"``,
     ``"ag"``, ``"ah"``, ``"ai"``, ``"aj"``, ``"ak"`` and ``"al"``; before set AN, those,
     ``"aa"``, ``"ab"``, ``"ac"``, ``"ad"``, ``"ae"``, ``"af"``, ``"ag"``, ``"ah"``, ``"ai"``,
-    ``"aj"``, ``"ak"``, ``"al"`` and ``"am"``); ValueError for an unknown name. Names, not
-    letters: set AA is one set, not set A twice."""
+    ``"aj"``, ``"ak"``, ``"al"`` and ``"am"``; before set AO, those, ``"aa"``, ``"ab"``,
+    ``"ac"``, ``"ad"``, ``"ae"``, ``"af"``, ``"ag"``, ``"ah"``, ``"ai"``, ``"aj"``, ``"ak"``,
+    ``"al"``, ``"am"`` and ``"an"``); ValueError for an unknown name. Names, not letters: set
+    AA is one set, not set A twice."""
     _known(name)
     return SETS[:SETS.index(name)]
 
 
 def case_set(name: str) -> list[Case]:
     """Set A (``cases``), or set B ... Z, AA, AB, AC, AD, AE, AF, AG, AH, AI, AJ, AK, AL, AM,
-    AN (``cases_b`` ... ``cases_z``, ``cases_aa``, ``cases_ab``, ``cases_ac``, ``cases_ad``,
-    ``cases_ae``, ``cases_af``, ``cases_ag``, ``cases_ah``, ``cases_ai``, ``cases_aj``,
-    ``cases_ak``, ``cases_al``, ``cases_am``, ``cases_an``) by its lower-case letters;
-    ValueError for another name."""
+    AN, AO (``cases_b`` ... ``cases_z``, ``cases_aa``, ``cases_ab``, ``cases_ac``,
+    ``cases_ad``, ``cases_ae``, ``cases_af``, ``cases_ag``, ``cases_ah``, ``cases_ai``,
+    ``cases_aj``, ``cases_ak``, ``cases_al``, ``cases_am``, ``cases_an``, ``cases_ao``) by its
+    lower-case letters; ValueError for another name."""
     _known(name)
     return list(_BY_NAME[name])
 
