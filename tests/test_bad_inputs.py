@@ -416,6 +416,78 @@ def test_an_output_folder_that_cannot_be_one_is_refused_before_any_work(tmp_path
     assert afile.read_text() == "not a folder"
 
 
+# identify and simulate, as a hostile user tried them (2026-12-03): one line, exit 2, before
+# any work, nothing left behind
+OTHER_OPTION_CASES: dict[str, tuple[list[str], str]] = {
+    "identify --nmax 0": (["identify", "--model", "arx", "--nmax", "0"], "--nmax"),
+    "identify --order 0": (["identify", "--model", "n4sid", "--order", "0"], "--order"),
+    "identify --m1 nan": (["identify", "--model", "greybox", "--m1", "nan"], "--m1"),
+    "identify --out a folder": (["identify", "--model", "arx", "--out", "{tmp}"],
+                                "is a folder; give a file name"),
+    "identify --out under a file": (["identify", "--model", "arx", "--out",
+                                     "{tmp}/afile/m.json"], "cannot be made: "),
+    "simulate --count 0": (["simulate", "--count", "0"], "--count"),
+    "simulate --seed -1": (["simulate", "--seed", "-1"], "--seed"),
+    "simulate --effect nan": (["simulate", "--effect", "chest_stiffening=nan"], "SCALE"),
+    "simulate --effect -1": (["simulate", "--effect", "chest_stiffening=-1"], "SCALE"),
+    "simulate --effect twice": (["simulate", "--effect", "chest_stiffening",
+                                 "--effect", "chest_stiffening=2"], "given twice"),
+    "simulate --zip --csv": (["simulate", "--zip", "--csv"], "not allowed with"),
+    "simulate --out a file": (["simulate", "--out", "{tmp}/afile"], "is a file"),
+}
+
+
+@pytest.mark.parametrize("case", sorted(OTHER_OPTION_CASES))
+def test_bad_identify_and_simulate_options(case, tmp_path, capsys):
+    argv, says = OTHER_OPTION_CASES[case]
+    (tmp_path / "afile").write_text("not a folder")
+    argv = [a.replace("{tmp}", str(tmp_path)) for a in argv]
+    if "--out" not in argv:
+        argv += ["--out", str(tmp_path / ("m.json" if argv[0] == "identify" else "sim"))]
+    if argv[0] == "identify":
+        argv += ["--data", "campaign-a/R16_001", "--quiet"]
+    _expect_one_line_error(_exit_code(argv), capsys.readouterr().err, says)
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["afile"]
+
+
+def test_simulate_never_writes_over_a_test(tmp_path, capsys):
+    """--out may be a folder of real crash tests: simulate refuses, naming what is there."""
+    assert _exit_code(["simulate", "--out", str(tmp_path), "--count", "1", "--csv"]) == 0
+    before = (tmp_path / "R16_001.csv").read_bytes()
+    capsys.readouterr()
+    code = _exit_code(["simulate", "--out", str(tmp_path), "--count", "1", "--seed", "2",
+                       "--csv"])
+    _expect_one_line_error(code, capsys.readouterr().err, "already holds R16_001.csv")
+    assert (tmp_path / "R16_001.csv").read_bytes() == before
+
+
+def test_a_model_file_that_cannot_be_written_leaves_nothing(tmp_path, good_model,
+                                                            monkeypatch):
+    """A full disk or a folder in the way: one line naming the file, and no half-written
+    model (written beside, then renamed): the model that was there stays whole."""
+    from observer_node.model.modelfile import ModelFile, ModelFileError
+
+    mf = ModelFile.from_dict(good_model)
+    (tmp_path / "m.json").mkdir()
+    with pytest.raises(ModelFileError, match="is a folder"):
+        mf.save(tmp_path / "m.json")
+    mf.save(tmp_path / "ok.json")
+    whole = (tmp_path / "ok.json").read_bytes()
+
+    def disk_full(self: Path, text: str, **kw) -> int:
+        with open(self, "w", **kw) as f:  # the real write, half of it
+            f.write(text[: len(text) // 2])
+        raise OSError(28, "No space left on device")
+
+    monkeypatch.setattr(Path, "write_text", disk_full)
+    with pytest.raises(ModelFileError, match=r"ok\.json: cannot write the model file: No space"):
+        mf.save(tmp_path / "ok.json")
+    monkeypatch.undo()
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["m.json", "ok.json"]
+    assert (tmp_path / "ok.json").read_bytes() == whole
+    assert ModelFile.load(tmp_path / "ok.json").kind == mf.kind
+
+
 def test_one_estimation_test_is_refused_saying_what_the_loop_needs(tmp_path, capsys):
     out = tmp_path / "out"
     code = cli.main(["loop", "--estimate", str(DATA / "R16_001"), "--validate",

@@ -53,20 +53,58 @@ def non_negative(text: str) -> float:
     return x
 
 
+def positive_int(text: str) -> int:
+    """An argparse type: a whole number above zero."""
+    try:
+        n = int(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"not a whole number: {text!r}") from None
+    if n < 1:
+        raise argparse.ArgumentTypeError(f"must be 1 or more: {text!r}")
+    return n
+
+
+def non_negative_int(text: str) -> int:
+    """An argparse type: a whole number, zero or above."""
+    try:
+        n = int(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"not a whole number: {text!r}") from None
+    if n < 0:
+        raise argparse.ArgumentTypeError(f"must be 0 or more: {text!r}")
+    return n
+
+
+def out_file(path: str, option: str = "--out") -> Path:
+    """``path`` as an output file, checked before any work: not a folder, and its folder is
+    one or can be made (see :func:`out_folder`)."""
+    p = Path(path)
+    if p.is_dir() or not p.name:
+        raise UsageError(f"{option} {path}: is a folder; give a file name")
+    _can_make(p.parent, f"{option} {path}")
+    return p
+
+
 def out_folder(path: str, option: str = "--out") -> Path:
     """``path`` as an output folder, checked before any work: it is a folder or can be made
     one (the nearest existing parent a writable folder). Not created here, so a command that
     fails on its input leaves nothing behind."""
     p = Path(path)
-    probe = p
+    if p.exists() and not p.is_dir():
+        raise UsageError(f"{option} {path}: is a file")
+    _can_make(p, f"{option} {path}")
+    return p
+
+
+def _can_make(folder: Path, said: str) -> None:
+    """One line, starting with ``said``, unless ``folder`` is a folder or can be made one."""
+    probe = folder
     while not probe.exists() and probe != probe.parent:
         probe = probe.parent
     if not probe.is_dir():
-        what = "is a file" if probe == p else f"cannot be made: {probe} is a file"
-        raise UsageError(f"{option} {path}: {what}")
+        raise UsageError(f"{said}: cannot be made: {probe} is a file")
     if not os.access(probe, os.W_OK | os.X_OK):
-        raise UsageError(f"{option} {path}: cannot write in {probe} (permission denied)")
-    return p
+        raise UsageError(f"{said}: cannot write in {probe} (permission denied)")
 
 
 def add_data_arguments(p: argparse.ArgumentParser, data: str | None) -> None:

@@ -19,9 +19,10 @@ def add_subparser(subparsers: argparse._SubParsersAction[argparse.ArgumentParser
     _data.add_data_arguments(s, data="required")
     s.add_argument("--out", required=True, help="model file to write (JSON)")
     _data.add_rate_argument(s, " the model runs at")
-    s.add_argument("--nmax", type=int, default=6,
+    s.add_argument("--nmax", type=_data.positive_int, default=6,
                    help="ARX: largest order searched (default %(default)s)")
-    s.add_argument("--order", type=int, default=7, help="N4SID: model order (default %(default)s)")
+    s.add_argument("--order", type=_data.positive_int, default=7,
+                   help="N4SID: model order (default %(default)s)")
     s.add_argument("--m1", type=_data.positive, default=20.0,
                    help="grey-box: fixed spine mass in kg that sets the mass scale "
                    "(default %(default)g)")
@@ -35,12 +36,13 @@ def _do_identify(a: argparse.Namespace) -> int:
     from ..ident.dataset import make_dataset
     from ..ident.progress import Progress
 
+    out = _data.out_file(a.out)
     tests = _data.load(a)
     data = make_dataset(tests, a.rate, _data.window(a))
     t0 = time.monotonic()
     mf = identify(a.model, data, nmax=a.nmax, order=a.order, m1_kg=a.m1,
                   progress=Progress(f"identify {a.model}", enabled=not a.quiet), name=a.name)
-    mf.save(a.out)
+    mf.save(out)
     f = mf.fits["fit"]
     print(f"{a.model} model on {len(tests)} tests at {a.rate:g} Hz "
           f"({time.monotonic() - t0:.1f} s) -> {a.out}")

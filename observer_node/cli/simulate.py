@@ -4,10 +4,10 @@ simulator."""
 from __future__ import annotations
 
 import argparse
-from pathlib import Path
 
 from ..errors import UsageError
 from ..model.effects import EFFECTS as MODEL_EFFECTS
+from . import _data
 
 # The effects the simulator can switch on: those with a truth form in the registry.
 SIM_EFFECTS = tuple(k for k, e in MODEL_EFFECTS.items() if e.plant is not None)
@@ -22,15 +22,17 @@ def add_subparser(subparsers: argparse._SubParsersAction[argparse.ArgumentParser
     s.add_argument("--setup", choices=("R16", "SLED", "FULL"), default="R16",
                    help="R16 sled rig (hard seat), SLED sled with interior, FULL full vehicle "
                    "(default %(default)s)")
-    s.add_argument("--count", type=int, default=4, help="number of tests (default %(default)s)")
-    s.add_argument("--seed", type=int, default=1,
+    s.add_argument("--count", type=_data.positive_int, default=4,
+                   help="number of tests (default %(default)s)")
+    s.add_argument("--seed", type=_data.non_negative_int, default=1,
                    help="random seed of pulses, dummies and noise (default %(default)s)")
     s.add_argument("--effect", action="append", metavar="NAME[=SCALE]",
                    help="switch on a physical effect beyond the thesis model, its magnitude "
                    "scaled by SCALE (repeatable); NAME is one of: " + ", ".join(SIM_EFFECTS))
     s.add_argument("--no-noise", action="store_true", help="no sensor noise or CFC filtering")
-    s.add_argument("--zip", action="store_true", help="write each test as a .zip")
-    s.add_argument("--csv", action="store_true", help="write CSV instead of ISO-MME")
+    form = s.add_mutually_exclusive_group()
+    form.add_argument("--zip", action="store_true", help="write each test as a .zip")
+    form.add_argument("--csv", action="store_true", help="write CSV instead of ISO-MME")
     s.set_defaults(func=_do_simulate)
 
 
@@ -45,9 +47,12 @@ def _effects(specs: list[str]) -> dict[str, float]:
             raise UsageError(f"--effect {spec}: unknown effect {name!r} (known: "
                              f"{', '.join(EFFECTS)})")
         try:
-            effects[name] = float(value) if value else 1.0
-        except ValueError:
-            raise UsageError(f"--effect {spec}: SCALE {value!r} is not a number") from None
+            scale = _data.non_negative(value) if value else 1.0
+        except argparse.ArgumentTypeError as e:
+            raise UsageError(f"--effect {spec}: SCALE {e}") from None
+        if name in effects:
+            raise UsageError(f"--effect {spec}: {name} is given twice")
+        effects[name] = scale
     return effects
 
 
@@ -55,9 +60,16 @@ def _do_simulate(a: argparse.Namespace) -> int:
     from ..data import write_csv, write_isomme
     from ..simulator import PlantConfig, simulate_campaign
 
+    out = _data.out_folder(a.out)
     config = PlantConfig(effects=_effects(a.effect or []), noise=not a.no_noise)
     tests = simulate_campaign(a.setup, a.count, seed=a.seed, config=config)
-    out = Path(a.out)
+    # never over another test: --out may be a folder of real crash tests
+    there = [p.name for t in tests for p in (out / t.name, out / f"{t.name}.zip",
+                                             out / f"{t.name}.csv") if p.exists()]
+    if there:
+        raise UsageError(f"--out {a.out}: already holds {', '.join(there)}; simulate writes "
+                         "into a new or empty folder and never over a test")
+    out.mkdir(parents=True, exist_ok=True)
     for t in tests:
         path = write_csv(t, out / f"{t.name}.csv") if a.csv else write_isomme(t, out, a.zip)
         print(path)

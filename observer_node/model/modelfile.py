@@ -22,8 +22,10 @@ the file sees is what runs.
 
 from __future__ import annotations
 
+import contextlib
 import hashlib
 import json
+import os
 from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import Any
@@ -141,9 +143,22 @@ class ModelFile:
         return int.from_bytes(digest[:2], "big")
 
     def save(self, path: str | Path) -> Path:
+        """Write the model file at ``path`` whole or not at all (a full disk must not leave a
+        truncated model for a daemon to refuse later): a temporary file beside it, renamed."""
         path = Path(path)
-        path.parent.mkdir(parents=True, exist_ok=True)
-        path.write_text(self.dumps() + "\n", encoding="utf-8")
+        if path.is_dir():
+            raise ModelFileError(f"{path}: is a folder; give the model file's name "
+                                 f"(e.g. {path / 'model.json'})")
+        tmp = path.with_name(f".{path.name}.{os.getpid()}.tmp")
+        try:
+            path.parent.mkdir(parents=True, exist_ok=True)
+            tmp.write_text(self.dumps() + "\n", encoding="utf-8")
+            os.replace(tmp, path)
+        except OSError as e:
+            with contextlib.suppress(OSError):  # nothing half-written left behind
+                tmp.unlink()
+            raise ModelFileError(f"{path}: cannot write the model file: "
+                                 f"{e.strerror or e}") from None
         return path
 
     @classmethod
