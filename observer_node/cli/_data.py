@@ -53,26 +53,24 @@ def non_negative(text: str) -> float:
     return x
 
 
-def positive_int(text: str) -> int:
-    """An argparse type: a whole number above zero."""
+def _whole(text: str, low: int) -> int:
     try:
         n = int(text)
     except ValueError:
         raise argparse.ArgumentTypeError(f"not a whole number: {text!r}") from None
-    if n < 1:
-        raise argparse.ArgumentTypeError(f"must be 1 or more: {text!r}")
+    if n < low:
+        raise argparse.ArgumentTypeError(f"must be {low} or more: {text!r}")
     return n
+
+
+def positive_int(text: str) -> int:
+    """An argparse type: a whole number above zero."""
+    return _whole(text, 1)
 
 
 def non_negative_int(text: str) -> int:
     """An argparse type: a whole number, zero or above."""
-    try:
-        n = int(text)
-    except ValueError:
-        raise argparse.ArgumentTypeError(f"not a whole number: {text!r}") from None
-    if n < 0:
-        raise argparse.ArgumentTypeError(f"must be 0 or more: {text!r}")
-    return n
+    return _whole(text, 0)
 
 
 def out_file(path: str, option: str = "--out") -> Path:
