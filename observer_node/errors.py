@@ -9,9 +9,6 @@ code that catches those still does.
 
 from __future__ import annotations
 
-import argparse
-from typing import NoReturn
-
 
 class ObserverError(Exception):
     """An error the command reports as one line; the message names the file or option."""
@@ -27,11 +24,3 @@ class RecordingLostError(ObserverError):
     """``run`` ran, but its recording is not the whole run (parts, ticks and frames lost)."""
 
     exit_code = 3
-
-
-class OneLineParser(argparse.ArgumentParser):
-    """argparse's parser with its errors one line, ``PROG: error: MESSAGE``, exit code 2, as
-    every other error of the command (no usage block above it: --help has that)."""
-
-    def error(self, message: str) -> NoReturn:
-        self.exit(2, f"{self.prog}: error: {message} (see {self.prog} --help)\n")

@@ -23,7 +23,8 @@ from collections import Counter
 
 from observer_node.dbc import Codec, fd_frame_time_s, frame_bits
 from observer_node.dbc.bus import add_bus_arguments, open_bus
-from observer_node.errors import ObserverError, OneLineParser, UsageError
+from observer_node.errors import ObserverError, UsageError
+from observer_node.options import OneLineParser
 
 from .player import bus_sender, play
 from .schedule import Schedule, concat, restamp_counters

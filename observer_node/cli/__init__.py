@@ -29,7 +29,8 @@ import argparse
 import sys
 
 from .. import __version__
-from ..errors import ObserverError, OneLineParser
+from ..errors import ObserverError
+from ..options import OneLineParser
 from . import analyze, bench, evaluate, export, export_c, identify, loop, run, simulate
 
 # One module per command, each with add_subparser(subparsers) and its _do_COMMAND(args); in

@@ -6,8 +6,8 @@ import argparse
 
 from observer_node.dbc.bus import add_bus_arguments
 
+from .. import options
 from ..data import BENCH_TESTS
-from . import _data
 
 
 def add_subparser(subparsers: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
@@ -29,7 +29,7 @@ def add_subparser(subparsers: argparse._SubParsersAction[argparse.ArgumentParser
     s.add_argument("--test", action="append", metavar="NAME",
                    help="bundled test to replay (repeatable; default "
                    f"{' '.join(BENCH_TESTS)})")
-    s.add_argument("--rate", type=_data.positive, default=1.0,
+    s.add_argument("--rate", type=options.positive, default=1.0,
                    help="replay time scale (default %(default)g)")
     s.add_argument("--out", default="out/bench", help="output folder (default %(default)s)")
     s.set_defaults(func=_do_bench)
@@ -38,6 +38,6 @@ def add_subparser(subparsers: argparse._SubParsersAction[argparse.ArgumentParser
 def _do_bench(a: argparse.Namespace) -> int:
     from ..bench import run_bench
 
-    run_bench(_data.out_folder(a.out), a.model, a.interface, a.channel,
+    run_bench(options.out_folder(a.out), a.model, a.interface, a.channel,
               tuple(a.test or BENCH_TESTS), a.rate, rerun_loop=a.rerun_loop)
     return 0

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import argparse
 
+from .. import options
 from . import _data
 
 
@@ -29,7 +30,7 @@ def _do_evaluate(a: argparse.Namespace) -> int:
     from ..iso18571 import grade
     from ..model.modelfile import ModelFile
 
-    out = _data.out_folder(a.out)
+    out = options.out_folder(a.out)
     tests = _data.load(a)
     if a.model:
         mf = ModelFile.load(a.model)

@@ -5,6 +5,7 @@ from __future__ import annotations
 import argparse
 import time
 
+from .. import options
 from . import _data
 
 
@@ -19,11 +20,11 @@ def add_subparser(subparsers: argparse._SubParsersAction[argparse.ArgumentParser
     _data.add_data_arguments(s, data="required")
     s.add_argument("--out", required=True, help="model file to write (JSON)")
     _data.add_rate_argument(s, " the model runs at")
-    s.add_argument("--nmax", type=_data.positive_int, default=6,
+    s.add_argument("--nmax", type=options.positive_int, default=6,
                    help="ARX: largest order searched (default %(default)s)")
-    s.add_argument("--order", type=_data.positive_int, default=7,
+    s.add_argument("--order", type=options.positive_int, default=7,
                    help="N4SID: model order (default %(default)s)")
-    s.add_argument("--m1", type=_data.positive, default=20.0,
+    s.add_argument("--m1", type=options.positive, default=20.0,
                    help="grey-box: fixed spine mass in kg that sets the mass scale "
                    "(default %(default)g)")
     s.add_argument("--name", help="model name stored in the file")
@@ -36,7 +37,7 @@ def _do_identify(a: argparse.Namespace) -> int:
     from ..ident.dataset import make_dataset
     from ..ident.progress import Progress
 
-    out = _data.out_file(a.out)
+    out = options.out_file(a.out)
     tests = _data.load(a)
     data = make_dataset(tests, a.rate, _data.window(a))
     t0 = time.monotonic()

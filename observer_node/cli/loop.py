@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import argparse
 
+from .. import options
 from ..errors import UsageError
 from ..loop.cluster import MAX_LOCAL_WORKERS
 from . import _data
@@ -39,7 +40,7 @@ def add_subparser(subparsers: argparse._SubParsersAction[argparse.ArgumentParser
                    help="held-out tests the report scores before and after (never fitted on; "
                    "they refuse an effect whose fit they lower and may tell a tie apart)")
     s.add_argument("--out", required=True, help="output folder")
-    s.add_argument("--margin", type=_data.non_negative, default=1.0,
+    s.add_argument("--margin", type=options.non_negative, default=1.0,
                    help="mean paired fit_TOT points an effect must add in cross-validation "
                    "(default %(default)g)")
     s.add_argument("--group", action="append", metavar="NAME=PATTERN",
@@ -69,7 +70,7 @@ def _do_loop(a: argparse.Namespace) -> int:
 
     if a.workers is not None and a.workers < 1:
         raise UsageError(f"--workers {a.workers}: needs at least one worker")
-    out = _data.out_folder(a.out)
+    out = options.out_folder(a.out)
     window_s, groups = _data.window(a), parse_groups(a.group)
     if a.scheduler:
         check_address(a.scheduler)

@@ -5,9 +5,9 @@ from __future__ import annotations
 
 import argparse
 
+from .. import options
 from ..errors import UsageError
 from ..model.effects import EFFECTS as MODEL_EFFECTS
-from . import _data
 
 # The effects the simulator can switch on: those with a truth form in the registry.
 SIM_EFFECTS = tuple(k for k, e in MODEL_EFFECTS.items() if e.plant is not None)
@@ -22,9 +22,9 @@ def add_subparser(subparsers: argparse._SubParsersAction[argparse.ArgumentParser
     s.add_argument("--setup", choices=("R16", "SLED", "FULL"), default="R16",
                    help="R16 sled rig (hard seat), SLED sled with interior, FULL full vehicle "
                    "(default %(default)s)")
-    s.add_argument("--count", type=_data.positive_int, default=4,
+    s.add_argument("--count", type=options.positive_int, default=4,
                    help="number of tests (default %(default)s)")
-    s.add_argument("--seed", type=_data.non_negative_int, default=1,
+    s.add_argument("--seed", type=options.non_negative_int, default=1,
                    help="random seed of pulses, dummies and noise (default %(default)s)")
     s.add_argument("--effect", action="append", metavar="NAME[=SCALE]",
                    help="switch on a physical effect beyond the thesis model, its magnitude "
@@ -47,7 +47,7 @@ def _effects(specs: list[str]) -> dict[str, float]:
             raise UsageError(f"--effect {spec}: unknown effect {name!r} (known: "
                              f"{', '.join(EFFECTS)})")
         try:
-            scale = _data.non_negative(value) if value else 1.0
+            scale = options.non_negative(value) if value else 1.0
         except argparse.ArgumentTypeError as e:
             raise UsageError(f"--effect {spec}: SCALE {e}") from None
         if name in effects:
@@ -60,7 +60,7 @@ def _do_simulate(a: argparse.Namespace) -> int:
     from ..data import write_csv, write_isomme
     from ..simulator import PlantConfig, simulate_campaign
 
-    out = _data.out_folder(a.out)
+    out = options.out_folder(a.out)
     config = PlantConfig(effects=_effects(a.effect or []), noise=not a.no_noise)
     tests = simulate_campaign(a.setup, a.count, seed=a.seed, config=config)
     # never over another test: --out may be a folder of real crash tests
