@@ -497,6 +497,25 @@ def test_one_estimation_test_is_refused_saying_what_the_loop_needs(tmp_path, cap
     assert not out.exists()
 
 
+def test_an_mme_file_reads_its_own_test_and_a_folder_of_two_is_refused(tmp_path, capsys):
+    """Two tests' files in one folder: the .mme named on the command line is read, with its
+    own channels (the folder's first .mme was read instead, in silence: a hostile user's
+    finding, 2026-12-03); the folder itself is refused, naming both."""
+    from observer_node.data import load_tests
+
+    both = tmp_path / "both"
+    shutil.copytree(DATA / "R16_002", both)
+    shutil.copytree(DATA / "R16_001", both, dirs_exist_ok=True)
+    one = load_tests([both / "R16_002.mme"])[0]
+    alone = load_tests([DATA / "R16_002"])[0]
+    assert one.name == "R16_002"
+    np.testing.assert_array_equal(one.cd_mm, alone.cd_mm)
+    code = _exit_code(["identify", "--model", "arx", "--data", str(both), "--out",
+                       str(tmp_path / "m.json"), "--quiet"])
+    _expect_one_line_error(code, capsys.readouterr().err,
+                           "holds 2 .mme files (R16_001.mme, R16_002.mme)")
+
+
 def test_one_crash_under_two_names_is_refused(tmp_path, capsys):
     """A copied test renamed (another name, the same samples) would count one crash twice."""
     copy = tmp_path / "R16_009"

@@ -126,6 +126,7 @@ class _Source:
 
     def __init__(self, path: Path):
         self.path = path
+        self.chosen: str | None = None  # the .mme the user named, when a .mme was given
         self._zip: zipfile.ZipFile | None = None
         if path.is_file() and path.suffix.lower() == ".zip":
             try:
@@ -136,7 +137,7 @@ class _Source:
         elif path.is_dir():
             self.names = [p.relative_to(path).as_posix() for p in path.rglob("*") if p.is_file()]
         elif path.is_file() and path.suffix.lower() == ".mme":
-            self.path = path.parent
+            self.path, self.chosen = path.parent, path.name
             self.names = [
                 str(p.relative_to(path.parent).as_posix())
                 for p in path.parent.rglob("*") if p.is_file()
@@ -294,7 +295,10 @@ def read_isomme(
         mmes = src.find(r"\.mme$")
         if not mmes:
             raise CrashDataError(f"{src.path}: no .mme file")
-        mme_name = mmes[0]
+        if src.chosen is None and len(mmes) > 1:  # which test is meant, only the user knows
+            raise CrashDataError(f"{src.path}: holds {len(mmes)} .mme files "
+                                 f"({', '.join(mmes)}); give the .mme of the test to read")
+        mme_name = src.chosen or mmes[0]
         mme_lines = src.read(mme_name)
         mme, _, _ = parse_header(mme_lines)
         if not mme:
@@ -302,6 +306,9 @@ def read_isomme(
         if not src.find(r"\.chn$"):
             raise CrashDataError(f"{src.path}: no channel list (<TEST>/Channel/<TEST>.chn)")
         chan_files = src.find(r"\.\d{3}$")
+        if len(mmes) > 1:  # another test's files beside it: its own channels only
+            stem = PurePosixPath(mme_name).stem.lower()
+            chan_files = [n for n in chan_files if PurePosixPath(n).stem.lower() == stem]
         if not chan_files:
             raise CrashDataError(f"{src.label(mme_name)}: no channel files (<TEST>.NNN)")
         channels: dict[str, Channel] = {}
