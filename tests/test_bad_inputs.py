@@ -488,6 +488,16 @@ def test_a_model_file_that_cannot_be_written_leaves_nothing(tmp_path, good_model
     assert ModelFile.load(tmp_path / "ok.json").kind == mf.kind
 
 
+def test_an_output_folder_the_system_refuses_late_is_one_line(good_model, tmp_path, capsys):
+    """/proc passes every check a path can be given beforehand (as root) and refuses the
+    folder only when it is made, after the work: one line naming it, exit 2."""
+    model = tmp_path / "model.json"
+    model.write_text(json.dumps(good_model))
+    code = _exit_code(["evaluate", "--model", str(model), "--data", "campaign-a/R16_002",
+                       "--out", "/proc/chest-observer-x"])
+    _expect_one_line_error(code, capsys.readouterr().err, "/proc/chest-observer-x")
+
+
 def test_one_estimation_test_is_refused_saying_what_the_loop_needs(tmp_path, capsys):
     out = tmp_path / "out"
     code = cli.main(["loop", "--estimate", str(DATA / "R16_001"), "--validate",

@@ -215,3 +215,31 @@ def test_the_daemons_core_in_c_steps_as_the_python_core(models, tmp_path):
     np.testing.assert_array_equal(out[:, 2:], want_a[:, 2:])  # state, valid, event, faults
     scale = np.max(np.abs(want_a[:, :2]), axis=0)
     assert np.max(np.abs(out[:, :2] - want_a[:, :2]) / scale) < 1e-9
+
+
+def test_a_name_that_is_no_c_identifier_is_refused_and_a_model_name_stays_in_its_comment(
+        models, tmp_path, capsys):
+    """A hostile user's names (2026-12-03): --name ../x wrote outside --out, the codec's name
+    overwrote the codec, '' wrote hidden files, a/b a traceback; a model named with "*/"
+    ended the header's comment and injected C. Now one line each, nothing written, and the
+    model's name cannot leave its comment."""
+    from dataclasses import replace
+
+    from observer_node import cli
+    from observer_node.export_c import ExportError
+
+    model = tmp_path / "m.json"
+    replace(models["greybox"], name='evil */ #error injected /*\nnext').save(model)
+    for name in ("../esc", "chest_observer_can", "", "a/b", "9lives", "x y"):
+        code = cli.main(["export-c", str(model), "--out", str(tmp_path / "c"), "--name", name])
+        err = capsys.readouterr().err
+        assert code == 2 and len(err.strip().splitlines()) == 1 and "--name" in err, err
+    assert not (tmp_path / "c").exists() and not (tmp_path / "esc.c").exists()
+    with pytest.raises(ExportError, match="C identifier"):
+        export_c(models["greybox"], tmp_path / "c", "../esc")
+    assert cli.main(["export-c", str(model), "--out", str(tmp_path / "c")]) == 0
+    assert "evil * / #error injected / * next" in (tmp_path / "c" / "chest_observer.h").read_text()
+    (tmp_path / "c" / "harness.c").write_text(HARNESS)
+    subprocess.run([CC, "-std=c99", "-Wall", "-Werror", "-pedantic", "-c", "-o",
+                    str(tmp_path / "h.o"), str(tmp_path / "c" / "harness.c")],
+                   check=True, capture_output=True, text=True)

@@ -60,3 +60,7 @@ def main(argv: list[str] | None = None) -> int:
         return 130
     except BrokenPipeError:
         return 0
+    except OSError as e:  # a disk full, a folder that cannot be made: one line naming it
+        where = f"{e.filename}: " if e.filename else ""
+        print(f"observer-node: error: {where}{e.strerror or e}", file=sys.stderr)
+        return 2

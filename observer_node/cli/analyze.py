@@ -6,6 +6,8 @@ import argparse
 from pathlib import Path
 from typing import TYPE_CHECKING
 
+from .. import options
+
 if TYPE_CHECKING:
     from ..recording.analysis import EventAnalysis
 
@@ -25,8 +27,8 @@ def _do_analyze(a: argparse.Namespace) -> int:
     from ..recording import analyze, read_recording
     from ..recording import format as fmt
 
+    out = options.out_folder(a.out) if a.out else Path(a.recording).with_suffix("")
     rec = read_recording(a.recording)
-    out = Path(a.out) if a.out else Path(a.recording).with_suffix("")
     result = analyze(rec, out_dir=out)
     meta = rec.metadata.get(fmt.META_RUN, {})
     print(f"{rec.path}: {result.ticks} ticks, model {meta.get(fmt.RunMeta.MODEL_KIND, '?')} "

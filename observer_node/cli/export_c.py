@@ -3,7 +3,8 @@
 from __future__ import annotations
 
 import argparse
-from pathlib import Path
+
+from .. import options
 
 
 def add_subparser(subparsers: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
@@ -24,13 +25,15 @@ def add_subparser(subparsers: argparse._SubParsersAction[argparse.ArgumentParser
 
 
 def _do_export_c(a: argparse.Namespace) -> int:
-    from ..export_c import ExportError, export_c, export_codec
+    from ..export_c import ExportError, check_c_name, export_c, export_codec
     from ..model.modelfile import ModelFile
 
+    check_c_name(a.name)
+    out = options.out_folder(a.out)
     mf = ModelFile.load(a.model)
     try:
         mf = mf.for_setup(a.setup or "", a.model)
-        paths = export_c(mf, Path(a.out), a.name) + export_codec(Path(a.out))
+        paths = export_c(mf, out, a.name) + export_codec(out)
     except ExportError as e:  # it names the part of the model, not the file
         raise ExportError(f"{a.model}: {e}") from None
     print(f"wrote {', '.join(str(p) for p in paths)} ({mf.kind} {mf.name!r}, "
