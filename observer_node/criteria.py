@@ -31,7 +31,7 @@ from dataclasses import asdict, dataclass
 
 import numpy as np
 
-from .data.filters import cfc_filter
+from .data.filters import cfc_filter, cfc_min_rate_hz
 
 VC_SCALE_HIII50 = 1.3  # SF, ECE R94 Annex 4 / SAE J1727
 VC_DEFORMATION_HIII50_M = 0.229  # D0 [m], ECE R94 Annex 4 / SAE J1727
@@ -63,9 +63,11 @@ def clip_3ms_g(cr_g: np.ndarray, fs_hz: float, cumulative: bool = True,
 
 def viscous_criterion_m_s(cd_mm: np.ndarray, fs_hz: float, filtered: bool = False) -> float:
     """VC max [m/s] of a deflection [mm] at ``fs_hz``; ``filtered``: the deflection is
-    already CFC 180 (else it is filtered here)."""
+    already CFC 180 (else it is filtered here). NaN (undefined) under 5 samples, or at a rate
+    CFC 180 cannot be applied at (748 Hz and below: the regulation's VC is not defined
+    there, and the filter would be unstable)."""
     d_m = np.asarray(cd_mm, dtype=float) / 1000.0
-    if len(d_m) < 5:
+    if len(d_m) < 5 or (not filtered and fs_hz <= cfc_min_rate_hz(180)):
         return math.nan
     if not filtered:
         d_m = cfc_filter(d_m, fs_hz, 180)

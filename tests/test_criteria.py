@@ -117,3 +117,20 @@ def test_iso18571_ratings_keep_the_json_keys_and_read_back_unchanged():
     assert json.dumps(IsoRatings.from_dict(json.loads(text)).as_dict(), indent=1) == text
     one = json.dumps(table.tests["A"].as_dict(), indent=1)  # as analysis.json has an event's
     assert json.dumps(OutputRatings.from_dict(json.loads(one)).as_dict(), indent=1) == one
+
+
+def test_vc_is_undefined_where_cfc_180_cannot_filter():
+    """At 500 Hz CFC 180's design frequency (374 Hz) is above Nyquist and the filter blows up:
+    VC read 1.7e120 m/s and the daemon sent it, saturated, as valid (a hostile user's
+    finding, 2026-12-03). Now NaN (the daemon sends it invalid), and the filter refuses."""
+    from observer_node.data.filters import cfc_filter, cfc_min_rate_hz
+
+    assert cfc_min_rate_hz(180) == pytest.approx(748, abs=1)
+    for fs in (500.0, 1000.0):
+        t = np.arange(0, 0.1, 1 / fs)
+        d = 40 * np.sin(np.pi * t / 0.1)  # 40 mm over 100 ms
+        vc = viscous_criterion_m_s(d, fs)
+        expected = 1.3 * 0.04**2 * (np.pi / 0.1) / (2 * 0.229)  # as the sine test above
+        assert (np.isnan(vc) if fs < 748 else vc == pytest.approx(expected, rel=0.02)), (fs, vc)
+    with pytest.raises(ValueError, match="above 748 Hz"):
+        cfc_filter(np.zeros(100), 500.0, 180)

@@ -6,9 +6,20 @@ import numpy as np
 from scipy import signal
 
 
+def cfc_min_rate_hz(cfc: float) -> float:
+    """The sample rate [Hz] a CFC ``cfc`` filter needs to exceed: twice its design frequency
+    (SAE J211-1's 2.0775 * cfc), 748 Hz for CFC 180."""
+    return 2 * 2.0775 * cfc
+
+
 def cfc_filter(x: np.ndarray, fs_hz: float, cfc: float) -> np.ndarray:
     """Phaseless 4-pole CFC filter of SAE J211-1 (Appendix C): a 2-pole Butterworth-like
-    section run forward and backward. ``cfc`` is the class (60, 180, 600, 1000)."""
+    section run forward and backward. ``cfc`` is the class (60, 180, 600, 1000). Its design
+    frequency 2.0775 * cfc must lie below the Nyquist frequency (fs_hz above
+    :func:`cfc_min_rate_hz`); above it the section is unstable: ValueError."""
+    if fs_hz <= cfc_min_rate_hz(cfc):
+        raise ValueError(f"a CFC {cfc:g} filter needs a sample rate above "
+                         f"{cfc_min_rate_hz(cfc):.0f} Hz, not {fs_hz:g} Hz")
     T = 1.0 / fs_hz
     wd = 2 * np.pi * cfc * 2.0775
     wa = np.sin(wd * T / 2) / np.cos(wd * T / 2)
