@@ -7,6 +7,7 @@ from __future__ import annotations
 import argparse
 import math
 import os
+from collections.abc import Callable
 from pathlib import Path
 from typing import NoReturn
 
@@ -56,6 +57,16 @@ def _whole(text: str, low: int) -> int:
     if n < low:
         raise argparse.ArgumentTypeError(f"must be {low} or more: {text!r}")
     return n
+
+
+def int_in(low: int, high: int) -> Callable[[str], int]:
+    """An argparse type: a whole number from ``low`` to ``high``."""
+    def parse(text: str) -> int:
+        n = _whole(text, low)
+        if n > high:
+            raise argparse.ArgumentTypeError(f"must be {high} or less: {text!r}")
+        return n
+    return parse
 
 
 def positive_int(text: str) -> int:

@@ -421,6 +421,12 @@ def test_an_output_folder_that_cannot_be_one_is_refused_before_any_work(tmp_path
 OTHER_OPTION_CASES: dict[str, tuple[list[str], str]] = {
     "identify --nmax 0": (["identify", "--model", "arx", "--nmax", "0"], "--nmax"),
     "identify --order 0": (["identify", "--model", "n4sid", "--order", "0"], "--order"),
+    "identify --order 5000": (["identify", "--model", "n4sid", "--order", "5000"],
+                              "must be 64 or less"),
+    "identify --nmax 100000": (["identify", "--model", "arx", "--nmax", "100000"],
+                               "must be 20 or less"),
+    # a model run and evaluate would refuse (more states than a model file holds)
+    "identify --nmax 16": (["identify", "--model", "arx", "--nmax", "16"], "not written to"),
     "identify --m1 nan": (["identify", "--model", "greybox", "--m1", "nan"], "--m1"),
     "identify --out a folder": (["identify", "--model", "arx", "--out", "{tmp}"],
                                 "is a folder; give a file name"),

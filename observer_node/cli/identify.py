@@ -6,7 +6,10 @@ import argparse
 import time
 
 from .. import options
+from ..model.schema import MAX_STATES
 from . import _data
+
+MAX_NMAX = 20  # ARX orders past this many ticks fit noise, and take minutes to search
 
 
 def add_subparser(subparsers: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
@@ -20,10 +23,10 @@ def add_subparser(subparsers: argparse._SubParsersAction[argparse.ArgumentParser
     _data.add_data_arguments(s, data="required")
     s.add_argument("--out", required=True, help="model file to write (JSON)")
     _data.add_rate_argument(s, " the model runs at")
-    s.add_argument("--nmax", type=options.positive_int, default=6,
-                   help="ARX: largest order searched (default %(default)s)")
-    s.add_argument("--order", type=options.positive_int, default=7,
-                   help="N4SID: model order (default %(default)s)")
+    s.add_argument("--nmax", type=options.int_in(1, MAX_NMAX), default=6,
+                   help=f"ARX: largest order searched, 1-{MAX_NMAX} (default %(default)s)")
+    s.add_argument("--order", type=options.int_in(1, MAX_STATES), default=7,
+                   help=f"N4SID: model order, 1-{MAX_STATES} (default %(default)s)")
     s.add_argument("--m1", type=options.positive, default=20.0,
                    help="grey-box: fixed spine mass in kg that sets the mass scale "
                    "(default %(default)g)")
@@ -36,6 +39,7 @@ def _do_identify(a: argparse.Namespace) -> int:
     from ..evaluation import identify
     from ..ident.dataset import make_dataset
     from ..ident.progress import Progress
+    from ..model.modelfile import ModelFile, ModelFileError
 
     out = options.out_file(a.out)
     tests = _data.load(a)
@@ -43,6 +47,11 @@ def _do_identify(a: argparse.Namespace) -> int:
     t0 = time.monotonic()
     mf = identify(a.model, data, nmax=a.nmax, order=a.order, m1_kg=a.m1,
                   progress=Progress(f"identify {a.model}", enabled=not a.quiet), name=a.name)
+    try:  # what run and evaluate would refuse is not written (an unstable or oversized model)
+        ModelFile.from_dict(mf.to_dict(), f"the identified {a.model} model")
+    except ModelFileError as e:
+        raise ModelFileError(f"{e}; not written to {out} (fewer orders: --nmax, --order)"
+                             ) from None
     mf.save(out)
     f = mf.fits["fit"]
     print(f"{a.model} model on {len(tests)} tests at {a.rate:g} Hz "

@@ -9,6 +9,7 @@ matrices themselves (:meth:`observer_node.model.modelfile.ModelFile.from_dict`).
 
 from __future__ import annotations
 
+import reprlib
 from typing import Any
 
 from .effects import EFFECTS, Effect, registry_version
@@ -124,5 +125,7 @@ def validate(d: Any, where: str) -> str | None:
     if err.validator == "required" and isinstance(err.instance, dict):
         missing = next(k for k in err.validator_value if k not in err.instance)
         return f"{where}: missing key '{key + '.' if key else ''}{missing}'"
-    msg = err.message if len(err.message) < 160 else err.message[:157] + "..."
+    # the message quotes the value at fault: a matrix of 100 rows would hide what is wrong
+    msg = err.message.replace(repr(err.instance), reprlib.repr(err.instance))
+    msg = msg if len(msg) < 160 else msg[:157] + "..."
     return f"{where}: " + (f"key '{key}': " if key else "") + msg
