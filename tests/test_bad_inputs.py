@@ -193,6 +193,22 @@ def test_bad_command_line_values(good_model, tmp_path, capsys):
         _expect_one_line_error(code, capsys.readouterr().err, "command line")
 
 
+def test_a_live_address_that_cannot_be_listened_on_is_refused_before_the_run(
+        good_model, tmp_path, capsys):
+    """The recorder process opens --live after the daemon has started: a bad one was only
+    warned about and the run went on, exit 0 (a hostile user's finding, 2026-12-03)."""
+    model = tmp_path / "model.json"
+    model.write_text(json.dumps(good_model))
+    for live, says in (("127.0.0.1:99999", "port must be 1-65535"),
+                       ("127.0.0.1:0", "port must be 1-65535"),
+                       ("256.1.1.1:8765", "not an IPv4 address"),
+                       ("no-such-host.invalid:8765", "cannot resolve")):
+        code = cli.main(["run", "--model", str(model), "--interface", "virtual", "--record",
+                         str(tmp_path / "r.mcap"), "--live", live])
+        _expect_one_line_error(code, capsys.readouterr().err, says)
+    assert not (tmp_path / "r.mcap").exists()
+
+
 # ---------------------------------------------------------------------------- ISO-MME tests
 def _edit_key(rel: str, key: str, value: str):
     def f(d: Path) -> None:

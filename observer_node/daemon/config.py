@@ -8,7 +8,9 @@ with a JSON schema (``jsonschema``), the same library that checks model files.
 
 from __future__ import annotations
 
+import ipaddress
 import math
+import socket
 from dataclasses import asdict, dataclass, field, fields
 from pathlib import Path
 from typing import Any
@@ -81,6 +83,26 @@ class NodeConfig:
         if self.live and not self.record:
             raise ConfigError(f"{where}: live {self.live!r} needs record: the live view is "
                               "served by the recorder process (give --record FILE)")
+        if self.live:
+            _check_live(self.live, where)
+
+
+def _check_live(live: str, where: str) -> None:
+    """HOST:PORT the live view can listen on, checked before the run: the recorder process
+    opens it after the daemon has started, where a bad one could only be warned about."""
+    host, _, port = live.rpartition(":")
+    if not port.isdigit() or not 1 <= int(port) <= 65535:
+        raise ConfigError(f"{where}: live {live!r}: the port must be 1-65535")
+    if host.replace(".", "").isdigit():  # an IPv4 address: each of its four parts 0-255
+        try:
+            ipaddress.IPv4Address(host)
+        except ValueError:
+            raise ConfigError(f"{where}: live {live!r}: {host} is not an IPv4 address"
+                              ) from None
+    try:
+        socket.getaddrinfo(host, int(port), type=socket.SOCK_STREAM)
+    except (socket.gaierror, UnicodeError) as e:
+        raise ConfigError(f"{where}: live {live!r}: cannot resolve {host}: {e}") from None
 
 
 def _toml_kind(v: object) -> str:
