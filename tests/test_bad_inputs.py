@@ -82,6 +82,12 @@ MODEL_CASES: dict[str, tuple[Callable[[dict], object] | bytes, str]] = {
     "A not the parameters'": (_not_its_parameters, "'state_space.A' disagrees with 'parameters'"),
     "negative stiffness": (lambda d: d["parameters"]["k1"].__setitem__("value", -1.0),
                            "parameters"),
+    # a hostile user's (2026-12-03): each was run or scored as if fine
+    "CR in m/s^2": (lambda d: d["outputs"][0].__setitem__("unit", "m/s^2"),
+                    "'outputs[0].unit'"),
+    "one input": (lambda d: d.__setitem__("inputs", d["inputs"][:1]), "'inputs'"),
+    "k1 a string": (lambda d: d["parameters"]["k1"].__setitem__("value", "abc"),
+                    "'parameters.k1.value'"),
     "tick rate 0": (_set("tick_rate_hz", 0), "tick_rate_hz"),
     "tick rate -1000": (_set("tick_rate_hz", -1000), "tick_rate_hz"),
     "tick rate 1e9": (_set("tick_rate_hz", 1e9), "tick_rate_hz"),

@@ -48,6 +48,15 @@ def _effect(e: Effect) -> dict[str, Any]:
 
 
 _GREYBOX = ("k1", "c1", "k2", "c2", "m1", "m2", "R")
+
+
+def _signals(*name_unit: tuple[str, str]) -> dict[str, Any]:
+    """The inputs or outputs list: these signals, in this order, in these units (the daemon
+    feeds and publishes exactly these; a file that says m/s^2 describes another model)."""
+    return {"type": "array", "minItems": len(name_unit), "maxItems": len(name_unit),
+            "prefixItems": [{"type": "object", "required": ["name", "unit"],
+                             "properties": {"name": {"const": n}, "unit": {"const": u}}}
+                            for n, u in name_unit]}
 _PARAMETER = {"type": "object", "required": ["value"],
               "properties": {"value": _NUMBER, "std_err": {"type": ["number", "null"]}}}
 
@@ -88,7 +97,10 @@ def _schema() -> dict[str, Any]:
                 "type": "object", "required": ["A", "B", "C", "D"],
                 "properties": {"A": _matrix(None, None), "B": _matrix(None, 2),
                                "C": _matrix(2, None), "D": _matrix(2, 2)}},
-            "parameters": {"type": "object"},  # kind-specific; the grey-box's checked below
+            "inputs": _signals(("pulse", "g"), ("brs", "rad")),
+            "outputs": _signals(("cr", "g"), ("cd", "mm")),
+            # kind-specific: the grey-box's, where given, numbers (all seven with effects)
+            "parameters": {"type": "object"},
             "effects": {
                 "type": "array", "maxItems": 32,
                 "items": {"type": "object", "required": ["kind"],
@@ -102,13 +114,17 @@ def _schema() -> dict[str, Any]:
                                          "items": {"type": "string", "minLength": 1}}},
                           "allOf": [_effect(e) for e in EFFECTS.values()]}},
         },
-        # A grey-box with effects is stepped from its physical parameters, not its matrices.
-        "if": {"required": ["effects"], "properties": {"effects": {"minItems": 1}}},
-        "then": {"properties": {"kind": _one_of(physical),
-                                "parameters": {
-                                    "required": list(_GREYBOX),
-                                    "properties": dict.fromkeys(_GREYBOX, _PARAMETER)}},
-                 "required": ["parameters"]},
+        "allOf": [
+            # A grey-box with effects is stepped from its physical parameters, not its
+            # matrices.
+            {"if": {"required": ["effects"], "properties": {"effects": {"minItems": 1}}},
+             "then": {"properties": {"kind": _one_of(physical),
+                                     "parameters": {"required": list(_GREYBOX)}},
+                      "required": ["parameters"]}},
+            {"if": {"properties": {"kind": _one_of(physical)}},
+             "then": {"properties": {"parameters": {
+                 "properties": dict.fromkeys(_GREYBOX, _PARAMETER)}}}},
+        ],
     }
 
 
