@@ -11,6 +11,8 @@ from ..model.effects import EFFECTS as MODEL_EFFECTS
 
 # The effects the simulator can switch on: those with a truth form in the registry.
 SIM_EFFECTS = tuple(k for k, e in MODEL_EFFECTS.items() if e.plant is not None)
+MAX_SCALE = 10.0  # ten times an effect's magnitude is already far past any crash test's
+MAX_COUNT = 1000  # tests per call; a campaign of 1e8 would only fill the disk
 
 
 def add_subparser(subparsers: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
@@ -22,13 +24,14 @@ def add_subparser(subparsers: argparse._SubParsersAction[argparse.ArgumentParser
     s.add_argument("--setup", choices=("R16", "SLED", "FULL"), default="R16",
                    help="R16 sled rig (hard seat), SLED sled with interior, FULL full vehicle "
                    "(default %(default)s)")
-    s.add_argument("--count", type=options.positive_int, default=4,
-                   help="number of tests (default %(default)s)")
+    s.add_argument("--count", type=options.int_in(1, MAX_COUNT), default=4,
+                   help=f"number of tests, 1-{MAX_COUNT} (default %(default)s)")
     s.add_argument("--seed", type=options.non_negative_int, default=1,
                    help="random seed of pulses, dummies and noise (default %(default)s)")
     s.add_argument("--effect", action="append", metavar="NAME[=SCALE]",
                    help="switch on a physical effect beyond the thesis model, its magnitude "
-                   "scaled by SCALE (repeatable); NAME is one of: " + ", ".join(SIM_EFFECTS))
+                   f"scaled by SCALE, 0-{MAX_SCALE:g} (repeatable); NAME is one of: "
+                   + ", ".join(SIM_EFFECTS))
     s.add_argument("--no-noise", action="store_true", help="no sensor noise or CFC filtering")
     form = s.add_mutually_exclusive_group()
     form.add_argument("--zip", action="store_true", help="write each test as a .zip")
@@ -42,14 +45,16 @@ def _effects(specs: list[str]) -> dict[str, float]:
 
     effects = {}
     for spec in specs:
-        name, _, value = spec.partition("=")
+        name, sep, value = spec.partition("=")
         if name not in EFFECTS:
             raise UsageError(f"--effect {spec}: unknown effect {name!r} (known: "
                              f"{', '.join(EFFECTS)})")
         try:
-            scale = options.non_negative(value) if value else 1.0
+            scale = options.non_negative(value) if sep else 1.0
         except argparse.ArgumentTypeError as e:
             raise UsageError(f"--effect {spec}: SCALE {e}") from None
+        if scale > MAX_SCALE:  # a delay of 1e9 ticks, an offset past any channel's range
+            raise UsageError(f"--effect {spec}: SCALE must be {MAX_SCALE:g} or less")
         if name in effects:
             raise UsageError(f"--effect {spec}: {name} is given twice")
         effects[name] = scale
