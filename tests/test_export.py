@@ -78,6 +78,31 @@ def test_export_to_an_unwritable_path_says_so_in_one_line(recorded, tmp_path, su
     assert err.count("\n") == 0 and f"error: {out}: cannot write" in err, err
 
 
+@pytest.mark.parametrize("suffix", [".blf", ".asc"])
+def test_an_export_the_disk_cuts_short_leaves_the_old_log_whole(recorded, tmp_path, suffix):
+    """A file-size limit (a full disk's stand-in) mid-export: one line, exit 2, and no
+    truncated log: the file that was there stays as it was (a hostile user's finding,
+    2026-12-03: a traceback and a cut .asc a tool would read as the whole run)."""
+    import resource
+    import subprocess
+    import sys
+
+    out = tmp_path / f"run{suffix}"
+    out.write_text("the last run's log\n")
+    limit = 4096  # bytes: the recording's frames take more in every format
+
+    def small_disk() -> None:
+        resource.setrlimit(resource.RLIMIT_FSIZE, (limit, limit))
+
+    p = subprocess.run([sys.executable, "-m", "observer_node", "export", str(recorded),
+                        "--to", str(out)], capture_output=True, text=True, timeout=120,
+                       preexec_fn=small_disk)
+    assert p.returncode == 2 and "Traceback" not in p.stderr, p.stderr
+    assert len(p.stderr.strip().splitlines()) == 1 and f"{out}: cannot write" in p.stderr
+    assert out.read_text() == "the last run's log\n"
+    assert sorted(f.name for f in tmp_path.iterdir()) == [out.name]
+
+
 def _wall_clock(recording: Path) -> tuple[float, float, float]:
     """The recording's wall-clock start and its first and last frame's wall-clock times, in
     s since the epoch, read with the ``mcap`` library: a frame's MCAP log time is wall-clock

@@ -16,6 +16,7 @@ such a file back, received frames only unless ``--all-frames``.
 from __future__ import annotations
 
 import heapq
+import os
 from datetime import datetime
 from pathlib import Path
 from typing import Any
@@ -55,6 +56,22 @@ def export_frames(recording: str | Path, out: str | Path,
             raise ExportError(f"{out}: MDF4 needs asammdf: pip install "
                               "'chest-observer[mf4]'") from None
     scan = Scan(recording)
+    # written beside under a hidden name, renamed when whole: a full disk or a bad recording
+    # leaves no truncated log that a tool would read as the whole run
+    part = out.with_name(f".{out.stem}.partial{out.suffix}")
+    try:
+        n = _write(scan, recording, part, channel, shown=out)
+        os.replace(part, out)
+    except OSError as e:
+        raise ExportError(f"{out}: cannot write: {e.strerror or e}") from None
+    finally:
+        part.unlink(missing_ok=True)
+    return n, scan.note if scan.salvaged else None
+
+
+def _write(scan: Scan, recording: Path, out: Path, channel: str, shown: Path) -> int:
+    """Write the frames ``scan`` reads to ``out`` (``shown`` in messages); returns how
+    many."""
     writer: Any = None
     # The recording holds frames in the order the daemon handed them over: a sent estimate
     # can follow a later-stamped received frame. Logs are in time order: a small heap
@@ -68,7 +85,7 @@ def export_frames(recording: str | Path, out: str | Path,
             fr = fmt.read_frame(raw)
             if writer is None:  # the wall clock at the recorder's start, from the first frame
                 start_s = (log_ns - round(fr.t * 1e9)) / 1e9
-                writer = _open_writer(out, start_s)
+                writer = _open_writer(out, start_s, shown)
             msg = can.Message(
                 timestamp=start_s + fr.t, arbitration_id=fr.can_id, is_extended_id=fr.extended,
                 data=fr.data, is_fd=fr.fd, bitrate_switch=fr.fd, is_error_frame=fr.error,
@@ -88,12 +105,11 @@ def export_frames(recording: str | Path, out: str | Path,
         if writer is not None:
             writer.stop()
     if n == 0:
-        out.unlink(missing_ok=True)
         raise RecordingError(f"{recording}: no {fmt.FRAMES} messages to export")
-    return n, scan.note if scan.salvaged else None
+    return n
 
 
-def _open_writer(out: Path, start_s: float) -> Any:
+def _open_writer(out: Path, start_s: float, shown: Path) -> Any:
     """python-can's writer for ``out``'s suffix, its header dated ``start_s`` (s since the
     epoch) where python-can would date it at the export."""
     try:
@@ -103,7 +119,7 @@ def _open_writer(out: Path, start_s: float) -> Any:
             return _AscWriter(out, start_s)
         return can.Logger(str(out))
     except OSError as e:
-        raise ExportError(f"{out}: cannot write: {e.strerror}") from None
+        raise ExportError(f"{shown}: cannot write: {e.strerror}") from None
 
 
 class _Mf4Writer(MF4Writer):
