@@ -70,6 +70,16 @@ def test_export_refuses_an_unknown_format_in_one_line(recorded, tmp_path, capsys
     assert err.count("\n") == 0 and "unknown log format '.xyz'" in err
 
 
+@pytest.mark.parametrize("channel", ["my can", "can0\nx", ""])
+def test_a_channel_name_no_log_line_can_carry_is_refused(recorded, tmp_path, channel, capsys):
+    out = tmp_path / "run.log"
+    with pytest.raises(SystemExit) as e:
+        main(["export", str(recorded), "--to", str(out), "--channel", channel])
+    err = capsys.readouterr().err.strip()
+    assert e.value.code == 2 and err.count("\n") == 0 and "--channel" in err, err
+    assert not out.exists()
+
+
 @pytest.mark.parametrize("suffix", [".mf4", ".blf", ".asc"])
 def test_export_to_an_unwritable_path_says_so_in_one_line(recorded, tmp_path, suffix, capsys):
     out = tmp_path / "missing" / f"run{suffix}"

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import argparse
+import re
 import sys
 
 
@@ -15,9 +16,18 @@ def add_subparser(subparsers: argparse._SubParsersAction[argparse.ArgumentParser
         "(can-utils candump -L), .trc (PEAK). crash-replay plays the file back.")
     s.add_argument("recording", help="MCAP file of observer-node run")
     s.add_argument("--to", required=True, metavar="FILE", help="log file to write")
-    s.add_argument("--channel", default="can0",
-                   help="channel name written into the log (default %(default)s)")
+    s.add_argument("--channel", default="can0", type=_channel,
+                   help="channel name written into the log: letters, digits, _ . - "
+                   "(default %(default)s)")
     s.set_defaults(func=_do_export)
+
+
+def _channel(text: str) -> str:
+    """A channel name every log format can carry: a space or a line break would split a
+    candump -L or .trc line, which no reader then takes."""
+    if not re.fullmatch(r"[A-Za-z0-9_.\-]{1,32}", text):
+        raise argparse.ArgumentTypeError(f"{text!r}: letters, digits, _ . - only (e.g. can0)")
+    return text
 
 
 def _do_export(a: argparse.Namespace) -> int:
