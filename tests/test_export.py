@@ -80,6 +80,12 @@ def test_a_channel_name_no_log_line_can_carry_is_refused(recorded, tmp_path, cha
     assert not out.exists()
 
 
+def test_export_to_a_folder_says_so(recorded, tmp_path, capsys):
+    assert main(["export", str(recorded), "--to", str(tmp_path)]) == 2
+    err = capsys.readouterr().err.strip()
+    assert err.count("\n") == 0 and "is a folder; give the log file's name" in err, err
+
+
 @pytest.mark.parametrize("suffix", [".mf4", ".blf", ".asc"])
 def test_export_to_an_unwritable_path_says_so_in_one_line(recorded, tmp_path, suffix, capsys):
     out = tmp_path / "missing" / f"run{suffix}"

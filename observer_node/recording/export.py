@@ -46,6 +46,8 @@ def export_frames(recording: str | Path, out: str | Path,
     number of frames written and, for a recording cut short (a killed run), what was salvaged
     (every frame up to the cut is written)."""
     recording, out = Path(recording), Path(out)
+    if out.is_dir():
+        raise ExportError(f"{out}: is a folder; give the log file's name (e.g. {out / 'run.blf'})")
     if out.suffix.lower() not in FORMATS:
         raise ExportError(f"{out}: unknown log format {out.suffix!r} (known: "
                           f"{', '.join(FORMATS)})")
