@@ -26,6 +26,7 @@ import contextlib
 import hashlib
 import json
 import os
+import re
 from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import Any
@@ -246,8 +247,10 @@ class ModelFile:
             d = json.loads(text, parse_constant=no_constant)
         except json.JSONDecodeError as e:
             raise ModelFileError(f"{path}:{e.lineno}: not valid JSON: {e.msg}") from None
-        except ValueError as e:
-            raise ModelFileError(f"{path}: {e}") from None
+        except ValueError as e:  # NaN or Infinity: JSON has no such number; say where
+            at = re.search(r"-?\b(?:NaN|Infinity)\b", text)
+            line = f":{text.count(chr(10), 0, at.start()) + 1}" if at else ""
+            raise ModelFileError(f"{path}{line}: {e}") from None
         except RecursionError:
             raise ModelFileError(f"{path}: nested too deeply to be a model file") from None
         return cls.from_dict(d, str(path))
