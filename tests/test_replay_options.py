@@ -1,0 +1,50 @@
+"""crash-replay refuses bad options and sources in one line naming the option or file, exit
+code 2: never a traceback, never a meaningless value played."""
+
+from __future__ import annotations
+
+import pytest
+
+from observer_node.replay.cli import main
+
+from .conftest import DATA
+
+R16 = str(DATA / "R16_001")
+
+
+def _one_line_error(capsys: pytest.CaptureFixture[str], argv: list[str]) -> str:
+    """Run crash-replay, expect exit code 2 and return its one-line error."""
+    try:
+        code = main(argv)
+    except SystemExit as e:  # argparse refuses while parsing
+        code = e.code
+    assert code == 2, argv
+    err = capsys.readouterr().err.strip()
+    assert err.startswith("crash-replay: error: ") and "\n" not in err, err
+    return err
+
+
+@pytest.mark.parametrize("option, value", [
+    ("--rate", "0"), ("--rate", "nan"), ("--rate", "inf"), ("--rate", "-1"),
+    ("--gap", "nan"), ("--gap", "-1"), ("--gap", "inf"),
+    ("--spin-us", "nan"), ("--spin-us", "-5"),
+    ("--bitrate", "nan"), ("--bitrate", "0"), ("--data-bitrate", "-1"),
+    ("--tick-rate", "0"), ("--tick-rate", "nan"),
+    ("--start", "nan"), ("--end", "inf"),
+    ("--pre", "nan"), ("--pre", "-1"), ("--pre", "1e12"),
+    ("--loop", "0"), ("--counts-per-rev", "0"),
+])
+def test_meaningless_numbers_are_refused_naming_the_option(capsys, option, value):
+    err = _one_line_error(capsys, [R16, "--dry-run", option, value])
+    assert option in err
+
+
+def test_pre_says_its_limit_in_help(capsys):
+    with pytest.raises(SystemExit):
+        main(["--help"])
+    assert "at most 5" in capsys.readouterr().out
+
+
+def test_a_window_that_ends_before_it_starts_is_refused(capsys):
+    err = _one_line_error(capsys, [R16, "--dry-run", "--start", "0.5", "--end", "0.1"])
+    assert "--start 0.5" in err and "--end 0.1" in err
