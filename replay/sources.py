@@ -22,7 +22,7 @@ from observer_node.data import ChannelCodes, CrashDataError, find_tests, load_te
 from observer_node.dbc import Codec
 from observer_node.errors import ObserverError
 
-from .schedule import Schedule, crash_test_schedule, restamp_counters
+from .schedule import Schedule, check_window, crash_test_schedule, restamp_counters
 
 
 class SourceError(ObserverError, ValueError):
@@ -186,6 +186,7 @@ def load_source(path: str | Path, codec: Codec, rate_hz: float = 1000.0,
 
 
 def _window(s: Schedule, start_s: float | None, end_s: float | None) -> Schedule:
+    check_window(s.source, s.t_s, start_s, end_s)  # times from the log's first frame
     keep = np.ones(len(s), bool)
     if start_s is not None:
         keep &= s.t_s >= start_s

@@ -48,3 +48,20 @@ def test_pre_says_its_limit_in_help(capsys):
 def test_a_window_that_ends_before_it_starts_is_refused(capsys):
     err = _one_line_error(capsys, [R16, "--dry-run", "--start", "0.5", "--end", "0.1"])
     assert "--start 0.5" in err and "--end 0.1" in err
+
+
+@pytest.mark.parametrize("window, said", [
+    (["--start", "100"], "--start 100 s is after the end"),
+    (["--end", "-5"], "--end -5 s is before the start"),
+    (["--start", "0.1002", "--end", "0.1004"], "holds no sample"),  # 1 ms ticks
+])
+def test_a_window_beside_the_test_names_the_option_and_the_tests_span(capsys, window, said):
+    err = _one_line_error(capsys, [R16, "--dry-run", *window])
+    assert said in err and "R16_001" in err and " to 0." in err
+
+
+def test_a_window_beside_a_bus_log_names_the_option_and_the_logs_span(capsys, tmp_path):
+    log = tmp_path / "run.log"
+    log.write_text("(1.000000) vcan0 100#0102\n(1.250000) vcan0 100#0304\n")
+    err = _one_line_error(capsys, [str(log), "--dry-run", "--start", "3"])
+    assert "--start 3 s is after the end: run.log runs from 0.000 to 0.250 s" in err
