@@ -31,8 +31,17 @@ from .schedule import Schedule, concat, restamp_counters
 from .sources import filter_remap, load_source
 
 
-def _int(s: str) -> int:
-    return int(s, 0)
+def _can_id(s: str) -> int:
+    """An argparse type: a CAN ID, 0x100 or 256; up to 0x7FF goes out standard, above as an
+    extended ID (29 bits)."""
+    try:
+        n = int(s, 0)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"not a CAN ID (0x100 or 256): {s!r}") from None
+    if not 0 <= n <= 0x1FFFFFFF:
+        raise argparse.ArgumentTypeError(f"a CAN ID is 0..0x7FF (standard) or up to 0x1FFFFFFF "
+                                         f"(extended): {s!r}")
+    return n
 
 
 def _priority(s: str) -> int:
@@ -56,7 +65,20 @@ def _remap(s: str) -> tuple[int, int]:
     a, _, b = s.partition("=")
     if not b:
         raise argparse.ArgumentTypeError(f"--remap wants FROM=TO, got {s!r}")
-    return int(a, 0), int(b, 0)
+    return _can_id(a), _can_id(b)
+
+
+def _remap_table(pairs: list[tuple[int, int]]) -> dict[int, int]:
+    table: dict[int, int] = {}
+    for a, b in pairs:
+        if a in table:  # the later one would win unsaid
+            raise UsageError(f"--remap 0x{a:X} given twice (=0x{table[a]:X}, =0x{b:X})")
+        table[a] = b
+    return table
+
+
+def _warn(message: str) -> None:
+    print(f"crash-replay: warning: {message}", file=sys.stderr)
 
 
 def build_parser() -> argparse.ArgumentParser:
@@ -95,7 +117,7 @@ def build_parser() -> argparse.ArgumentParser:
                    "normal")
     p.add_argument("--gap", type=non_negative, default=0.5,
                    help="pause between sources, s (default %(default)g)")
-    p.add_argument("--only", type=_int, action="append", metavar="ID",
+    p.add_argument("--only", type=_can_id, action="append", metavar="ID",
                    help="send only these CAN IDs (repeatable; 0x100 or 256)")
     p.add_argument("--remap", type=_remap, action="append", metavar="FROM=TO",
                    help="send frames of one ID under another (repeatable)")
@@ -158,11 +180,11 @@ def _play(a: argparse.Namespace) -> int:
     if a.burst and not a.fd:
         raise UsageError("--burst sends 48-byte InputBurst frames: it needs --fd")
     only = set(a.only) if a.only else None
-    remap = dict(a.remap or [])
+    remap = _remap_table(a.remap or [])
     sched = concat(parts * a.loop, a.gap)
     if sched.synthetic and len(parts) * a.loop > 1:
         sched = restamp_counters(sched, codec)  # one sensor across tests: no counter restart
-    sched = filter_remap(sched, only, remap)
+    sched = filter_remap(sched, only, remap, warn=_warn)
     if not len(sched):
         print("crash-replay: nothing to send", file=sys.stderr)
         return 2

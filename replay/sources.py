@@ -20,7 +20,7 @@ import numpy as np
 
 from observer_node.data import ChannelCodes, CrashDataError, find_tests, load_test
 from observer_node.dbc import Codec
-from observer_node.errors import ObserverError
+from observer_node.errors import ObserverError, UsageError
 
 from .schedule import Schedule, check_window, crash_test_schedule, restamp_counters
 
@@ -196,7 +196,26 @@ def _window(s: Schedule, start_s: float | None, end_s: float | None) -> Schedule
     return Schedule(s.t_s[idx], s.ids[idx], [s.data[i] for i in idx], s.source)
 
 
-def filter_remap(s: Schedule, only: set[int] | None, remap: dict[int, int]) -> Schedule:
+def filter_remap(s: Schedule, only: set[int] | None, remap: dict[int, int],
+                 warn: Callable[[str], None] | None = None) -> Schedule:
+    """The frames of the IDs in ``only`` (all if None), with the IDs in ``remap`` renamed. A
+    remap that would send two IDs' frames under one is an error (a receiver could not tell
+    them apart); ``warn`` hears of --only and --remap IDs that match no frame."""
     idx = [i for i, cid in enumerate(s.ids.tolist()) if only is None or cid in only]
+    sent = set(s.ids[idx].tolist())
+    if warn is not None:
+        for cid in sorted((only or set()) - sent):
+            warn(f"--only 0x{cid:X}: no frames of that ID in the sources")
+        for cid in sorted(remap.keys() - sent):
+            warn(f"--remap 0x{cid:X}=0x{remap[cid]:X}: no frames of 0x{cid:X} are sent")
+    by_new: dict[int, int] = {}
+    for cid in sorted(sent):
+        new = remap.get(cid, cid)
+        other = by_new.setdefault(new, cid)
+        if other != cid:
+            moved, kept = (cid, other) if cid != new else (other, cid)
+            why = (f"the sources send 0x{new:X} already" if kept == new
+                   else f"0x{kept:X} goes out as 0x{new:X} too")
+            raise UsageError(f"--remap 0x{moved:X}=0x{new:X}: {why}; the two would mix")
     ids = np.array([remap.get(int(s.ids[i]), int(s.ids[i])) for i in idx], dtype=np.int64)
     return Schedule(s.t_s[idx], ids, [s.data[i] for i in idx], s.source)

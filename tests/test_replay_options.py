@@ -65,3 +65,32 @@ def test_a_window_beside_a_bus_log_names_the_option_and_the_logs_span(capsys, tm
     log.write_text("(1.000000) vcan0 100#0102\n(1.250000) vcan0 100#0304\n")
     err = _one_line_error(capsys, [str(log), "--dry-run", "--start", "3"])
     assert "--start 3 s is after the end: run.log runs from 0.000 to 0.250 s" in err
+
+
+@pytest.mark.parametrize("option, value", [
+    ("--remap", "0x100=-5"), ("--remap", "0x100=0x40000000"), ("--remap", "-1=0x101"),
+    ("--remap", "0x100=x"), ("--only", "-1"), ("--only", "0x20000000"), ("--only", "one"),
+])
+def test_can_ids_out_of_range_are_refused_naming_the_option(capsys, option, value):
+    err = _one_line_error(capsys, [R16, "--dry-run", option, value])
+    assert option in err
+
+
+@pytest.mark.parametrize("remaps, said", [
+    (["0x100=0x110"], "--remap 0x100=0x110: the sources send 0x110 already"),
+    (["0x100=0x120", "0x110=0x120"], "--remap 0x110=0x120: 0x100 goes out as 0x120 too"),
+    (["0x100=0x120", "0x100=0x130"], "--remap 0x100 given twice"),
+])
+def test_remaps_that_would_mix_or_contradict_are_refused(capsys, remaps, said):
+    argv = [R16, "--dry-run"] + [x for r in remaps for x in ("--remap", r)]
+    assert said in _one_line_error(capsys, argv)
+
+
+def test_remaps_that_swap_ids_are_fine_and_unmatched_ids_are_warned_of(capsys):
+    assert main([R16, "--dry-run", "--remap", "0x100=0x110", "--remap", "0x110=0x100"]) == 0
+    assert capsys.readouterr().err == ""
+    assert main([R16, "--dry-run", "--remap", "0x123=0x124", "--only", "0x100",
+                 "--only", "0x7FF"]) == 0
+    err = capsys.readouterr().err
+    assert "warning: --remap 0x123=0x124: no frames of 0x123" in err
+    assert "warning: --only 0x7FF: no frames" in err
