@@ -158,6 +158,12 @@ def _translator(old_dbc: bytes, codec: Codec) -> Callable[[int, bytes], bytes] |
     return translate
 
 
+# What a source can be, for the error on a file of another kind
+KINDS = ("an ISO-MME test (folder, .mme or .zip), a .csv crash test, a folder of tests, "
+         "campaign-a[/PATTERN], an .mcap recording, or a .log/.asc/.blf/.trc/.mf4 bus log")
+TEST_FILES = (".zip", ".csv", ".mme")  # a crash test in one file (the rest are folders)
+
+
 def load_source(path: str | Path, codec: Codec, rate_hz: float = 1000.0,
                 reference: bool = False, start_s: float | None = None,
                 end_s: float | None = None, pre_s: float = 0.2,
@@ -168,8 +174,13 @@ def load_source(path: str | Path, codec: Codec, rate_hz: float = 1000.0,
     p = Path(path)
     suffix = p.suffix.lower()
     try:
-        if suffix in (".mcap", ".log", *PYTHON_CAN_LOGS) and not p.is_file():
-            raise SourceError(f"{p}: no such file")
+        if suffix in (".mcap", ".log", *PYTHON_CAN_LOGS):
+            if p.is_dir():
+                raise SourceError(f"{p}: is a folder, not a {suffix} file")
+            if not p.is_file():
+                raise SourceError(f"{p}: no such file")
+        elif p.exists() and not p.is_dir() and suffix not in TEST_FILES:
+            raise SourceError(f"{p}: not a source crash-replay reads: {KINDS}")
         if suffix == ".mcap":
             return [_window(read_mcap_frames(p, all_frames, codec), start_s, end_s)]
         if suffix == ".log":

@@ -94,3 +94,16 @@ def test_remaps_that_swap_ids_are_fine_and_unmatched_ids_are_warned_of(capsys):
     err = capsys.readouterr().err
     assert "warning: --remap 0x123=0x124: no frames of 0x123" in err
     assert "warning: --only 0x7FF: no frames" in err
+
+
+@pytest.mark.parametrize("name", ["plain.txt", "x.unknownext", "extensionless"])
+def test_a_file_of_unknown_kind_says_what_sources_are_read(capsys, tmp_path, name):
+    (tmp_path / name).write_text("hello\n")
+    err = _one_line_error(capsys, [str(tmp_path / name), "--dry-run"])
+    assert f"{name}: not a source crash-replay reads" in err and ".mcap recording" in err
+
+
+def test_a_folder_named_like_a_log_is_said_to_be_a_folder(capsys, tmp_path):
+    (tmp_path / "dir.log").mkdir()
+    err = _one_line_error(capsys, [str(tmp_path / "dir.log"), "--dry-run"])
+    assert "dir.log: is a folder, not a .log file" in err
