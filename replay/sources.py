@@ -11,7 +11,10 @@ source is an error naming the file and the place, never a half-played run.
 
 from __future__ import annotations
 
+import gc
+import logging
 import re
+import sys
 import tempfile
 from collections.abc import Callable
 from pathlib import Path
@@ -63,7 +66,9 @@ PYTHON_CAN_LOGS = (".asc", ".blf", ".trc", ".mf4")
 
 def read_python_can_log(path: Path, all_frames: bool = False) -> Schedule:
     """Frames of an ASC, BLF, TRC or MF4 log; only those received by the logging node unless
-    ``all_frames`` (in the formats that keep the direction)."""
+    ``all_frames`` (in the formats that keep the direction). A log cut short or with a record
+    python-can cannot parse is refused, as a truncated MCAP is: python-can itself logs such a
+    record and goes on, so a cut log would replay part of a test unsaid."""
     import can
 
     if path.suffix.lower() == ".mf4":
@@ -73,19 +78,72 @@ def read_python_can_log(path: Path, all_frames: bool = False) -> Schedule:
             raise SourceError(f"{path}: reading MDF4 needs asammdf: pip install "
                               "'chest-observer[mf4]'") from None
     times, ids, data = [], [], []
+    said = _Said()
+    can_log = logging.getLogger("can")
+    can_log.addHandler(said)
+    propagate, can_log.propagate = can_log.propagate, False  # its lines become our one line
     try:
-        for m in can.LogReader(str(path)):
-            if m.is_error_frame or m.is_remote_frame or not (m.is_rx or all_frames):
-                continue
-            times.append(m.timestamp)
-            ids.append(m.arbitration_id)
-            data.append(bytes(m.data))
+        with can.LogReader(str(path)) as reader:
+            for m in reader:
+                if m.is_error_frame or m.is_remote_frame or not (m.is_rx or all_frames):
+                    continue
+                times.append(m.timestamp)
+                ids.append(m.arbitration_id)
+                data.append(bytes(m.data))
+        why = said.first or _cut_short(path, reader)
     except Exception as e:  # python-can raises many kinds on bad logs
-        raise SourceError(f"{path}: unreadable after frame {len(data)}: {e}") from None
+        why = f"{type(e).__name__}: {e}"
+    finally:
+        can_log.removeHandler(said)
+        can_log.propagate = propagate
+    if why:
+        _collect_quietly()
+        raise SourceError(f"{path}: truncated or corrupt after {len(data)} frames ({why})")
     if not data:
         raise SourceError(f"{path}: no frames")
     t = np.array(times)
     return Schedule(t - t[0], np.array(ids), data, path.name)
+
+
+class _Said(logging.Handler):
+    """The first warning python-can logged (a record it could not parse and skipped)."""
+
+    def __init__(self) -> None:
+        super().__init__(logging.WARNING)
+        self.first = ""
+
+    def emit(self, record: logging.LogRecord) -> None:
+        self.first = self.first or " ".join(record.getMessage().split())[:120]
+
+
+def _cut_short(path: Path, reader: object) -> str:
+    """Why the log ends early, or "": a BLF shorter than its header says, a text log whose
+    last line is cut, an ASC without its closing line."""
+    size = path.stat().st_size
+    said_size = getattr(reader, "file_size", 0)  # a BLF's header, written when it was closed
+    if said_size > size:
+        return f"{size} of the {said_size} bytes its header gives"
+    suffix = path.suffix.lower()
+    if suffix in (".asc", ".trc"):
+        with path.open("rb") as f:
+            f.seek(max(0, size - 200))
+            tail = f.read()
+        if tail and not tail.endswith(b"\n"):
+            return "the last line is cut"
+        if suffix == ".asc" and b"end triggerblock" not in tail.lower():
+            return "no 'End TriggerBlock' line"
+    return ""
+
+
+def _collect_quietly() -> None:
+    """Collect a reader that failed half-way now, quietly: asammdf's MDF4 raises again in
+    its ``__del__`` ("Exception ignored in ..."), a traceback after our one line."""
+    hook = sys.unraisablehook
+    sys.unraisablehook = lambda _: None
+    try:
+        gc.collect()
+    finally:
+        sys.unraisablehook = hook
 
 
 def read_mcap_frames(path: Path, all_frames: bool = False, codec: Codec | None = None

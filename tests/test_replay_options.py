@@ -3,9 +3,16 @@ code 2: never a traceback, never a meaningless value played."""
 
 from __future__ import annotations
 
+import gc
+from pathlib import Path
+
+import can
 import pytest
 
+from observer_node.data import read_isomme
+from observer_node.dbc import Codec
 from observer_node.replay.cli import main
+from observer_node.replay.schedule import crash_test_schedule
 
 from .conftest import DATA
 
@@ -107,3 +114,54 @@ def test_a_folder_named_like_a_log_is_said_to_be_a_folder(capsys, tmp_path):
     (tmp_path / "dir.log").mkdir()
     err = _one_line_error(capsys, [str(tmp_path / "dir.log"), "--dry-run"])
     assert "dir.log: is a folder, not a .log file" in err
+
+
+def _bus_log(path: Path) -> int:
+    """A bus log of R16_002's frames at ``path`` (its kind by suffix); the number of frames."""
+    s = crash_test_schedule(read_isomme(DATA / "R16_002"), Codec(), 1000.0)
+    with can.Logger(str(path)) as w:
+        for k, (cid, d) in enumerate(zip(s.ids.tolist(), s.data, strict=True)):
+            w.on_message_received(can.Message(timestamp=1000 + s.t_s[k], arbitration_id=cid,
+                                              data=d, is_extended_id=False))
+    return len(s)
+
+
+@pytest.mark.parametrize("suffix, cut", [
+    (".blf", 0.5),  # shorter than its header says
+    (".trc", 0.5),  # the last line cut
+    (".asc", 0.5),
+    (".mf4", 0.5),  # asammdf fails; its __del__ must not print a traceback after our line
+])
+def test_a_truncated_bus_log_is_refused_saying_what_was_read(capsys, tmp_path, suffix, cut):
+    whole = tmp_path / f"whole{suffix}"
+    _bus_log(whole)
+    raw = whole.read_bytes()
+    log = tmp_path / f"cut{suffix}"
+    log.write_bytes(raw[:int(len(raw) * cut) + 7])
+    err = _one_line_error(capsys, [str(log), "--dry-run"])
+    assert f"cut{suffix}: truncated or corrupt after " in err and " frames (" in err
+    gc.collect()  # a half-made reader collected late must say nothing either
+    assert capsys.readouterr().err == ""
+
+
+def test_a_trc_log_cut_at_a_line_end_or_with_a_bad_line_is_refused(capsys, tmp_path):
+    whole = tmp_path / "whole.trc"
+    _bus_log(whole)
+    lines = whole.read_bytes().splitlines(keepends=True)
+    bad = tmp_path / "bad.trc"
+    bad.write_bytes(b"".join([*lines[:-5], lines[-5][:30] + b"\r\n", *lines[-4:]]))
+    err = _one_line_error(capsys, [str(bad), "--dry-run"])
+    assert "bad.trc: truncated or corrupt after " in err and "Failed to parse" in err
+    asc = tmp_path / "whole.asc"
+    _bus_log(asc)
+    cut = tmp_path / "cut.asc"
+    cut.write_bytes(b"".join(asc.read_bytes().splitlines(keepends=True)[:-3]))
+    assert "no 'End TriggerBlock' line" in _one_line_error(capsys, [str(cut), "--dry-run"])
+
+
+@pytest.mark.parametrize("suffix", [".asc", ".blf", ".trc", ".mf4"])
+def test_whole_bus_logs_still_replay(capsys, tmp_path, suffix):
+    n = _bus_log(tmp_path / f"run{suffix}")
+    assert main([str(tmp_path / f"run{suffix}"), "--dry-run"]) == 0
+    out, err = capsys.readouterr()
+    assert out.startswith(f"{n} frames") and err == ""
