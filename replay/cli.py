@@ -24,15 +24,24 @@ from collections import Counter
 from observer_node.dbc import Codec, fd_frame_time_s, frame_bits
 from observer_node.dbc.bus import add_bus_arguments, open_bus
 from observer_node.errors import ObserverError, UsageError
-from observer_node.options import OneLineParser
+from observer_node.options import OneLineParser, finite, non_negative, positive, positive_int
 
 from .player import bus_sender, play
 from .schedule import Schedule, concat, restamp_counters
 from .sources import filter_remap, load_source
 
 
-def _int(s: str) -> int:
-    return int(s, 0)
+def _can_id(s: str) -> int:
+    """An argparse type: a CAN ID, 0x100 or 256; up to 0x7FF goes out standard, above as an
+    extended ID (29 bits)."""
+    try:
+        n = int(s, 0)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"not a CAN ID (0x100 or 256): {s!r}") from None
+    if not 0 <= n <= 0x1FFFFFFF:
+        raise argparse.ArgumentTypeError(f"a CAN ID is 0..0x7FF (standard) or up to 0x1FFFFFFF "
+                                         f"(extended): {s!r}")
+    return n
 
 
 def _priority(s: str) -> int:
@@ -42,11 +51,34 @@ def _priority(s: str) -> int:
     return n
 
 
+PRE_MAX_S = 5.0  # --pre: the daemon's bias needs a fraction of a second; more is a typo
+
+
+def _pre(s: str) -> float:
+    x = non_negative(s)
+    if x > PRE_MAX_S:
+        raise argparse.ArgumentTypeError(f"at most {PRE_MAX_S:g} s: {s!r}")
+    return x
+
+
 def _remap(s: str) -> tuple[int, int]:
     a, _, b = s.partition("=")
     if not b:
         raise argparse.ArgumentTypeError(f"--remap wants FROM=TO, got {s!r}")
-    return int(a, 0), int(b, 0)
+    return _can_id(a), _can_id(b)
+
+
+def _remap_table(pairs: list[tuple[int, int]]) -> dict[int, int]:
+    table: dict[int, int] = {}
+    for a, b in pairs:
+        if a in table:  # the later one would win unsaid
+            raise UsageError(f"--remap 0x{a:X} given twice (=0x{table[a]:X}, =0x{b:X})")
+        table[a] = b
+    return table
+
+
+def _warn(message: str) -> None:
+    print(f"crash-replay: warning: {message}", file=sys.stderr)
 
 
 def build_parser() -> argparse.ArgumentParser:
@@ -59,22 +91,22 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--burst", action="store_true",
                    help="lab data as InputBurst frames, eight samples each (CAN FD; for tick "
                    "rates a frame per sample cannot carry, e.g. --tick-rate 10000)")
-    p.add_argument("--rate", type=float, default=1.0,
+    p.add_argument("--rate", type=positive, default=1.0,
                    help="time scale: 2 plays twice as fast, 0.1 ten times slower "
                    "(default %(default)g)")
-    p.add_argument("--tick-rate", type=float, default=1000.0,
+    p.add_argument("--tick-rate", type=positive, default=1000.0,
                    help="accelerometer frames per second for lab data (default %(default)g, the "
                    "DBC's)")
     p.add_argument("--reference", action="store_true",
                    help="also send ReferenceChest frames with the measured CR and CD")
-    p.add_argument("--start", type=float, help="start of the window to play, s (test time)")
-    p.add_argument("--end", type=float, help="end of the window to play, s (test time)")
-    p.add_argument("--pre", type=float, default=0.2,
+    p.add_argument("--start", type=finite, help="start of the window to play, s (test time)")
+    p.add_argument("--end", type=finite, help="end of the window to play, s (test time)")
+    p.add_argument("--pre", type=_pre, default=0.2,
                    help="quiet signal before a lab test, s, for the daemon's bias "
-                   "(default %(default)g)")
-    p.add_argument("--loop", type=int, default=1, metavar="N",
+                   f"(default %(default)g, at most {PRE_MAX_S:g})")
+    p.add_argument("--loop", type=positive_int, default=1, metavar="N",
                    help="play everything N times (default %(default)s)")
-    p.add_argument("--spin-us", type=float, default=300.0,
+    p.add_argument("--spin-us", type=non_negative, default=300.0,
                    help="busy-wait this long before each due time for accuracy (default "
                    "%(default)g); use 0 in an emulated VM, where spinning steals the "
                    "emulator's own CPU")
@@ -83,19 +115,20 @@ def build_parser() -> argparse.ArgumentParser:
                    "or RLIMIT_RTPRIO, else one line says so): due frames preempt every "
                    "normal process, as the daemon's run --rt-priority; default %(default)s: "
                    "normal")
-    p.add_argument("--gap", type=float, default=0.5,
+    p.add_argument("--gap", type=non_negative, default=0.5,
                    help="pause between sources, s (default %(default)g)")
-    p.add_argument("--only", type=_int, action="append", metavar="ID",
+    p.add_argument("--only", type=_can_id, action="append", metavar="ID",
                    help="send only these CAN IDs (repeatable; 0x100 or 256)")
     p.add_argument("--remap", type=_remap, action="append", metavar="FROM=TO",
                    help="send frames of one ID under another (repeatable)")
     p.add_argument("--all-frames", action="store_true",
                    help="MCAP, and logs that keep the direction (ASC, BLF, TRC, MF4): also the "
                    "frames the recording node sent, not only those it received")
-    p.add_argument("--counts-per-rev", type=int, help="BRS counts/rev if a test does not say")
-    p.add_argument("--bitrate", type=float, default=500_000,
+    p.add_argument("--counts-per-rev", type=positive_int,
+                   help="BRS counts/rev if a test does not say")
+    p.add_argument("--bitrate", type=positive, default=500_000,
                    help="for --dry-run's bus load (default %(default).0f)")
-    p.add_argument("--data-bitrate", type=float, default=2_000_000,
+    p.add_argument("--data-bitrate", type=positive, default=2_000_000,
                    help="CAN FD data phase, for --dry-run's bus load with --fd "
                    "(default %(default).0f)")
     p.add_argument("--dry-run", action="store_true",
@@ -136,6 +169,8 @@ def main(argv: list[str] | None = None) -> int:
 
 
 def _play(a: argparse.Namespace) -> int:
+    if a.start is not None and a.end is not None and a.start >= a.end:
+        raise UsageError(f"--start {a.start:g} is not before --end {a.end:g}: nothing to play")
     codec = Codec()
     parts: list[Schedule] = []
     for src in a.sources:
@@ -145,11 +180,11 @@ def _play(a: argparse.Namespace) -> int:
     if a.burst and not a.fd:
         raise UsageError("--burst sends 48-byte InputBurst frames: it needs --fd")
     only = set(a.only) if a.only else None
-    remap = dict(a.remap or [])
+    remap = _remap_table(a.remap or [])
     sched = concat(parts * a.loop, a.gap)
     if sched.synthetic and len(parts) * a.loop > 1:
         sched = restamp_counters(sched, codec)  # one sensor across tests: no counter restart
-    sched = filter_remap(sched, only, remap)
+    sched = filter_remap(sched, only, remap, warn=_warn)
     if not len(sched):
         print("crash-replay: nothing to send", file=sys.stderr)
         return 2

@@ -22,6 +22,7 @@ import numpy as np
 from observer_node.data import CrashTest
 from observer_node.data.crashtest import resample_inputs, resample_reference
 from observer_node.dbc import Codec
+from observer_node.errors import UsageError
 
 
 @dataclass
@@ -70,6 +71,24 @@ def concat(schedules: list[Schedule], gap_s: float = 0.5) -> Schedule:
                     all(p.synthetic for p in parts))
 
 
+def check_window(name: str, t: np.ndarray, start_s: float | None, end_s: float | None) -> None:
+    """One line naming --start or --end and the span of ``t`` when the window holds none of
+    its times: it would play nothing, or a lab test's quiet --pre signal alone."""
+    inside = np.ones(len(t), bool)
+    if start_s is not None:
+        inside &= t >= start_s - 1e-9
+    if end_s is not None:
+        inside &= t <= end_s + 1e-9
+    if not len(t) or inside.any():
+        return
+    span = f"{name} runs from {t[0]:.3f} to {t[-1]:.3f} s"
+    if start_s is not None and start_s > t[-1]:
+        raise UsageError(f"--start {start_s:g} s is after the end: {span}")
+    if end_s is not None and end_s < t[0]:
+        raise UsageError(f"--end {end_s:g} s is before the start: {span}")
+    raise UsageError(f"--start {start_s:g} to --end {end_s:g} s holds no sample: {span}")
+
+
 def crash_test_schedule(test: CrashTest, codec: Codec, rate_hz: float = 1000.0,
                         reference: bool = False, brs_heartbeat_s: float = 0.01,
                         start_s: float | None = None, end_s: float | None = None,
@@ -85,6 +104,7 @@ def crash_test_schedule(test: CrashTest, codec: Codec, rate_hz: float = 1000.0,
     if reference and test.has_outputs:
         cr = resample_reference(test.cr_g, step)[:len(pulse)]  # type: ignore[arg-type]
         cd = resample_reference(test.cd_mm, step)[:len(pulse)]  # type: ignore[arg-type]
+    check_window(test.source or test.name, t, start_s, end_s)
     lo = 0 if start_s is None else int(np.searchsorted(t, start_s - 1e-9))
     hi = len(t) if end_s is None else int(np.searchsorted(t, end_s + 1e-9))
     n_pre = round(pre_s * rate_hz)

@@ -11,7 +11,10 @@ source is an error naming the file and the place, never a half-played run.
 
 from __future__ import annotations
 
+import gc
+import logging
 import re
+import sys
 import tempfile
 from collections.abc import Callable
 from pathlib import Path
@@ -20,9 +23,9 @@ import numpy as np
 
 from observer_node.data import ChannelCodes, CrashDataError, find_tests, load_test
 from observer_node.dbc import Codec
-from observer_node.errors import ObserverError
+from observer_node.errors import ObserverError, UsageError
 
-from .schedule import Schedule, crash_test_schedule, restamp_counters
+from .schedule import Schedule, check_window, crash_test_schedule, restamp_counters
 
 
 class SourceError(ObserverError, ValueError):
@@ -63,7 +66,9 @@ PYTHON_CAN_LOGS = (".asc", ".blf", ".trc", ".mf4")
 
 def read_python_can_log(path: Path, all_frames: bool = False) -> Schedule:
     """Frames of an ASC, BLF, TRC or MF4 log; only those received by the logging node unless
-    ``all_frames`` (in the formats that keep the direction)."""
+    ``all_frames`` (in the formats that keep the direction). A log cut short or with a record
+    python-can cannot parse is refused, as a truncated MCAP is: python-can itself logs such a
+    record and goes on, so a cut log would replay part of a test unsaid."""
     import can
 
     if path.suffix.lower() == ".mf4":
@@ -73,19 +78,72 @@ def read_python_can_log(path: Path, all_frames: bool = False) -> Schedule:
             raise SourceError(f"{path}: reading MDF4 needs asammdf: pip install "
                               "'chest-observer[mf4]'") from None
     times, ids, data = [], [], []
+    said = _Said()
+    can_log = logging.getLogger("can")
+    can_log.addHandler(said)
+    propagate, can_log.propagate = can_log.propagate, False  # its lines become our one line
     try:
-        for m in can.LogReader(str(path)):
-            if m.is_error_frame or m.is_remote_frame or not (m.is_rx or all_frames):
-                continue
-            times.append(m.timestamp)
-            ids.append(m.arbitration_id)
-            data.append(bytes(m.data))
+        with can.LogReader(str(path)) as reader:
+            for m in reader:
+                if m.is_error_frame or m.is_remote_frame or not (m.is_rx or all_frames):
+                    continue
+                times.append(m.timestamp)
+                ids.append(m.arbitration_id)
+                data.append(bytes(m.data))
+        why = said.first or _cut_short(path, reader)
     except Exception as e:  # python-can raises many kinds on bad logs
-        raise SourceError(f"{path}: unreadable after frame {len(data)}: {e}") from None
+        why = f"{type(e).__name__}: {e}"
+    finally:
+        can_log.removeHandler(said)
+        can_log.propagate = propagate
+    if why:
+        _collect_quietly()
+        raise SourceError(f"{path}: truncated or corrupt after {len(data)} frames ({why})")
     if not data:
         raise SourceError(f"{path}: no frames")
     t = np.array(times)
     return Schedule(t - t[0], np.array(ids), data, path.name)
+
+
+class _Said(logging.Handler):
+    """The first warning python-can logged (a record it could not parse and skipped)."""
+
+    def __init__(self) -> None:
+        super().__init__(logging.WARNING)
+        self.first = ""
+
+    def emit(self, record: logging.LogRecord) -> None:
+        self.first = self.first or " ".join(record.getMessage().split())[:120]
+
+
+def _cut_short(path: Path, reader: object) -> str:
+    """Why the log ends early, or "": a BLF shorter than its header says, a text log whose
+    last line is cut, an ASC without its closing line."""
+    size = path.stat().st_size
+    said_size = getattr(reader, "file_size", 0)  # a BLF's header, written when it was closed
+    if said_size > size:
+        return f"{size} of the {said_size} bytes its header gives"
+    suffix = path.suffix.lower()
+    if suffix in (".asc", ".trc"):
+        with path.open("rb") as f:
+            f.seek(max(0, size - 200))
+            tail = f.read()
+        if tail and not tail.endswith(b"\n"):
+            return "the last line is cut"
+        if suffix == ".asc" and b"end triggerblock" not in tail.lower():
+            return "no 'End TriggerBlock' line"
+    return ""
+
+
+def _collect_quietly() -> None:
+    """Collect a reader that failed half-way now, quietly: asammdf's MDF4 raises again in
+    its ``__del__`` ("Exception ignored in ..."), a traceback after our one line."""
+    hook = sys.unraisablehook
+    sys.unraisablehook = lambda _: None
+    try:
+        gc.collect()
+    finally:
+        sys.unraisablehook = hook
 
 
 def read_mcap_frames(path: Path, all_frames: bool = False, codec: Codec | None = None
@@ -158,6 +216,12 @@ def _translator(old_dbc: bytes, codec: Codec) -> Callable[[int, bytes], bytes] |
     return translate
 
 
+# What a source can be, for the error on a file of another kind
+KINDS = ("an ISO-MME test (folder, .mme or .zip), a .csv crash test, a folder of tests, "
+         "campaign-a[/PATTERN], an .mcap recording, or a .log/.asc/.blf/.trc/.mf4 bus log")
+TEST_FILES = (".zip", ".csv", ".mme")  # a crash test in one file (the rest are folders)
+
+
 def load_source(path: str | Path, codec: Codec, rate_hz: float = 1000.0,
                 reference: bool = False, start_s: float | None = None,
                 end_s: float | None = None, pre_s: float = 0.2,
@@ -168,8 +232,13 @@ def load_source(path: str | Path, codec: Codec, rate_hz: float = 1000.0,
     p = Path(path)
     suffix = p.suffix.lower()
     try:
-        if suffix in (".mcap", ".log", *PYTHON_CAN_LOGS) and not p.is_file():
-            raise SourceError(f"{p}: no such file")
+        if suffix in (".mcap", ".log", *PYTHON_CAN_LOGS):
+            if p.is_dir():
+                raise SourceError(f"{p}: is a folder, not a {suffix} file")
+            if not p.is_file():
+                raise SourceError(f"{p}: no such file")
+        elif p.exists() and not p.is_dir() and suffix not in TEST_FILES:
+            raise SourceError(f"{p}: not a source crash-replay reads: {KINDS}")
         if suffix == ".mcap":
             return [_window(read_mcap_frames(p, all_frames, codec), start_s, end_s)]
         if suffix == ".log":
@@ -186,6 +255,7 @@ def load_source(path: str | Path, codec: Codec, rate_hz: float = 1000.0,
 
 
 def _window(s: Schedule, start_s: float | None, end_s: float | None) -> Schedule:
+    check_window(s.source, s.t_s, start_s, end_s)  # times from the log's first frame
     keep = np.ones(len(s), bool)
     if start_s is not None:
         keep &= s.t_s >= start_s
@@ -195,7 +265,26 @@ def _window(s: Schedule, start_s: float | None, end_s: float | None) -> Schedule
     return Schedule(s.t_s[idx], s.ids[idx], [s.data[i] for i in idx], s.source)
 
 
-def filter_remap(s: Schedule, only: set[int] | None, remap: dict[int, int]) -> Schedule:
+def filter_remap(s: Schedule, only: set[int] | None, remap: dict[int, int],
+                 warn: Callable[[str], None] | None = None) -> Schedule:
+    """The frames of the IDs in ``only`` (all if None), with the IDs in ``remap`` renamed. A
+    remap that would send two IDs' frames under one is an error (a receiver could not tell
+    them apart); ``warn`` hears of --only and --remap IDs that match no frame."""
     idx = [i for i, cid in enumerate(s.ids.tolist()) if only is None or cid in only]
+    sent = set(s.ids[idx].tolist())
+    if warn is not None:
+        for cid in sorted((only or set()) - sent):
+            warn(f"--only 0x{cid:X}: no frames of that ID in the sources")
+        for cid in sorted(remap.keys() - sent):
+            warn(f"--remap 0x{cid:X}=0x{remap[cid]:X}: no frames of 0x{cid:X} are sent")
+    by_new: dict[int, int] = {}
+    for cid in sorted(sent):
+        new = remap.get(cid, cid)
+        other = by_new.setdefault(new, cid)
+        if other != cid:
+            moved, kept = (cid, other) if cid != new else (other, cid)
+            why = (f"the sources send 0x{new:X} already" if kept == new
+                   else f"0x{kept:X} goes out as 0x{new:X} too")
+            raise UsageError(f"--remap 0x{moved:X}=0x{new:X}: {why}; the two would mix")
     ids = np.array([remap.get(int(s.ids[i]), int(s.ids[i])) for i in idx], dtype=np.int64)
     return Schedule(s.t_s[idx], ids, [s.data[i] for i in idx], s.source)

@@ -1,0 +1,167 @@
+"""crash-replay refuses bad options and sources in one line naming the option or file, exit
+code 2: never a traceback, never a meaningless value played."""
+
+from __future__ import annotations
+
+import gc
+from pathlib import Path
+
+import can
+import pytest
+
+from observer_node.data import read_isomme
+from observer_node.dbc import Codec
+from observer_node.replay.cli import main
+from observer_node.replay.schedule import crash_test_schedule
+
+from .conftest import DATA
+
+R16 = str(DATA / "R16_001")
+
+
+def _one_line_error(capsys: pytest.CaptureFixture[str], argv: list[str]) -> str:
+    """Run crash-replay, expect exit code 2 and return its one-line error."""
+    try:
+        code = main(argv)
+    except SystemExit as e:  # argparse refuses while parsing
+        code = e.code
+    assert code == 2, argv
+    err = capsys.readouterr().err.strip()
+    assert err.startswith("crash-replay: error: ") and "\n" not in err, err
+    return err
+
+
+@pytest.mark.parametrize("option, value", [
+    ("--rate", "0"), ("--rate", "nan"), ("--rate", "inf"), ("--rate", "-1"),
+    ("--gap", "nan"), ("--gap", "-1"), ("--gap", "inf"),
+    ("--spin-us", "nan"), ("--spin-us", "-5"),
+    ("--bitrate", "nan"), ("--bitrate", "0"), ("--data-bitrate", "-1"),
+    ("--tick-rate", "0"), ("--tick-rate", "nan"),
+    ("--start", "nan"), ("--end", "inf"),
+    ("--pre", "nan"), ("--pre", "-1"), ("--pre", "1e12"),
+    ("--loop", "0"), ("--counts-per-rev", "0"),
+])
+def test_meaningless_numbers_are_refused_naming_the_option(capsys, option, value):
+    err = _one_line_error(capsys, [R16, "--dry-run", option, value])
+    assert option in err
+
+
+def test_pre_says_its_limit_in_help(capsys):
+    with pytest.raises(SystemExit):
+        main(["--help"])
+    assert "at most 5" in capsys.readouterr().out
+
+
+def test_a_window_that_ends_before_it_starts_is_refused(capsys):
+    err = _one_line_error(capsys, [R16, "--dry-run", "--start", "0.5", "--end", "0.1"])
+    assert "--start 0.5" in err and "--end 0.1" in err
+
+
+@pytest.mark.parametrize("window, said", [
+    (["--start", "100"], "--start 100 s is after the end"),
+    (["--end", "-5"], "--end -5 s is before the start"),
+    (["--start", "0.1002", "--end", "0.1004"], "holds no sample"),  # 1 ms ticks
+])
+def test_a_window_beside_the_test_names_the_option_and_the_tests_span(capsys, window, said):
+    err = _one_line_error(capsys, [R16, "--dry-run", *window])
+    assert said in err and "R16_001" in err and " to 0." in err
+
+
+def test_a_window_beside_a_bus_log_names_the_option_and_the_logs_span(capsys, tmp_path):
+    log = tmp_path / "run.log"
+    log.write_text("(1.000000) vcan0 100#0102\n(1.250000) vcan0 100#0304\n")
+    err = _one_line_error(capsys, [str(log), "--dry-run", "--start", "3"])
+    assert "--start 3 s is after the end: run.log runs from 0.000 to 0.250 s" in err
+
+
+@pytest.mark.parametrize("option, value", [
+    ("--remap", "0x100=-5"), ("--remap", "0x100=0x40000000"), ("--remap", "-1=0x101"),
+    ("--remap", "0x100=x"), ("--only", "-1"), ("--only", "0x20000000"), ("--only", "one"),
+])
+def test_can_ids_out_of_range_are_refused_naming_the_option(capsys, option, value):
+    err = _one_line_error(capsys, [R16, "--dry-run", option, value])
+    assert option in err
+
+
+@pytest.mark.parametrize("remaps, said", [
+    (["0x100=0x110"], "--remap 0x100=0x110: the sources send 0x110 already"),
+    (["0x100=0x120", "0x110=0x120"], "--remap 0x110=0x120: 0x100 goes out as 0x120 too"),
+    (["0x100=0x120", "0x100=0x130"], "--remap 0x100 given twice"),
+])
+def test_remaps_that_would_mix_or_contradict_are_refused(capsys, remaps, said):
+    argv = [R16, "--dry-run"] + [x for r in remaps for x in ("--remap", r)]
+    assert said in _one_line_error(capsys, argv)
+
+
+def test_remaps_that_swap_ids_are_fine_and_unmatched_ids_are_warned_of(capsys):
+    assert main([R16, "--dry-run", "--remap", "0x100=0x110", "--remap", "0x110=0x100"]) == 0
+    assert capsys.readouterr().err == ""
+    assert main([R16, "--dry-run", "--remap", "0x123=0x124", "--only", "0x100",
+                 "--only", "0x7FF"]) == 0
+    err = capsys.readouterr().err
+    assert "warning: --remap 0x123=0x124: no frames of 0x123" in err
+    assert "warning: --only 0x7FF: no frames" in err
+
+
+@pytest.mark.parametrize("name", ["plain.txt", "x.unknownext", "extensionless"])
+def test_a_file_of_unknown_kind_says_what_sources_are_read(capsys, tmp_path, name):
+    (tmp_path / name).write_text("hello\n")
+    err = _one_line_error(capsys, [str(tmp_path / name), "--dry-run"])
+    assert f"{name}: not a source crash-replay reads" in err and ".mcap recording" in err
+
+
+def test_a_folder_named_like_a_log_is_said_to_be_a_folder(capsys, tmp_path):
+    (tmp_path / "dir.log").mkdir()
+    err = _one_line_error(capsys, [str(tmp_path / "dir.log"), "--dry-run"])
+    assert "dir.log: is a folder, not a .log file" in err
+
+
+def _bus_log(path: Path) -> int:
+    """A bus log of R16_002's frames at ``path`` (its kind by suffix); the number of frames."""
+    s = crash_test_schedule(read_isomme(DATA / "R16_002"), Codec(), 1000.0)
+    with can.Logger(str(path)) as w:
+        for k, (cid, d) in enumerate(zip(s.ids.tolist(), s.data, strict=True)):
+            w.on_message_received(can.Message(timestamp=1000 + s.t_s[k], arbitration_id=cid,
+                                              data=d, is_extended_id=False))
+    return len(s)
+
+
+@pytest.mark.parametrize("suffix, cut", [
+    (".blf", 0.5),  # shorter than its header says
+    (".trc", 0.5),  # the last line cut
+    (".asc", 0.5),
+    (".mf4", 0.5),  # asammdf fails; its __del__ must not print a traceback after our line
+])
+def test_a_truncated_bus_log_is_refused_saying_what_was_read(capsys, tmp_path, suffix, cut):
+    whole = tmp_path / f"whole{suffix}"
+    _bus_log(whole)
+    raw = whole.read_bytes()
+    log = tmp_path / f"cut{suffix}"
+    log.write_bytes(raw[:int(len(raw) * cut) + 7])
+    err = _one_line_error(capsys, [str(log), "--dry-run"])
+    assert f"cut{suffix}: truncated or corrupt after " in err and " frames (" in err
+    gc.collect()  # a half-made reader collected late must say nothing either
+    assert capsys.readouterr().err == ""
+
+
+def test_a_trc_log_cut_at_a_line_end_or_with_a_bad_line_is_refused(capsys, tmp_path):
+    whole = tmp_path / "whole.trc"
+    _bus_log(whole)
+    lines = whole.read_bytes().splitlines(keepends=True)
+    bad = tmp_path / "bad.trc"
+    bad.write_bytes(b"".join([*lines[:-5], lines[-5][:30] + b"\r\n", *lines[-4:]]))
+    err = _one_line_error(capsys, [str(bad), "--dry-run"])
+    assert "bad.trc: truncated or corrupt after " in err and "Failed to parse" in err
+    asc = tmp_path / "whole.asc"
+    _bus_log(asc)
+    cut = tmp_path / "cut.asc"
+    cut.write_bytes(b"".join(asc.read_bytes().splitlines(keepends=True)[:-3]))
+    assert "no 'End TriggerBlock' line" in _one_line_error(capsys, [str(cut), "--dry-run"])
+
+
+@pytest.mark.parametrize("suffix", [".asc", ".blf", ".trc", ".mf4"])
+def test_whole_bus_logs_still_replay(capsys, tmp_path, suffix):
+    n = _bus_log(tmp_path / f"run{suffix}")
+    assert main([str(tmp_path / f"run{suffix}"), "--dry-run"]) == 0
+    out, err = capsys.readouterr()
+    assert out.startswith(f"{n} frames") and err == ""
