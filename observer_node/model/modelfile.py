@@ -249,8 +249,8 @@ class ModelFile:
             raise ModelFileError(f"{path}:{e.lineno}: not valid JSON: {e.msg}") from None
         except ValueError as e:  # NaN or Infinity: JSON has no such number; say where
             at = re.search(r"-?\b(?:NaN|Infinity)\b", text)
-            line = f":{text.count(chr(10), 0, at.start()) + 1}" if at else ""
-            raise ModelFileError(f"{path}{line}: {e}") from None
+            where = f"{path}:{text.count(chr(10), 0, at.start()) + 1}" if at else str(path)
+            raise ModelFileError(f"{where}: {e}") from None
         except RecursionError:
             raise ModelFileError(f"{path}: nested too deeply to be a model file") from None
         return cls.from_dict(d, str(path))
