@@ -209,7 +209,8 @@ def test_a_live_address_that_cannot_be_listened_on_is_refused_before_the_run(
     for live, says in (("127.0.0.1:99999", "port must be 1-65535"),
                        ("127.0.0.1:0", "port must be 1-65535"),
                        ("256.1.1.1:8765", "not an IPv4 address"),
-                       ("no-such-host.invalid:8765", "cannot resolve")):
+                       ("no-such-host.invalid:8765", "cannot resolve"),
+                       ("nohost", "expected HOST:PORT")):  # quoted the schema's regex
         code = cli.main(["run", "--model", str(model), "--interface", "virtual", "--record",
                          str(tmp_path / "r.mcap"), "--live", live])
         _expect_one_line_error(code, capsys.readouterr().err, says)

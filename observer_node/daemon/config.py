@@ -91,6 +91,8 @@ def _check_live(live: str, where: str) -> None:
     """HOST:PORT the live view can listen on, checked before the run: the recorder process
     opens it after the daemon has started, where a bad one could only be warned about."""
     host, _, port = live.rpartition(":")
+    if not host or any(c.isspace() or c == ":" for c in host):
+        raise ConfigError(f"{where}: live {live!r}: expected HOST:PORT, e.g. 127.0.0.1:8765")
     if not port.isdigit() or not 1 <= int(port) <= 65535:
         raise ConfigError(f"{where}: live {live!r}: the port must be 1-65535")
     if host.replace(".", "").isdigit():  # an IPv4 address: each of its four parts 0-255
@@ -124,7 +126,7 @@ _Schema = dict[str, dict[str, Any]]
 _NODE: _Schema = {
     "interface": {**_STR, "minLength": 1}, "channel": _STR, "fd": {"type": "boolean"},
     "raw_socketcan": {"type": "boolean"}, "model": _STR, "setup": _STR, "record": _STR,
-    "live": {"type": "string", "pattern": r"^$|^[^\s:]+:\d{1,5}$"},
+    "live": {"type": "string", "maxLength": 300},  # HOST:PORT, checked by _check_live
     "status_period_s": _num(0.01, 10), "accel_timeout_s": _num(0, 60),
     "brs_timeout_s": _num(0.001, 10), "idle_after_s": _num(0.01, 3600),
     "reconnect_s": _num(0.01, 60), "cpu_latency_us": _num(-1, 100_000, True),
