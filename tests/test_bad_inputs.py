@@ -590,7 +590,10 @@ REC_CASES: dict[str, tuple[Callable[[Path], object], str]] = {
     "random bytes": (lambda p: p.write_bytes(bytes(range(256)) * 40), "not an MCAP"),
     "a JSON file": (lambda p: p.write_text('{"ticks": []}'), "not an MCAP"),
     "someone else's MCAP": (_mcap_without_our_metadata, "not a chest-observer recording"),
-    "magic only": (lambda p: p.write_bytes(b"\x89MCAP0\r\n"), "run.mcap"),
+    "magic only": (lambda p: p.write_bytes(b"\x89MCAP0\r\n"), "ends or breaks before anything"),
+    # 20 bytes of a real recording: it said "not a chest-observer recording"
+    "magic and a cut header": (lambda p: p.write_bytes(b"\x89MCAP0\r\n\x01" + bytes(11)),
+                               "ends or breaks before anything was recorded"),
 }
 
 

@@ -152,6 +152,9 @@ def read_recording(path: str | Path, frames: bool = True) -> Recording:
                              f"message ({type(e).__name__}: {e})") from None
     salvaged, note = scan.salvaged, scan.note
     if fmt.META_RUN not in metadata:
+        if salvaged and not scan.messages:  # cut or corrupt before its first message
+            raise RecordingError(f"{path}: an MCAP file that ends or breaks before anything "
+                                 f"was recorded: {note}")
         raise RecordingError(f"{path}: an MCAP file, but not a chest-observer recording (no "
                              f"'{fmt.META_RUN}' metadata record)")
     if not est:
