@@ -8,6 +8,7 @@ import importlib
 import json
 import re
 import shutil
+import string
 import subprocess
 import sys
 from collections.abc import Iterator
@@ -5110,6 +5111,39 @@ def test_set_am_covers_the_general_list() -> None:
     _covers_the_general_list(SET_AM, BEFORE_AM, "cr", ONE_PHYSICAL_AM, draw_am.KINDS)
 
 
+def _follows_set_al_reuse(d: dict, drawn_by: ModuleType, seed: int, set_: str,
+                          cases_: list[cases.Case], one_physical: tuple[str, ...],
+                          redrawn: list[tuple[str, int]], before: list[cases.Case],
+                          by_name: dict[str, cases.Case], reused_names: tuple[str, ...],
+                          rejected: list[tuple]) -> None:
+    """What sets AM, AN and AO, drawn by set AL's process with its reuse, each assert of their
+    draw ``d``: reproducible from ``seed`` after sets A to the one before ``set_``; W's pools;
+    the singles, the rest and each pairing as drawn; the redraws in the order found; the reused
+    pairings those of ``reused_names``; the rejected draws (form or delay, rigs, reused)."""
+    assert d == drawn_by.draw()  # reproducible from its seed
+    two_letter = string.ascii_lowercase[:string.ascii_lowercase.index(set_[1])]
+    earlier = (*string.ascii_lowercase, *(f"a{c}" for c in two_letter))
+    assert earlier == drawn_by.EARLIER and seed == drawn_by.SEED
+    assert (drawn_by.KINDS, drawn_by.BRS_GAIN) == (draw_w.KINDS, draw_w.BRS_GAIN)
+    assert (drawn_by.TRANSDUCER, drawn_by.BROKEN) == (draw_w.TRANSDUCER, draw_w.BROKEN)
+    _singles_follow(d, cases_, one_physical, drawn_by)
+    assert [(w, s) for w, s, _ in d["rejected"]] == list(drawn_by.REDRAWN) == redrawn
+    _the_rest_follows(d, cases_, drawn_by)
+    # each case's pairing: free when one was left for its rigs, else one an earlier set ran
+    _pairings_follow(d, before)
+    reused = {_pairing(by_name[n]) for n in reused_names}
+    final = [*d["single"].values(), d["two"], *(d[k] for k in (
+        "pulse_late", "brs_late", "transducer", "broken", "clean48", "clean96"))]
+    assert {(v["est"], v["val"]) for v in final if v["reused"]} == reused
+    # the rejected draws, each in its place (rigs as drawn; a delay by its delay, the
+    # two-effect case by its forms)
+    assert [(f.get("form", f.get("delay_s", f.get("forms"))), f.get("rigs"), f["reused"])
+            for _, _, f in d["rejected"]] == rejected
+    # without set AL's reuse (the two-effect case's alone, set AK's) the first of them draws none
+    assert draw_w.drawn(seed, drawn_by.EARLIER, reuse_two=True)["single"][
+        "chest_stiffening"]["est"] is None
+
+
 def test_set_am_follows_its_draw() -> None:
     """Set AM's designer's choices are numpy's default_rng(48000)'s (``draw_am.py``; fifteen
     draws found impossible at the sizes, ``REDRAWN``), followed as drawn: each kind's form,
@@ -5120,30 +5154,11 @@ def test_set_am_follows_its_draw() -> None:
     rules allow; every other case takes a free one (run by no earlier set, nor drawn before
     it)."""
     d = draw_am.draw(48000)
-    assert d == draw_am.draw()  # reproducible from its seed
-    earlier = (*"abcdefghijklmnopqrstuvwxyz", "aa", "ab", "ac", "ad", "ae", "af", "ag", "ah",
-               "ai", "aj", "ak", "al")
-    assert earlier == draw_am.EARLIER and draw_am.SEED == 48000
-    assert (draw_am.KINDS, draw_am.BRS_GAIN) == (draw_w.KINDS, draw_w.BRS_GAIN)
-    assert (draw_am.TRANSDUCER, draw_am.BROKEN) == (draw_w.TRANSDUCER, draw_w.BROKEN)
-    _singles_follow(d, SET_AM, ONE_PHYSICAL_AM, draw_am)
-    assert [(w, s) for w, s, _ in d["rejected"]] == list(draw_am.REDRAWN) == REDRAWN_AM
-    _the_rest_follows(d, SET_AM, draw_am)
-    # each case's pairing: free when one was left for its rigs, else one A-AL ran
-    _pairings_follow(d, BEFORE_AM)
-    reused = {_pairing(BY_NAME_AM[n]) for n in REUSED_AM}
-    final = [*d["single"].values(), d["two"], *(d[k] for k in (
-        "pulse_late", "brs_late", "transducer", "broken", "clean48", "clean96"))]
-    assert {(v["est"], v["val"]) for v in final if v["reused"]} == reused
-    # the rejected draws, each in its place (rigs as drawn; a delay by its delay)
-    assert [(f.get("form", f.get("delay_s")), f.get("rigs"), f["reused"])
-            for _, _, f in d["rejected"]] == REJECTED_AM
+    _follows_set_al_reuse(d, draw_am, 48000, "am", SET_AM, ONE_PHYSICAL_AM,
+                          REDRAWN_AM, BEFORE_AM, BY_NAME_AM, REUSED_AM, REJECTED_AM)
     # two of AM's draws ran the same earlier pairing (the pool is A-AL's, not narrowed by AM's)
     assert d["rejected"][8][2]["est"] == d["single"]["pelvis_coupling"]["est"] == (0, 3, 3)
     assert _pairing(BY_NAME_AM[TWO_AM]) == ((2, 2, 2), (3, 3, 0)) and d["two"]["reused"]
-    # without set AL's reuse (the two-effect case's alone, set AK's) the first of them draws none
-    assert draw_w.drawn(48000, draw_am.EARLIER, reuse_two=True)["single"][
-        "chest_stiffening"]["est"] is None
 
 
 def test_set_am_lab_side_is_as_drawn_and_unnamed() -> None:
@@ -5228,28 +5243,9 @@ def test_set_an_follows_its_draw() -> None:
     any case with no pairing free for its rigs reuses one A-AM ran, among those its rules
     allow; every other case takes a free one (run by no earlier set, nor drawn before it)."""
     d = draw_an.draw(49000)
-    assert d == draw_an.draw()  # reproducible from its seed
-    earlier = (*"abcdefghijklmnopqrstuvwxyz", "aa", "ab", "ac", "ad", "ae", "af", "ag", "ah",
-               "ai", "aj", "ak", "al", "am")
-    assert earlier == draw_an.EARLIER and draw_an.SEED == 49000
-    assert (draw_an.KINDS, draw_an.BRS_GAIN) == (draw_w.KINDS, draw_w.BRS_GAIN)
-    assert (draw_an.TRANSDUCER, draw_an.BROKEN) == (draw_w.TRANSDUCER, draw_w.BROKEN)
-    _singles_follow(d, SET_AN, ONE_PHYSICAL_AN, draw_an)
-    assert [(w, s) for w, s, _ in d["rejected"]] == list(draw_an.REDRAWN) == REDRAWN_AN
-    _the_rest_follows(d, SET_AN, draw_an)
-    # each case's pairing: free when one was left for its rigs, else one A-AM ran
-    _pairings_follow(d, BEFORE_AN)
-    reused = {_pairing(BY_NAME_AN[n]) for n in REUSED_AN}
-    final = [*d["single"].values(), d["two"], *(d[k] for k in (
-        "pulse_late", "brs_late", "transducer", "broken", "clean48", "clean96"))]
-    assert {(v["est"], v["val"]) for v in final if v["reused"]} == reused
-    # the rejected draws, each in its place (rigs as drawn; the two-effect case by its forms)
-    assert [(f.get("form", f.get("forms")), f.get("rigs"), f["reused"])
-            for _, _, f in d["rejected"]] == REJECTED_AN
+    _follows_set_al_reuse(d, draw_an, 49000, "an", SET_AN, ONE_PHYSICAL_AN,
+                          REDRAWN_AN, BEFORE_AN, BY_NAME_AN, REUSED_AN, REJECTED_AN)
     assert _pairing(BY_NAME_AN[TWO_AN]) == ((2, 2, 2), (3, 3, 0)) and d["two"]["reused"]
-    # without set AL's reuse (the two-effect case's alone, set AK's) the first of them draws none
-    assert draw_w.drawn(49000, draw_an.EARLIER, reuse_two=True)["single"][
-        "chest_stiffening"]["est"] is None
 
 
 def test_set_an_lab_side_is_as_drawn_and_unnamed() -> None:
@@ -5339,28 +5335,9 @@ def test_set_ao_follows_its_draw() -> None:
     any case with no pairing free for its rigs reuses one A-AN ran, among those its rules
     allow; every other case takes a free one (run by no earlier set, nor drawn before it)."""
     d = draw_ao.draw(50000)
-    assert d == draw_ao.draw()  # reproducible from its seed
-    earlier = (*"abcdefghijklmnopqrstuvwxyz", "aa", "ab", "ac", "ad", "ae", "af", "ag", "ah",
-               "ai", "aj", "ak", "al", "am", "an")
-    assert earlier == draw_ao.EARLIER and draw_ao.SEED == 50000
-    assert (draw_ao.KINDS, draw_ao.BRS_GAIN) == (draw_w.KINDS, draw_w.BRS_GAIN)
-    assert (draw_ao.TRANSDUCER, draw_ao.BROKEN) == (draw_w.TRANSDUCER, draw_w.BROKEN)
-    _singles_follow(d, SET_AO, ONE_PHYSICAL_AO, draw_ao)
-    assert [(w, s) for w, s, _ in d["rejected"]] == list(draw_ao.REDRAWN) == REDRAWN_AO
-    _the_rest_follows(d, SET_AO, draw_ao)
-    # each case's pairing: free when one was left for its rigs, else one A-AN ran
-    _pairings_follow(d, BEFORE_AO)
-    reused = {_pairing(BY_NAME_AO[n]) for n in REUSED_AO}
-    final = [*d["single"].values(), d["two"], *(d[k] for k in (
-        "pulse_late", "brs_late", "transducer", "broken", "clean48", "clean96"))]
-    assert {(v["est"], v["val"]) for v in final if v["reused"]} == reused
-    # the rejected draws, each in its place (rigs as drawn; a delay by its delay)
-    assert [(f.get("form", f.get("delay_s")), f.get("rigs"), f["reused"])
-            for _, _, f in d["rejected"]] == REJECTED_AO
+    _follows_set_al_reuse(d, draw_ao, 50000, "ao", SET_AO, ONE_PHYSICAL_AO,
+                          REDRAWN_AO, BEFORE_AO, BY_NAME_AO, REUSED_AO, REJECTED_AO)
     assert _pairing(BY_NAME_AO[TWO_AO]) == ((2, 2, 2), (1, 1, 4)) and d["two"]["reused"]
-    # without set AL's reuse (the two-effect case's alone, set AK's) the first of them draws none
-    assert draw_w.drawn(50000, draw_ao.EARLIER, reuse_two=True)["single"][
-        "chest_stiffening"]["est"] is None
 
 
 def test_set_ao_lab_side_is_as_drawn_and_unnamed() -> None:
