@@ -181,6 +181,29 @@ def test_run_refuses_a_scoped_model_without_its_setup(tmp_path, capsys):
     assert code == 2 and len(err.strip().splitlines()) == 1 and "'R17'" in err, err
 
 
+def test_a_setup_the_model_does_not_know_is_refused_when_no_effect_is_scoped(tmp_path, capsys):
+    """--setup MARS on a model whose effects act everywhere ran silently; a typo is now
+    refused in one line, and a setup the model was fitted on runs the model as it is."""
+    plain = ModelFile.from_dict({**_scoped_model().to_dict(),
+                                 "effects": [{"kind": "belt_unloading", "parameters": {}}]})
+    assert not plain.setups()
+    assert plain.for_setup("SLED") is plain and plain.for_setup("") is plain
+    with pytest.raises(ModelFileError, match="'MARS' is not one the model knows"):
+        plain.for_setup("MARS")
+    path = tmp_path / "model.json"
+    plain.save(path)
+    for argv in (["run", "--model", str(path), "--interface", "virtual", "--channel", "x",
+                  "--setup", "MARS"],
+                 ["export-c", str(path), "--out", str(tmp_path / "c"), "--setup", "MARS"]):
+        code = cli.main(argv)
+        err = capsys.readouterr().err
+        assert code == 2 and len(err.strip().splitlines()) == 1 and "'MARS'" in err, err
+        assert "left out" in err
+    assert not (tmp_path / "c").exists()
+    unknown = ModelFile.from_dict({**plain.to_dict(), "fitted_on": {}})
+    assert unknown.for_setup("MARS") is unknown  # no setups recorded: nothing to check against
+
+
 def test_export_c_of_a_scoped_model_needs_the_setup(tmp_path, capsys):
     path = tmp_path / "model.json"
     _scoped_model().save(path)

@@ -93,11 +93,16 @@ class ModelFile:
     def for_setup(self, setup: str, where: str = "model") -> ModelFile:
         """The model a bench of ``setup`` runs: the effects that act there, unscoped. A model
         without scoped effects is returned as it is; ModelFileError when the model is scoped
-        and ``setup`` is empty or not one it knows."""
+        and ``setup`` is empty, or when ``setup`` is given and is not one the model knows
+        (a typo would otherwise run silently)."""
         scoped = self.setups()
-        if not scoped:
-            return self
         known = sorted(set(scoped) | set(self.fitted_on.get("setups", [])))
+        if not scoped:
+            if setup and known and setup not in known:
+                raise ModelFileError(f"{where}: setup {setup!r} is not one the model knows "
+                                     f"({', '.join(known)}); its effects act on every setup, "
+                                     "so --setup can be left out")
+            return self
         if not setup:
             raise ModelFileError(f"{where}: effects act on setups {', '.join(scoped)} only: say "
                                  f"which setup this bench is (--setup, one of {', '.join(known)})")
