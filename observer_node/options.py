@@ -7,7 +7,12 @@ from __future__ import annotations
 import argparse
 import math
 import os
-from collections.abc import Callable
+import shutil
+import signal
+import tempfile
+import threading
+from collections.abc import Callable, Iterator
+from contextlib import contextmanager, suppress
 from pathlib import Path
 from typing import NoReturn
 
@@ -98,6 +103,63 @@ def out_folder(path: str, option: str = "--out") -> Path:
         raise UsageError(f"{option} {path}: is a file")
     _can_make(p, f"{option} {path}")
     return p
+
+
+@contextmanager
+def staged(out: Path) -> Iterator[Path]:
+    """A hidden folder beside ``out`` that a command writes its results into, moved into
+    ``out`` only when the command ends well. An interrupted or failed run (Ctrl-C, a full
+    disk, bad data found late) leaves ``out`` as it was: no half set of plots and models
+    beside an older run's summary. Files of ``out`` the run does not write are kept."""
+    out = out.absolute()
+    made = [p for p in out.parents if not p.exists()]  # left as they were on failure
+    out.parent.mkdir(parents=True, exist_ok=True)
+    try:
+        tmp = Path(tempfile.mkdtemp(prefix=f".{out.name}.", suffix=".partial", dir=out.parent))
+    except OSError as e:  # named as the user wrote it, not as the hidden folder
+        raise OSError(e.errno, e.strerror, str(out)) from None
+    try:
+        yield tmp
+    except BaseException:
+        shutil.rmtree(tmp, ignore_errors=True)
+        for p in made:  # innermost first
+            with suppress(OSError):
+                p.rmdir()
+        raise
+    with _sigint_deferred():  # a Ctrl-C now would leave the move half done
+        _merge(tmp, out)
+        shutil.rmtree(tmp, ignore_errors=True)
+
+
+def _merge(src: Path, dest: Path) -> None:
+    dest.mkdir(parents=True, exist_ok=True)
+    for entry in src.iterdir():
+        target = dest / entry.name
+        if entry.is_dir() and target.is_dir() and not target.is_symlink():
+            _merge(entry, target)
+            continue
+        if target.is_dir() and not target.is_symlink():
+            shutil.rmtree(target)  # a folder where this run writes a file (or the reverse)
+        elif target.is_symlink() or target.exists():
+            target.unlink()
+        os.replace(entry, target)
+
+
+@contextmanager
+def _sigint_deferred() -> Iterator[None]:
+    """Ctrl-C is held until the block ends, then raised (only the main thread sets it)."""
+    if threading.current_thread() is not threading.main_thread():
+        yield
+        return
+    pending: list[int] = []
+    old = signal.signal(signal.SIGINT, lambda sig, frame: pending.append(sig))
+    try:
+        yield
+    finally:
+        if old is not None:
+            signal.signal(signal.SIGINT, old)
+    if pending:
+        raise KeyboardInterrupt
 
 
 def _can_make(folder: Path, said: str) -> None:

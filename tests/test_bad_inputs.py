@@ -523,7 +523,8 @@ def test_a_model_file_that_cannot_be_written_leaves_nothing(tmp_path, good_model
 
 def test_an_output_folder_the_system_refuses_late_is_one_line(good_model, tmp_path, capsys):
     """/proc passes every check a path can be given beforehand (as root) and refuses the
-    folder only when it is made, after the work: one line naming it, exit 2."""
+    folder only when it is made: one line naming it (not the hidden folder the results are
+    written into first), exit 2."""
     model = tmp_path / "model.json"
     model.write_text(json.dumps(good_model))
     code = _exit_code(["evaluate", "--model", str(model), "--data", "campaign-a/R16_002",

@@ -1417,9 +1417,12 @@ def test_ctrl_c_during_the_refits_ends_in_one_line_and_exit_130(tmp_path):
     import os
     import signal
 
+    out = tmp_path / "out"  # an older run's report, which the interrupted run must not touch
+    out.mkdir()
+    (out / "report.md").write_text("an older run\n")
     p = subprocess.Popen([sys.executable, "-m", "observer_node", "loop", "--estimate",
                           "campaign-a/R16_00[135]", "--validate", "campaign-a/R16_002", "--out",
-                          str(tmp_path / "out"), "--workers", "1"],
+                          str(out), "--workers", "1"],
                          stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True,
                          start_new_session=True, preexec_fn=_sigint_default)
     assert p.stderr is not None
@@ -1433,6 +1436,9 @@ def test_ctrl_c_during_the_refits_ends_in_one_line_and_exit_130(tmp_path):
     assert p.wait(timeout=120) == 130, "".join(seen) + rest
     assert "Traceback" not in rest and "exception was never retrieved" not in rest, rest
     assert rest.strip().splitlines()[-1] == "observer-node: interrupted"
+    assert [x.name for x in tmp_path.iterdir()] == ["out"]  # no half-written folder left
+    assert [x.name for x in out.iterdir()] == ["report.md"]
+    assert (out / "report.md").read_text() == "an older run\n"
 
 
 def test_gains_of_varying_size_on_every_test_are_accepted():

@@ -29,7 +29,8 @@ def _do_analyze(a: argparse.Namespace) -> int:
 
     out = options.out_folder(a.out) if a.out else Path(a.recording).with_suffix("")
     rec = read_recording(a.recording)
-    result = analyze(rec, out_dir=out)
+    with options.staged(out) as tmp:
+        result = analyze(rec, out_dir=tmp)
     meta = rec.metadata.get(fmt.META_RUN, {})
     print(f"{rec.path}: {result.ticks} ticks, model {meta.get(fmt.RunMeta.MODEL_KIND, '?')} "
           f"{meta.get(fmt.RunMeta.MODEL_NAME, '?')!r} at "

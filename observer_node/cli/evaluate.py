@@ -34,8 +34,8 @@ def _do_evaluate(a: argparse.Namespace) -> int:
     tests = _data.load(a)
     if a.model:
         mf = ModelFile.load(a.model)
-        # without --window, the model's own window
-        fits = evaluate_model(mf, tests, out, _data.window(a) if a.window else None)
+        with options.staged(out) as tmp:  # without --window, the model's own window
+            fits = evaluate_model(mf, tests, tmp, _data.window(a) if a.window else None)
         f = fits.fit
         print(f"{mf.kind} model {mf.name!r} on {len(tests)} tests:")
         for name, v in fits.tests.items():
@@ -53,7 +53,8 @@ def _do_evaluate(a: argparse.Namespace) -> int:
             print("\n(ISO/TS 18571 ratings: pip install 'chest-observer[iso18571]')")
         print(f"wrote {out / 'fits.json'} and plots in {out}")
         return 0
-    result = thesis_comparison(tests, out, a.rate, _data.window(a), verbose=not a.quiet)
+    with options.staged(out) as tmp:
+        result = thesis_comparison(tests, tmp, a.rate, _data.window(a), verbose=not a.quiet)
     print(format_tables(result))
     print(f"\nwrote {out / 'evaluation.json'}, models in {out / 'models'}, "
           f"plots in {out / 'plots'}")

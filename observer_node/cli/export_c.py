@@ -33,7 +33,9 @@ def _do_export_c(a: argparse.Namespace) -> int:
     mf = ModelFile.load(a.model)
     try:
         mf = mf.for_setup(a.setup or "", a.model)
-        paths = export_c(mf, out, a.name) + export_codec(out)
+        with options.staged(out) as tmp:
+            paths = [out / p.relative_to(tmp)
+                     for p in export_c(mf, tmp, a.name) + export_codec(tmp)]
     except ExportError as e:  # it names the part of the model, not the file
         raise ExportError(f"{a.model}: {e}") from None
     print(f"wrote {', '.join(str(p) for p in paths)} ({mf.kind} {mf.name!r}, "

@@ -79,9 +79,10 @@ def _do_loop(a: argparse.Namespace) -> int:
     val = load_tests(a.validate, codes, cpr)
     check_distinct(estimation=est, validation=val)
     check_groups(groups, [t.name for t in (*est, *val)])
-    r = run_loop(est, val, out, a.rate, window_s, a.margin,
-                 verbose=not a.quiet, groups=groups,
-                 anywhere=a.allow_anywhere, scheduler=a.scheduler, workers=a.workers)
+    with options.staged(out) as tmp:  # an interrupted loop leaves an older report whole
+        r = run_loop(est, val, tmp, a.rate, window_s, a.margin,
+                     verbose=not a.quiet, groups=groups,
+                     anywhere=a.allow_anywhere, scheduler=a.scheduler, workers=a.workers)
     print((out / "report.md").read_text())
     print(f"wrote {a.out}/report.json, report.md, model.json and plots "
           f"({r.seconds} s)")
