@@ -52,12 +52,30 @@ def _priority(s: str) -> int:
 
 
 PRE_MAX_S = 5.0  # --pre: the daemon's bias needs a fraction of a second; more is a typo
+RATE_MIN, RATE_MAX = 1e-3, 1e3  # --rate: a 150 ms crash in 150 s, or 1000 tests a second
+GAP_MAX_S = 3600.0  # --gap: an hour between sources; more is a typo
+FRAMES_MAX = 2_000_000  # everything --loop plays is held in memory (~100 MB at this size)
 
 
 def _pre(s: str) -> float:
     x = non_negative(s)
     if x > PRE_MAX_S:
         raise argparse.ArgumentTypeError(f"at most {PRE_MAX_S:g} s: {s!r}")
+    return x
+
+
+def _rate(s: str) -> float:
+    x = positive(s)
+    if not RATE_MIN <= x <= RATE_MAX:
+        raise argparse.ArgumentTypeError(f"wants {RATE_MIN:g} (1000 times slower) to "
+                                         f"{RATE_MAX:g} (1000 times faster): {s!r}")
+    return x
+
+
+def _gap(s: str) -> float:
+    x = non_negative(s)
+    if x > GAP_MAX_S:
+        raise argparse.ArgumentTypeError(f"at most {GAP_MAX_S:g} s: {s!r}")
     return x
 
 
@@ -91,9 +109,9 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--burst", action="store_true",
                    help="lab data as InputBurst frames, eight samples each (CAN FD; for tick "
                    "rates a frame per sample cannot carry, e.g. --tick-rate 10000)")
-    p.add_argument("--rate", type=positive, default=1.0,
+    p.add_argument("--rate", type=_rate, default=1.0,
                    help="time scale: 2 plays twice as fast, 0.1 ten times slower "
-                   "(default %(default)g)")
+                   f"({RATE_MIN:g} to {RATE_MAX:g}; default %(default)g)")
     p.add_argument("--tick-rate", type=positive, default=1000.0,
                    help="accelerometer frames per second for lab data (default %(default)g, the "
                    "DBC's)")
@@ -105,7 +123,8 @@ def build_parser() -> argparse.ArgumentParser:
                    help="quiet signal before a lab test, s, for the daemon's bias "
                    f"(default %(default)g, at most {PRE_MAX_S:g})")
     p.add_argument("--loop", type=positive_int, default=1, metavar="N",
-                   help="play everything N times (default %(default)s)")
+                   help="play everything N times (default %(default)s; at most "
+                   f"{FRAMES_MAX:,} frames in all)")
     p.add_argument("--spin-us", type=non_negative, default=300.0,
                    help="busy-wait this long before each due time for accuracy (default "
                    "%(default)g); use 0 in an emulated VM, where spinning steals the "
@@ -115,8 +134,8 @@ def build_parser() -> argparse.ArgumentParser:
                    "or RLIMIT_RTPRIO, else one line says so): due frames preempt every "
                    "normal process, as the daemon's run --rt-priority; default %(default)s: "
                    "normal")
-    p.add_argument("--gap", type=non_negative, default=0.5,
-                   help="pause between sources, s (default %(default)g)")
+    p.add_argument("--gap", type=_gap, default=0.5,
+                   help=f"pause between sources, s (default %(default)g, at most {GAP_MAX_S:g})")
     p.add_argument("--only", type=_can_id, action="append", metavar="ID",
                    help="send only these CAN IDs (repeatable; 0x100 or 256)")
     p.add_argument("--remap", type=_remap, action="append", metavar="FROM=TO",
@@ -137,10 +156,13 @@ def build_parser() -> argparse.ArgumentParser:
     return p
 
 
-def describe(s: Schedule, bitrate: float, data_bitrate: float | None = None) -> str:
-    """Frames per ID and the worst-case bus load (CAN FD timing with ``data_bitrate``)."""
-    dur = float(s.t_s[-1] - s.t_s[0]) if len(s) else 0.0
-    lines = [f"{len(s)} frames over {dur:.3f} s from {s.source}"]
+def describe(s: Schedule, bitrate: float, data_bitrate: float | None = None,
+             rate: float = 1.0) -> str:
+    """Frames per ID and the worst-case bus load (CAN FD timing with ``data_bitrate``), as
+    played at ``rate`` (the time scale)."""
+    dur = float(s.t_s[-1] - s.t_s[0]) / rate if len(s) else 0.0
+    scaled = f" (--rate {rate:g})" if rate != 1.0 else ""
+    lines = [f"{len(s)} frames over {dur:.3f} s{scaled} from {s.source}"]
     counts = Counter(s.ids.tolist())
     sizes: dict[int, int] = {}
     for cid, d in zip(s.ids.tolist(), s.data, strict=True):
@@ -153,9 +175,9 @@ def describe(s: Schedule, bitrate: float, data_bitrate: float | None = None) -> 
         load += share
         lines.append(f"  0x{cid:03X}: {n:6d} frames, DLC {sizes[cid]}, {n / max(dur, 1e-9):7.1f}/s,"
                      f" {100 * share:5.1f} %")
-    rate = f"{bitrate / 1000:g} kbit/s" + (f", FD data {data_bitrate / 1e6:g} Mbit/s"
-                                           if data_bitrate else "")
-    lines.append(f"  bus load (worst-case stuffing, {rate}): {100 * load:.1f} %")
+    speed = f"{bitrate / 1000:g} kbit/s" + (f", FD data {data_bitrate / 1e6:g} Mbit/s"
+                                            if data_bitrate else "")
+    lines.append(f"  bus load (worst-case stuffing, {speed}): {100 * load:.1f} %")
     return "\n".join(lines)
 
 
@@ -181,6 +203,10 @@ def _play(a: argparse.Namespace) -> int:
         raise UsageError("--burst sends 48-byte InputBurst frames: it needs --fd")
     only = set(a.only) if a.only else None
     remap = _remap_table(a.remap or [])
+    total = sum(len(x) for x in parts) * a.loop
+    if total > FRAMES_MAX:
+        raise UsageError(f"--loop {a.loop}: {total:,} frames in all, more than crash-replay "
+                         f"holds ({FRAMES_MAX:,}); play it in a shell loop")
     sched = concat(parts * a.loop, a.gap)
     if sched.synthetic and len(parts) * a.loop > 1:
         sched = restamp_counters(sched, codec)  # one sensor across tests: no counter restart
@@ -189,7 +215,7 @@ def _play(a: argparse.Namespace) -> int:
         print("crash-replay: nothing to send", file=sys.stderr)
         return 2
     if a.dry_run:
-        print(describe(sched, a.bitrate, a.data_bitrate if a.fd else None))
+        print(describe(sched, a.bitrate, a.data_bitrate if a.fd else None, a.rate))
         for t, cid, d in list(zip(sched.t_s, sched.ids.tolist(), sched.data, strict=True))[:20]:
             print(f"  {t:10.6f}  0x{cid:03X}  {d.hex(' ')}")
         if len(sched) > 20:

@@ -78,6 +78,7 @@ def read_python_can_log(path: Path, all_frames: bool = False) -> Schedule:
             raise SourceError(f"{path}: reading MDF4 needs asammdf: pip install "
                               "'chest-observer[mf4]'") from None
     times, ids, data = [], [], []
+    sent = 0  # left out as sent by the logging node: named if nothing else is left
     said = _Said()
     can_log = logging.getLogger("can")
     can_log.addHandler(said)
@@ -85,7 +86,10 @@ def read_python_can_log(path: Path, all_frames: bool = False) -> Schedule:
     try:
         with can.LogReader(str(path)) as reader:
             for m in reader:
-                if m.is_error_frame or m.is_remote_frame or not (m.is_rx or all_frames):
+                if m.is_error_frame or m.is_remote_frame:
+                    continue
+                if not (m.is_rx or all_frames):
+                    sent += 1
                     continue
                 times.append(m.timestamp)
                 ids.append(m.arbitration_id)
@@ -100,9 +104,15 @@ def read_python_can_log(path: Path, all_frames: bool = False) -> Schedule:
         _collect_quietly()
         raise SourceError(f"{path}: truncated or corrupt after {len(data)} frames ({why})")
     if not data:
-        raise SourceError(f"{path}: no frames")
+        raise SourceError(f"{path}: no frames" + _only_sent(sent))
     t = np.array(times)
     return Schedule(t - t[0], np.array(ids), data, path.name)
+
+
+def _only_sent(sent: int) -> str:
+    """What a log of the logging node's own frames only is missing, and the option for it."""
+    return (f" received by the logging node, only {sent} it sent: --all-frames replays those"
+            if sent else "")
 
 
 class _Said(logging.Handler):
@@ -156,6 +166,7 @@ def read_mcap_frames(path: Path, all_frames: bool = False, codec: Codec | None =
     from observer_node.recording import format as fmt
 
     times, ids, data = [], [], []
+    sent = 0
     translate = None
     try:
         scan = Scan(path)
@@ -168,7 +179,10 @@ def read_mcap_frames(path: Path, all_frames: bool = False, codec: Codec | None =
             if topic != fmt.FRAMES:
                 continue
             fr = fmt.read_frame(raw)
-            if fr.error or (fr.tx and not all_frames):
+            if fr.error:
+                continue
+            if fr.tx and not all_frames:
+                sent += 1
                 continue
             times.append(fr.t)
             ids.append(fr.can_id)
@@ -182,7 +196,9 @@ def read_mcap_frames(path: Path, all_frames: bool = False, codec: Codec | None =
         raise SourceError(f"{path}: truncated or corrupt MCAP after {len(data)} frames "
                           f"({scan.note})")
     if not data:
-        raise SourceError(f"{path}: no {fmt.FRAMES} messages (not a chest-observer recording?)")
+        raise SourceError(f"{path}: " + (f"no frames{_only_sent(sent)}" if sent else
+                                         f"no {fmt.FRAMES} messages (not a chest-observer "
+                                         "recording?)"))
     order = np.argsort(np.array(times), kind="stable")
     t = np.array(times)[order]
     s = Schedule(t - t[0], np.array(ids)[order], [data[i] for i in order], path.name)

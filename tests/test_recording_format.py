@@ -133,3 +133,27 @@ def test_a_frame_whose_direction_is_neither_rx_nor_tx_is_refused(tmp_path):
         export_frames(path, tmp_path / "bad.log")
     with pytest.raises(SourceError, match=r"not a frame.*'up'"):
         read_mcap_frames(path, codec=CODEC)
+
+
+def test_a_recording_of_sent_frames_only_says_all_frames_replays_them(tmp_path):
+    """A recording holding only the frames its node sent (a daemon that published, with its
+    inputs on another bus) said "not a chest-observer recording?": it now says what it holds
+    and the option that replays it."""
+    from mcap.writer import Writer
+
+    path = tmp_path / "sent.mcap"
+    with path.open("wb") as f:
+        w = Writer(f)
+        w.start(profile="", library="test")
+        w.add_metadata(fmt.META_RUN, {})
+        sid = w.register_schema(fmt.TITLES[fmt.FRAMES], "jsonschema",
+                                fmt.json_schema(fmt.FRAMES, fmt.FRAME_FIELDS))
+        cid = w.register_channel(fmt.FRAMES, "json", sid)
+        for k in range(3):
+            msg = fmt.frame_message(k * 1e-3, 0x100, fmt.FrameFlag.TX, b"\x01\x02")
+            w.add_message(cid, k, json.dumps(msg).encode(), k)
+        w.finish()
+    with pytest.raises(SourceError, match=r"sent.mcap: no frames received by the logging "
+                                          r"node, only 3 it sent: --all-frames replays those"):
+        read_mcap_frames(path, codec=CODEC)
+    assert len(read_mcap_frames(path, all_frames=True, codec=CODEC)) == 3

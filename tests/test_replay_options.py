@@ -33,7 +33,8 @@ def _one_line_error(capsys: pytest.CaptureFixture[str], argv: list[str]) -> str:
 
 @pytest.mark.parametrize("option, value", [
     ("--rate", "0"), ("--rate", "nan"), ("--rate", "inf"), ("--rate", "-1"),
-    ("--gap", "nan"), ("--gap", "-1"), ("--gap", "inf"),
+    ("--rate", "1e-9"), ("--rate", "1e6"),  # a test played over years, or in nanoseconds
+    ("--gap", "nan"), ("--gap", "-1"), ("--gap", "inf"), ("--gap", "1e9"),
     ("--spin-us", "nan"), ("--spin-us", "-5"),
     ("--bitrate", "nan"), ("--bitrate", "0"), ("--data-bitrate", "-1"),
     ("--tick-rate", "0"), ("--tick-rate", "nan"),
@@ -50,6 +51,25 @@ def test_pre_says_its_limit_in_help(capsys):
     with pytest.raises(SystemExit):
         main(["--help"])
     assert "at most 5" in capsys.readouterr().out
+
+
+def test_a_loop_past_what_memory_holds_is_refused_before_it_is_built(capsys):
+    """--loop 100000 built 50 million frames in memory before the first was sent."""
+    err = _one_line_error(capsys, [R16, "--dry-run", "--loop", "100000"])
+    assert "--loop 100000: 50,400,000 frames in all" in err and "shell loop" in err
+    assert main([R16, "--dry-run", "--loop", "3"]) == 0
+    assert capsys.readouterr().out.startswith(f"{3 * 504} frames")
+
+
+def test_the_dry_run_says_the_time_and_bus_load_as_played_at_the_rate(capsys):
+    assert main([R16, "--dry-run"]) == 0
+    one = capsys.readouterr().out.splitlines()
+    assert main([R16, "--dry-run", "--rate", "0.01"]) == 0
+    slow = capsys.readouterr().out.splitlines()
+    assert one[0] == "504 frames over 0.419 s from R16_001"
+    assert slow[0] == "504 frames over 41.900 s (--rate 0.01) from R16_001"
+    load = [float(x.split()[-2]) for x in (one[3], slow[3])]
+    assert "bus load" in one[3] and load[1] == pytest.approx(load[0] / 100, abs=0.06)
 
 
 def test_a_window_that_ends_before_it_starts_is_refused(capsys):
@@ -165,3 +185,20 @@ def test_whole_bus_logs_still_replay(capsys, tmp_path, suffix):
     assert main([str(tmp_path / f"run{suffix}"), "--dry-run"]) == 0
     out, err = capsys.readouterr()
     assert out.startswith(f"{n} frames") and err == ""
+
+
+@pytest.mark.parametrize("suffix", [".asc", ".blf"])
+def test_a_log_of_sent_frames_only_says_all_frames_replays_them(capsys, tmp_path, suffix):
+    """A logger's own frames only (every frame Tx): "no frames" did not say why."""
+    s = crash_test_schedule(read_isomme(DATA / "R16_002"), Codec(), 1000.0)
+    log = tmp_path / f"sent{suffix}"
+    with can.Logger(str(log)) as w:
+        for k in range(10):
+            w.on_message_received(can.Message(timestamp=1000 + s.t_s[k],
+                                              arbitration_id=int(s.ids[k]), data=s.data[k],
+                                              is_extended_id=False, is_rx=False))
+    err = _one_line_error(capsys, [str(log), "--dry-run"])
+    assert f"sent{suffix}: no frames received by the logging node, only 10 it sent: " \
+           "--all-frames replays those" in err
+    assert main([str(log), "--dry-run", "--all-frames"]) == 0
+    assert capsys.readouterr().out.startswith("10 frames")
