@@ -5391,17 +5391,25 @@ BEFORE_AP = _cases_of(heldout_sets.before("ap"))
 # the broken test, the transducer error, and every physical case of one effect (its rigs moved,
 # the others untouched)
 WATCHED_AP = ("hap_broken_cd_dropout", "hap_cr_creep", *ONE_PHYSICAL_AP)
-# the draws found impossible, drawn again by the next seeds in the order found (draw_ap.REDRAWN)
-REDRAWN_AP: list[tuple[str, int]] = []
-# each rejected draw, in that order: its form (or delay, or forms), rigs and whether its pairing
-# was reused
-REJECTED_AP: list[tuple] = []
+# the draws found impossible, drawn again by the next seeds in the order found (draw_ap.REDRAWN):
+# none at the draw; at the sizes, each a run-away at its first size, the pelvis three times (a
+# slip force on R16+SLED, on all three rigs, on SLED+FULL) and the two-effect case twice (a slip
+# force on SLED+FULL beside the webbing's hysteresis; a D-ring capstan beside the webbing's power)
+REDRAWN_AP: list[tuple[str, int]] = [("pelvis_coupling", 51001), ("two", 51002),
+                                     ("pelvis_coupling", 51003), ("two", 51004),
+                                     ("pelvis_coupling", 51005)]
+# each rejected draw, in that order: its form (or forms), rigs and whether its pairing was reused
+REJECTED_AP = [("pelvis_submarine", ("R16", "SLED"), True),
+               (("webbing_hysteresis", "pelvis_submarine"), (("R16",), ("SLED", "FULL")), True),
+               ("pelvis_submarine", cases.ALL, True),
+               (("webbing_power", "dring_capstan"), (("SLED",), ("R16", "FULL")), True),
+               ("pelvis_submarine", ("SLED", "FULL"), True)]
 # the two-effect case
-TWO_AP = "hap_two_hysteresis_r16_submarine_sled_full"
+TWO_AP = "hap_two_dual_sled_power_r16_full"
 # the cases on an earlier set's pairing, in the draw's order (none free for their rigs:
 # set AL's reuse rule, taken by draw_ap as it stands)
 REUSED_AP = ("hap_hardening_r16_full", "hap_maxwell_sled", "hap_set_all", "hap_toe_r16",
-             "hap_fabric_sled", "hap_submarine_r16_sled", "hap_eccentric_r16_full", TWO_AP,
+             "hap_fabric_sled", "hap_pelvis_knee_r16_sled", "hap_eccentric_r16_full", TWO_AP,
              "hap_pulse_late_3p56ms", "hap_brs_late_4p76ms", "hap_clean96")
 
 
@@ -5422,17 +5430,17 @@ def test_set_ap_covers_the_general_list() -> None:
 
 
 def test_set_ap_follows_its_draw() -> None:
-    """Set AP's designer's choices are numpy's default_rng(51000)'s (``draw_ap.py``; no draw
-    found impossible, ``REDRAWN`` empty), followed as drawn: each kind's form, rigs, counts and
-    mix; the two-effect case's kinds, forms, rigs, counts and mix; the delays, their counts and
-    mixes; the transducer error's output, form, counts and mix; the broken test's channel, form,
-    test, counts and mix; the clean cases' mixes. Set AO's process, no change: any case with no
-    pairing free for its rigs reuses one A-AO ran, among those its rules allow; every other
-    case takes a free one (run by no earlier set, nor drawn before it)."""
+    """Set AP's designer's choices are numpy's default_rng(51000)'s (``draw_ap.py``; five draws
+    found impossible at the sizes, ``REDRAWN``), followed as drawn: each kind's form, rigs,
+    counts and mix; the two-effect case's kinds, forms, rigs, counts and mix; the delays, their
+    counts and mixes; the transducer error's output, form, counts and mix; the broken test's
+    channel, form, test, counts and mix; the clean cases' mixes. Set AO's process, no change:
+    any case with no pairing free for its rigs reuses one A-AO ran, among those its rules
+    allow; every other case takes a free one (run by no earlier set, nor drawn before it)."""
     d = draw_ap.draw(51000)
     _follows_set_al_reuse(d, draw_ap, 51000, "ap", SET_AP, ONE_PHYSICAL_AP,
                           REDRAWN_AP, BEFORE_AP, BY_NAME_AP, REUSED_AP, REJECTED_AP)
-    assert _pairing(BY_NAME_AP[TWO_AP]) == ((2, 2, 2), (4, 1, 1)) and d["two"]["reused"]
+    assert _pairing(BY_NAME_AP[TWO_AP]) == ((2, 2, 2), (2, 3, 1)) and d["two"]["reused"]
 
 
 def test_set_ap_lab_side_is_as_drawn_and_unnamed() -> None:

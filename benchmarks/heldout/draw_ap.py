@@ -129,6 +129,28 @@ it), with sets A-AO as the earlier sets:
    51002, ...) in the order found, after the rest, the pairings of everything drawn before
    still taken (``REDRAWN``; a case with none free, an earlier set's, by the reuse above).
 
+Judged at the sizes by these words (written down with the sizes, after the draw, before any
+loop run; no rule changed, the rules above as they were committed before the first draw): two
+run-aways found at the first sizes, before any cost (the pelvis's slip force on R16+SLED, the
+two-effect case's on SLED+FULL), are found in ``cases_ap.py``'s order, the order
+``test_set_ap_has_no_run_aways`` walks the cases (the test stops at its first; the same limits
+over the whole set give the rest), so the pelvis's redraw by 51001 before the two-effect case's
+by 51002; the two-effect case's run-away holds against the set's other cases' tests with the
+pelvis's rejected draw's tests in them or replaced by its redraw's (78.8 deg against SLED's
+240.0 either way). The redraws, after the rest, are checked against the run-away limits at
+their first sizes in the same order (the pelvis's before the two-effect case's), each against
+the set at the first sizes with every rejected draw's tests replaced by its current redraw's,
+before any of them is costed; a redraw that runs away there is drawn again by the next seed
+(as set AM's belt unloading was), so the pelvis by 51003 before the two-effect case by 51004,
+the pelvis again by 51005. Then the steps, each case's in ``cases_ap.py``'s order (the
+pelvis's knee bolster before the two-effect case's power; neither proved impossible, so the
+order changed no seed). In the two-effect case, one effect alone out of the band at the first
+sizes (the webbing's power, 7.74) with the other alone (the bag, 5.76) and the two together
+(5.60) in it: the one out of band stepped by 1-2 alone (rule 2's aim, 3.5 points, as set AK
+judged), the other keeping its size, then the two together and each alone costed again; a
+step clipped to a third (the knee bolster, 0.17 x 3.5 / 11.86 = 0.050, to 0.0567) is rounded
+after the clip (0.057).
+
     python -m benchmarks.heldout.draw_ap [--seed 51000]
 """
 
@@ -143,8 +165,18 @@ from .sets import before
 SEED = 51000
 # a case whose draw proved impossible, drawn again, whole, by the next seed's generator (one per
 # redraw, in this order, after the rest), the pairings of everything drawn before still taken:
-# none yet (the set not yet drawn)
-REDRAWN: tuple[tuple[str, int], ...] = ()
+# none at the draw (every case drew a pairing: a free one, or, with none free, one A-AO ran);
+# at the sizes, five, in the order found, each a run-away at its first size: the pelvis's first
+# draw (a slip force on R16+SLED) and the two-effect case's first draw (the webbing's
+# hysteresis on R16 beside a slip force on SLED+FULL) ran away at the first sizes; the pelvis's
+# redraw (a slip force on all three rigs) and the two-effect case's (the webbing's power on SLED
+# beside a D-ring capstan on R16+FULL) ran away at theirs; the pelvis's second redraw (a slip
+# force on SLED+FULL) ran away at its; pelvis_knee on R16+SLED (its second size) and airbag_dual
+# on SLED beside webbing_power on R16+FULL (the power's second size) came in band (see
+# ``cases_ap.py``)
+REDRAWN: tuple[tuple[str, int], ...] = (("pelvis_coupling", 51001), ("two", 51002),
+                                         ("pelvis_coupling", 51003), ("two", 51004),
+                                         ("pelvis_coupling", 51005))
 EARLIER = before("ap")
 __all__ = ["BROKEN", "BRS_GAIN", "KINDS", "REDRAWN", "SEED", "TRANSDUCER", "draw", "forms",
            "scopes"]
