@@ -35,6 +35,7 @@ from benchmarks.heldout import (
     draw_am,
     draw_an,
     draw_ao,
+    draw_ap,
     draw_v,
     draw_w,
     draw_x,
@@ -61,6 +62,7 @@ from benchmarks.heldout.cases_al import BY_NAME_AL, ONE_PHYSICAL_AL
 from benchmarks.heldout.cases_am import BY_NAME_AM, ONE_PHYSICAL_AM
 from benchmarks.heldout.cases_an import BY_NAME_AN, ONE_PHYSICAL_AN
 from benchmarks.heldout.cases_ao import BY_NAME_AO, ONE_PHYSICAL_AO
+from benchmarks.heldout.cases_ap import BY_NAME_AP, ONE_PHYSICAL_AP
 from benchmarks.heldout.cases_p import BY_NAME_P
 from benchmarks.heldout.cases_q import BY_NAME_Q
 from benchmarks.heldout.cases_r import BY_NAME_R
@@ -2693,13 +2695,12 @@ def test_set_s_creep_is_a_growing_step() -> None:
     assert step[k] == pytest.approx(1.0 + share * (1 - np.exp(-1)), abs=0.01)
 
 
-def test_set_s_cr_creep_moves_cr_only(set_s: Path) -> None:
-    """CR is its twin's through the creeping gauges (within the CFC 180 filter's noise), and
-    more at the end of the loading than at its start, every test; CD, pulse and BRS
-    untouched."""
-    c = BY_NAME_S["hs_cr_creep"]
+def _cr_creep_moves_cr_only(sets_dir: Path, c: cases.Case) -> None:
+    """Set S's check of CR's creeping gauges: CR is its twin's through the creeping gauges
+    (within the CFC 180 filter's noise), and more at the end of the loading than at its start,
+    every test; CD, pulse and BRS untouched."""
     (e,) = c.effects
-    on, off = set_s / "on" / c.name, set_s / "off" / c.name
+    on, off = sets_dir / "on" / c.name, sets_dir / "off" / c.name
     folders = sorted(on.glob("*/*"))
     assert len(folders) == 12
     for folder in folders:
@@ -2712,6 +2713,13 @@ def test_set_s_cr_creep_moves_cr_only(set_s: Path) -> None:
         miss = np.abs(cr - lab.creep(cr0, e.size))[inner].max()
         moved = np.abs(cr - cr0).max()
         assert miss < 1.0 and miss < 0.2 * moved and moved > 2.0, (name, miss, moved)
+
+
+def test_set_s_cr_creep_moves_cr_only(set_s: Path) -> None:
+    """CR is its twin's through the creeping gauges (within the CFC 180 filter's noise), and
+    more at the end of the loading than at its start, every test; CD, pulse and BRS
+    untouched."""
+    _cr_creep_moves_cr_only(set_s, BY_NAME_S["hs_cr_creep"])
 
 
 # ------------------------------------------------------------------ set T (cases_t.py)
@@ -3896,9 +3904,9 @@ def set_aa(tmp_path_factory: pytest.TempPathFactory) -> Path:
 
 @pytest.mark.parametrize("letters",
                          ["x", "y", "z", "aa", "ab", "ac", "ad", "ae", "af", "ag", "ah",
-                          "ai", "aj", "ak", "al", "am", "an", "ao"])
+                          "ai", "aj", "ak", "al", "am", "an", "ao", "ap"])
 def test_a_drawn_set_is_registered(letters: str, tmp_path: Path) -> None:
-    """Sets X-AO: each is its ``cases_<letters>.SET_<LETTERS>`` under its letters (either
+    """Sets X-AP: each is its ``cases_<letters>.SET_<LETTERS>`` under its letters (either
     case), for sets.select, make_sets and costs, after every set before it."""
     own = getattr(importlib.import_module(f"benchmarks.heldout.cases_{letters}"),
                   f"SET_{letters.upper()}")
@@ -3940,8 +3948,10 @@ def test_sets_before_are_names_not_letters() -> None:
                                          "ah", "ai", "aj", "ak", "al", "am")  # A-AM
     assert heldout_sets.before("ao") == (*after_aa, "ab", "ac", "ad", "ae", "af", "ag",
                                          "ah", "ai", "aj", "ak", "al", "am", "an")  # A-AN
-    with pytest.raises(ValueError, match="unknown case set 'ap'"):
-        heldout_sets.before("ap")
+    assert heldout_sets.before("ap") == (*after_aa, "ab", "ac", "ad", "ae", "af", "ag",
+                                         "ah", "ai", "aj", "ak", "al", "am", "an", "ao")  # A-AO
+    with pytest.raises(ValueError, match="unknown case set 'aq'"):
+        heldout_sets.before("aq")
     # a draw after AA takes AA's pairings; at this seed, without AA one single draws one of them
     aa = {_pairing(c) for c in SET_AA}
 
@@ -5116,7 +5126,7 @@ def _follows_set_al_reuse(d: dict, drawn_by: ModuleType, seed: int, set_: str,
                           redrawn: list[tuple[str, int]], before: list[cases.Case],
                           by_name: dict[str, cases.Case], reused_names: tuple[str, ...],
                           rejected: list[tuple]) -> None:
-    """What sets AM, AN and AO, drawn by set AL's process with its reuse, each assert of their
+    """What sets AM, AN, AO and AP, drawn by set AL's process with its reuse, each assert of their
     draw ``d``: reproducible from ``seed`` after sets A to the one before ``set_``; W's pools;
     the singles, the rest and each pairing as drawn; the redraws in the order found; the reused
     pairings those of ``reused_names``; the rejected draws (form or delay, rigs, reused)."""
@@ -5374,6 +5384,100 @@ def test_set_ao_has_no_run_aways(set_ao: Path) -> None:
     _no_run_aways(SET_AO, set_ao)
 
 
+# ------------------------------------------------------------------ set AP (cases_ap.py)
+
+SET_AP = heldout_sets.case_set("ap")
+BEFORE_AP = _cases_of(heldout_sets.before("ap"))
+# the broken test, the transducer error, and every physical case of one effect (its rigs moved,
+# the others untouched)
+WATCHED_AP = ("hap_broken_cd_dropout", "hap_cr_creep", *ONE_PHYSICAL_AP)
+# the draws found impossible, drawn again by the next seeds in the order found (draw_ap.REDRAWN):
+# none at the draw; at the sizes, each a run-away at its first size, the pelvis three times (a
+# slip force on R16+SLED, on all three rigs, on SLED+FULL) and the two-effect case twice (a slip
+# force on SLED+FULL beside the webbing's hysteresis; a D-ring capstan beside the webbing's power)
+REDRAWN_AP: list[tuple[str, int]] = [("pelvis_coupling", 51001), ("two", 51002),
+                                     ("pelvis_coupling", 51003), ("two", 51004),
+                                     ("pelvis_coupling", 51005)]
+# each rejected draw, in that order: its form (or forms), rigs and whether its pairing was reused
+REJECTED_AP = [("pelvis_submarine", ("R16", "SLED"), True),
+               (("webbing_hysteresis", "pelvis_submarine"), (("R16",), ("SLED", "FULL")), True),
+               ("pelvis_submarine", cases.ALL, True),
+               (("webbing_power", "dring_capstan"), (("SLED",), ("R16", "FULL")), True),
+               ("pelvis_submarine", ("SLED", "FULL"), True)]
+# the two-effect case
+TWO_AP = "hap_two_dual_sled_power_r16_full"
+# the cases on an earlier set's pairing, in the draw's order (none free for their rigs:
+# set AL's reuse rule, taken by draw_ap as it stands)
+REUSED_AP = ("hap_hardening_r16_full", "hap_maxwell_sled", "hap_set_all", "hap_toe_r16",
+             "hap_fabric_sled", "hap_pelvis_knee_r16_sled", "hap_eccentric_r16_full", TWO_AP,
+             "hap_pulse_late_3p56ms", "hap_brs_late_4p76ms", "hap_clean96")
+
+
+@pytest.fixture(scope="module")
+def set_ap(tmp_path_factory: pytest.TempPathFactory) -> Path:
+    return _generate(tmp_path_factory, "ap", WATCHED_AP)
+
+
+def test_set_ap_covers_the_general_list() -> None:
+    """Set AP as its brief asks: clean cases at 48 and 96 counts; each kind of the library a
+    loop can name, as physics, once in a case of its own; two effects of different kinds on
+    different rigs in one case; a broken estimation test; a transducer error on CR alone (as
+    drawn); a late pulse and a late BRS at delays in 1-5 ms no earlier set used on any input;
+    6 + 6 tests, every rig an estimation part holds held twice or more; an effect on some rigs
+    only rests on two estimation and two validation tests of them beside an estimation test of
+    a rig it spares."""
+    _covers_the_general_list(SET_AP, BEFORE_AP, "cr", ONE_PHYSICAL_AP, draw_ap.KINDS)
+
+
+def test_set_ap_follows_its_draw() -> None:
+    """Set AP's designer's choices are numpy's default_rng(51000)'s (``draw_ap.py``; five draws
+    found impossible at the sizes, ``REDRAWN``), followed as drawn: each kind's form, rigs,
+    counts and mix; the two-effect case's kinds, forms, rigs, counts and mix; the delays, their
+    counts and mixes; the transducer error's output, form, counts and mix; the broken test's
+    channel, form, test, counts and mix; the clean cases' mixes. Set AO's process, no change:
+    any case with no pairing free for its rigs reuses one A-AO ran, among those its rules
+    allow; every other case takes a free one (run by no earlier set, nor drawn before it)."""
+    d = draw_ap.draw(51000)
+    _follows_set_al_reuse(d, draw_ap, 51000, "ap", SET_AP, ONE_PHYSICAL_AP,
+                          REDRAWN_AP, BEFORE_AP, BY_NAME_AP, REUSED_AP, REJECTED_AP)
+    assert _pairing(BY_NAME_AP[TWO_AP]) == ((2, 2, 2), (2, 3, 1)) and d["two"]["reused"]
+
+
+def test_set_ap_lab_side_is_as_drawn_and_unnamed() -> None:
+    """One broken estimation test, the only thing expected; one transducer error on CR on every
+    test, nothing physical named; AP's physics earlier sets' forms only."""
+    _lab_side_as_drawn(SET_AP, "cr")
+    assert {k for k in _keys(SET_AP) if physics.EFFECTS[k]} <= _keys(BEFORE_AP)
+
+
+@pytest.mark.parametrize("case", sorted(ONE_PHYSICAL_AP))
+def test_set_ap_physics_moves_its_rigs_only(set_ap: Path, case: str) -> None:
+    """Each physical case moves what its form moves on every test of its rigs (the chest's,
+    belt's, bag's and pelvis's forms CR and CD, the pulse untouched; the encoder ring the BRS
+    alone) and leaves the tests of a rig it spares untouched to the bit."""
+    _moves_its_rigs_only(set_ap, BY_NAME_AP[case])
+
+
+def test_set_ap_cd_dropout_reads_zero_then_recovers(set_ap: Path) -> None:
+    """The broken test's raw CD reads 0 while the wiper is off its track, then its twin's again
+    (set AE's and set AN's form and check, set B's before it), its CR, pulse and BRS untouched;
+    every other test untouched."""
+    c = BY_NAME_AP["hap_broken_cd_dropout"]
+    assert c.expect_broken == ("R16_007",)
+    _cd_dropout_reads_zero_then_recovers(set_ap, c)
+
+
+def test_set_ap_cr_creep_moves_cr_only(set_ap: Path) -> None:
+    """CR is its twin's through the creeping gauges (within the CFC 180 filter's noise), and
+    more at the end of the loading than at its start, every test (set S's form and check, at
+    this set's share); CD, pulse and BRS untouched."""
+    _cr_creep_moves_cr_only(set_ap, BY_NAME_AP["hap_cr_creep"])
+
+
+def test_set_ap_has_no_run_aways(set_ap: Path) -> None:
+    _no_run_aways(SET_AP, set_ap)
+
+
 def test_more_tests_doubles_the_estimation_tests_only(tmp_path: Path) -> None:
     """``more_tests``: K times each rig's estimation tests, the validation tests and the
     effects as written, another seed (new crashes), a name that says so; the broken test's name
@@ -5428,7 +5532,7 @@ def test_loop_heldout_on_a_folder_without_the_case_is_one_line(tmp_path: Path) -
     assert "--case haa_clean48 --est-times 2 --out" in r.stderr
 
 
-# the drawn sets X-AO: each one's seed, and its cases that reuse an earlier set's pairing by
+# the drawn sets X-AP: each one's seed, and its cases that reuse an earlier set's pairing by
 # its draw's rule (the two-effect case since set Z: none was free for its rigs; since set AL any
 # case left none free)
 DRAWN = {"x": (33000, ()), "y": (34000, ()), "z": (35000, (TWO_Z,)),
@@ -5436,7 +5540,8 @@ DRAWN = {"x": (33000, ()), "y": (34000, ()), "z": (35000, (TWO_Z,)),
          "ad": (39000, (TWO_AD,)), "ae": (40000, (TWO_AE,)), "af": (41000, (TWO_AF,)),
          "ag": (42000, (TWO_AG,)), "ah": (43000, (TWO_AH,)), "ai": (44000, (TWO_AI,)),
          "aj": (45000, (TWO_AJ,)), "ak": (46000, (TWO_AK,)), "al": (47000, REUSED_AL),
-         "am": (48000, REUSED_AM), "an": (49000, REUSED_AN), "ao": (50000, REUSED_AO)}
+         "am": (48000, REUSED_AM), "an": (49000, REUSED_AN), "ao": (50000, REUSED_AO),
+         "ap": (51000, REUSED_AP)}
 
 
 @pytest.mark.parametrize("letters", DRAWN)

@@ -35,7 +35,8 @@ AL (``cases_al``, written after set AK by another engineer, its choices drawn, t
 that any case left no free pairing reuses an earlier set's), set AM (``cases_am``, written after
 set AL by another engineer, its choices drawn, set AL's way), set AN (``cases_an``, written after
 set AM by another engineer, its choices drawn, set AM's way), set AO (``cases_ao``, written after
-set AN by another engineer, its choices drawn, set AN's way)."""
+set AN by another engineer, its choices drawn, set AN's way), set AP (``cases_ap``, written after
+set AO by another engineer, its choices drawn, set AO's way)."""
 
 from __future__ import annotations
 
@@ -55,6 +56,7 @@ from .cases_al import SET_AL
 from .cases_am import SET_AM
 from .cases_an import SET_AN
 from .cases_ao import SET_AO
+from .cases_ap import SET_AP
 from .cases_b import SET_B
 from .cases_c import SET_C
 from .cases_d import SET_D
@@ -90,7 +92,7 @@ _BY_NAME: dict[str, list[Case]] = {
     "aa": SET_AA, "ab": SET_AB, "ac": SET_AC, "ad": SET_AD, "ae": SET_AE,
     "af": SET_AF, "ag": SET_AG, "ah": SET_AH, "ai": SET_AI,
     "aj": SET_AJ, "ak": SET_AK, "al": SET_AL, "am": SET_AM,
-    "an": SET_AN, "ao": SET_AO}
+    "an": SET_AN, "ao": SET_AO, "ap": SET_AP}
 SETS = tuple(_BY_NAME)
 
 
@@ -112,7 +114,9 @@ def before(name: str) -> tuple[str, ...]:
     ``"aa"``, ``"ab"``, ``"ac"``, ``"ad"``, ``"ae"``, ``"af"``, ``"ag"``, ``"ah"``, ``"ai"``,
     ``"aj"``, ``"ak"``, ``"al"`` and ``"am"``; before set AO, those, ``"aa"``, ``"ab"``,
     ``"ac"``, ``"ad"``, ``"ae"``, ``"af"``, ``"ag"``, ``"ah"``, ``"ai"``, ``"aj"``, ``"ak"``,
-    ``"al"``, ``"am"`` and ``"an"``); ValueError for an unknown name. Names, not letters: set
+    ``"al"``, ``"am"`` and ``"an"``; before set AP, those, ``"aa"``, ``"ab"``, ``"ac"``,
+    ``"ad"``, ``"ae"``, ``"af"``, ``"ag"``, ``"ah"``, ``"ai"``, ``"aj"``, ``"ak"``, ``"al"``,
+    ``"am"``, ``"an"`` and ``"ao"``); ValueError for an unknown name. Names, not letters: set
     AA is one set, not set A twice."""
     _known(name)
     return SETS[:SETS.index(name)]
@@ -120,10 +124,10 @@ def before(name: str) -> tuple[str, ...]:
 
 def case_set(name: str) -> list[Case]:
     """Set A (``cases``), or set B ... Z, AA, AB, AC, AD, AE, AF, AG, AH, AI, AJ, AK, AL, AM,
-    AN, AO (``cases_b`` ... ``cases_z``, ``cases_aa``, ``cases_ab``, ``cases_ac``,
+    AN, AO, AP (``cases_b`` ... ``cases_z``, ``cases_aa``, ``cases_ab``, ``cases_ac``,
     ``cases_ad``, ``cases_ae``, ``cases_af``, ``cases_ag``, ``cases_ah``, ``cases_ai``,
-    ``cases_aj``, ``cases_ak``, ``cases_al``, ``cases_am``, ``cases_an``, ``cases_ao``) by its
-    lower-case letters; ValueError for another name."""
+    ``cases_aj``, ``cases_ak``, ``cases_al``, ``cases_am``, ``cases_an``, ``cases_ao``,
+    ``cases_ap``) by its lower-case letters; ValueError for another name."""
     _known(name)
     return list(_BY_NAME[name])
 
