@@ -1,5 +1,5 @@
 import sys
 
-from .cli import main
+from .entry import observer_node
 
-sys.exit(main())
+sys.exit(observer_node())

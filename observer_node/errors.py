@@ -24,3 +24,9 @@ class RecordingLostError(ObserverError):
     """``run`` ran, but its recording is not the whole run (parts, ticks and frames lost)."""
 
     exit_code = 3
+
+
+class Terminated(KeyboardInterrupt):
+    """SIGTERM (systemd, ``kill``, a CI's timeout) raised as Ctrl-C is, so that what an
+    interrupted command cleans up (a half-written output folder) is cleaned up on it too;
+    the command ends with one line, exit code 143 (128 + 15), as a shell reports it."""

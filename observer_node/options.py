@@ -5,6 +5,7 @@ range where argparse reads them, and output paths checked before any work."""
 from __future__ import annotations
 
 import argparse
+import errno
 import math
 import os
 import shutil
@@ -16,7 +17,7 @@ from contextlib import contextmanager, suppress
 from pathlib import Path
 from typing import NoReturn
 
-from .errors import UsageError
+from .errors import ObserverError, UsageError
 
 
 class OneLineParser(argparse.ArgumentParser):
@@ -98,51 +99,108 @@ def out_folder(path: str, option: str = "--out") -> Path:
     """``path`` as an output folder, checked before any work: it is a folder or can be made
     one (the nearest existing parent a writable folder). Not created here, so a command that
     fails on its input leaves nothing behind."""
+    if not path.strip():
+        raise UsageError(f"{option}: empty (say '.' for the current folder)")
     p = Path(path)
     if p.exists() and not p.is_dir():
         raise UsageError(f"{option} {path}: is a file")
+    if p.is_symlink() and not p.exists():
+        raise UsageError(f"{option} {path}: a link to {os.readlink(p)}, which does not exist")
     _can_make(p, f"{option} {path}")
     return p
 
 
+class OutputClash(ObserverError):
+    """The results cannot go into the output folder as they are (a folder where a file goes,
+    a folder not writable): nothing was moved, the results wait in their hidden folder."""
+
+
 @contextmanager
 def staged(out: Path) -> Iterator[Path]:
-    """A hidden folder beside ``out`` that a command writes its results into, moved into
-    ``out`` only when the command ends well. An interrupted or failed run (Ctrl-C, a full
-    disk, bad data found late) leaves ``out`` as it was: no half set of plots and models
-    beside an older run's summary. Files of ``out`` the run does not write are kept."""
-    out = out.absolute()
-    made = [p for p in out.parents if not p.exists()]  # left as they were on failure
-    out.parent.mkdir(parents=True, exist_ok=True)
+    """A hidden folder inside ``out`` (``.partial-*``) that a command writes its results into,
+    moved into ``out`` only when the command ends well. An interrupted or failed run (Ctrl-C,
+    SIGTERM, a full disk, bad data found late) leaves ``out`` as it was, and folders made for
+    it are removed: no half set of plots and models beside an older run's summary. Files of
+    ``out`` the run does not write are kept; one it would write over with another kind (a
+    folder where a file goes) stops the move before anything is moved, naming both."""
+    out = Path(os.path.abspath(out))  # "new/.." is the folder itself, as mkdir reads it
+    made = [p for p in (out, *out.parents) if not p.exists()]  # removed again on failure
     try:
-        tmp = Path(tempfile.mkdtemp(prefix=f".{out.name}.", suffix=".partial", dir=out.parent))
+        out.mkdir(parents=True, exist_ok=True)
+        tmp = Path(tempfile.mkdtemp(prefix=".partial-", dir=out))
     except OSError as e:  # named as the user wrote it, not as the hidden folder
+        _remove_empty(made)
         raise OSError(e.errno, e.strerror, str(out)) from None
     try:
         yield tmp
     except BaseException:
         shutil.rmtree(tmp, ignore_errors=True)
-        for p in made:  # innermost first
-            with suppress(OSError):
-                p.rmdir()
+        _remove_empty(made)
         raise
     with _sigint_deferred():  # a Ctrl-C now would leave the move half done
-        _merge(tmp, out)
+        _check_fits(tmp, out, tmp)
+        try:
+            _merge(tmp, out)
+        except OSError as e:
+            raise OSError(e.errno, f"{e.strerror}; what was not moved is in {tmp}",
+                          e.filename) from None
         shutil.rmtree(tmp, ignore_errors=True)
 
 
-def _merge(src: Path, dest: Path) -> None:
-    dest.mkdir(parents=True, exist_ok=True)
+def _remove_empty(folders: list[Path]) -> None:
+    for p in folders:  # innermost first
+        with suppress(OSError):
+            p.rmdir()
+
+
+def _check_fits(src: Path, dest: Path, tmp: Path) -> None:
+    """OutputClash unless every result of ``src`` can go to its place in ``dest``."""
+    if not os.access(dest, os.W_OK | os.X_OK):
+        raise OutputClash(f"{dest}: cannot write in it (permission denied); the results are "
+                          f"in {tmp}")
     for entry in src.iterdir():
         target = dest / entry.name
-        if entry.is_dir() and target.is_dir() and not target.is_symlink():
+        if entry.is_dir() and not entry.is_symlink():
+            if target.is_dir():  # a folder, or a link to one: the results go inside
+                _check_fits(entry, target, tmp)
+            elif target.exists():
+                raise OutputClash(f"{target}: a file where this run writes a folder; nothing "
+                                  f"was moved, the results are in {tmp}")
+        elif target.is_dir():
+            raise OutputClash(f"{target}: a folder where this run writes a file; nothing was "
+                              f"moved, the results are in {tmp}")
+
+
+def _merge(src: Path, dest: Path) -> None:
+    for entry in src.iterdir():
+        target = dest / entry.name
+        if entry.is_dir() and target.is_dir():
             _merge(entry, target)
-            continue
-        if target.is_dir() and not target.is_symlink():
-            shutil.rmtree(target)  # a folder where this run writes a file (or the reverse)
-        elif target.is_symlink() or target.exists():
-            target.unlink()
+        else:
+            _move(entry, target)
+
+
+def _move(entry: Path, target: Path) -> None:
+    """``entry`` to ``target`` (a file there replaced whole), across file systems too: a
+    folder inside --out may be a link to another disk."""
+    try:
         os.replace(entry, target)
+        return
+    except OSError as e:
+        if e.errno != errno.EXDEV:
+            raise
+    if entry.is_dir():
+        shutil.copytree(entry, target, symlinks=True)
+        return
+    fd, tmp_name = tempfile.mkstemp(prefix=".partial-", dir=target.parent)
+    os.close(fd)
+    try:  # copied beside, then renamed: a full disk keeps the old file whole
+        shutil.copy2(entry, tmp_name)
+        os.replace(tmp_name, target)
+    except BaseException:
+        with suppress(OSError):
+            os.unlink(tmp_name)
+        raise
 
 
 @contextmanager

@@ -23,6 +23,7 @@ from collections import Counter
 
 from observer_node.dbc import Codec, fd_frame_time_s, frame_bits
 from observer_node.dbc.bus import add_bus_arguments, open_bus
+from observer_node.entry import stopped
 from observer_node.errors import ObserverError, UsageError
 from observer_node.options import OneLineParser, finite, non_negative, positive, positive_int
 
@@ -54,7 +55,7 @@ def _priority(s: str) -> int:
 PRE_MAX_S = 5.0  # --pre: the daemon's bias needs a fraction of a second; more is a typo
 RATE_MIN, RATE_MAX = 1e-3, 1e3  # --rate: a 150 ms crash in 150 s, or 1000 tests a second
 GAP_MAX_S = 3600.0  # --gap: an hour between sources; more is a typo
-FRAMES_MAX = 2_000_000  # everything --loop plays is held in memory (~100 MB at this size)
+FRAMES_MAX = 1_000_000  # everything --loop plays is held in memory: ~280 MB at this size
 
 
 def _pre(s: str) -> float:
@@ -135,7 +136,8 @@ def build_parser() -> argparse.ArgumentParser:
                    "normal process, as the daemon's run --rt-priority; default %(default)s: "
                    "normal")
     p.add_argument("--gap", type=_gap, default=0.5,
-                   help=f"pause between sources, s (default %(default)g, at most {GAP_MAX_S:g})")
+                   help="pause between sources, s of wall time whatever --rate (default "
+                   f"%(default)g, at most {GAP_MAX_S:g})")
     p.add_argument("--only", type=_can_id, action="append", metavar="ID",
                    help="send only these CAN IDs (repeatable; 0x100 or 256)")
     p.add_argument("--remap", type=_remap, action="append", metavar="FROM=TO",
@@ -161,8 +163,8 @@ def describe(s: Schedule, bitrate: float, data_bitrate: float | None = None,
     """Frames per ID and the worst-case bus load (CAN FD timing with ``data_bitrate``), as
     played at ``rate`` (the time scale)."""
     dur = float(s.t_s[-1] - s.t_s[0]) / rate if len(s) else 0.0
-    scaled = f" (--rate {rate:g})" if rate != 1.0 else ""
-    lines = [f"{len(s)} frames over {dur:.3f} s{scaled} from {s.source}"]
+    scaled = f" as played at --rate {rate:g}" if rate != 1.0 else ""
+    lines = [f"{len(s)} frames over {dur:.4g} s{scaled} from {s.source}"]
     counts = Counter(s.ids.tolist())
     sizes: dict[int, int] = {}
     for cid, d in zip(s.ids.tolist(), s.data, strict=True):
@@ -178,6 +180,9 @@ def describe(s: Schedule, bitrate: float, data_bitrate: float | None = None,
     speed = f"{bitrate / 1000:g} kbit/s" + (f", FD data {data_bitrate / 1e6:g} Mbit/s"
                                             if data_bitrate else "")
     lines.append(f"  bus load (worst-case stuffing, {speed}): {100 * load:.1f} %")
+    if load > 1.0:
+        lines.append("  more than the bus carries: frames would be sent late (the timing "
+                     "report counts them); a lower --rate or a faster bus")
     return "\n".join(lines)
 
 
@@ -188,9 +193,14 @@ def main(argv: list[str] | None = None) -> int:
     except ObserverError as e:  # a source or bus that cannot be used: one line, no traceback
         print(f"crash-replay: error: {e}", file=sys.stderr)
         return e.exit_code
+    except KeyboardInterrupt as e:  # reading sources or playing; SIGTERM too (the entry's)
+        if a.progress_shown:
+            sys.stderr.write("\n")
+        return stopped("crash-replay", e)
 
 
 def _play(a: argparse.Namespace) -> int:
+    a.progress_shown = False  # a progress bar's line to end before the last line
     if a.start is not None and a.end is not None and a.start >= a.end:
         raise UsageError(f"--start {a.start:g} is not before --end {a.end:g}: nothing to play")
     codec = Codec()
@@ -207,7 +217,7 @@ def _play(a: argparse.Namespace) -> int:
     if total > FRAMES_MAX:
         raise UsageError(f"--loop {a.loop}: {total:,} frames in all, more than crash-replay "
                          f"holds ({FRAMES_MAX:,}); play it in a shell loop")
-    sched = concat(parts * a.loop, a.gap)
+    sched = concat(parts * a.loop, a.gap * a.rate)  # --gap is wall time: unscaled by --rate
     if sched.synthetic and len(parts) * a.loop > 1:
         sched = restamp_counters(sched, codec)  # one sensor across tests: no counter restart
     sched = filter_remap(sched, only, remap, warn=_warn)
@@ -217,7 +227,7 @@ def _play(a: argparse.Namespace) -> int:
     if a.dry_run:
         print(describe(sched, a.bitrate, a.data_bitrate if a.fd else None, a.rate))
         for t, cid, d in list(zip(sched.t_s, sched.ids.tolist(), sched.data, strict=True))[:20]:
-            print(f"  {t:10.6f}  0x{cid:03X}  {d.hex(' ')}")
+            print(f"  {t / a.rate:10.6f}  0x{cid:03X}  {d.hex(' ')}")  # s, as played
         if len(sched) > 20:
             print(f"  ... {len(sched) - 20} more")
         return 0
@@ -234,12 +244,10 @@ def _play(a: argparse.Namespace) -> int:
             sys.stderr.write(f"\r[{'#' * done}{'.' * (width - done)}] {k}/{n} frames")
             sys.stderr.flush()
 
+    a.progress_shown = tty
     try:
         report = play(sched, send, rate=a.rate, spin_s=a.spin_us * 1e-6, progress=progress,
                       rt_priority=a.rt_priority)
-    except KeyboardInterrupt:
-        print("\ncrash-replay: interrupted", file=sys.stderr)
-        return 130
     finally:
         bus.shutdown()
     if tty:
@@ -257,4 +265,6 @@ def entry() -> int:
 
 
 if __name__ == "__main__":
-    sys.exit(entry())
+    from observer_node.entry import crash_replay
+
+    sys.exit(crash_replay())

@@ -67,7 +67,7 @@ def concat(schedules: list[Schedule], gap_s: float = 0.5) -> Schedule:
         return Schedule(np.zeros(0), np.zeros(0, int), [])
     return Schedule(np.concatenate([p.t_s for p in parts]),
                     np.concatenate([p.ids for p in parts]),
-                    [d for p in parts for d in p.data], "+".join(p.source for p in parts),
+                    [d for p in parts for d in p.data], _names(parts),
                     all(p.synthetic for p in parts))
 
 
@@ -165,3 +165,14 @@ def _burst_schedule(test: CrashTest, codec: Codec, rate_hz: float, idx: np.ndarr
         ids.append(fc.frame_id)
         data.append(fc.encode(values, f))
     return Schedule(np.array(times), np.array(ids), data, test.name, synthetic=True)
+
+
+def _names(parts: list[Schedule]) -> str:
+    """The sources' names, "A+B", a run of one repeated as "A x3" (--loop 3838 wrote the
+    name 3838 times)."""
+    names = [p.source for p in parts]
+    k = len(names)
+    for n in range(1, k // 2 + 1):  # the shortest period that repeats to the whole
+        if k % n == 0 and names == names[:n] * (k // n):
+            return f"{'+'.join(names[:n])} x{k // n}"
+    return "+".join(names)

@@ -112,6 +112,12 @@ MODEL_CASES: dict[str, tuple[Callable[[dict], object] | bytes, str]] = {
     "scoped effect, bench setup not said": (_scoped, "--setup"),
     "scope not a list": (_effect({"kind": "belt_unloading", "setups": "SLED"}),
                          "effects[0].setups"),
+    # a hostile user's (session 58): tracebacks in run and export-c, or a garbled message
+    "fitted_on null": (_set("fitted_on", None), "'fitted_on'"),
+    "fitted_on setups of numbers": (_set("fitted_on", {"setups": [1, None]}),
+                                    "'fitted_on.setups["),
+    "fitted_on setups a string": (_set("fitted_on", {"setups": "R16"}), "'fitted_on.setups'"),
+    "fitted_on window of one": (_set("fitted_on", {"window_s": [0.01]}), "'fitted_on.window_s'"),
     "effects on ARX": (lambda d: (d.__setitem__("kind", "arx"),
                                   _effect({"kind": "belt_unloading"})(d)), "kind"),
     "effects without grey-box parameters": (lambda d: (d["parameters"].pop("k2"), _effect(

@@ -58,7 +58,16 @@ def test_a_loop_past_what_memory_holds_is_refused_before_it_is_built(capsys):
     err = _one_line_error(capsys, [R16, "--dry-run", "--loop", "100000"])
     assert "--loop 100000: 50,400,000 frames in all" in err and "shell loop" in err
     assert main([R16, "--dry-run", "--loop", "3"]) == 0
-    assert capsys.readouterr().out.startswith(f"{3 * 504} frames")
+    first = capsys.readouterr().out.splitlines()[0]
+    assert first.startswith(f"{3 * 504} frames") and first.endswith("from R16_001 x3")
+
+
+def test_a_bus_load_past_what_the_bus_carries_is_said_and_the_gap_is_wall_time(capsys):
+    assert main([R16, "--dry-run", "--rate", "1000"]) == 0
+    assert "more than the bus carries" in capsys.readouterr().out
+    assert main([R16, R16, "--dry-run", "--gap", "10", "--rate", "0.5"]) == 0
+    first = capsys.readouterr().out.splitlines()[0]  # two 0.419 s tests at half speed, 10 s
+    assert first.startswith("1008 frames over 11.68 s as played at --rate 0.5"), first
 
 
 def test_the_dry_run_says_the_time_and_bus_load_as_played_at_the_rate(capsys):
@@ -67,7 +76,8 @@ def test_the_dry_run_says_the_time_and_bus_load_as_played_at_the_rate(capsys):
     assert main([R16, "--dry-run", "--rate", "0.01"]) == 0
     slow = capsys.readouterr().out.splitlines()
     assert one[0] == "504 frames over 0.419 s from R16_001"
-    assert slow[0] == "504 frames over 41.900 s (--rate 0.01) from R16_001"
+    assert slow[0] == "504 frames over 41.9 s as played at --rate 0.01 from R16_001"
+    assert float(one[5].split()[0]) * 100 == pytest.approx(float(slow[5].split()[0]))
     load = [float(x.split()[-2]) for x in (one[3], slow[3])]
     assert "bus load" in one[3] and load[1] == pytest.approx(load[0] / 100, abs=0.06)
 
@@ -202,3 +212,30 @@ def test_a_log_of_sent_frames_only_says_all_frames_replays_them(capsys, tmp_path
            "--all-frames replays those" in err
     assert main([str(log), "--dry-run", "--all-frames"]) == 0
     assert capsys.readouterr().out.startswith("10 frames")
+
+
+def test_ctrl_c_while_the_frames_are_built_is_one_line():
+    """crash-replay caught Ctrl-C only while playing: while it read and built a long --loop
+    it printed a traceback (session 58)."""
+    import os
+    import signal
+    import subprocess
+    import sys
+    import time
+
+    def sigint_default() -> None:  # as a terminal starts a program
+        signal.signal(signal.SIGINT, signal.SIG_DFL)
+        signal.pthread_sigmask(signal.SIG_UNBLOCK, {signal.SIGINT})
+
+    run = ("import sys; from observer_node.entry import crash_replay; "
+           f"sys.argv = ['crash-replay', {R16!r}, '--dry-run', '--loop', '1900']; "
+           "sys.exit(crash_replay())")  # as the installed command starts
+    p = subprocess.Popen([sys.executable, "-c", run], stdout=subprocess.DEVNULL,
+                         stderr=subprocess.PIPE, text=True, start_new_session=True,
+                         preexec_fn=sigint_default)
+    time.sleep(3.0)  # loading or building: both are one line now
+    os.killpg(p.pid, signal.SIGINT)
+    assert p.stderr is not None
+    err = p.stderr.read()
+    assert p.wait(timeout=60) == 130, err
+    assert err.strip() == "crash-replay: interrupted"

@@ -188,7 +188,7 @@ def test_a_setup_the_model_does_not_know_is_refused_when_no_effect_is_scoped(tmp
                                  "effects": [{"kind": "belt_unloading", "parameters": {}}]})
     assert not plain.setups()
     assert plain.for_setup("SLED") is plain and plain.for_setup("") is plain
-    with pytest.raises(ModelFileError, match="'MARS' is not one the model knows"):
+    with pytest.raises(ModelFileError, match="'MARS' is not one the model was fitted on"):
         plain.for_setup("MARS")
     path = tmp_path / "model.json"
     plain.save(path)

@@ -29,6 +29,7 @@ import argparse
 import sys
 
 from .. import __version__
+from ..entry import stopped
 from ..errors import ObserverError
 from ..options import OneLineParser
 from . import analyze, bench, evaluate, export, export_c, identify, loop, run, simulate
@@ -55,9 +56,8 @@ def main(argv: list[str] | None = None) -> int:
     except ObserverError as e:  # bad input and the like: one line, never a traceback
         print(f"observer-node: error: {e}", file=sys.stderr)
         return e.exit_code
-    except KeyboardInterrupt:
-        print("observer-node: interrupted", file=sys.stderr)
-        return 130
+    except KeyboardInterrupt as e:  # Ctrl-C, or SIGTERM as the entry point raises it
+        return stopped("observer-node", e)
     except BrokenPipeError:
         return 0
     except OSError as e:  # a disk full, a folder that cannot be made: one line naming it

@@ -27,7 +27,9 @@ def _do_analyze(a: argparse.Namespace) -> int:
     from ..recording import analyze, read_recording
     from ..recording import format as fmt
 
-    out = options.out_folder(a.out) if a.out else Path(a.recording).with_suffix("")
+    beside = str(Path(a.recording).with_suffix(""))  # the default: the recording less .mcap
+    out = (options.out_folder(a.out) if a.out is not None else
+           options.out_folder(beside, "--out (not given: the recording's path less .mcap)"))
     rec = read_recording(a.recording)
     with options.staged(out) as tmp:
         result = analyze(rec, out_dir=tmp)

@@ -20,7 +20,8 @@ def add_subparser(subparsers: argparse._SubParsersAction[argparse.ArgumentParser
     s.add_argument("--name", default="chest_observer",
                    help="file and guard name (default %(default)s)")
     s.add_argument("--setup", metavar="NAME",
-                   help="the ECU's setup, for a model with effects scoped to setups")
+                   help="the ECU's setup, for a model with effects scoped to setups (a setup "
+                   "the model was not fitted on is refused)")
     s.set_defaults(func=_do_export_c)
 
 

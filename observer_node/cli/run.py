@@ -46,7 +46,7 @@ def add_subparser(subparsers: argparse._SubParsersAction[argparse.ArgumentParser
     s.add_argument("--setup", metavar="NAME",
                    help="this bench's setup (R16, SLED, ...): needed for a model whose effects "
                    "act on some setups only (loop's model.json says which); the daemon runs "
-                   "that setup's effects")
+                   "that setup's effects. A setup the model was not fitted on is refused")
     s.add_argument("--record", help="MCAP file to record the run to")
     s.add_argument("--live", nargs="?", const="127.0.0.1:8765", metavar="HOST:PORT",
                    help="serve the run live to the Foxglove app (its WebSocket protocol; "

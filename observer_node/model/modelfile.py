@@ -99,9 +99,9 @@ class ModelFile:
         known = sorted(set(scoped) | set(self.fitted_on.get("setups", [])))
         if not scoped:
             if setup and known and setup not in known:
-                raise ModelFileError(f"{where}: setup {setup!r} is not one the model knows "
-                                     f"({', '.join(known)}); its effects act on every setup, "
-                                     "so --setup can be left out")
+                raise ModelFileError(f"{where}: setup {setup!r} is not one the model was "
+                                     f"fitted on ({', '.join(known)}); no effect of it is "
+                                     "scoped to a setup, so --setup can be left out")
             return self
         if not setup:
             raise ModelFileError(f"{where}: effects act on setups {', '.join(scoped)} only: say "

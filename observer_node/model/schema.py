@@ -101,6 +101,12 @@ def _schema() -> dict[str, Any]:
             "outputs": _signals(("cr", "g"), ("cd", "mm")),
             # kind-specific: the grey-box's, where given, numbers (all seven with effects)
             "parameters": {"type": "object"},
+            # what the model was fitted on: read by run --setup (setups) and evaluate
+            # (window_s); the rest is for the reader
+            "fitted_on": {"type": "object", "properties": {
+                "setups": {"type": "array", "items": {"type": "string", "minLength": 1}},
+                "window_s": {"type": "array", "minItems": 2, "maxItems": 2,
+                             "items": _NUMBER}}},
             "effects": {
                 "type": "array", "maxItems": 32,
                 "items": {"type": "object", "required": ["kind"],
