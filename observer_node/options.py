@@ -75,6 +75,16 @@ def int_in(low: int, high: int) -> Callable[[str], int]:
     return parse
 
 
+def number_in(low: float, high: float, unit: str = "") -> Callable[[str], float]:
+    """An argparse type: a finite number from ``low`` to ``high`` (``unit`` said after)."""
+    def parse(text: str) -> float:
+        x = finite(text)
+        if not low <= x <= high:
+            raise argparse.ArgumentTypeError(f"wants {low:g} to {high:g}{unit}: {text!r}")
+        return x
+    return parse
+
+
 def positive_int(text: str) -> int:
     """An argparse type: a whole number above zero."""
     return _whole(text, 1)

@@ -25,7 +25,14 @@ from observer_node.dbc import Codec, fd_frame_time_s, frame_bits
 from observer_node.dbc.bus import add_bus_arguments, open_bus
 from observer_node.entry import stopped
 from observer_node.errors import ObserverError, UsageError
-from observer_node.options import OneLineParser, finite, non_negative, positive, positive_int
+from observer_node.options import (
+    OneLineParser,
+    finite,
+    non_negative,
+    number_in,
+    positive,
+    positive_int,
+)
 
 from .player import bus_sender, play
 from .schedule import Schedule, concat, restamp_counters
@@ -58,28 +65,6 @@ GAP_MAX_S = 3600.0  # --gap: an hour between sources; more is a typo
 FRAMES_MAX = 1_000_000  # everything --loop plays is held in memory: ~280 MB at this size
 
 
-def _pre(s: str) -> float:
-    x = non_negative(s)
-    if x > PRE_MAX_S:
-        raise argparse.ArgumentTypeError(f"at most {PRE_MAX_S:g} s: {s!r}")
-    return x
-
-
-def _rate(s: str) -> float:
-    x = positive(s)
-    if not RATE_MIN <= x <= RATE_MAX:
-        raise argparse.ArgumentTypeError(f"wants {RATE_MIN:g} (1000 times slower) to "
-                                         f"{RATE_MAX:g} (1000 times faster): {s!r}")
-    return x
-
-
-def _gap(s: str) -> float:
-    x = non_negative(s)
-    if x > GAP_MAX_S:
-        raise argparse.ArgumentTypeError(f"at most {GAP_MAX_S:g} s: {s!r}")
-    return x
-
-
 def _remap(s: str) -> tuple[int, int]:
     a, _, b = s.partition("=")
     if not b:
@@ -110,7 +95,7 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--burst", action="store_true",
                    help="lab data as InputBurst frames, eight samples each (CAN FD; for tick "
                    "rates a frame per sample cannot carry, e.g. --tick-rate 10000)")
-    p.add_argument("--rate", type=_rate, default=1.0,
+    p.add_argument("--rate", type=number_in(RATE_MIN, RATE_MAX), default=1.0,
                    help="time scale: 2 plays twice as fast, 0.1 ten times slower "
                    f"({RATE_MIN:g} to {RATE_MAX:g}; default %(default)g)")
     p.add_argument("--tick-rate", type=positive, default=1000.0,
@@ -120,7 +105,7 @@ def build_parser() -> argparse.ArgumentParser:
                    help="also send ReferenceChest frames with the measured CR and CD")
     p.add_argument("--start", type=finite, help="start of the window to play, s (test time)")
     p.add_argument("--end", type=finite, help="end of the window to play, s (test time)")
-    p.add_argument("--pre", type=_pre, default=0.2,
+    p.add_argument("--pre", type=number_in(0.0, PRE_MAX_S, " s"), default=0.2,
                    help="quiet signal before a lab test, s, for the daemon's bias "
                    f"(default %(default)g, at most {PRE_MAX_S:g})")
     p.add_argument("--loop", type=positive_int, default=1, metavar="N",
@@ -135,7 +120,7 @@ def build_parser() -> argparse.ArgumentParser:
                    "or RLIMIT_RTPRIO, else one line says so): due frames preempt every "
                    "normal process, as the daemon's run --rt-priority; default %(default)s: "
                    "normal")
-    p.add_argument("--gap", type=_gap, default=0.5,
+    p.add_argument("--gap", type=number_in(0.0, GAP_MAX_S, " s"), default=0.5,
                    help="pause between sources, s of wall time whatever --rate (default "
                    f"%(default)g, at most {GAP_MAX_S:g})")
     p.add_argument("--only", type=_can_id, action="append", metavar="ID",
@@ -194,13 +179,12 @@ def main(argv: list[str] | None = None) -> int:
         print(f"crash-replay: error: {e}", file=sys.stderr)
         return e.exit_code
     except KeyboardInterrupt as e:  # reading sources or playing; SIGTERM too (the entry's)
-        if a.progress_shown:
-            sys.stderr.write("\n")
+        if sys.stderr.isatty():
+            sys.stderr.write("\r\033[K")  # off the progress bar's line, if one was drawn
         return stopped("crash-replay", e)
 
 
 def _play(a: argparse.Namespace) -> int:
-    a.progress_shown = False  # a progress bar's line to end before the last line
     if a.start is not None and a.end is not None and a.start >= a.end:
         raise UsageError(f"--start {a.start:g} is not before --end {a.end:g}: nothing to play")
     codec = Codec()
@@ -244,7 +228,6 @@ def _play(a: argparse.Namespace) -> int:
             sys.stderr.write(f"\r[{'#' * done}{'.' * (width - done)}] {k}/{n} frames")
             sys.stderr.flush()
 
-    a.progress_shown = tty
     try:
         report = play(sched, send, rate=a.rate, spin_s=a.spin_us * 1e-6, progress=progress,
                       rt_priority=a.rt_priority)

@@ -49,7 +49,7 @@ from observer_node.loop.screening import (
     spool_gain_outliers,
     velocity_outliers,
 )
-from tests.runners import InProcess
+from tests.runners import InProcess, sigint_default
 
 from .conftest import DATA
 
@@ -1398,18 +1398,6 @@ def test_a_server_that_never_answers_is_given_up_on(tmp_path):
         assert time.monotonic() - t0 < 30
 
 
-def _sigint_default() -> None:
-    """A terminal's program starts with SIGINT at its default and unblocked. A test worker
-    need not be in that state (in a full CI run the loop, started from a worker that had run
-    1300 tests, ran on through the interrupt, which it never saw; alone, and after the
-    in-process loop and bench tests, it stops), and an ignored or blocked SIGINT is inherited
-    by the worker's children, as nohup wants."""
-    import signal
-
-    signal.signal(signal.SIGINT, signal.SIG_DFL)
-    signal.pthread_sigmask(signal.SIG_UNBLOCK, {signal.SIGINT})
-
-
 def test_ctrl_c_during_the_refits_ends_in_one_line_and_exit_130(tmp_path):
     """Ctrl-C while the refits run on Dask: "interrupted", exit 130, no page of tracebacks
     from the gather's waiting tasks nor from the workers (a hostile user's finding, session
@@ -1424,7 +1412,7 @@ def test_ctrl_c_during_the_refits_ends_in_one_line_and_exit_130(tmp_path):
                           "campaign-a/R16_00[135]", "--validate", "campaign-a/R16_002", "--out",
                           str(out), "--workers", "1"],
                          stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True,
-                         start_new_session=True, preexec_fn=_sigint_default)
+                         start_new_session=True, preexec_fn=sigint_default)
     assert p.stderr is not None
     seen = []
     for line in p.stderr:  # the progress lines; interrupt once the refits are under way

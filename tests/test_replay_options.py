@@ -15,6 +15,7 @@ from observer_node.replay.cli import main
 from observer_node.replay.schedule import crash_test_schedule
 
 from .conftest import DATA
+from .runners import sigint_default
 
 R16 = str(DATA / "R16_001")
 
@@ -222,10 +223,6 @@ def test_ctrl_c_while_the_frames_are_built_is_one_line():
     import subprocess
     import sys
     import time
-
-    def sigint_default() -> None:  # as a terminal starts a program
-        signal.signal(signal.SIGINT, signal.SIG_DFL)
-        signal.pthread_sigmask(signal.SIG_UNBLOCK, {signal.SIGINT})
 
     run = ("import sys; from observer_node.entry import crash_replay; "
            f"sys.argv = ['crash-replay', {R16!r}, '--dry-run', '--loop', '1900']; "

@@ -17,6 +17,8 @@ import pytest
 
 from observer_node.options import OutputClash, staged
 
+from .runners import sigint_default
+
 
 def _tree(folder: Path) -> dict[str, str]:
     return {str(p.relative_to(folder)): p.read_text() for p in sorted(folder.rglob("*"))
@@ -129,11 +131,6 @@ def test_a_default_out_that_is_the_recording_itself_is_refused_before_the_work(t
         assert said in capsys.readouterr().err
 
 
-def _sigint_default() -> None:
-    signal.signal(signal.SIGINT, signal.SIG_DFL)  # as a terminal starts a program
-    signal.pthread_sigmask(signal.SIG_UNBLOCK, {signal.SIGINT})
-
-
 def test_sigterm_during_evaluate_cleans_up_as_ctrl_c_does(tmp_path):
     """SIGTERM (systemd, kill, a CI's timeout) killed the command where it stood: its hidden
     folder and the folders made for --out stayed (session 58). Now one line, exit 143."""
@@ -172,7 +169,7 @@ def test_ctrl_c_during_evaluate_leaves_the_older_results_whole(tmp_path):
     p = subprocess.Popen([sys.executable, "-m", "observer_node", "evaluate", "--data",
                           "campaign-a/R16_00[1-4]", "--out", str(out)],
                          stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True,
-                         start_new_session=True, preexec_fn=_sigint_default)
+                         start_new_session=True, preexec_fn=sigint_default)
     assert p.stderr is not None
     seen = []
     for line in p.stderr:  # interrupt once the first models and plots are written
