@@ -197,6 +197,8 @@ def _play(a: argparse.Namespace) -> int:
         raise UsageError("--burst sends 48-byte InputBurst frames: it needs --fd")
     only = set(a.only) if a.only else None
     remap = _remap_table(a.remap or [])
+    if only is not None:  # before --loop repeats them: its limit counts what is sent
+        parts = [x.only(only) for x in parts]
     total = sum(len(x) for x in parts) * a.loop
     if total > FRAMES_MAX:
         raise UsageError(f"--loop {a.loop}: {total:,} frames in all, more than crash-replay "

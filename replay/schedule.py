@@ -32,12 +32,22 @@ class Schedule:
     data: list[bytes]
     source: str = ""
     synthetic: bool = False  # encoded here from lab data (not a recorded log)
+    # IDs of frames the logging node sent, left out without --all-frames: named when --only
+    # asks for one of them
+    sent_ids: frozenset[int] = frozenset()
 
     def __len__(self) -> int:
         return len(self.data)
 
+    def only(self, ids: set[int]) -> Schedule:
+        """Its frames of the CAN IDs in ``ids``."""
+        idx = np.flatnonzero(np.isin(self.ids, sorted(ids)))
+        return Schedule(self.t_s[idx], self.ids[idx], [self.data[i] for i in idx], self.source,
+                        self.synthetic, self.sent_ids)
+
     def shifted(self, dt_s: float) -> Schedule:
-        return Schedule(self.t_s + dt_s, self.ids, self.data, self.source, self.synthetic)
+        return Schedule(self.t_s + dt_s, self.ids, self.data, self.source, self.synthetic,
+                        self.sent_ids)
 
 
 def restamp_counters(s: Schedule, codec: Codec) -> Schedule:
@@ -53,22 +63,23 @@ def restamp_counters(s: Schedule, codec: Codec) -> Schedule:
         k = counters.get(cid, 0)
         counters[cid] = k + 1
         data.append(fc.with_counter(d, k))
-    return Schedule(s.t_s, s.ids, data, s.source, s.synthetic)
+    return Schedule(s.t_s, s.ids, data, s.source, s.synthetic, s.sent_ids)
 
 
 def concat(schedules: list[Schedule], gap_s: float = 0.5) -> Schedule:
     """Play schedules one after another with ``gap_s`` between them."""
     parts, offset = [], 0.0
+    sent_ids = frozenset().union(*(s.sent_ids for s in schedules))
     for s in schedules:
         if len(s):
             parts.append(s.shifted(offset - s.t_s[0]))
             offset = parts[-1].t_s[-1] + gap_s
     if not parts:
-        return Schedule(np.zeros(0), np.zeros(0, int), [])
+        return Schedule(np.zeros(0), np.zeros(0, int), [], sent_ids=sent_ids)
     return Schedule(np.concatenate([p.t_s for p in parts]),
                     np.concatenate([p.ids for p in parts]),
                     [d for p in parts for d in p.data], _names(parts),
-                    all(p.synthetic for p in parts))
+                    all(p.synthetic for p in parts), sent_ids)
 
 
 def check_window(name: str, t: np.ndarray, start_s: float | None, end_s: float | None) -> None:

@@ -79,6 +79,7 @@ def read_python_can_log(path: Path, all_frames: bool = False) -> Schedule:
                               "'chest-observer[mf4]'") from None
     times, ids, data = [], [], []
     sent = 0  # left out as sent by the logging node: named if nothing else is left
+    sent_ids: set[int] = set()
     said = _Said()
     can_log = logging.getLogger("can")
     can_log.addHandler(said)
@@ -90,6 +91,7 @@ def read_python_can_log(path: Path, all_frames: bool = False) -> Schedule:
                     continue
                 if not (m.is_rx or all_frames):
                     sent += 1
+                    sent_ids.add(m.arbitration_id)
                     continue
                 times.append(m.timestamp)
                 ids.append(m.arbitration_id)
@@ -106,7 +108,7 @@ def read_python_can_log(path: Path, all_frames: bool = False) -> Schedule:
     if not data:
         raise SourceError(f"{path}: no frames" + _only_sent(sent))
     t = np.array(times)
-    return Schedule(t - t[0], np.array(ids), data, path.name)
+    return Schedule(t - t[0], np.array(ids), data, path.name, sent_ids=frozenset(sent_ids))
 
 
 def _only_sent(sent: int) -> str:
@@ -167,6 +169,7 @@ def read_mcap_frames(path: Path, all_frames: bool = False, codec: Codec | None =
 
     times, ids, data = [], [], []
     sent = 0
+    sent_ids: set[int] = set()
     translate = None
     try:
         scan = Scan(path)
@@ -183,6 +186,7 @@ def read_mcap_frames(path: Path, all_frames: bool = False, codec: Codec | None =
                 continue
             if fr.tx and not all_frames:
                 sent += 1
+                sent_ids.add(fr.can_id)
                 continue
             times.append(fr.t)
             ids.append(fr.can_id)
@@ -201,7 +205,8 @@ def read_mcap_frames(path: Path, all_frames: bool = False, codec: Codec | None =
                                          "recording?)"))
     order = np.argsort(np.array(times), kind="stable")
     t = np.array(times)[order]
-    s = Schedule(t - t[0], np.array(ids)[order], [data[i] for i in order], path.name)
+    s = Schedule(t - t[0], np.array(ids)[order], [data[i] for i in order], path.name,
+                 sent_ids=frozenset(sent_ids))
     # Translated frames carry the new profile's CRC; their counters are renumbered per ID
     # (the old ones may run past the new profile's range).
     return restamp_counters(s, codec) if translate and codec is not None else s
@@ -278,7 +283,8 @@ def _window(s: Schedule, start_s: float | None, end_s: float | None) -> Schedule
     if end_s is not None:
         keep &= s.t_s <= end_s
     idx = np.flatnonzero(keep)
-    return Schedule(s.t_s[idx], s.ids[idx], [s.data[i] for i in idx], s.source)
+    return Schedule(s.t_s[idx], s.ids[idx], [s.data[i] for i in idx], s.source,
+                    sent_ids=s.sent_ids)
 
 
 def filter_remap(s: Schedule, only: set[int] | None, remap: dict[int, int],
@@ -290,7 +296,9 @@ def filter_remap(s: Schedule, only: set[int] | None, remap: dict[int, int],
     sent = set(s.ids[idx].tolist())
     if warn is not None:
         for cid in sorted((only or set()) - sent):
-            warn(f"--only 0x{cid:X}: no frames of that ID in the sources")
+            warn(f"--only 0x{cid:X}: " + ("only the logging node sent that ID: --all-frames "
+                                          "replays its frames" if cid in s.sent_ids
+                                          else "no frames of that ID in the sources"))
         for cid in sorted(remap.keys() - sent):
             warn(f"--remap 0x{cid:X}=0x{remap[cid]:X}: no frames of 0x{cid:X} are sent")
     by_new: dict[int, int] = {}

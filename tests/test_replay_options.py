@@ -236,3 +236,30 @@ def test_ctrl_c_while_the_frames_are_built_is_one_line():
     err = p.stderr.read()
     assert p.wait(timeout=60) == 130, err
     assert err.strip() == "crash-replay: interrupted"
+
+
+def test_only_an_id_the_logging_node_sent_names_all_frames(capsys, tmp_path):
+    """--only an ID the log holds among the logger's own frames said "no frames of that ID"
+    (session 58's hostile user): the frames are there, left out as sent."""
+    s = crash_test_schedule(read_isomme(DATA / "R16_002"), Codec(), 1000.0)
+    log = tmp_path / "mixed.asc"
+    with can.Logger(str(log)) as w:
+        for k in range(40):
+            cid = int(s.ids[k])
+            w.on_message_received(can.Message(timestamp=1000 + s.t_s[k], arbitration_id=cid,
+                                              data=s.data[k], is_extended_id=False,
+                                              is_rx=cid != 0x110))  # 0x110: sent only
+    assert main([str(log), "--dry-run", "--only", "0x110"]) == 2
+    err = capsys.readouterr().err
+    assert "--only 0x110: only the logging node sent that ID: --all-frames replays" in err
+    assert main([str(log), "--dry-run", "--only", "0x110", "--all-frames"]) == 0
+    assert capsys.readouterr().out.startswith(f"{int((s.ids[:40] == 0x110).sum())} frames")
+
+
+def test_the_loop_limit_counts_the_frames_only_leaves(capsys):
+    """The --loop limit counted every frame before --only filtered them: 2000 plays of a test
+    with --only its 101 BRS frames (202,000 sent) were refused as 1,042,000."""
+    assert main([str(DATA / "R16_002"), "--dry-run", "--loop", "2000", "--only", "0x110"]) == 0
+    assert capsys.readouterr().out.startswith("202000 frames")
+    err = _one_line_error(capsys, [str(DATA / "R16_002"), "--dry-run", "--loop", "2000"])
+    assert "1,042,000 frames in all" in err
