@@ -143,9 +143,10 @@ def staged(out: Path) -> Iterator[Path]:
         raise OSError(e.errno, e.strerror, str(out)) from None
     try:
         yield tmp
-    except BaseException:
+    except BaseException as e:
         shutil.rmtree(tmp, ignore_errors=True)
         _remove_empty(made)
+        _named_in_out(e, tmp, out)
         raise
     with _sigint_deferred():  # a Ctrl-C now would leave the move half done
         _check_fits(tmp, out, tmp)
@@ -155,6 +156,20 @@ def staged(out: Path) -> Iterator[Path]:
             raise OSError(e.errno, f"{e.strerror}; what was not moved is in {tmp}",
                           e.filename) from None
         shutil.rmtree(tmp, ignore_errors=True)
+
+
+def _named_in_out(e: BaseException, tmp: Path, out: Path) -> None:
+    """The error names the file it failed on as the user will look for it (in ``out``, not
+    in the hidden folder that is gone), and a full disk whose write named no file names
+    ``out`` (session 58's hostile user: "No space left on device", no file said)."""
+    def moved(x: object) -> object:
+        return x.replace(str(tmp), str(out)) if isinstance(x, str) else x
+    if isinstance(e, OSError):
+        if e.filename is None and e.errno is not None:
+            e.filename = str(out)
+        e.filename, e.filename2 = moved(e.filename), moved(e.filename2)
+    elif isinstance(e, ObserverError):
+        e.args = tuple(moved(a) for a in e.args)
 
 
 def _remove_empty(folders: list[Path]) -> None:

@@ -182,3 +182,27 @@ def test_ctrl_c_during_evaluate_leaves_the_older_results_whole(tmp_path):
     assert rest.strip().splitlines()[-1] == "observer-node: interrupted", rest
     assert _tree(out) == {"evaluation.json": "an older run\n"}
     assert [x.name for x in tmp_path.iterdir()] == ["out"]
+
+
+def test_a_failure_names_the_file_in_the_output_folder_and_a_full_disk_names_the_folder(
+        tmp_path):
+    """A full disk while `evaluate` wrote its models named the hidden folder's file, removed
+    by then; a write that names no file said "No space left on device" alone (session 58's
+    hostile user)."""
+    import errno
+
+    from observer_node.errors import ObserverError
+
+    out = tmp_path / "out"
+    with pytest.raises(ObserverError) as bad, staged(out) as tmp:
+        raise ObserverError(f"{tmp / 'models' / 'm.json'}: cannot write the model file: "
+                            "No space left on device")
+    assert str(bad.value) == (f"{out / 'models' / 'm.json'}: cannot write the model file: "
+                              "No space left on device")
+    with pytest.raises(OSError) as full, staged(out):
+        raise OSError(errno.ENOSPC, "No space left on device")
+    assert full.value.filename == str(out)
+    with pytest.raises(OSError) as named, staged(out) as tmp:
+        raise OSError(errno.ENOSPC, "No space left on device", str(tmp / "fits.json"))
+    assert named.value.filename == str(out / "fits.json")
+    assert list(tmp_path.iterdir()) == []  # the folder made for the run removed again
