@@ -5519,10 +5519,10 @@ BEFORE_AQ = _cases_of(heldout_sets.before("aq"))
 # the others untouched)
 WATCHED_AQ = ("haq_broken_cd_spikes", "haq_cd_aa_filter", *ONE_PHYSICAL_AQ)
 # the draws found impossible, drawn again by the next seeds in the order found (draw_aq.REDRAWN)
-REDRAWN_AQ: list[tuple[str, int]] = []
+REDRAWN_AQ: list[tuple[str, int]] = [("input_gain", 52001), ("input_gain", 52002)]
 # each rejected draw, in that order: its form (or delay, or forms), rigs and whether its pairing
 # was reused
-REJECTED_AQ: list[tuple] = []
+REJECTED_AQ: list[tuple] = [("spool_buildup", ("SLED",), True), ("spool_buildup", ("FULL",), True)]
 # the two-effect case
 TWO_AQ = "haq_two_fabric_sled_full_bumper_r16"
 # the cases on an earlier set's pairing, in the draw's order (none free for their rigs:
@@ -5552,13 +5552,14 @@ def test_set_aq_covers_the_general_list() -> None:
 
 
 def test_set_aq_follows_its_draw() -> None:
-    """Set AQ's designer's choices are numpy's default_rng(52000)'s (``draw_aq.py``; no draw
-    found impossible, ``REDRAWN`` empty), followed as drawn: each kind's form, rigs, counts and
-    mix; the two-effect case's kinds, forms, rigs, counts and mix; the delays, their counts and
-    mixes; the transducer error's output, form, counts and mix; the broken test's channel, form,
-    test, counts and mix; the clean cases' mixes. Set AP's process, no change: any case with no
-    pairing free for its rigs reuses one A-AP ran, among those its rules allow (every case of
-    AQ); every other case takes a free one (run by no earlier set, nor drawn before it)."""
+    """Set AQ's designer's choices are numpy's default_rng(52000)'s (``draw_aq.py``; two draws
+    found impossible at the sizes, ``REDRAWN``), followed as drawn: each kind's form, rigs,
+    counts and mix; the two-effect case's kinds, forms, rigs, counts and mix; the delays, their
+    counts and mixes; the transducer error's output, form, counts and mix; the broken test's
+    channel, form, test, counts and mix; the clean cases' mixes. Set AP's process, no change:
+    any case with no pairing free for its rigs reuses one A-AP ran, among those its rules allow
+    (every case of AQ); every other case takes a free one (run by no earlier set, nor drawn
+    before it)."""
     d = draw_aq.draw(52000)
     _follows_set_al_reuse(d, draw_aq, 52000, "aq", SET_AQ, ONE_PHYSICAL_AQ,
                           REDRAWN_AQ, BEFORE_AQ, BY_NAME_AQ, REUSED_AQ, REJECTED_AQ)

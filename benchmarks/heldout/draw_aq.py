@@ -144,6 +144,28 @@ before it), with sets A-AP as the earlier sets:
    52002, ...) in the order found, after the rest, the pairings of everything drawn before
    still taken (``REDRAWN``; a case with none free, an earlier set's, by the reuse above).
 
+Judged at the sizes by these words (written down with the sizes, after the draw, before any
+loop run; no rule changed, the rules above as they were committed before the first draw): no
+run-away at the first sizes before any cost; then the first sizes costed one at a time in
+``cases_aq.py``'s order, the input gain's spool build-up on SLED (0.013 m per wrap, 0.41) the
+one impossibility among them: the rule's next size (clipped to three times, 0.039) leaves the
+spool's 17 mm radius below zero within 7 rad of pay-out (zero past 15.3 mm per wrap), a
+run-away by the spool's radius, so impossible without costing it (as set AI judged, the
+impossibility known at the cost before it); drawn again by 52001 (spool_buildup on FULL), whose
+first size cost 1.31, below the band, with its next (0.035) a run-away by the radius likewise:
+drawn again by 52002 (spool_buildup on SLED, 128 counts), in band at its first size (1.80). A
+cost just past an edge is out of band (the ribs' second load path at its first size, 6.05,
+stepped, as set AO judged). Two cases of the set run the same earlier pairing at the sizes'
+end, the belt's unloading and the two-effect case (est 2/2/2, val 2/4/0, sets L's and AN's):
+the reuse's pool is A-AP's, not narrowed by this set's draws (the reading above, set AL's, and
+set AM's judgement), so neither is drawn again for it. The steps of the cases out of band at
+their first sizes (the ribs' load path, the webbing's power, the two-stage bag, the knee
+bolster) were costed, in ``cases_aq.py``'s order, after 52001's first cost and before 52002's;
+none of them proved impossible, so that order changed no seed. Each costed size checked
+against the run-away limits, each pay-out against its rig's median over the set's other cases'
+tests at the first sizes with the rejected draw's tests replaced by its redraw's then (the
+sizes kept checked again with 52002's).
+
     python -m benchmarks.heldout.draw_aq [--seed 52000]
 """
 
@@ -158,8 +180,13 @@ from .sets import before
 SEED = 52000
 # a case whose draw proved impossible, drawn again, whole, by the next seed's generator (one per
 # redraw, in this order, after the rest), the pairings of everything drawn before still taken:
-# none yet (the set not yet drawn)
-REDRAWN: tuple[tuple[str, int], ...] = ()
+# none at the draw (every case, none free for its rigs, drew a pairing one of A-AP ran); at the
+# sizes, two, in the order found: the input gain's first draw (spool_buildup on SLED, 64
+# counts) cost 0.41 at its first size, below the band, its next size a run-away by the spool's
+# radius; its redraw (spool_buildup on FULL) cost 1.31 at its first size, below the band, its
+# next likewise; spool_buildup on SLED, 128 counts, came in band at its first size (see
+# ``cases_aq.py``)
+REDRAWN: tuple[tuple[str, int], ...] = (("input_gain", 52001), ("input_gain", 52002))
 EARLIER = before("aq")
 __all__ = ["BROKEN", "BRS_GAIN", "KINDS", "REDRAWN", "SEED", "TRANSDUCER", "draw", "forms",
            "scopes"]
