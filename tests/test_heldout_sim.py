@@ -36,6 +36,7 @@ from benchmarks.heldout import (
     draw_an,
     draw_ao,
     draw_ap,
+    draw_aq,
     draw_v,
     draw_w,
     draw_x,
@@ -63,6 +64,7 @@ from benchmarks.heldout.cases_am import BY_NAME_AM, ONE_PHYSICAL_AM
 from benchmarks.heldout.cases_an import BY_NAME_AN, ONE_PHYSICAL_AN
 from benchmarks.heldout.cases_ao import BY_NAME_AO, ONE_PHYSICAL_AO
 from benchmarks.heldout.cases_ap import BY_NAME_AP, ONE_PHYSICAL_AP
+from benchmarks.heldout.cases_aq import BY_NAME_AQ, ONE_PHYSICAL_AQ
 from benchmarks.heldout.cases_p import BY_NAME_P
 from benchmarks.heldout.cases_q import BY_NAME_Q
 from benchmarks.heldout.cases_r import BY_NAME_R
@@ -599,11 +601,13 @@ def _times(n: int) -> np.ndarray:
     return -0.020 + np.arange(n) / 10_000
 
 
-def test_set_d_cd_spikes_only_at_the_spikes(set_d: Path) -> None:
-    c = heldout_sets.select(["hd_broken_cd_spikes"], "d")[0]
+def _cd_spikes_only_at_the_spikes(sets_dir: Path, c: cases.Case) -> None:
+    """Set D's check of an intermittent CD connector: the broken test's CD spikes at
+    ``lab.SPIKES_S`` (each one the filter kept), its twin's between them; its CR and pulse
+    untouched; every other test untouched."""
     (broken,), (eff,) = c.expect_broken, c.effects
-    bad = _channel(set_d / "on" / c.name, broken, "cd")
-    good = _channel(set_d / "off" / c.name, broken, "cd")
+    bad = _channel(sets_dir / "on" / c.name, broken, "cd")
+    good = _channel(sets_dir / "off" / c.name, broken, "cd")
     t = _times(len(bad))
     near = np.zeros(len(t), dtype=bool)
     for t_s, sign in lab.SPIKES_S:
@@ -612,9 +616,13 @@ def test_set_d_cd_spikes_only_at_the_spikes(set_d: Path) -> None:
         near |= np.abs(t - t_s) < 0.003
     assert np.allclose(bad[~near], good[~near], atol=0.2)  # clean between the spikes
     for which in ("cr", "pulse"):
-        assert np.array_equal(_channel(set_d / "on" / c.name, broken, which),
-                              _channel(set_d / "off" / c.name, broken, which))
-    _others_untouched(set_d, c.name, broken)
+        assert np.array_equal(_channel(sets_dir / "on" / c.name, broken, which),
+                              _channel(sets_dir / "off" / c.name, broken, which))
+    _others_untouched(sets_dir, c.name, broken)
+
+
+def test_set_d_cd_spikes_only_at_the_spikes(set_d: Path) -> None:
+    _cd_spikes_only_at_the_spikes(set_d, heldout_sets.select(["hd_broken_cd_spikes"], "d")[0])
 
 
 def test_set_d_brs_reversed_counts_the_other_way(set_d: Path) -> None:
@@ -1616,17 +1624,22 @@ def test_set_l_aa_filter_is_a_causal_butterworth() -> None:
     assert lag == pytest.approx(2.613 / (2 * np.pi * f), rel=0.03)
 
 
-def test_set_l_aa_filter_delays_cd_only(set_l: Path) -> None:
-    """CD reads as its effect-free self through the causal filter (late by its group delay,
-    smoothed); CR and the inputs untouched."""
-    c = heldout_sets.select(["hl_cd_aa_filter"], "l")[0]
+def _aa_filter_delays_cd_only(sets_dir: Path, c: cases.Case) -> None:
+    """Set L's check of CD's anti-alias filter: CD reads as its effect-free self through the
+    causal filter (late by its group delay, smoothed); CR and the inputs untouched."""
     (e,) = c.effects
-    for cd, cd0 in _cd_only(set_l / "on" / c.name, set_l / "off" / c.name):
+    for cd, cd0 in _cd_only(sets_dir / "on" / c.name, sets_dir / "off" / c.name):
         assert np.abs(cd - lab.aa_filter(cd0, e.size)).max() < 0.3
         late = (int(np.argmax(cd)) - int(np.argmax(cd0))) / physics.FS_HZ
         delay = 2.613 / (2 * np.pi * e.size)  # the group delay at low frequency
         assert 0.5 * delay <= late <= 1.5 * delay, (late, delay)
         assert np.abs(cd - cd0).max() > 2.0
+
+
+def test_set_l_aa_filter_delays_cd_only(set_l: Path) -> None:
+    """CD reads as its effect-free self through the causal filter (late by its group delay,
+    smoothed); CR and the inputs untouched."""
+    _aa_filter_delays_cd_only(set_l, heldout_sets.select(["hl_cd_aa_filter"], "l")[0])
 
 
 def test_set_l_knee_bolster_pushes_the_pelvis_past_its_gap() -> None:
@@ -3303,11 +3316,15 @@ def set_w(tmp_path_factory: pytest.TempPathFactory) -> Path:
 
 
 def _is_new_drawn(new: list[cases.Case], before: list[cases.Case], seed0: int,
-                  reused: tuple[str, ...] = ()) -> None:
+                  reused: tuple[str, ...] = (), shared: tuple[tuple[str, ...], ...] = ()
+                  ) -> None:
     """A drawn set's names, seeds (seed0..seed0+999), pairings and effect sizes (a switch's
     aside, always 1) are none of the earlier sets'; its lab-side forms are drawn among every
     set's, so may be an earlier set's (sets W, X; ``_is_new`` for the sets before). The cases
-    ``reused`` (set Z's two-effect case) run an earlier set's pairing, and no other case does."""
+    ``reused`` (set Z's two-effect case) run an earlier set's pairing, and no other case does.
+    No two cases share a pairing, but those of a group of ``shared``: reused cases that drew
+    the same earlier pairing (the pool the earlier sets', not narrowed by the set's own draws,
+    set AL's reading), one pairing a group."""
     assert len(new) == 14
     names = [c.name for c in before + new]
     assert len(set(names)) == len(names)
@@ -3315,7 +3332,10 @@ def _is_new_drawn(new: list[cases.Case], before: list[cases.Case], seed0: int,
     assert len(set(seeds)) == 14 and all(seed0 <= s < seed0 + 1000 for s in seeds)
     assert not {c.seed for c in before} & set(seeds)
     pairings = [_pairing(c) for c in new]
-    assert len(set(pairings)) == 14
+    assert len(set(pairings)) == 14 - sum(len(g) - 1 for g in shared)
+    by_name = {c.name: c for c in new}
+    for g in shared:
+        assert set(g) <= set(reused) and len({_pairing(by_name[n]) for n in g}) == 1
     assert {c.name for c in new if _pairing(c) in {_pairing(c) for c in before}} == set(reused)
     sized = {(k, v) for k, v in _pairs(new) if k not in SWITCHES}
     assert sized and not sized & _pairs(before)
@@ -3904,9 +3924,9 @@ def set_aa(tmp_path_factory: pytest.TempPathFactory) -> Path:
 
 @pytest.mark.parametrize("letters",
                          ["x", "y", "z", "aa", "ab", "ac", "ad", "ae", "af", "ag", "ah",
-                          "ai", "aj", "ak", "al", "am", "an", "ao", "ap"])
+                          "ai", "aj", "ak", "al", "am", "an", "ao", "ap", "aq"])
 def test_a_drawn_set_is_registered(letters: str, tmp_path: Path) -> None:
-    """Sets X-AP: each is its ``cases_<letters>.SET_<LETTERS>`` under its letters (either
+    """Sets X-AQ: each is its ``cases_<letters>.SET_<LETTERS>`` under its letters (either
     case), for sets.select, make_sets and costs, after every set before it."""
     own = getattr(importlib.import_module(f"benchmarks.heldout.cases_{letters}"),
                   f"SET_{letters.upper()}")
@@ -3950,8 +3970,11 @@ def test_sets_before_are_names_not_letters() -> None:
                                          "ah", "ai", "aj", "ak", "al", "am", "an")  # A-AN
     assert heldout_sets.before("ap") == (*after_aa, "ab", "ac", "ad", "ae", "af", "ag",
                                          "ah", "ai", "aj", "ak", "al", "am", "an", "ao")  # A-AO
-    with pytest.raises(ValueError, match="unknown case set 'aq'"):
-        heldout_sets.before("aq")
+    assert heldout_sets.before("aq") == (*after_aa, "ab", "ac", "ad", "ae", "af", "ag",
+                                         "ah", "ai", "aj", "ak", "al", "am", "an", "ao",
+                                         "ap")  # A-AP
+    with pytest.raises(ValueError, match="unknown case set 'ar'"):
+        heldout_sets.before("ar")
     # a draw after AA takes AA's pairings; at this seed, without AA one single draws one of them
     aa = {_pairing(c) for c in SET_AA}
 
@@ -5121,15 +5144,21 @@ def test_set_am_covers_the_general_list() -> None:
     _covers_the_general_list(SET_AM, BEFORE_AM, "cr", ONE_PHYSICAL_AM, draw_am.KINDS)
 
 
+# the drawn sets whose draw without set AL's reuse stops at the broken test (none free for it,
+# so no estimation test of its to break): set AQ's
+STOPS_WITHOUT_REUSE = ("aq",)
+
+
 def _follows_set_al_reuse(d: dict, drawn_by: ModuleType, seed: int, set_: str,
                           cases_: list[cases.Case], one_physical: tuple[str, ...],
                           redrawn: list[tuple[str, int]], before: list[cases.Case],
                           by_name: dict[str, cases.Case], reused_names: tuple[str, ...],
                           rejected: list[tuple]) -> None:
-    """What sets AM, AN, AO and AP, drawn by set AL's process with its reuse, each assert of their
-    draw ``d``: reproducible from ``seed`` after sets A to the one before ``set_``; W's pools;
-    the singles, the rest and each pairing as drawn; the redraws in the order found; the reused
-    pairings those of ``reused_names``; the rejected draws (form or delay, rigs, reused)."""
+    """What sets AM, AN, AO, AP and AQ, drawn by set AL's process with its reuse, each assert of
+    their draw ``d``: reproducible from ``seed`` after sets A to the one before ``set_``; W's
+    pools; the singles, the rest and each pairing as drawn; the redraws in the order found; the
+    reused pairings those of ``reused_names``; the rejected draws (form or delay, rigs,
+    reused)."""
     assert d == drawn_by.draw()  # reproducible from its seed
     two_letter = string.ascii_lowercase[:string.ascii_lowercase.index(set_[1])]
     earlier = (*string.ascii_lowercase, *(f"a{c}" for c in two_letter))
@@ -5150,6 +5179,10 @@ def _follows_set_al_reuse(d: dict, drawn_by: ModuleType, seed: int, set_: str,
     assert [(f.get("form", f.get("delay_s", f.get("forms"))), f.get("rigs"), f["reused"])
             for _, _, f in d["rejected"]] == rejected
     # without set AL's reuse (the two-effect case's alone, set AK's) the first of them draws none
+    if set_ in STOPS_WITHOUT_REUSE:  # the broken test draws none too: no test to draw from
+        with pytest.raises(TypeError, match="NoneType"):
+            draw_w.drawn(seed, drawn_by.EARLIER, reuse_two=True)
+        return
     assert draw_w.drawn(seed, drawn_by.EARLIER, reuse_two=True)["single"][
         "chest_stiffening"]["est"] is None
 
@@ -5478,6 +5511,97 @@ def test_set_ap_has_no_run_aways(set_ap: Path) -> None:
     _no_run_aways(SET_AP, set_ap)
 
 
+# ------------------------------------------------------------------ set AQ (cases_aq.py)
+
+SET_AQ = heldout_sets.case_set("aq")
+BEFORE_AQ = _cases_of(heldout_sets.before("aq"))
+# the broken test, the transducer error, and every physical case of one effect (its rigs moved,
+# the others untouched)
+WATCHED_AQ = ("haq_broken_cd_spikes", "haq_cd_aa_filter", *ONE_PHYSICAL_AQ)
+# the draws found impossible, drawn again by the next seeds in the order found (draw_aq.REDRAWN)
+REDRAWN_AQ: list[tuple[str, int]] = [("input_gain", 52001), ("input_gain", 52002)]
+# each rejected draw, in that order: its form (or delay, or forms), rigs and whether its pairing
+# was reused
+REJECTED_AQ: list[tuple] = [("spool_buildup", ("SLED",), True), ("spool_buildup", ("FULL",), True)]
+# the two-effect case
+TWO_AQ = "haq_two_fabric_sled_full_bumper_r16"
+# the cases on an earlier set's pairing, in the draw's order (none free for their rigs:
+# set AL's reuse rule, taken by draw_aq as it stands): every case of AQ
+REUSED_AQ = ("haq_bilinear_sled", "haq_maxwell_r16_full", "haq_hysteresis_r16", "haq_power_r16",
+             "haq_dual_sled", "haq_pelvis_knee_r16_sled", "haq_spool_sled", TWO_AQ,
+             "haq_pulse_late_1p84ms", "haq_brs_late_2p56ms", "haq_cd_aa_filter",
+             "haq_broken_cd_spikes", "haq_clean48", "haq_clean96")
+# two of them drew the same earlier pairing (the pool A-AP's, not narrowed by AQ's own draws)
+SHARED_AQ = (("haq_hysteresis_r16", TWO_AQ),)
+
+
+@pytest.fixture(scope="module")
+def set_aq(tmp_path_factory: pytest.TempPathFactory) -> Path:
+    return _generate(tmp_path_factory, "aq", WATCHED_AQ)
+
+
+def test_set_aq_covers_the_general_list() -> None:
+    """Set AQ as its brief asks: clean cases at 48 and 96 counts; each kind of the library a
+    loop can name, as physics, once in a case of its own; two effects of different kinds on
+    different rigs in one case; a broken estimation test; a transducer error on CD alone (as
+    drawn); a late pulse and a late BRS at delays in 1-5 ms no earlier set used on any input;
+    6 + 6 tests, every rig an estimation part holds held twice or more; an effect on some rigs
+    only rests on two estimation and two validation tests of them beside an estimation test of
+    a rig it spares."""
+    _covers_the_general_list(SET_AQ, BEFORE_AQ, "cd", ONE_PHYSICAL_AQ, draw_aq.KINDS)
+
+
+def test_set_aq_follows_its_draw() -> None:
+    """Set AQ's designer's choices are numpy's default_rng(52000)'s (``draw_aq.py``; two draws
+    found impossible at the sizes, ``REDRAWN``), followed as drawn: each kind's form, rigs,
+    counts and mix; the two-effect case's kinds, forms, rigs, counts and mix; the delays, their
+    counts and mixes; the transducer error's output, form, counts and mix; the broken test's
+    channel, form, test, counts and mix; the clean cases' mixes. Set AP's process, no change:
+    any case with no pairing free for its rigs reuses one A-AP ran, among those its rules allow
+    (every case of AQ); every other case takes a free one (run by no earlier set, nor drawn
+    before it)."""
+    d = draw_aq.draw(52000)
+    _follows_set_al_reuse(d, draw_aq, 52000, "aq", SET_AQ, ONE_PHYSICAL_AQ,
+                          REDRAWN_AQ, BEFORE_AQ, BY_NAME_AQ, REUSED_AQ, REJECTED_AQ)
+    # two of AQ's draws ran the same earlier pairing (the pool is A-AP's, not narrowed by AQ's)
+    assert _pairing(BY_NAME_AQ[TWO_AQ]) == _pairing(BY_NAME_AQ["haq_hysteresis_r16"]) == (
+        (2, 2, 2), (2, 4, 0)) and d["two"]["reused"]
+
+
+def test_set_aq_lab_side_is_as_drawn_and_unnamed() -> None:
+    """One broken estimation test, the only thing expected; one transducer error on CD on every
+    test, nothing physical named; AQ's physics earlier sets' forms only."""
+    _lab_side_as_drawn(SET_AQ, "cd")
+    assert {k for k in _keys(SET_AQ) if physics.EFFECTS[k]} <= _keys(BEFORE_AQ)
+
+
+@pytest.mark.parametrize("case", sorted(ONE_PHYSICAL_AQ))
+def test_set_aq_physics_moves_its_rigs_only(set_aq: Path, case: str) -> None:
+    """Each physical case moves what its form moves on every test of its rigs (the chest's,
+    belt's, bag's, pelvis's and spool's forms CR and CD, the pulse untouched) and leaves the
+    tests of a rig it spares untouched to the bit."""
+    _moves_its_rigs_only(set_aq, BY_NAME_AQ[case])
+
+
+def test_set_aq_cd_spikes_only_at_the_spikes(set_aq: Path) -> None:
+    """The broken test's CD spikes at the connector's six times, its twin's between them (set
+    D's form and check), its CR and pulse untouched; every other test untouched."""
+    c = BY_NAME_AQ["haq_broken_cd_spikes"]
+    assert c.expect_broken == ("SLED_003",)
+    _cd_spikes_only_at_the_spikes(set_aq, c)
+
+
+def test_set_aq_aa_filter_delays_cd_only(set_aq: Path) -> None:
+    """CD reads as its effect-free self through the causal filter (late by its group delay,
+    smoothed), every test (set L's form and check, at this set's corner); CR and the inputs
+    untouched."""
+    _aa_filter_delays_cd_only(set_aq, BY_NAME_AQ["haq_cd_aa_filter"])
+
+
+def test_set_aq_has_no_run_aways(set_aq: Path) -> None:
+    _no_run_aways(SET_AQ, set_aq)
+
+
 def test_more_tests_doubles_the_estimation_tests_only(tmp_path: Path) -> None:
     """``more_tests``: K times each rig's estimation tests, the validation tests and the
     effects as written, another seed (new crashes), a name that says so; the broken test's name
@@ -5541,7 +5665,9 @@ DRAWN = {"x": (33000, ()), "y": (34000, ()), "z": (35000, (TWO_Z,)),
          "ag": (42000, (TWO_AG,)), "ah": (43000, (TWO_AH,)), "ai": (44000, (TWO_AI,)),
          "aj": (45000, (TWO_AJ,)), "ak": (46000, (TWO_AK,)), "al": (47000, REUSED_AL),
          "am": (48000, REUSED_AM), "an": (49000, REUSED_AN), "ao": (50000, REUSED_AO),
-         "ap": (51000, REUSED_AP)}
+         "ap": (51000, REUSED_AP), "aq": (52000, REUSED_AQ)}
+# the drawn sets whose reused cases drew one earlier pairing twice, by name, a group a pairing
+SHARED = {"aq": SHARED_AQ}
 
 
 @pytest.mark.parametrize("letters", DRAWN)
@@ -5551,5 +5677,6 @@ def test_a_drawn_set_is_new(letters: str) -> None:
     are drawn among every set's (so may be an earlier set's)."""
     seed, reused = DRAWN[letters]
     own = heldout_sets.case_set(letters)
-    _is_new_drawn(own, _cases_of(heldout_sets.before(letters)), seed, reused=reused)
+    _is_new_drawn(own, _cases_of(heldout_sets.before(letters)), seed, reused=reused,
+                  shared=SHARED.get(letters, ()))
     assert all(c.name.startswith(f"h{letters}_") for c in own)

@@ -36,7 +36,8 @@ that any case left no free pairing reuses an earlier set's), set AM (``cases_am`
 set AL by another engineer, its choices drawn, set AL's way), set AN (``cases_an``, written after
 set AM by another engineer, its choices drawn, set AM's way), set AO (``cases_ao``, written after
 set AN by another engineer, its choices drawn, set AN's way), set AP (``cases_ap``, written after
-set AO by another engineer, its choices drawn, set AO's way)."""
+set AO by another engineer, its choices drawn, set AO's way), set AQ (``cases_aq``, written after
+set AP by another engineer, its choices drawn, set AP's way)."""
 
 from __future__ import annotations
 
@@ -57,6 +58,7 @@ from .cases_am import SET_AM
 from .cases_an import SET_AN
 from .cases_ao import SET_AO
 from .cases_ap import SET_AP
+from .cases_aq import SET_AQ
 from .cases_b import SET_B
 from .cases_c import SET_C
 from .cases_d import SET_D
@@ -92,7 +94,7 @@ _BY_NAME: dict[str, list[Case]] = {
     "aa": SET_AA, "ab": SET_AB, "ac": SET_AC, "ad": SET_AD, "ae": SET_AE,
     "af": SET_AF, "ag": SET_AG, "ah": SET_AH, "ai": SET_AI,
     "aj": SET_AJ, "ak": SET_AK, "al": SET_AL, "am": SET_AM,
-    "an": SET_AN, "ao": SET_AO, "ap": SET_AP}
+    "an": SET_AN, "ao": SET_AO, "ap": SET_AP, "aq": SET_AQ}
 SETS = tuple(_BY_NAME)
 
 
@@ -116,18 +118,20 @@ def before(name: str) -> tuple[str, ...]:
     ``"ac"``, ``"ad"``, ``"ae"``, ``"af"``, ``"ag"``, ``"ah"``, ``"ai"``, ``"aj"``, ``"ak"``,
     ``"al"``, ``"am"`` and ``"an"``; before set AP, those, ``"aa"``, ``"ab"``, ``"ac"``,
     ``"ad"``, ``"ae"``, ``"af"``, ``"ag"``, ``"ah"``, ``"ai"``, ``"aj"``, ``"ak"``, ``"al"``,
-    ``"am"``, ``"an"`` and ``"ao"``); ValueError for an unknown name. Names, not letters: set
-    AA is one set, not set A twice."""
+    ``"am"``, ``"an"`` and ``"ao"``; before set AQ, those, ``"aa"``, ``"ab"``, ``"ac"``,
+    ``"ad"``, ``"ae"``, ``"af"``, ``"ag"``, ``"ah"``, ``"ai"``, ``"aj"``, ``"ak"``, ``"al"``,
+    ``"am"``, ``"an"``, ``"ao"`` and ``"ap"``); ValueError for an unknown name. Names, not
+    letters: set AA is one set, not set A twice."""
     _known(name)
     return SETS[:SETS.index(name)]
 
 
 def case_set(name: str) -> list[Case]:
     """Set A (``cases``), or set B ... Z, AA, AB, AC, AD, AE, AF, AG, AH, AI, AJ, AK, AL, AM,
-    AN, AO, AP (``cases_b`` ... ``cases_z``, ``cases_aa``, ``cases_ab``, ``cases_ac``,
+    AN, AO, AP, AQ (``cases_b`` ... ``cases_z``, ``cases_aa``, ``cases_ab``, ``cases_ac``,
     ``cases_ad``, ``cases_ae``, ``cases_af``, ``cases_ag``, ``cases_ah``, ``cases_ai``,
     ``cases_aj``, ``cases_ak``, ``cases_al``, ``cases_am``, ``cases_an``, ``cases_ao``,
-    ``cases_ap``) by its lower-case letters; ValueError for another name."""
+    ``cases_ap``, ``cases_aq``) by its lower-case letters; ValueError for another name."""
     _known(name)
     return list(_BY_NAME[name])
 
