@@ -52,7 +52,7 @@ import time
 from collections.abc import Callable
 from multiprocessing import reduction
 from pathlib import Path
-from typing import Any
+from typing import Any, NoReturn
 
 import numpy as np
 
@@ -182,9 +182,10 @@ _BATCH = 250  # rows per drain step: a writer that is behind still flushes every
 def writer_main(rings_fd: _Fd, capacity: int, file_fd: _Fd, path: str, clock: tuple[int, float],
                 metadata: dict[str, str], attachments: list[tuple[str, str, bytes]],
                 dbc_path: str, flush_s: float = 0.05, ppid: int | None = None,
-                live: str = "", live_every: int = 1) -> None:
+                live: str = "", live_every: int = 1) -> NoReturn:
     """The recorder process: drain the rings into the open file ``file_fd`` until told to
-    stop. Any failure is written to the rings' error slot before the process ends."""
+    stop, finish the file and end the process (exit code 0; 1 after a failure, which is
+    written to the rings' error slot first)."""
     # The daemon stops us (STOP, or its death): a signal to the process group must not cut
     # the file short. Blocked since the spawn (Recorder._spawn), ignored from here on.
     signal.signal(signal.SIGINT, signal.SIG_IGN)
@@ -192,6 +193,7 @@ def writer_main(rings_fd: _Fd, capacity: int, file_fd: _Fd, path: str, clock: tu
     signal.pthread_sigmask(signal.SIG_UNBLOCK, _GROUP_SIGNALS)
     rings = Rings(capacity, rings_fd.fd)
     f = None
+    code = 0
     try:
         f = os.fdopen(file_fd.fd, "wb")
         _write(rings, capacity, f, clock, metadata, attachments, dbc_path, flush_s, ppid,
@@ -200,13 +202,20 @@ def writer_main(rings_fd: _Fd, capacity: int, file_fd: _Fd, path: str, clock: tu
         err = e.errno if isinstance(e, OSError) and e.errno else errno_mod.EIO
         why = e.strerror if isinstance(e, OSError) and e.strerror else f"{type(e).__name__}: {e}"
         rings.set_error(err, f"{path}: {why}")
-        raise SystemExit(1) from None
+        code = 1
     finally:
         if f is not None:
             with contextlib.suppress(OSError):
                 f.close()
         rings.ctrl[DONE] = 1
         rings.close()
+    # The file is whole: end now. The interpreter's own teardown (a last garbage collection
+    # over every module) took 3-60 s of a core shared with three busy processes, past the
+    # daemon's close timeout: the writer was killed after its file was finished.
+    for stream in (sys.stdout, sys.stderr):
+        with contextlib.suppress(Exception):
+            stream.flush()
+    os._exit(code)
 
 
 def _write(rings: Rings, capacity: int, f: Any, clock: tuple[int, float],
