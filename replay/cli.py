@@ -62,7 +62,9 @@ def _priority(s: str) -> int:
 PRE_MAX_S = 5.0  # --pre: the daemon's bias needs a fraction of a second; more is a typo
 RATE_MIN, RATE_MAX = 1e-3, 1e3  # --rate: a 150 ms crash in 150 s, or 1000 tests a second
 GAP_MAX_S = 3600.0  # --gap: an hour between sources; more is a typo
-FRAMES_MAX = 1_000_000  # everything --loop plays is held in memory: ~280 MB at this size
+# Everything --loop plays is held in memory: ~280 MB at this many frames of one test; as
+# many copies of a source --only leaves one frame of take ~520 MB (a hostile user's measure)
+FRAMES_MAX = 1_000_000
 
 
 def _remap(s: str) -> tuple[int, int]:
@@ -200,9 +202,15 @@ def _play(a: argparse.Namespace) -> int:
     if only is not None:  # before --loop repeats them: its limit counts what is sent
         parts = [x.only(only) for x in parts]
     total = sum(len(x) for x in parts) * a.loop
-    if total > FRAMES_MAX:
-        raise UsageError(f"--loop {a.loop}: {total:,} frames in all, more than crash-replay "
-                         f"holds ({FRAMES_MAX:,}); play it in a shell loop")
+    if total == 0:  # said before --loop repeats nothing (a billion empty copies filled RAM)
+        filter_remap(concat(parts), only, remap, warn=_warn)  # which IDs matched nothing
+        print("crash-replay: nothing to send", file=sys.stderr)
+        return 2
+    copies = len(parts) * a.loop  # each held too, however few frames --only leaves it
+    if total > FRAMES_MAX or copies > FRAMES_MAX:
+        what = f"{total:,} frames" if total > FRAMES_MAX else f"{copies:,} copies of the sources"
+        raise UsageError(f"--loop {a.loop}: {what} in all, more than crash-replay holds "
+                         f"({FRAMES_MAX:,}); play it in a shell loop")
     sched = concat(parts * a.loop, a.gap * a.rate)  # --gap is wall time: unscaled by --rate
     if sched.synthetic and len(parts) * a.loop > 1:
         sched = restamp_counters(sched, codec)  # one sensor across tests: no counter restart
@@ -212,8 +220,9 @@ def _play(a: argparse.Namespace) -> int:
         return 2
     if a.dry_run:
         print(describe(sched, a.bitrate, a.data_bitrate if a.fd else None, a.rate))
+        t0 = sched.t_s[0]  # the player sends the first frame at once
         for t, cid, d in list(zip(sched.t_s, sched.ids.tolist(), sched.data, strict=True))[:20]:
-            print(f"  {t / a.rate:10.6f}  0x{cid:03X}  {d.hex(' ')}")  # s, as played
+            print(f"  {(t - t0) / a.rate:10.6f}  0x{cid:03X}  {d.hex(' ')}")  # s, as played
         if len(sched) > 20:
             print(f"  ... {len(sched) - 20} more")
         return 0

@@ -15,7 +15,7 @@ at it, sent with the last of them; the reference, if any, goes once per burst (i
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 
@@ -32,22 +32,44 @@ class Schedule:
     data: list[bytes]
     source: str = ""
     synthetic: bool = False  # encoded here from lab data (not a recorded log)
-    # IDs of frames the logging node sent, left out without --all-frames: named when --only
-    # asks for one of them
-    sent_ids: frozenset[int] = frozenset()
+    # The frames the logging node sent, left out without --all-frames: their times [s] (this
+    # schedule's time base) and IDs, so that --only one of them can name --all-frames
+    sent: tuple[np.ndarray, np.ndarray] = (np.zeros(0), np.zeros(0, np.int64))
+    # First and last send time [s] of the source as read, kept when --only leaves frames out:
+    # looped copies and several sources are spaced as they are unfiltered
+    span_s: tuple[float, float] | None = None
 
     def __len__(self) -> int:
         return len(self.data)
 
+    @property
+    def sent_ids(self) -> frozenset[int]:
+        return frozenset(self.sent[1].tolist())
+
+    @property
+    def span(self) -> tuple[float, float] | None:
+        """The time it covers [s]: its own, or the unfiltered source's (None: empty)."""
+        if self.span_s is not None:
+            return self.span_s
+        return (float(self.t_s[0]), float(self.t_s[-1])) if len(self) else None
+
     def only(self, ids: set[int]) -> Schedule:
-        """Its frames of the CAN IDs in ``ids``."""
+        """Its frames of the CAN IDs in ``ids``, the time it covers kept."""
         idx = np.flatnonzero(np.isin(self.ids, sorted(ids)))
-        return Schedule(self.t_s[idx], self.ids[idx], [self.data[i] for i in idx], self.source,
-                        self.synthetic, self.sent_ids)
+        return replace(self, t_s=self.t_s[idx], ids=self.ids[idx],
+                       data=[self.data[i] for i in idx], span_s=self.span)
+
+    def within(self, keep: np.ndarray, sent_keep: np.ndarray) -> Schedule:
+        """The frames where ``keep`` and the sent frames where ``sent_keep`` are True."""
+        idx = np.flatnonzero(keep)
+        return replace(self, t_s=self.t_s[idx], ids=self.ids[idx],
+                       data=[self.data[i] for i in idx],
+                       sent=(self.sent[0][sent_keep], self.sent[1][sent_keep]), span_s=None)
 
     def shifted(self, dt_s: float) -> Schedule:
-        return Schedule(self.t_s + dt_s, self.ids, self.data, self.source, self.synthetic,
-                        self.sent_ids)
+        span = self.span_s
+        return replace(self, t_s=self.t_s + dt_s, sent=(self.sent[0] + dt_s, self.sent[1]),
+                       span_s=None if span is None else (span[0] + dt_s, span[1] + dt_s))
 
 
 def restamp_counters(s: Schedule, codec: Codec) -> Schedule:
@@ -63,23 +85,28 @@ def restamp_counters(s: Schedule, codec: Codec) -> Schedule:
         k = counters.get(cid, 0)
         counters[cid] = k + 1
         data.append(fc.with_counter(d, k))
-    return Schedule(s.t_s, s.ids, data, s.source, s.synthetic, s.sent_ids)
+    return replace(s, data=data)
 
 
 def concat(schedules: list[Schedule], gap_s: float = 0.5) -> Schedule:
-    """Play schedules one after another with ``gap_s`` between them."""
+    """Play schedules one after another with ``gap_s`` between them, each over the time it
+    covers (:attr:`Schedule.span`)."""
     parts, offset = [], 0.0
-    sent_ids = frozenset().union(*(s.sent_ids for s in schedules))
     for s in schedules:
-        if len(s):
-            parts.append(s.shifted(offset - s.t_s[0]))
-            offset = parts[-1].t_s[-1] + gap_s
-    if not parts:
-        return Schedule(np.zeros(0), np.zeros(0, int), [], sent_ids=sent_ids)
+        span = s.span
+        if span is None:
+            continue
+        parts.append(s.shifted(offset - span[0]))
+        offset += span[1] - span[0] + gap_s
+    sent = (np.concatenate([np.zeros(0), *(p.sent[0] for p in parts)]),
+            np.concatenate([np.zeros(0, np.int64), *(p.sent[1] for p in parts)]))
+    if not any(len(p) for p in parts):
+        return Schedule(np.zeros(0), np.zeros(0, int), [], sent=sent)
+    parts = [p for p in parts if len(p)]
     return Schedule(np.concatenate([p.t_s for p in parts]),
                     np.concatenate([p.ids for p in parts]),
                     [d for p in parts for d in p.data], _names(parts),
-                    all(p.synthetic for p in parts), sent_ids)
+                    all(p.synthetic for p in parts), sent)
 
 
 def check_window(name: str, t: np.ndarray, start_s: float | None, end_s: float | None) -> None:

@@ -78,8 +78,8 @@ def read_python_can_log(path: Path, all_frames: bool = False) -> Schedule:
             raise SourceError(f"{path}: reading MDF4 needs asammdf: pip install "
                               "'chest-observer[mf4]'") from None
     times, ids, data = [], [], []
-    sent = 0  # left out as sent by the logging node: named if nothing else is left
-    sent_ids: set[int] = set()
+    sent_t: list[float] = []  # left out as sent by the logging node: named if nothing
+    sent_ids: list[int] = []  # else is left, and when --only asks for one of them
     said = _Said()
     can_log = logging.getLogger("can")
     can_log.addHandler(said)
@@ -90,8 +90,8 @@ def read_python_can_log(path: Path, all_frames: bool = False) -> Schedule:
                 if m.is_error_frame or m.is_remote_frame:
                     continue
                 if not (m.is_rx or all_frames):
-                    sent += 1
-                    sent_ids.add(m.arbitration_id)
+                    sent_t.append(m.timestamp)
+                    sent_ids.append(m.arbitration_id)
                     continue
                 times.append(m.timestamp)
                 ids.append(m.arbitration_id)
@@ -106,9 +106,10 @@ def read_python_can_log(path: Path, all_frames: bool = False) -> Schedule:
         _collect_quietly()
         raise SourceError(f"{path}: truncated or corrupt after {len(data)} frames ({why})")
     if not data:
-        raise SourceError(f"{path}: no frames" + _only_sent(sent))
+        raise SourceError(f"{path}: no frames" + _only_sent(len(sent_t)))
     t = np.array(times)
-    return Schedule(t - t[0], np.array(ids), data, path.name, sent_ids=frozenset(sent_ids))
+    return Schedule(t - t[0], np.array(ids), data, path.name,
+                    sent=(np.array(sent_t, float) - t[0], np.array(sent_ids, np.int64)))
 
 
 def _only_sent(sent: int) -> str:
@@ -168,8 +169,8 @@ def read_mcap_frames(path: Path, all_frames: bool = False, codec: Codec | None =
     from observer_node.recording import format as fmt
 
     times, ids, data = [], [], []
-    sent = 0
-    sent_ids: set[int] = set()
+    sent_t: list[float] = []
+    sent_ids: list[int] = []
     translate = None
     try:
         scan = Scan(path)
@@ -185,8 +186,8 @@ def read_mcap_frames(path: Path, all_frames: bool = False, codec: Codec | None =
             if fr.error:
                 continue
             if fr.tx and not all_frames:
-                sent += 1
-                sent_ids.add(fr.can_id)
+                sent_t.append(fr.t)
+                sent_ids.append(fr.can_id)
                 continue
             times.append(fr.t)
             ids.append(fr.can_id)
@@ -200,13 +201,13 @@ def read_mcap_frames(path: Path, all_frames: bool = False, codec: Codec | None =
         raise SourceError(f"{path}: truncated or corrupt MCAP after {len(data)} frames "
                           f"({scan.note})")
     if not data:
-        raise SourceError(f"{path}: " + (f"no frames{_only_sent(sent)}" if sent else
+        raise SourceError(f"{path}: " + (f"no frames{_only_sent(len(sent_t))}" if sent_t else
                                          f"no {fmt.FRAMES} messages (not a chest-observer "
                                          "recording?)"))
     order = np.argsort(np.array(times), kind="stable")
     t = np.array(times)[order]
     s = Schedule(t - t[0], np.array(ids)[order], [data[i] for i in order], path.name,
-                 sent_ids=frozenset(sent_ids))
+                 sent=(np.array(sent_t, float) - t[0], np.array(sent_ids, np.int64)))
     # Translated frames carry the new profile's CRC; their counters are renumbered per ID
     # (the old ones may run past the new profile's range).
     return restamp_counters(s, codec) if translate and codec is not None else s
@@ -277,14 +278,14 @@ def load_source(path: str | Path, codec: Codec, rate_hz: float = 1000.0,
 
 def _window(s: Schedule, start_s: float | None, end_s: float | None) -> Schedule:
     check_window(s.source, s.t_s, start_s, end_s)  # times from the log's first frame
-    keep = np.ones(len(s), bool)
-    if start_s is not None:
-        keep &= s.t_s >= start_s
-    if end_s is not None:
-        keep &= s.t_s <= end_s
-    idx = np.flatnonzero(keep)
-    return Schedule(s.t_s[idx], s.ids[idx], [s.data[i] for i in idx], s.source,
-                    sent_ids=s.sent_ids)
+    def inside(t: np.ndarray) -> np.ndarray:
+        keep = np.ones(len(t), bool)
+        if start_s is not None:
+            keep &= t >= start_s
+        if end_s is not None:
+            keep &= t <= end_s
+        return keep
+    return s.within(inside(s.t_s), inside(s.sent[0]))
 
 
 def filter_remap(s: Schedule, only: set[int] | None, remap: dict[int, int],

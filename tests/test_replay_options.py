@@ -263,3 +263,64 @@ def test_the_loop_limit_counts_the_frames_only_leaves(capsys):
     assert capsys.readouterr().out.startswith("202000 frames")
     err = _one_line_error(capsys, [str(DATA / "R16_002"), "--dry-run", "--loop", "2000"])
     assert "1,042,000 frames in all" in err
+
+
+def _mixed_log(path, s):
+    """An ASC log of R16_002's first 40 frames at +0 s, 0x110 among them sent by the logging
+    node, then a sent 0x300 at 0.5 s and a received 0x100 at 5 s."""
+    with can.Logger(str(path)) as w:
+        for k in range(40):
+            cid = int(s.ids[k])
+            w.on_message_received(can.Message(timestamp=1000 + s.t_s[k], arbitration_id=cid,
+                                              data=s.data[k], is_extended_id=False,
+                                              is_rx=cid != 0x110))
+        w.on_message_received(can.Message(timestamp=1000.5, arbitration_id=0x300,
+                                          data=b"\0", is_extended_id=False, is_rx=False))
+        w.on_message_received(can.Message(timestamp=1005.0, arbitration_id=0x100,
+                                          data=s.data[1], is_extended_id=False))
+
+
+def test_only_with_nothing_left_says_so_before_looping(capsys, tmp_path):
+    """--only an ID with no frames and a huge --loop built a billion empty copies before
+    saying "nothing to send" (MemoryError traceback; session 59's hostile user)."""
+    s = crash_test_schedule(read_isomme(DATA / "R16_002"), Codec(), 1000.0)
+    _mixed_log(tmp_path / "mix.asc", s)
+    for cid, why in (("0x999", "no frames of that ID"), ("0x110", "--all-frames replays")):
+        assert main([str(tmp_path / "mix.asc"), "--only", cid, "--loop", "1000000000",
+                     "--dry-run"]) == 2
+        err = capsys.readouterr().err
+        assert why in err and err.endswith("crash-replay: nothing to send\n"), err
+    err = _one_line_error(capsys, [str(tmp_path / "mix.asc"), "--only", "0x100", "--loop",
+                                   "999999", "--dry-run"])
+    n_100 = int((s.ids[:40] == 0x100).sum()) + 1  # and the one at 5 s
+    assert f"--loop 999999: {n_100 * 999999:,} frames in all" in err
+
+
+def test_the_all_frames_hint_reads_the_window(capsys, tmp_path):
+    """With --start after the only 0x300 the node sent, the hint sent the user to
+    --all-frames, which then found none (session 59's hostile user)."""
+    s = crash_test_schedule(read_isomme(DATA / "R16_002"), Codec(), 1000.0)
+    _mixed_log(tmp_path / "mix.asc", s)
+    assert main([str(tmp_path / "mix.asc"), "--start", "4", "--only", "0x300",
+                 "--dry-run"]) == 2
+    assert "--only 0x300: no frames of that ID" in capsys.readouterr().err
+    assert main([str(tmp_path / "mix.asc"), "--end", "1", "--only", "0x300",
+                 "--dry-run"]) == 2
+    assert "--only 0x300: only the logging node sent that ID" in capsys.readouterr().err
+
+
+def test_only_keeps_the_spacing_of_looped_copies(capsys, tmp_path):
+    """--only filters each source before --loop repeats it, but the copies stay as far apart
+    as unfiltered: 0x100's last frame at 5 s keeps the next copy 5 s + --gap later."""
+    s = crash_test_schedule(read_isomme(DATA / "R16_002"), Codec(), 1000.0)
+    _mixed_log(tmp_path / "mix.asc", s)
+    assert main([str(tmp_path / "mix.asc"), "--only", "0x110", "--all-frames", "--loop", "2",
+                 "--gap", "0.5", "--dry-run"]) == 0
+    out = capsys.readouterr().out
+    n = int((s.ids[:40] == 0x110).sum())
+    assert out.startswith(f"{2 * n} frames over ")
+    times = [float(line.split()[0]) for line in out.splitlines()
+             if line.split()[1:2] == ["0x110"]]  # the frames listed, as played
+    first_110 = float(s.t_s[:40][s.ids[:40] == 0x110][0])
+    assert times[0] == 0.0  # as played: the first frame at once
+    assert times[n] == pytest.approx(5.0 - first_110 + 0.5 + times[0], abs=1e-6)
