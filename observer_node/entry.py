@@ -4,8 +4,8 @@ Kept apart from the commands and light: the commands import numpy, scipy, numba 
 python-can, a second or more on a bench PC, and a Ctrl-C or SIGTERM during that is one line
 too, not a page of traceback from inside an import. SIGTERM is raised as
 :class:`~observer_node.errors.Terminated` (a KeyboardInterrupt) so that it cleans up as
-Ctrl-C does; after the first, further signals are ignored while the command winds down
-(threads and workers otherwise print "Exception ignored" pages as they stop).
+Ctrl-C does; once the command has returned, further signals are ignored while the process
+winds down (threads and workers otherwise print "Exception ignored" pages as they stop).
 """
 
 from __future__ import annotations
@@ -27,9 +27,11 @@ def _run(prog: str, load: Callable[[], Callable[[], int]]) -> int:
         code = load()()
     except KeyboardInterrupt as e:  # while loading: the command's own main catches later
         code = stopped(prog, e)
-    if code in (130, 143):  # stopped: later signals would only break the wind-down
-        signal.signal(signal.SIGINT, signal.SIG_IGN)
-        signal.signal(signal.SIGTERM, signal.SIG_IGN)
+    # Done, or stopped: a later signal would only break the wind-down, and in the
+    # interpreter's teardown (handlers back at their defaults) a second SIGTERM after a
+    # clean stop of `run` ended it with 143 and no line (a hostile user's find, session 59)
+    signal.signal(signal.SIGINT, signal.SIG_IGN)
+    signal.signal(signal.SIGTERM, signal.SIG_IGN)
     return code
 
 

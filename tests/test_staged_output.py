@@ -206,3 +206,19 @@ def test_a_failure_names_the_file_in_the_output_folder_and_a_full_disk_names_the
         raise OSError(errno.ENOSPC, "No space left on device", str(tmp / "fits.json"))
     assert named.value.filename == str(out / "fits.json")
     assert list(tmp_path.iterdir()) == []  # the folder made for the run removed again
+
+
+def test_signals_after_the_command_returns_are_ignored():
+    """A second SIGTERM right after `run`'s clean stop came in the interpreter's teardown,
+    where the handlers are back at their defaults: exit 143 and no line for a whole run
+    (session 59's hostile user). Once a command returns, both signals are ignored."""
+    from observer_node import entry
+
+    old = {s: signal.getsignal(s) for s in (signal.SIGINT, signal.SIGTERM)}
+    try:
+        assert entry._run("observer-node", lambda: lambda: 0) == 0
+        assert signal.getsignal(signal.SIGTERM) is signal.SIG_IGN
+        assert signal.getsignal(signal.SIGINT) is signal.SIG_IGN
+    finally:
+        for s, h in old.items():
+            signal.signal(s, h)
