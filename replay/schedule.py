@@ -55,16 +55,17 @@ class Schedule:
 
     def only(self, ids: set[int]) -> Schedule:
         """Its frames of the CAN IDs in ``ids``, the time it covers kept."""
-        idx = np.flatnonzero(np.isin(self.ids, sorted(ids)))
-        return replace(self, t_s=self.t_s[idx], ids=self.ids[idx],
-                       data=[self.data[i] for i in idx], span_s=self.span)
+        return self._take(np.isin(self.ids, sorted(ids)), self.span, self.sent)
 
     def within(self, keep: np.ndarray, sent_keep: np.ndarray) -> Schedule:
         """The frames where ``keep`` and the sent frames where ``sent_keep`` are True."""
+        return self._take(keep, None, (self.sent[0][sent_keep], self.sent[1][sent_keep]))
+
+    def _take(self, keep: np.ndarray, span_s: tuple[float, float] | None,
+              sent: tuple[np.ndarray, np.ndarray]) -> Schedule:
         idx = np.flatnonzero(keep)
         return replace(self, t_s=self.t_s[idx], ids=self.ids[idx],
-                       data=[self.data[i] for i in idx],
-                       sent=(self.sent[0][sent_keep], self.sent[1][sent_keep]), span_s=None)
+                       data=[self.data[i] for i in idx], sent=sent, span_s=span_s)
 
     def shifted(self, dt_s: float) -> Schedule:
         span = self.span_s

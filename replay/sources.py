@@ -293,8 +293,9 @@ def filter_remap(s: Schedule, only: set[int] | None, remap: dict[int, int],
     """The frames of the IDs in ``only`` (all if None), with the IDs in ``remap`` renamed. A
     remap that would send two IDs' frames under one is an error (a receiver could not tell
     them apart); ``warn`` hears of --only and --remap IDs that match no frame."""
-    idx = [i for i, cid in enumerate(s.ids.tolist()) if only is None or cid in only]
-    sent = set(s.ids[idx].tolist())
+    if only is not None:
+        s = s.only(only)
+    sent = set(s.ids.tolist())
     if warn is not None:
         for cid in sorted((only or set()) - sent):
             warn(f"--only 0x{cid:X}: " + ("only the logging node sent that ID: --all-frames "
@@ -311,5 +312,5 @@ def filter_remap(s: Schedule, only: set[int] | None, remap: dict[int, int],
             why = (f"the sources send 0x{new:X} already" if kept == new
                    else f"0x{kept:X} goes out as 0x{new:X} too")
             raise UsageError(f"--remap 0x{moved:X}=0x{new:X}: {why}; the two would mix")
-    ids = np.array([remap.get(int(s.ids[i]), int(s.ids[i])) for i in idx], dtype=np.int64)
-    return Schedule(s.t_s[idx], ids, [s.data[i] for i in idx], s.source)
+    ids = np.array([remap.get(cid, cid) for cid in s.ids.tolist()], dtype=np.int64)
+    return Schedule(s.t_s, ids, s.data, s.source)
