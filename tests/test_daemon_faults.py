@@ -112,6 +112,11 @@ def test_disk_full_fails_the_recording_loudly_and_estimates_go_on(model, tmp_pat
         assert health[-1]["RecorderState"] == RecorderState.FAILED and \
             health[-1]["RecorderLostTicks"] > 0
         assert status[-1]["Fault_RecordingLost"]
+        # A restarted part that never got its header is removed, not left empty beside
+        # the recording; the parts named are the files there.
+        assert all(p.exists() for p in rec.parts)
+        assert sorted(mnt.glob("run*.mcap")) == sorted(rec.parts)
+        assert not any(p.stat().st_size == 0 for p in rec.parts[1:])
     finally:
         subprocess.run(["umount", "-l", str(mnt)], check=False)
 

@@ -16,7 +16,7 @@ Examples::
     observer-node evaluate                            # thesis Tables 4.1-4.3, plots
     observer-node identify --model greybox --data 'campaign-a/R16_*[13579]' --out model.json
     observer-node evaluate --model model.json --data campaign-a/R16_002 --out out/eval
-    observer-node loop --estimate 'campaign-a/*[13579]' --validate 'campaign-a/*[02468]' \
+    observer-node loop --estimate 'campaign-a/*[13579]' --validate 'campaign-a/*[02468]' \\
         --out out/loop
     observer-node run --interface socketcan --channel vcan0 --model model.json --record run.mcap
     observer-node analyze run.mcap

@@ -563,7 +563,7 @@ class Recorder:
         if len(self.parts) >= self.max_parts:
             return self._fail(why, f"{len(self.parts)} parts written")
         if not ctrl[READY]:  # it could not even write a header: another would not either
-            return self._fail(why, f"{self.parts[-1]} could not be started")
+            return self._fail(why, self._drop_unstarted_part())
         if time.monotonic() - self._started < self.restart_after_s:
             return None  # a writer that dies at once is not restarted in a spin
         base = self.parts[0]
@@ -579,6 +579,20 @@ class Recorder:
         ctrl[STOP] = 0
         self._spawn(fd, part)
         return f"recorder: {why}; recording goes on in {part}"
+
+    def _drop_unstarted_part(self) -> str:
+        """A restarted part whose writer never wrote its header holds no row (rows are
+        announced only after it): removed, so no empty or header-less file is left beside
+        the recording; the first part is the caller's to keep or remove."""
+        part = self.parts[-1]
+        if len(self.parts) == 1:
+            return f"{part} could not be started"
+        try:
+            part.unlink()
+        except OSError as e:
+            return f"{part} could not be started, and not removed: {e.strerror or e}"
+        self.parts.pop()
+        return f"{part} could not be started; removed, it held nothing"
 
     def _fail(self, why: str, detail: str) -> str:
         self.proc.join()
