@@ -121,3 +121,42 @@ def test_a_writer_at_idle_priority_finishes_the_file_at_close_beside_busy_proces
     assert rec.lost_frames == 0
     frames = [m for topic, _, m in Scan(tmp_path / "run.mcap") if topic == fmt.FRAMES]
     assert len(frames) == n
+
+
+def _writer_whose_disk_fails_at_write_back(*args: object) -> None:
+    """The writer as Recorder spawns it, on a disk whose write-back fails (a failing disk,
+    a full NFS share): the data reached the page cache, the disk refuses it at fsync."""
+    import errno
+    import os
+
+    from observer_node.recording import writer as wr
+
+    def fail(fd: int) -> None:
+        raise OSError(errno.EIO, os.strerror(errno.EIO))
+    wr.os.fsync = fail  # type: ignore[attr-defined]
+    wr.writer_main(*args)  # type: ignore[arg-type]
+
+
+def test_a_write_back_error_at_the_end_is_said_not_swallowed(tmp_path: Path):
+    """The file written and finished in the page cache is not yet recorded: the writer syncs
+    it, and an error there ends it with exit code 1 and the file's name and the cause in the
+    error slot, so the daemon says the recording is not whole (exit code 3)."""
+    import os
+
+    from observer_node.recording import writer as wr
+
+    codec = Codec()
+    rings = Rings(64)
+    rings.ctrl[wr.STOP] = 1  # start, write the header, finish at once
+    path = tmp_path / "run.mcap"
+    fd = os.open(path, os.O_WRONLY | os.O_CREAT | os.O_EXCL, 0o644)
+    proc = mp.get_context("spawn").Process(
+        target=_writer_whose_disk_fails_at_write_back,
+        args=(wr._Fd(rings.fd), 64, wr._Fd(fd), str(path), (time.time_ns(), time.perf_counter()),
+              {"software_version": "test"}, [], str(codec.path), 0.05, os.getpid()))
+    proc.start()
+    os.close(fd)
+    proc.join(60)
+    assert proc.exitcode == 1
+    assert rings.ctrl[wr.ERRNO] == 5 and rings.error() == f"{path}: Input/output error"
+    rings.close()

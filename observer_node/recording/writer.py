@@ -198,6 +198,7 @@ def writer_main(rings_fd: _Fd, capacity: int, file_fd: _Fd, path: str, clock: tu
         f = os.fdopen(file_fd.fd, "wb")
         _write(rings, capacity, f, clock, metadata, attachments, dbc_path, flush_s, ppid,
                live, live_every)
+        _durable(f, path)
     except BaseException as e:
         err = e.errno if isinstance(e, OSError) and e.errno else errno_mod.EIO
         why = e.strerror if isinstance(e, OSError) and e.strerror else f"{type(e).__name__}: {e}"
@@ -205,8 +206,13 @@ def writer_main(rings_fd: _Fd, capacity: int, file_fd: _Fd, path: str, clock: tu
         code = 1
     finally:
         if f is not None:
-            with contextlib.suppress(OSError):
+            try:
                 f.close()
+            except OSError as e:  # a write-back error the last fsync did not see (NFS)
+                if not code:
+                    rings.set_error(e.errno or errno_mod.EIO, f"{path}: cannot finish the "
+                                    f"file: {e.strerror or e}")
+                    code = 1
         rings.ctrl[DONE] = 1
         rings.close()
     # The file is whole: end now. The interpreter's own teardown (a last garbage collection
@@ -328,7 +334,25 @@ def _write(rings: Rings, capacity: int, f: Any, clock: tuple[int, float],
         fmt.EndMeta.FRAMES.value: str(seq[fmt.FRAMES]),
         fmt.EndMeta.TICKS.value: str(seq[fmt.ESTIMATE])})
     w.finish()
+
+
+def _durable(f: Any, path: str) -> None:
+    """The finished file on the disk, and its name in its folder, before the run says it
+    is recorded: a power cut seconds after the run ends loses nothing, and a write-back
+    error (a failing disk, a full NFS share) is said here instead of never."""
     f.flush()
+    os.fsync(f.fileno())
+    try:
+        folder = os.open(os.path.dirname(path) or ".", os.O_RDONLY | os.O_DIRECTORY)
+    except OSError:
+        return  # the file itself is on the disk; its folder is the filesystem's to keep
+    try:
+        os.fsync(folder)
+    except OSError as e:
+        if e.errno not in (errno_mod.EINVAL, errno_mod.ENOTSUP):  # folders it cannot sync
+            raise
+    finally:
+        os.close(folder)
 
 
 def durable_tails(ctrl: np.ndarray, path: Path) -> None:
