@@ -12,6 +12,7 @@ import logging
 import os
 import signal
 import threading
+import time
 from collections.abc import Callable, Iterator
 from contextlib import contextmanager
 from typing import Any
@@ -19,6 +20,9 @@ from typing import Any
 from ..errors import ObserverError
 
 CONNECT_TIMEOUT_S = 10.0  # to reach a scheduler given by --scheduler
+WORKERS_TIMEOUT_S = 30.0  # for a scheduler given by --scheduler to have a worker
+NO_WORKERS_S = 60.0  # a cluster without a worker this long mid-run is given up on
+POLL_S = 2.0  # how often a waiting map looks at the cluster
 MAX_LOCAL_WORKERS = 4  # the local cluster's default: one worker per core, at most this many
 # one BLAS thread per worker process, set before the workers import numpy
 _WORKER_ENV = {"OPENBLAS_NUM_THREADS": "1", "OMP_NUM_THREADS": "1", "MKL_NUM_THREADS": "1"}
@@ -31,24 +35,57 @@ class ClusterError(ObserverError, RuntimeError):
 class Runner:
     """Runs calls of one function over argument tuples on the cluster, results in order."""
 
-    def __init__(self, client: Any) -> None:
+    def __init__(self, client: Any, where: str = "local") -> None:
         self.client = client
+        self.where = where  # the scheduler's address, or "local"
 
     @property
     def workers(self) -> int:
         return len(self.client.scheduler_info().get("workers", {})) or 1
 
     def map(self, f: Callable[..., Any], args: list[tuple]) -> list[Any]:
+        from distributed import KilledWorker
+
         if not args:
             return []
         futures = [self.client.submit(f, *a, pure=False) for a in args]
         try:
+            self._wait(futures)
             return list(self.client.gather(futures))
+        except KilledWorker as e:  # a refit that ended every worker it ran on (a crash)
+            raise ClusterError(f"a refit ended the Dask worker it ran on, each time it was "
+                               f"tried ({e}); the workers' logs say why") from None
         except KeyboardInterrupt:
             # Ctrl-C: the gather's waiting tasks end with an error nobody retrieves, which
             # asyncio would print as a page of tracebacks while the client closes
             logging.getLogger("asyncio").setLevel(logging.CRITICAL)
             raise
+
+    def _wait(self, futures: list[Any]) -> None:
+        """Until every task is done, or one line when the cluster has had no worker for
+        ``NO_WORKERS_S``: Dask would wait for a worker for ever (every worker gone, or
+        ending as it starts), and the loop would say nothing."""
+        from distributed import wait
+
+        since: float | None = None
+        while True:
+            try:
+                wait(futures, timeout=POLL_S)
+                return
+            except TimeoutError:
+                pass
+            if self.client.scheduler_info(n_workers=-1).get("workers"):
+                since = None
+                continue
+            now = time.monotonic()
+            since = now if since is None else since
+            if now - since >= NO_WORKERS_S:
+                done = sum(f.done() for f in futures)
+                self.client.cancel(futures)
+                raise ClusterError(
+                    f"the Dask cluster ({self.where}) has had no worker for {NO_WORKERS_S:g} s, "
+                    f"{done} of {len(futures)} refits done: the workers ended or cannot "
+                    f"start (their logs say why)")
 
 
 def check_address(scheduler: str) -> None:
@@ -93,6 +130,43 @@ def _connect(scheduler: str, timeout_s: float = CONNECT_TIMEOUT_S) -> Any:
     raise ClusterError(f"cannot reach the Dask scheduler at {scheduler}: {why}")
 
 
+def _check_workers(client: Any, scheduler: str,
+                   timeout_s: float = WORKERS_TIMEOUT_S) -> None:
+    """One line, before any fit, for a cluster that cannot run the refits: no worker within
+    ``timeout_s``, or a scheduler or worker that cannot import chest-observer or has another
+    version of it. Dask would send such a worker the first refit, which ends it (the task
+    cannot be unpickled there), and then wait for ever for another; such a scheduler refuses
+    every refit."""
+    from .. import __version__
+
+    try:
+        client.wait_for_workers(1, timeout=timeout_s)
+    except TimeoutError:
+        raise ClusterError(f"the Dask scheduler at {scheduler} has no worker (waited "
+                           f"{timeout_s:g} s): start one with `dask worker {scheduler}` "
+                           f"where chest-observer {__version__} is installed") from None
+
+    def version_there() -> str:  # local, so Dask ships it by value: it runs without the package
+        import observer_node
+
+        return observer_node.__version__
+
+    # The scheduler unpickles each task too: without the package it refuses every one.
+    try:
+        got = {f"the scheduler {scheduler}": client.run_on_scheduler(version_there)}
+    except Exception as e:  # whatever it raised is the reason given
+        got = {f"the scheduler {scheduler}": e}
+    got.update(client.run(version_there, on_error="return"))
+    wrong = [f"{w}: cannot import chest-observer ({type(r).__name__}: {r})"
+             if isinstance(r, BaseException) else f"{w}: chest-observer {r}"
+             for w, r in sorted(got.items()) if r != __version__]
+    if wrong:
+        more = f" and {len(wrong) - 2} more" if len(wrong) > 2 else ""
+        raise ClusterError(f"the Dask cluster at {scheduler} cannot run this version's "
+                           f"refits (chest-observer {__version__}): "
+                           f"{'; '.join(wrong[:2])}{more}")
+
+
 @contextmanager
 def cluster(scheduler: str | None = None, workers: int | None = None) -> Iterator[Runner]:
     """A :class:`Runner` on the cluster at ``scheduler``, or on a local one for this call."""
@@ -101,7 +175,8 @@ def cluster(scheduler: str | None = None, workers: int | None = None) -> Iterato
     if scheduler:
         client = _connect(scheduler)
         try:
-            yield Runner(client)
+            _check_workers(client, scheduler)
+            yield Runner(client, scheduler)
         finally:
             client.close()
         return

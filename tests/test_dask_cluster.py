@@ -1,0 +1,162 @@
+"""The loop on a running Dask cluster (`--scheduler`), as a campaign past one machine uses it:
+a scheduler and its workers in processes of their own, started with Dask's own `dask`
+command. A cluster whose workers cannot run the refits must be one line, never a loop that
+waits for ever."""
+
+from __future__ import annotations
+
+import json
+import os
+import signal
+import subprocess
+import sys
+import threading
+import time
+from collections.abc import Iterator
+from pathlib import Path
+
+import pytest
+
+from observer_node.loop import cluster as cl
+
+SMALL = ["--estimate", "campaign-a/R16_00[13]", "--validate", "campaign-a/R16_002", "--quiet"]
+
+
+def _start(*args: str, log: Path, env: dict[str, str] | None = None) -> subprocess.Popen:
+    # run from the log's folder: from the checkout, `-m` would import its package first
+    return subprocess.Popen([sys.executable, "-m", "dask", *args], stdout=log.open("wb"),
+                            stderr=subprocess.STDOUT, env=env, cwd=log.parent,
+                            start_new_session=True)
+
+
+def _stop(p: subprocess.Popen) -> None:
+    if p.poll() is None:
+        os.killpg(p.pid, signal.SIGKILL)  # the worker's nanny and its child too
+    p.wait(30)
+
+
+def _shadow(tmp_path: Path) -> dict[str, str]:
+    """The environment of a machine where chest-observer cannot be imported."""
+    shadow = tmp_path / "shadow" / "observer_node"
+    shadow.mkdir(parents=True, exist_ok=True)
+    (shadow / "__init__.py").write_text('raise ImportError("not installed here")\n')
+    return {**os.environ, "PYTHONPATH": str(shadow.parent)}
+
+
+@pytest.fixture
+def scheduler(tmp_path: Path, request) -> Iterator[tuple[str, Path]]:
+    """A scheduler on a free port of this host, with no worker yet: (address, its file);
+    indirect ``"shadow"``: one where chest-observer cannot be imported."""
+    info = tmp_path / "scheduler.json"
+    env = _shadow(tmp_path) if getattr(request, "param", None) == "shadow" else None
+    p = _start("scheduler", "--host", "127.0.0.1", "--port", "0", "--dashboard-address", ":0",
+               "--scheduler-file", str(info), log=tmp_path / "scheduler.log", env=env)
+    try:
+        deadline = time.monotonic() + 60
+        while not info.exists() or not info.read_text().strip():
+            assert p.poll() is None and time.monotonic() < deadline, \
+                (tmp_path / "scheduler.log").read_text()
+            time.sleep(0.2)
+        yield json.loads(info.read_text())["address"], info
+    finally:
+        _stop(p)
+
+
+def _worker(info: Path, log: Path, env: dict[str, str] | None = None) -> subprocess.Popen:
+    return _start("worker", "--scheduler-file", str(info), "--nthreads", "1", "--nworkers", "1",
+                  "--no-dashboard", log=log, env=env)
+
+
+def _wait_for_workers(address: str, n: int) -> None:
+    from dask.distributed import Client
+
+    with Client(address, timeout="30s") as c:
+        c.wait_for_workers(n, timeout=120)
+
+
+def _loop(address: str, out: Path, timeout_s: float = 300) -> subprocess.CompletedProcess:
+    return subprocess.run([sys.executable, "-m", "observer_node", "loop", *SMALL, "--out",
+                           str(out), "--scheduler", address],
+                          capture_output=True, text=True, timeout=timeout_s)
+
+
+def _one_line(p: subprocess.CompletedProcess) -> str:
+    assert p.returncode == 2, p.stderr
+    assert "Traceback" not in p.stderr and len(p.stderr.strip().splitlines()) == 1, p.stderr
+    return p.stderr
+
+
+def test_the_loop_on_a_running_cluster_refuses_bad_workers_and_matches_the_local_one(
+        scheduler, tmp_path):
+    address, info = scheduler
+    # No worker: said after the wait, not waited on for ever.
+    t0 = time.monotonic()
+    line = _one_line(_loop(address, tmp_path / "none"))
+    assert f"has no worker (waited {cl.WORKERS_TIMEOUT_S:g} s)" in line and address in line
+    assert time.monotonic() - t0 < cl.WORKERS_TIMEOUT_S + 60
+    assert not (tmp_path / "none").exists()
+    # A worker that cannot import chest-observer (another environment): before, the first
+    # refit ended it and the loop waited for ever on a cluster with no worker.
+    bad = _worker(info, tmp_path / "bad.log", env=_shadow(tmp_path))
+    good = _worker(info, tmp_path / "good.log")
+    try:
+        _wait_for_workers(address, 2)
+        line = _one_line(_loop(address, tmp_path / "mixed"))
+        assert "cannot import chest-observer (ImportError: not installed here)" in line, line
+        assert bad.poll() is None  # asked, not ended
+        _stop(bad)
+        # The good worker alone: the same verdict as the in-process cluster's.
+        there = _loop(address, tmp_path / "there")
+        assert there.returncode == 0, there.stderr
+    finally:
+        _stop(bad)
+        _stop(good)
+    here = subprocess.run([sys.executable, "-m", "observer_node", "loop", *SMALL, "--out",
+                           str(tmp_path / "here"), "--workers", "1"],
+                          capture_output=True, text=True, timeout=300)
+    assert here.returncode == 0, here.stderr
+
+    def verdict(d: Path) -> tuple:
+        """What the loop found and the fit it ended on: refits on the cluster or here."""
+        r = json.loads((d / "report.json").read_text())
+        return ([e["kind"] for e in r["effects"]], [e["kind"] for e in r["possible"]],
+                r["final"]["fit"], r["first_ranking"])
+    assert verdict(tmp_path / "there") == verdict(tmp_path / "here")
+
+
+def test_a_cluster_that_loses_every_worker_mid_run_is_given_up_on(scheduler, tmp_path,
+                                                                   monkeypatch):
+    """Every worker gone while refits wait (killed, out of memory): one line after
+    ``NO_WORKERS_S``, not a wait for ever."""
+    from dask.distributed import Client
+
+    address, info = scheduler
+    worker = _worker(info, tmp_path / "w.log")
+    monkeypatch.setattr(cl, "NO_WORKERS_S", 3.0)
+    client = Client(address, timeout="30s")
+    try:
+        client.wait_for_workers(1, timeout=60)
+        runner = cl.Runner(client, address)
+        t0 = time.monotonic()
+        timer = threading.Timer(3.0, _stop, (worker,))
+        timer.start()
+        with pytest.raises(cl.ClusterError, match=r"has had no worker for 3 s, 0 of 2 refits"):
+            runner.map(time.sleep, [(30,), (30,)])
+        assert time.monotonic() - t0 < 25
+    finally:
+        client.close()
+        _stop(worker)
+
+
+@pytest.mark.parametrize("scheduler", ["shadow"], indirect=True)
+def test_a_scheduler_that_cannot_import_chest_observer_is_one_line(scheduler, tmp_path):
+    """The scheduler unpickles every task: without the package it refused each refit with
+    a RuntimeError the loop did not expect."""
+    address, info = scheduler
+    worker = _worker(info, tmp_path / "w.log")
+    try:
+        _wait_for_workers(address, 1)
+        line = _one_line(_loop(address, tmp_path / "out"))
+    finally:
+        _stop(worker)
+    assert f"the scheduler {address}: cannot import chest-observer" in line, line
