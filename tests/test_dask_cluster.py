@@ -160,3 +160,21 @@ def test_a_scheduler_that_cannot_import_chest_observer_is_one_line(scheduler, tm
     finally:
         _stop(worker)
     assert f"the scheduler {address}: cannot import chest-observer" in line, line
+
+
+def test_a_refit_that_ends_every_worker_it_runs_on_is_one_line(scheduler, tmp_path):
+    """A crash inside a refit (a segfault in a compiled library) ends the worker; its nanny
+    starts another, Dask tries the refit again and gives up after a few: one line, where
+    Dask's KilledWorker was a traceback."""
+    from dask.distributed import Client
+
+    address, info = scheduler
+    worker = _worker(info, tmp_path / "w.log")
+    client = Client(address, timeout="30s")
+    try:
+        client.wait_for_workers(1, timeout=60)
+        with pytest.raises(cl.ClusterError, match="ended the Dask worker it ran on, each time"):
+            cl.Runner(client, address).map(os._exit, [(1,)])
+    finally:
+        client.close()
+        _stop(worker)
