@@ -44,7 +44,7 @@ def _shadow(tmp_path: Path) -> dict[str, str]:
 
 
 @pytest.fixture
-def scheduler(tmp_path: Path, request) -> Iterator[tuple[str, Path]]:
+def scheduler(tmp_path: Path, request) -> Iterator[tuple[str, Path, subprocess.Popen]]:
     """A scheduler on a free port of this host, with no worker yet: (address, its file);
     indirect ``"shadow"``: one where chest-observer cannot be imported."""
     info = tmp_path / "scheduler.json"
@@ -57,14 +57,15 @@ def scheduler(tmp_path: Path, request) -> Iterator[tuple[str, Path]]:
             assert p.poll() is None and time.monotonic() < deadline, \
                 (tmp_path / "scheduler.log").read_text()
             time.sleep(0.2)
-        yield json.loads(info.read_text())["address"], info
+        yield json.loads(info.read_text())["address"], info, p
     finally:
         _stop(p)
 
 
-def _worker(info: Path, log: Path, env: dict[str, str] | None = None) -> subprocess.Popen:
+def _worker(info: Path, log: Path, env: dict[str, str] | None = None,
+            *more: str) -> subprocess.Popen:
     return _start("worker", "--scheduler-file", str(info), "--nthreads", "1", "--nworkers", "1",
-                  "--no-dashboard", log=log, env=env)
+                  "--no-dashboard", *more, log=log, env=env)
 
 
 def _wait_for_workers(address: str, n: int) -> None:
@@ -88,7 +89,7 @@ def _one_line(p: subprocess.CompletedProcess) -> str:
 
 def test_the_loop_on_a_running_cluster_refuses_bad_workers_and_matches_the_local_one(
         scheduler, tmp_path):
-    address, info = scheduler
+    address, info, _ = scheduler
     # No worker: said after the wait, not waited on for ever.
     t0 = time.monotonic()
     line = _one_line(_loop(address, tmp_path / "none"))
@@ -130,7 +131,7 @@ def test_a_cluster_that_loses_every_worker_mid_run_is_given_up_on(scheduler, tmp
     ``NO_WORKERS_S``, not a wait for ever."""
     from dask.distributed import Client
 
-    address, info = scheduler
+    address, info, _ = scheduler
     worker = _worker(info, tmp_path / "w.log")
     monkeypatch.setattr(cl, "NO_WORKERS_S", 3.0)
     client = Client(address, timeout="30s")
@@ -152,7 +153,7 @@ def test_a_cluster_that_loses_every_worker_mid_run_is_given_up_on(scheduler, tmp
 def test_a_scheduler_that_cannot_import_chest_observer_is_one_line(scheduler, tmp_path):
     """The scheduler unpickles every task: without the package it refused each refit with
     a RuntimeError the loop did not expect."""
-    address, info = scheduler
+    address, info, _ = scheduler
     worker = _worker(info, tmp_path / "w.log")
     try:
         _wait_for_workers(address, 1)
@@ -162,19 +163,72 @@ def test_a_scheduler_that_cannot_import_chest_observer_is_one_line(scheduler, tm
     assert f"the scheduler {address}: cannot import chest-observer" in line, line
 
 
-def test_a_refit_that_ends_every_worker_it_runs_on_is_one_line(scheduler, tmp_path):
+def test_a_refit_that_ends_every_worker_it_runs_on_is_one_line(scheduler, tmp_path,
+                                                               monkeypatch):
     """A crash inside a refit (a segfault in a compiled library) ends the worker; its nanny
     starts another, Dask tries the refit again and gives up after a few: one line, where
     Dask's KilledWorker was a traceback."""
     from dask.distributed import Client
 
-    address, info = scheduler
+    address, info, _ = scheduler
     worker = _worker(info, tmp_path / "w.log")
     client = Client(address, timeout="30s")
     try:
         client.wait_for_workers(1, timeout=60)
-        with pytest.raises(cl.ClusterError, match="ended the Dask worker it ran on, each time"):
+        time.sleep(1.0)  # a worker ended before its nanny has started ends the nanny too
+        monkeypatch.setattr(cl, "NO_WORKERS_S", 5.0)  # ... so the cluster has none
+        with pytest.raises(cl.ClusterError, match=r"ended the Dask worker it ran on, each time"
+                                                  r"|has had no worker for 5 s"):
             cl.Runner(client, address).map(os._exit, [(1,)])
+    finally:
+        client.close()
+        _stop(worker)
+
+
+def test_workers_paused_at_their_memory_limit_are_given_up_on(scheduler, tmp_path, monkeypatch):
+    """A worker at 80 % of its memory limit pauses and runs nothing: it is there, so a
+    check for workers alone waited for ever (a hostile user's loop, 11 minutes silent)."""
+    from dask.distributed import Client
+
+    address, info, _ = scheduler
+    # a pause threshold its own start-up passes: it pauses at once (and is never ended)
+    small = {**os.environ, "DASK_DISTRIBUTED__WORKER__MEMORY__PAUSE": "0.01",
+             "DASK_DISTRIBUTED__WORKER__MEMORY__TERMINATE": "False",
+             "DASK_DISTRIBUTED__WORKER__MEMORY__TARGET": "False",
+             "DASK_DISTRIBUTED__WORKER__MEMORY__SPILL": "False"}
+    worker = _worker(info, tmp_path / "w.log", small, "--memory-limit", "1GB")
+    monkeypatch.setattr(cl, "NO_WORKERS_S", 3.0)
+    client = Client(address, timeout="30s")
+    try:
+        client.wait_for_workers(1, timeout=60)
+        deadline = time.monotonic() + 60
+        while [w["status"] for w in client.scheduler_info(n_workers=-1)["workers"].values()] \
+                != ["paused"]:
+            assert time.monotonic() < deadline
+            time.sleep(0.1)
+        with pytest.raises(cl.ClusterError, match=r"every worker \(1\) paused at its memory "
+                                                  r"limit for 3 s, 0 of 1 refits done"):
+            cl.Runner(client, address).map(time.sleep, [(1,)])
+    finally:
+        client.close()
+        _stop(worker)
+
+
+def test_a_scheduler_lost_mid_run_is_one_line(scheduler, tmp_path):
+    """The scheduler killed while refits run: three chained tracebacks before."""
+    from dask.distributed import Client
+
+    address, info, sched = scheduler
+    worker = _worker(info, tmp_path / "w.log")
+    client = Client(address, timeout="5s")
+    try:
+        client.wait_for_workers(1, timeout=60)
+        threading.Timer(3.0, _stop, (sched,)).start()
+        t0 = time.monotonic()
+        with pytest.raises(cl.ClusterError, match=r"lost the Dask scheduler \(tcp://.*\), "
+                                                  r"0 of 2 refits done"):
+            cl.Runner(client, address).map(time.sleep, [(60,), (60,)])
+        assert time.monotonic() - t0 < 45
     finally:
         client.close()
         _stop(worker)

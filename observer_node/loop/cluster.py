@@ -14,6 +14,7 @@ import signal
 import threading
 import time
 from collections.abc import Callable, Iterator
+from concurrent.futures import CancelledError
 from contextlib import contextmanager
 from typing import Any
 
@@ -45,11 +46,13 @@ class Runner:
 
     def map(self, f: Callable[..., Any], args: list[tuple]) -> list[Any]:
         from distributed import KilledWorker
+        from distributed.client import ClosedClientError
 
         if not args:
             return []
-        futures = [self.client.submit(f, *a, pure=False) for a in args]
+        futures: list[Any] = []
         try:
+            futures = [self.client.submit(f, *a, pure=False) for a in args]
             self._wait(futures)
             return list(self.client.gather(futures))
         except KilledWorker as e:  # a refit that ended every worker it ran on (a crash)
@@ -60,11 +63,18 @@ class Runner:
             # asyncio would print as a page of tracebacks while the client closes
             logging.getLogger("asyncio").setLevel(logging.CRITICAL)
             raise
+        except (OSError, CancelledError, ClosedClientError) as e:  # the scheduler gone?
+            if self.client.status == "running":
+                raise
+            logging.getLogger("asyncio").setLevel(logging.CRITICAL)
+            done = sum(f.status == "finished" for f in futures)
+            raise ClusterError(f"lost the Dask scheduler ({self.where}), {done} of "
+                               f"{len(args)} refits done: {type(e).__name__}") from None
 
     def _wait(self, futures: list[Any]) -> None:
-        """Until every task is done, or one line when the cluster has had no worker for
-        ``NO_WORKERS_S``: Dask would wait for a worker for ever (every worker gone, or
-        ending as it starts), and the loop would say nothing."""
+        """Until every task is done, or one line when no worker has been able to run one
+        for ``NO_WORKERS_S``: Dask would wait for ever (every worker gone, ending as it
+        starts, or paused at its memory limit), and the loop would say nothing."""
         from distributed import wait
 
         since: float | None = None
@@ -74,7 +84,9 @@ class Runner:
                 return
             except TimeoutError:
                 pass
-            if self.client.scheduler_info(n_workers=-1).get("workers"):
+            workers = self.client.scheduler_info(n_workers=-1).get("workers", {})
+            status = [w.get("status") for w in workers.values()]
+            if "running" in status:
                 since = None
                 continue
             now = time.monotonic()
@@ -82,10 +94,12 @@ class Runner:
             if now - since >= NO_WORKERS_S:
                 done = sum(f.done() for f in futures)
                 self.client.cancel(futures)
+                why = (f"every worker ({len(status)}) paused at its memory limit"
+                       if status and set(status) == {"paused"} else
+                       "no worker running" if status else "no worker")
                 raise ClusterError(
-                    f"the Dask cluster ({self.where}) has had no worker for {NO_WORKERS_S:g} s, "
-                    f"{done} of {len(futures)} refits done: the workers ended or cannot "
-                    f"start (their logs say why)")
+                    f"the Dask cluster ({self.where}) has had {why} for {NO_WORKERS_S:g} s, "
+                    f"{done} of {len(futures)} refits done: the workers' logs say why")
 
 
 def check_address(scheduler: str) -> None:
