@@ -339,6 +339,32 @@ def test_bad_isomme_test(case, tmp_path, capsys):
     _expect_one_line_error(code, capsys.readouterr().err, says)
 
 
+@pytest.mark.parametrize("output, rel", [("CR", "Channel/R16_001.003"),
+                                         ("CD", "Channel/R16_001.004")])
+def test_an_output_constant_over_the_window_is_refused_not_fitted_to_nan(
+        output, rel, tmp_path, good_model, capsys):
+    """A dead output channel (all zeros: unplugged) among good tests: identify wrote a model
+    whose every parameter stayed at its start, fit "nan %", exit 0; evaluate scored it "nan %"
+    (a hostile user's campaign of 60 tests)."""
+    d = tmp_path / "R16_001"
+    shutil.copytree(DATA / "R16_001", d)
+    p = d / rel
+    lines = p.read_text(encoding="iso-8859-1").splitlines()
+    lines = [v if ":" in v or not v else "0.000000E+00" for v in lines]
+    p.write_text("\r\n".join(lines) + "\r\n", encoding="iso-8859-1", newline="")
+    says = f"R16_001: {output} is constant over the scoring window 0.01..0.15 s"
+    out = tmp_path / "out"
+    code = cli.main(["identify", "--model", "greybox", "--data", str(d), "--out",
+                     str(out / "m.json"), "--quiet"])
+    _expect_one_line_error(code, capsys.readouterr().err, says)
+    model = tmp_path / "model.json"
+    model.write_text(json.dumps(good_model))
+    code = cli.main(["evaluate", "--model", str(model), "--data", str(d), "--out",
+                     str(out / "ev"), "--quiet"])
+    _expect_one_line_error(code, capsys.readouterr().err, says)
+    assert not out.exists()
+
+
 def _zip_of(folder: Path, dest: Path) -> Path:
     with zipfile.ZipFile(dest, "w", zipfile.ZIP_DEFLATED) as z:
         for p in sorted(folder.rglob("*")):

@@ -43,6 +43,7 @@ def make_dataset(tests: list[CrashTest], fs_hz: float = 1000.0,
         raise CrashDataError("no crash tests given")
     start, end = 0.0, window_s[1]
     n = round((end - start) * fs_hz) + 1
+    i0 = round((window_s[0] - start) * fs_hz)
     pulses, brss, ys = [], [], []
     for t in tests:
         if not t.has_outputs:
@@ -65,7 +66,13 @@ def make_dataset(tests: list[CrashTest], fs_hz: float = 1000.0,
         pulses.append(r.pulse_g[sl] - bias)
         brss.append(r.brs[sl] * (2 * np.pi / t.counts_per_rev))
         assert r.cr_g is not None and r.cd_mm is not None  # resampled from t's outputs
-        ys.append(np.column_stack([r.cr_g[sl], r.cd_mm[sl]]))
-    i0 = round((window_s[0] - start) * fs_hz)
+        y = np.column_stack([r.cr_g[sl], r.cd_mm[sl]])
+        for label, out in zip(("CR", "CD"), y[i0:].T, strict=True):
+            if np.ptp(out) == 0:  # eq. 3.15 divides by its spread: every fit would be NaN
+                raise CrashDataError(
+                    f"{t.source or t.name}: {label} is constant over the scoring window "
+                    f"{window_s[0]:g}..{window_s[1]:g} s (a dead or disconnected channel): "
+                    f"no fit can be made or scored on it; leave the test out")
+        ys.append(y)
     return Dataset([t.name for t in tests], [t.setup for t in tests], fs_hz, np.array(pulses),
                    np.array(brss), np.array(ys), slice(i0, n), window_s)
