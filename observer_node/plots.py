@@ -27,18 +27,33 @@ def _save(fig: Figure, path: Path, dpi: int = 80) -> Path:
 
 
 OUTPUT_LABELS = (("cr", "Chest acceleration CR [g]"), ("cd", "Chest deflection CD [mm]"))
+MAX_PANELS = 24  # tests drawn in one figure at most
+
+
+def _shown(badness: list[float]) -> tuple[list[int], str]:
+    """The tests a figure draws: all of them, or past ``MAX_PANELS`` (a campaign: a figure
+    of 180 panels is 19,000 pixels tall and takes minutes) the worst, in their order, and
+    the words for the title that say so."""
+    n = len(badness)
+    if n <= MAX_PANELS:
+        return list(range(n)), ""
+    worst = np.argsort(-np.nan_to_num(np.asarray(badness, float), nan=np.inf), kind="stable")
+    return sorted(worst[:MAX_PANELS].tolist()), f" ({MAX_PANELS} worst of {n} tests)"
 
 
 def measured_vs_simulated(path: Path, title: str, names: list[str], t_s: np.ndarray,
                           y: np.ndarray, y_hat: np.ndarray, fits: FitTable, output: int) -> Path:
-    """One figure, one panel per test, for output 0 (CR) or 1 (CD). y, y_hat: (tests, n, 2)."""
+    """One figure, one panel per test (at most ``MAX_PANELS``: the lowest fits), for output 0
+    (CR) or 1 (CD). y, y_hat: (tests, n, 2)."""
     key, label = OUTPUT_LABELS[output]
-    n = len(names)
+    shown, some = _shown([-getattr(fits.tests[name], key) for name in names])
+    n = len(shown)
     cols = 2 if n > 1 else 1
     rows = (n + cols - 1) // cols
     fig, axes = plt.subplots(rows, cols, figsize=(6 * cols, 2.6 * rows), squeeze=False)
-    for k, name in enumerate(names):
-        ax = axes[k // cols][k % cols]
+    for at, k in enumerate(shown):
+        name = names[k]
+        ax = axes[at // cols][at % cols]
         ax.plot(t_s * 1000, y[k, :, output], "k-", lw=1.2, label="measured")
         ax.plot(t_s * 1000, y_hat[k, :, output], "r--", lw=1.2, label="simulated")
         if key == "cd":  # what a restraint engineer reads the deflection against
@@ -54,21 +69,27 @@ def measured_vs_simulated(path: Path, title: str, names: list[str], t_s: np.ndar
     axes[0][0].legend(fontsize=8)
     limits = (f"; dotted: Euro NCAP chest compression limits {EURO_NCAP_CD_LIMITS_MM[0]:g} / "
               f"{EURO_NCAP_CD_LIMITS_MM[1]:g} mm" if key == "cd" else "")
-    fig.suptitle(f"{title} — {label.split(' [')[0]}, fit {getattr(fits.fit, key):.1f} %{limits}",
-                 fontsize=10)
+    fig.suptitle(f"{title} — {label.split(' [')[0]}, fit {getattr(fits.fit, key):.1f} %{some}"
+                 f"{limits}", fontsize=10)
     return _save(fig, path)
 
 
 def residuals(path: Path, names: list[str], t_s: np.ndarray, before: np.ndarray,
               after: np.ndarray) -> Path:
-    """Residuals (measured - simulated) before and after the loop, per test and output."""
-    n = len(names)
+    """Residuals (measured - simulated) before and after the loop, per test and output (at
+    most ``MAX_PANELS`` tests: the largest residuals after)."""
+    rms = np.sqrt(np.mean(after ** 2, axis=1))  # (tests, 2)
+    shown, some = _shown((rms / np.maximum(rms.max(axis=0), 1e-12)).sum(axis=1).tolist())
+    n = len(shown)
     fig, axes = plt.subplots(n, 2, figsize=(11, 1.9 * n + 0.6), squeeze=False, sharex=True)
-    for i, name in enumerate(names):
+    if some:
+        fig.suptitle(f"residuals{some}", fontsize=10)
+    for i, j in enumerate(shown):
+        name = names[j]
         for k, (key, _) in enumerate(OUTPUT_LABELS):
             ax = axes[i][k]
-            ax.plot(t_s * 1000, before[i, :, k], color="0.6", lw=1, label="before")
-            ax.plot(t_s * 1000, after[i, :, k], "r-", lw=1, label="after")
+            ax.plot(t_s * 1000, before[j, :, k], color="0.6", lw=1, label="before")
+            ax.plot(t_s * 1000, after[j, :, k], "r-", lw=1, label="after")
             ax.axhline(0, color="k", lw=0.5)
             ax.set_title(f"{name} {key.upper()} residual", fontsize=8)
             ax.grid(alpha=0.3)

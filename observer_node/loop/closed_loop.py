@@ -267,6 +267,7 @@ def _run(est_tests: list[CrashTest], val_tests: list[CrashTest], out: Path, rate
     while len(st.accepted) < max_effects and one_round(ctx, st):
         pass
     base, effects, carried = st.base, st.effects, st.carried
+    prog.update(f"scoring the final model on {len(val.names)} validation test(s)")
     final_val = score(base, effects, val)
     judged = {label: scores(val, model(b, e, val).simulate(val.pulse_g, val.brs_rad), ratings)
               for label, b, e in (("baseline", gb.params, []), ("final", base, effects))}
@@ -321,11 +322,14 @@ def _run(est_tests: list[CrashTest], val_tests: list[CrashTest], out: Path, rate
         carried=carried,
         belt_pushes=belt_pushes(base, effects, est, slack_gains(st.history), thin),
     )
-    as_json = report.as_dict()
-    (out / "report.json").write_text(json.dumps(as_json, indent=1, default=float) + "\n")
     if plots:
+        prog.update("drawing the plots")
         _plots(out, base, effects, gb.params, val, broken, [*est_tests, *val_tests])
         _evidence_plot(out, st.history, est, margin)
+    # the run time the report gives is the whole run's, its plots included
+    report = dataclasses.replace(report, seconds=round(time.monotonic() - t_start, 1))
+    as_json = report.as_dict()
+    (out / "report.json").write_text(json.dumps(as_json, indent=1, default=float) + "\n")
     (out / "report.md").write_text(markdown(report))
     prog.done(f"{len(st.accepted)} effect(s) accepted; validation fit "
               f"{baseline_val.fit.total:.1f} -> {final_val.fit.total:.1f} %")

@@ -212,6 +212,8 @@ def _cross_validated(c: Context, st: State, ranked: list[Candidate]
         # the scope the residual points to, and the widest scope it could have:
         # cross-validation chooses; each fold of each trial is a task on the cluster
         trials = [t for x in group for t in _with_widest_scope(x, c.scopes[x.kind])]
+        if not trials:
+            continue
         c.prog.update(f"cross-validating {len(trials)} candidate(s): "
                       + ", ".join(f"{t.kind} on {scope_label(t.setups)}" for t in trials))
         # a stalled fold's test gains nothing (the model's fit without the candidate there),
