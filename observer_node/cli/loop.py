@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import argparse
+import os
 
 from .. import options
 from ..errors import UsageError
@@ -57,7 +58,7 @@ def add_subparser(subparsers: argparse._SubParsersAction[argparse.ArgumentParser
                    "default: a local cluster in this process, one worker per core")
     s.add_argument("--workers", type=int, metavar="N",
                    help="workers of the local cluster (default: one per core, at most "
-                   f"{MAX_LOCAL_WORKERS})")
+                   f"{MAX_LOCAL_WORKERS}; four per core at most); not with --scheduler")
     s.add_argument("--quiet", action="store_true", help="no progress display")
     s.set_defaults(func=_do_loop)
 
@@ -70,10 +71,18 @@ def _do_loop(a: argparse.Namespace) -> int:
 
     if a.workers is not None and a.workers < 1:
         raise UsageError(f"--workers {a.workers}: needs at least one worker")
+    cores = len(os.sched_getaffinity(0))
+    if a.workers is not None and a.workers > 4 * cores:
+        # each worker is a process of about 150 MB that would only wait for a core
+        raise UsageError(f"--workers {a.workers}: at most {4 * cores} on this machine's "
+                         f"{cores} core(s); for more, a Dask cluster (--scheduler)")
     out = options.out_folder(a.out)
     window_s, groups = _data.window(a), parse_groups(a.group)
     if a.scheduler:
         check_address(a.scheduler)
+    if a.workers is not None and a.scheduler:
+        raise UsageError("--workers sets the local cluster's size; a cluster given by "
+                         "--scheduler has the workers it has")
     codes, cpr = _data.channel_codes(a), a.counts_per_rev
     est = load_tests(a.estimate, codes, cpr)
     val = load_tests(a.validate, codes, cpr)
