@@ -5615,17 +5615,24 @@ BEFORE_AR = _cases_of(heldout_sets.before("ar"))
 # the others untouched)
 WATCHED_AR = ("har_broken_pulse_zero_shift", "har_cd_sag", *ONE_PHYSICAL_AR)
 # the draws found impossible, drawn again by the next seeds in the order found (draw_ar.REDRAWN)
-REDRAWN_AR: list[tuple[str, int]] = []
+REDRAWN_AR: list[tuple[str, int]] = [("belt_unloading", 53001), ("two", 53002),
+                                     ("brs_late", 53003), ("belt_unloading", 53004),
+                                     ("belt_unloading", 53005), ("brs_late", 53006),
+                                     ("belt_unloading", 53007)]
 # each rejected draw, in that order: its form (or delay, or forms), rigs and whether its pairing
 # was reused
-REJECTED_AR: list[tuple] = []
+REJECTED_AR: list[tuple] = [("webbing_slack", ("SLED",), True),
+                            (("brs_eccentric", "rib_squeeze"), (("SLED", "FULL"), ("R16",)), True),
+                            (0.00188, None, True), ("dring_capstan", ("SLED",), True),
+                            ("webbing_slack", ("R16", "FULL"), True), (0.00201, None, True),
+                            ("webbing_slack", ("R16", "FULL"), True)]
 # the two-effect case
-TWO_AR = "har_two_eccentric_sled_full_squeeze_r16"
+TWO_AR = "har_two_pelvis_knee_full_lock_r16"
 # the cases on an earlier set's pairing, in the draw's order (none free for their rigs:
 # set AL's reuse rule, taken by draw_ar as it stands): every case of AR
-REUSED_AR = ("har_bilinear_sled_full", "har_visco_full", "har_slack_sled", "har_power_full",
+REUSED_AR = ("har_bilinear_sled_full", "har_visco_full", "har_set_sled", "har_power_full",
              "har_dual_sled", "har_pelvis_knee_sled_full", "har_eccentric_all", TWO_AR,
-             "har_pulse_late_2p88ms", "har_brs_late_1p88ms", "har_cd_sag",
+             "har_pulse_late_2p88ms", "har_brs_late_3p96ms", "har_cd_sag",
              "har_broken_pulse_zero_shift", "har_clean48", "har_clean96")
 # two of them drew the same earlier pairing (the pool A-AQ's, not narrowed by AR's own draws)
 SHARED_AR = (("har_bilinear_sled_full", "har_pelvis_knee_sled_full"),)
@@ -5648,13 +5655,14 @@ def test_set_ar_covers_the_general_list() -> None:
 
 
 def test_set_ar_follows_its_draw() -> None:
-    """Set AR's designer's choices are numpy's default_rng(53000)'s (``draw_ar.py``; no draw
-    found impossible, ``REDRAWN`` empty), followed as drawn: each kind's form, rigs, counts and
-    mix; the two-effect case's kinds, forms, rigs, counts and mix; the delays, their counts and
-    mixes; the transducer error's output, form, counts and mix; the broken test's channel, form,
-    test, counts and mix; the clean cases' mixes. Set AQ's process, no change: any case with no
-    pairing free for its rigs reuses one A-AQ ran, among those its rules allow (every case of
-    AR); every other case takes a free one (run by no earlier set, nor drawn before it)."""
+    """Set AR's designer's choices are numpy's default_rng(53000)'s (``draw_ar.py``; seven
+    draws found impossible at the sizes, ``REDRAWN``), followed as drawn: each kind's form,
+    rigs, counts and mix; the two-effect case's kinds, forms, rigs, counts and mix; the delays,
+    their counts and mixes; the transducer error's output, form, counts and mix; the broken
+    test's channel, form, test, counts and mix; the clean cases' mixes. Set AQ's process, no
+    change: any case with no pairing free for its rigs reuses one A-AQ ran, among those its
+    rules allow (every case of AR); every other case takes a free one (run by no earlier set,
+    nor drawn before it)."""
     d = draw_ar.draw(53000)
     _follows_set_al_reuse(d, draw_ar, 53000, "ar", SET_AR, ONE_PHYSICAL_AR,
                           REDRAWN_AR, BEFORE_AR, BY_NAME_AR, REUSED_AR, REJECTED_AR)

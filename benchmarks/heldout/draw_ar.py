@@ -156,6 +156,42 @@ set X's before it), with sets A-AQ as the earlier sets:
    53002, ...) in the order found, after the rest, the pairings of everything drawn before
    still taken (``REDRAWN``; a case with none free, an earlier set's, by the reuse above).
 
+Judged at the sizes by these words (written down with the sizes, after the draw, before any
+loop run; no rule changed, the rules above as they were committed before the first draw): no
+run-away at the first sizes before any cost; then the first sizes costed one at a time in
+``cases_ar.py``'s order, three impossibilities among them, in that order: the belt's
+unloading's webbing slack on SLED, a switch (rule 3), 13.36, above the band; the two-effect
+case, the encoder ring on SLED+FULL (0.50) beside the squeeze-film damping on R16 (480), each
+alone in band (5.01, 3.50) and the two together above it (7.38), the ring, the higher alone,
+stepped by rule 4: 0.50 x 3.75 / 7.38 = 0.254, 0.25, which A-AQ used, as they used every
+value up to 0.49, so 0.50 by rule 1's words (the next value up in the second figure A-AQ did
+not use), the size it had; every size rule 4 can give it is that one, whose costs are known
+(the same case, the same seed), so none of its four sizes has the two together in band, and
+the draw is impossible without costing that size again, the impossibility known at that cost
+(as set AI judged of a spool whose next size runs away by its radius); the late BRS, 1.88 ms,
+0.59, below the delay's band (rule 3). Drawn again by 53001, 53002 and 53003 in that order.
+The redraws, after the rest, checked against the run-away limits at their first sizes in
+``cases_ar.py``'s order before any of them was costed: the belt's unloading's (a D-ring
+capstan on SLED, 0.59) ran away (SLED's pay-out 45.0-56.2 deg against the set's other cases'
+median 230.6; costed for the record, 1.70, as set AM judged): drawn again by 53004. Then the
+redraws costed in that order: 53004's webbing slack on R16+FULL, 13.63, above the band, a
+switch: drawn again by 53005; 53002's two-effect case, the knee bolster on FULL beside the
+chest's lock on R16, each alone out of the band (6.03, 7.11), so stepped (below), not
+impossible there; 53003's late BRS, 2.01 ms, 0.29, below the band: drawn again by 53006; then
+53005's webbing slack on R16+FULL again (128 counts), 11.36: drawn again by 53007; 53006's late
+BRS, 3.96 ms, 3.73, and 53007's webbing set on SLED, 0.70, 1.90, in band at their first sizes,
+each checked against the run-away limits before it was costed. Then the steps, each case's in
+``cases_ar.py``'s order (the ribs' load path, the ribs' damping, the webbing's power, the
+two-stage bag, the knee bolster, the two-effect case's knee bolster and lock, each alone by
+1-2, then the two together); none proved impossible. A cost just past an edge is out of band
+(the two-effect case's knee bolster alone at its first size, 6.03, stepped, as set AO judged).
+Two cases of the set run the same earlier pairing at the sizes' end, the chest's stiffening
+and the pelvis (est 4/2/0, val 2/0/4, set V's): the reuse's pool is A-AQ's, not narrowed by
+this set's draws (the reading above, set AL's, and set AM's judgement), so neither is drawn
+again for it. Each costed size checked against the run-away limits, each pay-out against its
+rig's median over the set's other cases' tests at the first sizes with the rejected draws'
+tests replaced by their redraws' then (the sizes kept checked again against the final set).
+
     python -m benchmarks.heldout.draw_ar [--seed 53000]
 """
 
@@ -170,8 +206,20 @@ from .sets import before
 SEED = 53000
 # a case whose draw proved impossible, drawn again, whole, by the next seed's generator (one per
 # redraw, in this order, after the rest), the pairings of everything drawn before still taken:
-# none yet (the set not yet drawn)
-REDRAWN: tuple[tuple[str, int], ...] = ()
+# none at the draw (every case, none free for its rigs, drew a pairing one of A-AQ ran); at the
+# sizes, seven, in the order found: the belt's unloading's first draw (webbing_slack on SLED, a
+# switch) cost 13.36, above the band; the two-effect case's first draw (brs_eccentric on
+# SLED+FULL beside rib_squeeze on R16) cost 7.38 together with each alone in band, its stepped
+# ring's next size by the rule its own (A-AQ used 0.25-0.49); the late BRS's first delay, 1.88
+# ms, cost 0.59, below the delay's band; the belt's unloading's redraw (a D-ring capstan on
+# SLED) ran away at its first size; its next two (webbing_slack on R16+FULL, 64 and 128 counts)
+# cost 13.63 and 11.36; the late BRS's redraw, 2.01 ms, cost 0.29; webbing_set on SLED, the
+# late BRS at 3.96 ms and pelvis_knee on FULL beside rib_lock on R16 (its second sizes) came in
+# band (see ``cases_ar.py``)
+REDRAWN: tuple[tuple[str, int], ...] = (("belt_unloading", 53001), ("two", 53002),
+                                         ("brs_late", 53003), ("belt_unloading", 53004),
+                                         ("belt_unloading", 53005), ("brs_late", 53006),
+                                         ("belt_unloading", 53007))
 EARLIER = before("ar")
 __all__ = ["BROKEN", "BRS_GAIN", "KINDS", "REDRAWN", "SEED", "TRANSDUCER", "draw", "forms",
            "scopes"]
