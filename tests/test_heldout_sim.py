@@ -37,6 +37,7 @@ from benchmarks.heldout import (
     draw_ao,
     draw_ap,
     draw_aq,
+    draw_ar,
     draw_v,
     draw_w,
     draw_x,
@@ -65,6 +66,7 @@ from benchmarks.heldout.cases_an import BY_NAME_AN, ONE_PHYSICAL_AN
 from benchmarks.heldout.cases_ao import BY_NAME_AO, ONE_PHYSICAL_AO
 from benchmarks.heldout.cases_ap import BY_NAME_AP, ONE_PHYSICAL_AP
 from benchmarks.heldout.cases_aq import BY_NAME_AQ, ONE_PHYSICAL_AQ
+from benchmarks.heldout.cases_ar import BY_NAME_AR, ONE_PHYSICAL_AR
 from benchmarks.heldout.cases_p import BY_NAME_P
 from benchmarks.heldout.cases_q import BY_NAME_Q
 from benchmarks.heldout.cases_r import BY_NAME_R
@@ -3924,9 +3926,9 @@ def set_aa(tmp_path_factory: pytest.TempPathFactory) -> Path:
 
 @pytest.mark.parametrize("letters",
                          ["x", "y", "z", "aa", "ab", "ac", "ad", "ae", "af", "ag", "ah",
-                          "ai", "aj", "ak", "al", "am", "an", "ao", "ap", "aq"])
+                          "ai", "aj", "ak", "al", "am", "an", "ao", "ap", "aq", "ar"])
 def test_a_drawn_set_is_registered(letters: str, tmp_path: Path) -> None:
-    """Sets X-AQ: each is its ``cases_<letters>.SET_<LETTERS>`` under its letters (either
+    """Sets X-AR: each is its ``cases_<letters>.SET_<LETTERS>`` under its letters (either
     case), for sets.select, make_sets and costs, after every set before it."""
     own = getattr(importlib.import_module(f"benchmarks.heldout.cases_{letters}"),
                   f"SET_{letters.upper()}")
@@ -3973,8 +3975,11 @@ def test_sets_before_are_names_not_letters() -> None:
     assert heldout_sets.before("aq") == (*after_aa, "ab", "ac", "ad", "ae", "af", "ag",
                                          "ah", "ai", "aj", "ak", "al", "am", "an", "ao",
                                          "ap")  # A-AP
-    with pytest.raises(ValueError, match="unknown case set 'ar'"):
-        heldout_sets.before("ar")
+    assert heldout_sets.before("ar") == (*after_aa, "ab", "ac", "ad", "ae", "af", "ag",
+                                         "ah", "ai", "aj", "ak", "al", "am", "an", "ao",
+                                         "ap", "aq")  # A-AQ
+    with pytest.raises(ValueError, match="unknown case set 'as'"):
+        heldout_sets.before("as")
     # a draw after AA takes AA's pairings; at this seed, without AA one single draws one of them
     aa = {_pairing(c) for c in SET_AA}
 
@@ -5145,8 +5150,8 @@ def test_set_am_covers_the_general_list() -> None:
 
 
 # the drawn sets whose draw without set AL's reuse stops at the broken test (none free for it,
-# so no estimation test of its to break): set AQ's
-STOPS_WITHOUT_REUSE = ("aq",)
+# so no estimation test of its to break): set AQ's and set AR's
+STOPS_WITHOUT_REUSE = ("aq", "ar")
 
 
 def _follows_set_al_reuse(d: dict, drawn_by: ModuleType, seed: int, set_: str,
@@ -5154,8 +5159,8 @@ def _follows_set_al_reuse(d: dict, drawn_by: ModuleType, seed: int, set_: str,
                           redrawn: list[tuple[str, int]], before: list[cases.Case],
                           by_name: dict[str, cases.Case], reused_names: tuple[str, ...],
                           rejected: list[tuple]) -> None:
-    """What sets AM, AN, AO, AP and AQ, drawn by set AL's process with its reuse, each assert of
-    their draw ``d``: reproducible from ``seed`` after sets A to the one before ``set_``; W's
+    """What sets AM, AN, AO, AP, AQ and AR, drawn by set AL's process with its reuse, each assert
+    of their draw ``d``: reproducible from ``seed`` after sets A to the one before ``set_``; W's
     pools; the singles, the rest and each pairing as drawn; the redraws in the order found; the
     reused pairings those of ``reused_names``; the rejected draws (form or delay, rigs,
     reused)."""
@@ -5602,6 +5607,107 @@ def test_set_aq_has_no_run_aways(set_aq: Path) -> None:
     _no_run_aways(SET_AQ, set_aq)
 
 
+# ------------------------------------------------------------------ set AR (cases_ar.py)
+
+SET_AR = heldout_sets.case_set("ar")
+BEFORE_AR = _cases_of(heldout_sets.before("ar"))
+# the broken test, the transducer error, and every physical case of one effect (its rigs moved,
+# the others untouched)
+WATCHED_AR = ("har_broken_pulse_zero_shift", "har_cd_sag", *ONE_PHYSICAL_AR)
+# the draws found impossible, drawn again by the next seeds in the order found (draw_ar.REDRAWN)
+REDRAWN_AR: list[tuple[str, int]] = [("belt_unloading", 53001), ("two", 53002),
+                                     ("brs_late", 53003), ("belt_unloading", 53004),
+                                     ("belt_unloading", 53005), ("brs_late", 53006),
+                                     ("belt_unloading", 53007)]
+# each rejected draw, in that order: its form (or delay, or forms), rigs and whether its pairing
+# was reused
+REJECTED_AR: list[tuple] = [("webbing_slack", ("SLED",), True),
+                            (("brs_eccentric", "rib_squeeze"), (("SLED", "FULL"), ("R16",)), True),
+                            (0.00188, None, True), ("dring_capstan", ("SLED",), True),
+                            ("webbing_slack", ("R16", "FULL"), True), (0.00201, None, True),
+                            ("webbing_slack", ("R16", "FULL"), True)]
+# the two-effect case
+TWO_AR = "har_two_pelvis_knee_full_lock_r16"
+# the cases on an earlier set's pairing, in the draw's order (none free for their rigs:
+# set AL's reuse rule, taken by draw_ar as it stands): every case of AR
+REUSED_AR = ("har_bilinear_sled_full", "har_visco_full", "har_set_sled", "har_power_full",
+             "har_dual_sled", "har_pelvis_knee_sled_full", "har_eccentric_all", TWO_AR,
+             "har_pulse_late_2p88ms", "har_brs_late_3p96ms", "har_cd_sag",
+             "har_broken_pulse_zero_shift", "har_clean48", "har_clean96")
+# two of them drew the same earlier pairing (the pool A-AQ's, not narrowed by AR's own draws)
+SHARED_AR = (("har_bilinear_sled_full", "har_pelvis_knee_sled_full"),)
+
+
+@pytest.fixture(scope="module")
+def set_ar(tmp_path_factory: pytest.TempPathFactory) -> Path:
+    return _generate(tmp_path_factory, "ar", WATCHED_AR)
+
+
+def test_set_ar_covers_the_general_list() -> None:
+    """Set AR as its brief asks: clean cases at 48 and 96 counts; each kind of the library a
+    loop can name, as physics, once in a case of its own; two effects of different kinds on
+    different rigs in one case; a broken estimation test; a transducer error on CD alone (as
+    drawn); a late pulse and a late BRS at delays in 1-5 ms no earlier set used on any input;
+    6 + 6 tests, every rig an estimation part holds held twice or more; an effect on some rigs
+    only rests on two estimation and two validation tests of them beside an estimation test of
+    a rig it spares."""
+    _covers_the_general_list(SET_AR, BEFORE_AR, "cd", ONE_PHYSICAL_AR, draw_ar.KINDS)
+
+
+def test_set_ar_follows_its_draw() -> None:
+    """Set AR's designer's choices are numpy's default_rng(53000)'s (``draw_ar.py``; seven
+    draws found impossible at the sizes, ``REDRAWN``), followed as drawn: each kind's form,
+    rigs, counts and mix; the two-effect case's kinds, forms, rigs, counts and mix; the delays,
+    their counts and mixes; the transducer error's output, form, counts and mix; the broken
+    test's channel, form, test, counts and mix; the clean cases' mixes. Set AQ's process, no
+    change: any case with no pairing free for its rigs reuses one A-AQ ran, among those its
+    rules allow (every case of AR); every other case takes a free one (run by no earlier set,
+    nor drawn before it)."""
+    d = draw_ar.draw(53000)
+    _follows_set_al_reuse(d, draw_ar, 53000, "ar", SET_AR, ONE_PHYSICAL_AR,
+                          REDRAWN_AR, BEFORE_AR, BY_NAME_AR, REUSED_AR, REJECTED_AR)
+    # two of AR's draws ran the same earlier pairing (the pool is A-AQ's, not narrowed by AR's)
+    assert _pairing(BY_NAME_AR["har_bilinear_sled_full"]) == _pairing(
+        BY_NAME_AR["har_pelvis_knee_sled_full"]) == ((4, 2, 0), (2, 0, 4))
+    assert d["single"]["chest_stiffening"]["reused"] and d["single"]["pelvis_coupling"][
+        "reused"]
+
+
+def test_set_ar_lab_side_is_as_drawn_and_unnamed() -> None:
+    """One broken estimation test, the only thing expected; one transducer error on CD on every
+    test, nothing physical named; AR's physics earlier sets' forms only."""
+    _lab_side_as_drawn(SET_AR, "cd")
+    assert {k for k in _keys(SET_AR) if physics.EFFECTS[k]} <= _keys(BEFORE_AR)
+
+
+@pytest.mark.parametrize("case", sorted(ONE_PHYSICAL_AR))
+def test_set_ar_physics_moves_its_rigs_only(set_ar: Path, case: str) -> None:
+    """Each physical case moves what its form moves on every test of its rigs (the chest's,
+    belt's, bag's and pelvis's forms CR and CD, the pulse untouched; the BRS's off-centre
+    encoder the BRS alone) and leaves the tests of a rig it spares untouched to the bit."""
+    _moves_its_rigs_only(set_ar, BY_NAME_AR[case])
+
+
+def test_set_ar_pulse_zero_shift_stays(set_ar: Path) -> None:
+    """The broken test's tunnel accelerometer shifts its zero by its size at 11 ms and stays
+    shifted (set C's form and check, at this set's size); the other channels and tests as
+    without it."""
+    c = BY_NAME_AR["har_broken_pulse_zero_shift"]
+    assert c.expect_broken == ("R16_011",)
+    _pulse_zero_shift_stays(set_ar, c)
+
+
+def test_set_ar_cd_sag_lowers_cd_with_time_only(set_ar: Path) -> None:
+    """CD reads its own signal x (1 - s (1 - e^(-t/tau))) from the trigger on (within the CFC
+    600 filter and the noise), nothing before it, every test (set W's check, at this set's
+    sag); CR, pulse and BRS untouched."""
+    _cd_sag_lowers_cd_with_time_only(set_ar, BY_NAME_AR["har_cd_sag"])
+
+
+def test_set_ar_has_no_run_aways(set_ar: Path) -> None:
+    _no_run_aways(SET_AR, set_ar)
+
+
 def test_more_tests_doubles_the_estimation_tests_only(tmp_path: Path) -> None:
     """``more_tests``: K times each rig's estimation tests, the validation tests and the
     effects as written, another seed (new crashes), a name that says so; the broken test's name
@@ -5665,9 +5771,9 @@ DRAWN = {"x": (33000, ()), "y": (34000, ()), "z": (35000, (TWO_Z,)),
          "ag": (42000, (TWO_AG,)), "ah": (43000, (TWO_AH,)), "ai": (44000, (TWO_AI,)),
          "aj": (45000, (TWO_AJ,)), "ak": (46000, (TWO_AK,)), "al": (47000, REUSED_AL),
          "am": (48000, REUSED_AM), "an": (49000, REUSED_AN), "ao": (50000, REUSED_AO),
-         "ap": (51000, REUSED_AP), "aq": (52000, REUSED_AQ)}
+         "ap": (51000, REUSED_AP), "aq": (52000, REUSED_AQ), "ar": (53000, REUSED_AR)}
 # the drawn sets whose reused cases drew one earlier pairing twice, by name, a group a pairing
-SHARED = {"aq": SHARED_AQ}
+SHARED = {"aq": SHARED_AQ, "ar": SHARED_AR}
 
 
 @pytest.mark.parametrize("letters", DRAWN)
