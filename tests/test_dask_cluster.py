@@ -13,7 +13,9 @@ import sys
 import threading
 import time
 from collections.abc import Iterator
+from contextlib import contextmanager
 from pathlib import Path
+from typing import Any
 
 import pytest
 
@@ -75,6 +77,23 @@ def _wait_for_workers(address: str, n: int) -> None:
         c.wait_for_workers(n, timeout=120)
 
 
+@contextmanager
+def _client_and_worker(address: str, info: Path, log: Path, env: dict[str, str] | None = None,
+                       *more: str, timeout: str = "30s"
+                       ) -> Iterator[tuple[Any, subprocess.Popen]]:
+    """A Client on the scheduler and one worker of its own, both ended after."""
+    from dask.distributed import Client
+
+    worker = _worker(info, log, env, *more)
+    client = Client(address, timeout=timeout)
+    try:
+        client.wait_for_workers(1, timeout=60)
+        yield client, worker
+    finally:
+        client.close()
+        _stop(worker)
+
+
 def _loop(address: str, out: Path, timeout_s: float = 300) -> subprocess.CompletedProcess:
     return subprocess.run([sys.executable, "-m", "observer_node", "loop", *SMALL, "--out",
                            str(out), "--scheduler", address],
@@ -129,24 +148,15 @@ def test_a_cluster_that_loses_every_worker_mid_run_is_given_up_on(scheduler, tmp
                                                                    monkeypatch):
     """Every worker gone while refits wait (killed, out of memory): one line after
     ``NO_WORKERS_S``, not a wait for ever."""
-    from dask.distributed import Client
-
     address, info, _ = scheduler
-    worker = _worker(info, tmp_path / "w.log")
     monkeypatch.setattr(cl, "NO_WORKERS_S", 3.0)
-    client = Client(address, timeout="30s")
-    try:
-        client.wait_for_workers(1, timeout=60)
+    with _client_and_worker(address, info, tmp_path / "w.log") as (client, worker):
         runner = cl.Runner(client, address)
         t0 = time.monotonic()
-        timer = threading.Timer(3.0, _stop, (worker,))
-        timer.start()
+        threading.Timer(3.0, _stop, (worker,)).start()
         with pytest.raises(cl.ClusterError, match=r"has had no worker for 3 s, 0 of 2 refits"):
             runner.map(time.sleep, [(30,), (30,)])
         assert time.monotonic() - t0 < 25
-    finally:
-        client.close()
-        _stop(worker)
 
 
 @pytest.mark.parametrize("scheduler", ["shadow"], indirect=True)
@@ -168,39 +178,27 @@ def test_a_refit_that_ends_every_worker_it_runs_on_is_one_line(scheduler, tmp_pa
     """A crash inside a refit (a segfault in a compiled library) ends the worker; its nanny
     starts another, Dask tries the refit again and gives up after a few: one line, where
     Dask's KilledWorker was a traceback."""
-    from dask.distributed import Client
-
     address, info, _ = scheduler
-    worker = _worker(info, tmp_path / "w.log")
-    client = Client(address, timeout="30s")
-    try:
-        client.wait_for_workers(1, timeout=60)
+    with _client_and_worker(address, info, tmp_path / "w.log") as (client, _):
         time.sleep(1.0)  # a worker ended before its nanny has started ends the nanny too
         monkeypatch.setattr(cl, "NO_WORKERS_S", 5.0)  # ... so the cluster has none
         with pytest.raises(cl.ClusterError, match=r"ended the Dask worker it ran on, each time"
                                                   r"|has had no worker for 5 s"):
             cl.Runner(client, address).map(os._exit, [(1,)])
-    finally:
-        client.close()
-        _stop(worker)
 
 
 def test_workers_paused_at_their_memory_limit_are_given_up_on(scheduler, tmp_path, monkeypatch):
     """A worker at 80 % of its memory limit pauses and runs nothing: it is there, so a
     check for workers alone waited for ever (a hostile user's loop, 11 minutes silent)."""
-    from dask.distributed import Client
-
     address, info, _ = scheduler
     # a pause threshold its own start-up passes: it pauses at once (and is never ended)
     small = {**os.environ, "DASK_DISTRIBUTED__WORKER__MEMORY__PAUSE": "0.01",
              "DASK_DISTRIBUTED__WORKER__MEMORY__TERMINATE": "False",
              "DASK_DISTRIBUTED__WORKER__MEMORY__TARGET": "False",
              "DASK_DISTRIBUTED__WORKER__MEMORY__SPILL": "False"}
-    worker = _worker(info, tmp_path / "w.log", small, "--memory-limit", "1GB")
     monkeypatch.setattr(cl, "NO_WORKERS_S", 3.0)
-    client = Client(address, timeout="30s")
-    try:
-        client.wait_for_workers(1, timeout=60)
+    with _client_and_worker(address, info, tmp_path / "w.log", small,
+                            "--memory-limit", "1GB") as (client, _):
         deadline = time.monotonic() + 60
         while [w["status"] for w in client.scheduler_info(n_workers=-1)["workers"].values()] \
                 != ["paused"]:
@@ -209,26 +207,15 @@ def test_workers_paused_at_their_memory_limit_are_given_up_on(scheduler, tmp_pat
         with pytest.raises(cl.ClusterError, match=r"every worker \(1\) paused at its memory "
                                                   r"limit for 3 s, 0 of 1 refits done"):
             cl.Runner(client, address).map(time.sleep, [(1,)])
-    finally:
-        client.close()
-        _stop(worker)
 
 
 def test_a_scheduler_lost_mid_run_is_one_line(scheduler, tmp_path):
     """The scheduler killed while refits run: three chained tracebacks before."""
-    from dask.distributed import Client
-
     address, info, sched = scheduler
-    worker = _worker(info, tmp_path / "w.log")
-    client = Client(address, timeout="5s")
-    try:
-        client.wait_for_workers(1, timeout=60)
+    with _client_and_worker(address, info, tmp_path / "w.log", timeout="5s") as (client, _):
         threading.Timer(3.0, _stop, (sched,)).start()
         t0 = time.monotonic()
         with pytest.raises(cl.ClusterError, match=r"lost the Dask scheduler \(tcp://.*\), "
                                                   r"0 of 2 refits done"):
             cl.Runner(client, address).map(time.sleep, [(60,), (60,)])
         assert time.monotonic() - t0 < 45
-    finally:
-        client.close()
-        _stop(worker)
