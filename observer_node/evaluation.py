@@ -78,16 +78,21 @@ def dataset_for(mf: ModelFile, tests: list[CrashTest],
 
 def evaluate_model(mf: ModelFile, tests: list[CrashTest], out_dir: Path | None = None,
                    window_s: tuple[float, float] | None = None, title: str | None = None,
-                   ratings: bool = True) -> Scores:
+                   ratings: bool = True, progress: Progress | None = None) -> Scores:
     """Fits (eq. 3.15-3.18), injury criteria and ISO/TS 18571 ratings (see :func:`scores`)
     of a model on ``tests``; with ``out_dir``, plots and fits.json. For a model with effects
     scoped to setups, the tests' setups are told from their metadata as the loop does."""
+    prog = progress or Progress("evaluate", enabled=False)
     if mf.setups():
         assign_setups(tests)
+    prog.update(f"simulating the model on {len(tests)} test(s)")
     data = dataset_for(mf, tests, window_s)
     y_hat = simulate_model(mf, data)
+    prog.update(f"scoring {len(tests)} test(s): fits, injury criteria"
+                + (", ISO/TS 18571 ratings" if ratings else ""))
     fits = scores(data, y_hat, ratings)
     if out_dir is not None:
+        prog.update("drawing the plots")
         out_dir.mkdir(parents=True, exist_ok=True)
         (out_dir / "fits.json").write_text(json.dumps(fits.as_dict(), indent=1) + "\n")
         _plot_pair(out_dir, title or f"{mf.kind} {mf.name}", data, y_hat, fits, "fit")

@@ -27,6 +27,7 @@ def add_subparser(subparsers: argparse._SubParsersAction[argparse.ArgumentParser
 def _do_evaluate(a: argparse.Namespace) -> int:
     from ..criteria import format_criteria
     from ..evaluation import evaluate_model, format_tables, thesis_comparison
+    from ..ident.progress import Progress
     from ..iso18571 import grade
     from ..model.modelfile import ModelFile
 
@@ -35,7 +36,9 @@ def _do_evaluate(a: argparse.Namespace) -> int:
     if a.model:
         mf = ModelFile.load(a.model)
         with options.staged(out) as tmp:  # without --window, the model's own window
-            fits = evaluate_model(mf, tests, tmp, _data.window(a) if a.window else None)
+            fits = evaluate_model(mf, tests, tmp, _data.window(a) if a.window else None,
+                                  progress=Progress("evaluate", enabled=not a.quiet,
+                                                    every_s=0.0))
         f = fits.fit
         print(f"{mf.kind} model {mf.name!r} on {len(tests)} tests:")
         for name, v in fits.tests.items():
