@@ -2,6 +2,7 @@ from __future__ import annotations
 
 import dataclasses
 import re
+import shutil
 import zipfile
 from pathlib import Path
 
@@ -256,3 +257,37 @@ def test_a_late_trigger_does_not_move_the_pulse_bias(campaign):
     k = round(0.005 * t.fs_hz)
     early = dataclasses.replace(t, pulse_g=np.concatenate([t.pulse_g[k:], t.pulse_g[-k:]]))
     assert early.pulse_bias_g() == pytest.approx(t.pulse_bias_g(), abs=0.3)
+
+
+def test_mme_cut_short_is_said(r16_folder: Path):
+    """A .mme cut mid-file (a copy stopped early) loses its Comments line and with it the BRS
+    resolution: the message says the file ends mid-line rather than only asking for counts."""
+    _edit(r16_folder / "Channel" / "R16_001.002", "BRS, 96 counts/rev", "BRS")
+    mme = r16_folder / "R16_001.mme"
+    mme.write_bytes(mme.read_bytes()[:150])
+    with pytest.raises(CrashDataError,
+                       match=r"counts/rev is unknown.*ends mid-line at line \d+ with no "
+                             r"Comments line after it: cut short\?"):
+        read_isomme(r16_folder)
+
+
+def test_a_campaign_kept_in_folders_is_read_at_any_depth(tmp_path: Path):
+    """A campaign kept by year and setup (campaign/2026/R16/R16_001.zip ...) is read whole, in
+    name order, hidden folders skipped and a link back up read once."""
+    zips = sorted(bundled_campaign().glob("*.zip"))[:3]
+    root = tmp_path / "campaign"
+    for z, sub in zip(zips, ("2025/R16", "2026/FULL", "2026/SLED/night"), strict=True):
+        (root / sub).mkdir(parents=True)
+        shutil.copy(z, root / sub / z.name)
+    (root / ".trash").mkdir()
+    shutil.copy(zips[0], root / ".trash" / "old.zip")
+    (root / "2026" / "up").symlink_to(root)
+    found = find_tests([root])
+    assert [p.relative_to(root).as_posix() for p in found] == [
+        f"2025/R16/{zips[0].name}", f"2026/FULL/{zips[1].name}",
+        f"2026/SLED/night/{zips[2].name}"]
+    (root / "2026" / "up").unlink()
+    for z in root.rglob("*.zip"):
+        z.unlink()
+    with pytest.raises(CrashDataError, match="no crash tests in it or in its folders"):
+        find_tests([root])

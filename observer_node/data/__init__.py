@@ -72,9 +72,9 @@ def _is_test(p: Path) -> bool:
 
 
 def find_tests(paths: list[str | Path]) -> list[Path]:
-    """Expand each path to crash tests: a test (folder, zip, csv, .mme), a folder of tests, or
-    the bundled campaign by name (see :func:`bundled_campaign`; a local file of that name wins).
-    """
+    """Expand each path to crash tests: a test (folder, zip, csv, .mme), a folder of tests or
+    of folders of tests (at any depth), or the bundled campaign by name (see
+    :func:`bundled_campaign`; a local file of that name wins)."""
     found: list[Path] = []
     for raw in paths:
         p = Path(raw)
@@ -87,10 +87,34 @@ def find_tests(paths: list[str | Path]) -> list[Path]:
         if _is_test(p):
             found.append(p)
             continue
-        inner = sorted(c for c in p.iterdir() if not c.name.startswith(".") and _is_test(c))
+        inner = _tests_under(p)
         if not inner:
-            raise CrashDataError(f"{p}: no crash tests in it (ISO-MME folders, .zip or .csv)")
+            raise CrashDataError(f"{p}: no crash tests in it or in its folders (ISO-MME "
+                                 "folders, .zip or .csv)")
         found.extend(inner)
+    return found
+
+
+def _tests_under(folder: Path, seen: set[Path] | None = None) -> list[Path]:
+    """The tests in a folder and, for a folder that is not a test, in its folders (a campaign
+    kept by year or by setup), in name order; hidden files and folders skipped, a folder
+    reached twice (a link back up) read once."""
+    seen = set() if seen is None else seen
+    real = folder.resolve()
+    if real in seen:
+        return []
+    seen.add(real)
+    found: list[Path] = []
+    try:
+        for c in sorted(folder.iterdir()):
+            if c.name.startswith("."):
+                continue
+            if _is_test(c):
+                found.append(c)
+            elif c.is_dir():
+                found.extend(_tests_under(c, seen))
+    except OSError as e:
+        raise CrashDataError(f"{e.filename or folder}: cannot read: {e.strerror or e}") from None
     return found
 
 

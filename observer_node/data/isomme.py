@@ -127,6 +127,7 @@ class _Source:
     def __init__(self, path: Path):
         self.path = path
         self.chosen: str | None = None  # the .mme the user named, when a .mme was given
+        self.cut: set[str] = set()  # text files read whose last line has no line end
         self._zip: zipfile.ZipFile | None = None
         if path.is_file() and path.suffix.lower() == ".zip":
             try:
@@ -170,6 +171,8 @@ class _Source:
             raise CrashDataError(f"{label}: corrupt zip member: {e}") from None
         except OSError as e:
             raise CrashDataError(f"{label}: cannot read: {e.strerror or e}") from None
+        if raw and not raw.endswith((b"\n", b"\r")):
+            self.cut.add(name)
         return decode_text(raw).splitlines()
 
     def find(self, suffix_pattern: str) -> list[str]:
@@ -252,10 +255,20 @@ def _convert(ch: Channel, table: dict[str, float], quantity: str) -> np.ndarray:
     return ch.values * factor
 
 
-def _brs_counts(ch: Channel, counts_per_rev: int | None) -> np.ndarray:
+def _brs_counts(ch: Channel, counts_per_rev: int | None, mme_note: str = "") -> np.ndarray:
     return brs_to_counts(ch.values, ch.get("Unit") or "", counts_per_rev, ch.where("Unit"),
                          str(ch.path), "on the command line (--counts-per-rev) or in the .mme "
-                         "Comments ('96 counts/rev')")
+                         "Comments ('96 counts/rev')" + mme_note)
+
+
+def _mme_note(mme: dict[str, str], lines: int, cut: bool) -> str:
+    """Why the .mme may not say the BRS resolution: no Comments line, or a file cut short
+    (its last line without a line end), which a counts/rev message would otherwise hide."""
+    if cut:
+        return (f"; the .mme ends mid-line at line {lines} with no Comments line after it: "
+                "cut short? (copy it again)" if "Comments" not in mme else
+                f"; the .mme ends mid-line at line {lines}: cut short? (copy it again)")
+    return "" if "Comments" in mme else "; the .mme has no Comments line"
 
 
 def _time_base(ch: Channel, channels: dict[str, Channel]) -> tuple[float, float]:
@@ -300,6 +313,7 @@ def read_isomme(
                                  f"({', '.join(mmes)}); give the .mme of the test to read")
         mme_name = src.chosen or mmes[0]
         mme_lines = src.read(mme_name)
+        mme_cut = mme_name in src.cut
         mme, _, _ = parse_header(mme_lines)
         if not mme:
             raise CrashDataError(f"{src.label(mme_name)}: no 'key :value' lines (empty .mme)")
@@ -401,7 +415,7 @@ def read_isomme(
         fs_hz=1.0 / dt,
         t0_s=t0,
         pulse_g=-_convert(pulse_ch, _ACCEL_TO_G, "acceleration"),
-        brs=_brs_counts(brs_ch, per_rev),
+        brs=_brs_counts(brs_ch, per_rev, _mme_note(mme, len(mme_lines), mme_cut)),
         cr_g=None if cr_ch is None else -_convert(cr_ch, _ACCEL_TO_G, "acceleration"),
         cd_mm=None if cd_ch is None else -_convert(cd_ch, _LENGTH_TO_MM, "length"),
         setup=setup_of(name, mme),
