@@ -29,7 +29,7 @@ from observer_node.loop.report import (
     SetupValidation,
     TriedCandidate,
 )
-from observer_node.loop.report_md import markdown
+from observer_node.loop.report_md import markdown, names
 from observer_node.loop.screening import low_with_rig
 
 EXAMPLE = Path(__file__).parent.parent / "observer_node" / "examples" / "bench-loop"
@@ -278,3 +278,17 @@ def test_a_sensor_effect_says_the_other_transducer_can_read_alike(r16_loop) -> N
     # a lag is read from an input delay, not a static correction: no such line
     lag = SensorEffect("cd", [], "a lag of about 1.5 ms on CD alone", _rule())
     assert "transducer's too" not in markdown(dataclasses.replace(r, sensor_effects=[lag]))
+
+
+def test_a_campaign_s_test_names_are_shortened_in_report_md_not_lost() -> None:
+    """Hundreds of test names were listed three times in report.md (header, setups, an effect's
+    tests): runs of numbers are shortened and past two dozen pieces the rest counted."""
+    assert names(["R16_001", "R16_002", "R16_003", "R16_005", "SLED_001", "SLED_002", "X"]) \
+        == "R16_001..003, R16_005, SLED_001, SLED_002, X"
+    assert names(["a9", "a10", "a11"]) == "a9, a10, a11"  # not one run: the widths differ
+    odd = [f"T{i:03d}" for i in range(1, 200, 2)]
+    text = names(odd)
+    assert text.startswith("T001, T003, ") and text.count(",") == 23
+    assert text.endswith("and 76 more (100 tests; report.json lists each)")
+    campaign = [f"R16_{i:03d}" for i in range(1, 157)]
+    assert names(campaign) == "R16_001..156"

@@ -3,6 +3,8 @@
 
 from __future__ import annotations
 
+import re
+
 from ..ident.metrics import Fits
 from ..model.effects import EFFECTS
 from ..scores import mean_abs_errors
@@ -10,15 +12,50 @@ from .belt_check import BeltPush
 from .report import AcceptedEffect, LoopReport, LoopStep, SensorEffect
 from .screening import BrokenTest
 
+_NUMBERED = re.compile(r"^(.*?)(\d+)$")
+MOST_NAMES = 24  # a campaign's hundreds of names in a table cell are read by nobody
+
+
+def names(tests: list[str]) -> str:
+    """Test names for a reader: runs of consecutive numbers shortened (``R16_001..012``), and
+    past :data:`MOST_NAMES` pieces the rest counted (report.json lists every name)."""
+    pieces: list[str] = []
+    run: list[tuple[str, str]] = []  # (prefix, digits) of consecutive names
+
+    def close() -> None:
+        if len(run) >= 3:
+            pieces.append(f"{run[0][0]}{run[0][1]}..{run[-1][1]}")
+        else:
+            pieces.extend(p + d for p, d in run)
+        run.clear()
+
+    for t in tests:
+        m = _NUMBERED.match(t)
+        if m and run and m[1] == run[-1][0] and len(m[2]) == len(run[-1][1]) \
+                and int(m[2]) == int(run[-1][1]) + 1:
+            run.append((m[1], m[2]))
+            continue
+        close()
+        if m:
+            run.append((m[1], m[2]))
+        else:
+            pieces.append(t)
+    close()
+    if len(pieces) <= MOST_NAMES:
+        return ", ".join(pieces)
+    shown = ", ".join(pieces[:MOST_NAMES])
+    return (f"{shown} and {len(pieces) - MOST_NAMES} more ({len(tests)} tests; report.json "
+            "lists each)")
+
 
 def markdown(r: LoopReport) -> str:
     b, f = r.baseline.fit, r.final.fit
     iso = r.iso18571
     lines = ["# Closed loop: residual, missing effect, refit", "",
-             f"Estimation tests: {', '.join(r.estimation)}  ",
-             f"Validation tests: {', '.join(r.validation)} (fits below are on these)", "",
+             f"Estimation tests: {names(r.estimation)}  ",
+             f"Validation tests: {names(r.validation)} (fits below are on these)", "",
              "## Setups", "", "| setup | tests | from | impossible here |", "|---|---|---|---|"]
-    lines += [f"| {s.name} | {', '.join(s.tests)} | {s.how} | "
+    lines += [f"| {s.name} | {names(s.tests)} | {s.how} | "
               f"{'; '.join(f'{k} ({v})' for k, v in s.impossible.items()) or '-'} |"
               for s in r.setups]
     lines += [f"\n**Check the metadata:** {t} is named like setup {other}'s tests, but its "
@@ -124,7 +161,7 @@ def _markdown_effect(e: AcceptedEffect, carried: bool = False) -> list[str]:
         rival += (("\n" if rival else "") + f"- on {os_.scope} instead it "
                   f"cross-validated {os_.cv_fit:.1f} % ({os_.margin_points:+.1f} "
                   "points from the accepted scope)")
-    where = (f"acts on setups {', '.join(e.setups)}: {', '.join(e.applies_to or [])}"
+    where = (f"acts on setups {', '.join(e.setups)}: {names(e.applies_to or [])}"
              if e.setups is not None else "acts on every test")
     head = [f"## {e.kind}", "", e.description, ""]
     if carried:
