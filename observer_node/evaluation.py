@@ -94,7 +94,11 @@ def evaluate_model(mf: ModelFile, tests: list[CrashTest], out_dir: Path | None =
     if out_dir is not None:
         prog.update("drawing the plots")
         out_dir.mkdir(parents=True, exist_ok=True)
-        (out_dir / "fits.json").write_text(json.dumps(fits.as_dict(), indent=1) + "\n")
+        by_setup = {g: {"tests": n, **f.as_dict()}
+                    for g, (n, f) in fits.by_group(dict(zip(data.names, data.setups,
+                                                            strict=True))).items()}
+        (out_dir / "fits.json").write_text(
+            json.dumps({**fits.as_dict(), "setups": by_setup}, indent=1) + "\n")
         _plot_pair(out_dir, title or f"{mf.kind} {mf.name}", data, y_hat, fits, "fit")
     return fits
 

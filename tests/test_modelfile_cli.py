@@ -89,6 +89,19 @@ def test_cli_identify_then_evaluate(tmp_path: Path, capsys):
     assert set(fits["tests"]) == {"R16_002"} and fits["fit"]["total"] > 50
     assert (out / "fit_cr.png").stat().st_size > 10_000
     assert "R16_002" in capsys.readouterr().out
+    assert fits["setups"] == {"R16": {"tests": 1, **fits["fit"]}}
+    # two setups: each one's fit over its own tests, printed and in fits.json
+    out2 = tmp_path / "ev2"
+    assert main(["evaluate", "--model", str(model), "--data", str(camp / "R16_004.zip"),
+                 str(camp / "R16_006.zip"), str(camp / "SLED_002.zip"), "--out", str(out2),
+                 "--quiet"]) == 0
+    fits2 = json.loads((out2 / "fits.json").read_text())
+    r16 = fits2["setups"]["R16"]
+    assert r16["tests"] == 2 and r16["cr"] == pytest.approx(
+        (fits2["tests"]["R16_004"]["cr"] + fits2["tests"]["R16_006"]["cr"]) / 2)
+    assert fits2["setups"]["SLED"]["tests"] == 1
+    printed = capsys.readouterr().out
+    assert "per setup:" in printed and "(2 tests)" in printed and "(1 test)" in printed
 
 
 def test_cli_reports_bad_data_by_name(tmp_path: Path, capsys):

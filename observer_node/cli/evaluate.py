@@ -44,6 +44,12 @@ def _do_evaluate(a: argparse.Namespace) -> int:
         for name, v in fits.tests.items():
             print(f"  {name:<12} CR {v.cr:6.1f} %  CD {v.cd:6.1f} %")
         print(f"  {'total':<12} CR {f.cr:6.1f} %  CD {f.cd:6.1f} %  TOT {f.total:.1f} %")
+        setups = fits.by_group({t.name: t.setup for t in tests})
+        if len(setups) > 1:
+            print("per setup:")
+            for setup, (n, sf) in sorted(setups.items()):
+                print(f"  {setup:<12} CR {sf.cr:6.1f} %  CD {sf.cd:6.1f} %  TOT {sf.total:.1f} %"
+                      f"  ({n} test{'' if n == 1 else 's'})")
         print("\nchest injury criteria, estimate vs measured (from t = 0):")
         print(format_criteria(fits.criteria))
         iso = fits.iso18571

@@ -60,6 +60,16 @@ class FitTable:
         return {"fit": self.fit.as_dict(),
                 "tests": {n: v.as_dict() for n, v in self.tests.items()}}
 
+    def by_group(self, group_of: dict[str, str]) -> dict[str, tuple[int, Fits]]:
+        """Per group (a setup), its number of tests and its fits, eq. 3.16-3.18 over its tests
+        alone; ``group_of`` maps each test's name to its group."""
+        groups: dict[str, list[OutputFits]] = {}
+        for name, v in self.tests.items():
+            groups.setdefault(group_of[name], []).append(v)
+        return {g: (len(vs), Fits.of(float(np.mean([v.cr for v in vs])),
+                                      float(np.mean([v.cd for v in vs]))))
+                for g, vs in groups.items()}
+
 
 def fit_table(names: list[str], y: np.ndarray, y_hat: np.ndarray) -> FitTable:
     """Fits per test and output and the totals of eq. 3.16-3.18. ``y`` and ``y_hat`` are
