@@ -78,9 +78,11 @@ def dataset_for(mf: ModelFile, tests: list[CrashTest],
 
 def evaluate_model(mf: ModelFile, tests: list[CrashTest], out_dir: Path | None = None,
                    window_s: tuple[float, float] | None = None, title: str | None = None,
-                   ratings: bool = True, progress: Progress | None = None) -> Scores:
+                   ratings: bool = True, progress: Progress | None = None,
+                   left_out: dict[str, str] | None = None) -> Scores:
     """Fits (eq. 3.15-3.18), injury criteria and ISO/TS 18571 ratings (see :func:`scores`)
-    of a model on ``tests``; with ``out_dir``, plots and fits.json. For a model with effects
+    of a model on ``tests``; with ``out_dir``, plots and fits.json (with ``left_out``, the tests
+    left out as bad, path: why). For a model with effects
     scoped to setups, the tests' setups are told from their metadata as the loop does."""
     prog = progress or Progress("evaluate", enabled=False)
     if mf.setups():
@@ -98,7 +100,8 @@ def evaluate_model(mf: ModelFile, tests: list[CrashTest], out_dir: Path | None =
                     for g, (n, f) in fits.by_group(dict(zip(data.names, data.setups,
                                                             strict=True))).items()}
         (out_dir / "fits.json").write_text(
-            json.dumps({**fits.as_dict(), "setups": by_setup}, indent=1) + "\n")
+            json.dumps({**fits.as_dict(), "setups": by_setup,
+                        **({"left_out": left_out} if left_out else {})}, indent=1) + "\n")
         _plot_pair(out_dir, title or f"{mf.kind} {mf.name}", data, y_hat, fits, "fit")
     return fits
 
@@ -115,7 +118,7 @@ def _plot_pair(out_dir: Path, title: str, data: Dataset, y_hat: np.ndarray, fits
 
 def thesis_comparison(tests: list[CrashTest], out_dir: Path, rate_hz: float = 1000.0,
                       window_s: tuple[float, float] = THESIS_WINDOW_S,
-                      verbose: bool = True) -> dict:
+                      verbose: bool = True, left_out: dict[str, str] | None = None) -> dict:
     """Chapter 4 on ``tests``: per setup, estimate five models on one half, score on the
     other. ARX orders are searched on R16 estimation data (as the thesis did) when there is
     any, else per setup. Writes models, plots and evaluation.json to ``out_dir``."""
@@ -128,6 +131,8 @@ def thesis_comparison(tests: list[CrashTest], out_dir: Path, rate_hz: float = 10
     scans: dict[str, dict] = {}
     order_setup = "R16" if "R16" in setups else None
     result: dict = {"rate_hz": rate_hz, "window_s": list(window_s), "setups": {}}
+    if left_out:  # the tests left out as bad (path: why), kept beside the result
+        result["left_out"] = left_out
     order = {"R16": 0, "SLED": 1, "FULL": 2}
     for setup in sorted(setups, key=lambda s: (order.get(s, 3), s)):
         est_tests, val_tests = split_halves(setups[setup])

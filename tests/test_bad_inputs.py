@@ -19,7 +19,7 @@ import numpy as np
 import pytest
 
 from observer_node import cli
-from observer_node.data import CrashDataError
+from observer_node.data import CrashDataError, bundled_campaign
 from observer_node.data.crashtest import brs_to_counts
 from observer_node.evaluation import identify
 from observer_node.ident.dataset import make_dataset
@@ -714,3 +714,58 @@ def test_a_brs_of_whole_turns_or_radians_is_refused_as_counts(unit) -> None:
     turns = -np.arange(40.0) / 96 * (1.0 if unit == "rev" else 2 * np.pi)
     assert np.array_equal(brs_to_counts(turns, unit, 96, "T.002:7 Unit", "T.002", "in the .mme"),
                           -np.arange(40.0))
+
+
+def test_skip_bad_tests_leaves_each_bad_one_out_named_and_goes_on(tmp_path, good_model,
+                                                                  capsys):
+    """A campaign with a dead channel and a file cut short among good tests: by default one
+    stops the run (exit 2, one line); with --skip-bad-tests each is named with its cause on
+    stderr and in the output's JSON, counted, and the rest are fitted and scored."""
+    camp = tmp_path / "campaign"
+    camp.mkdir()
+    for name in ("R16_003", "R16_005", "R16_007"):
+        shutil.copy(bundled_campaign() / f"{name}.zip", camp / f"{name}.zip")
+    dead = camp / "R16_001"
+    shutil.copytree(DATA / "R16_001", dead)
+    p = dead / "Channel/R16_001.004"
+    lines = p.read_text(encoding="iso-8859-1").splitlines()
+    p.write_text("\r\n".join(v if ":" in v or not v else "0.000000E+00" for v in lines)
+                 + "\r\n", encoding="iso-8859-1", newline="")
+    cut = camp / "R16_009.zip"
+    cut.write_bytes((bundled_campaign() / "R16_009.zip").read_bytes()[:3000])
+    out = tmp_path / "out"
+    code = cli.main(["identify", "--model", "greybox", "--data", str(camp), "--out",
+                     str(out / "m.json"), "--quiet"])
+    _expect_one_line_error(code, capsys.readouterr().err, "R16_009.zip: not a readable zip")
+    assert not out.exists()
+
+    code = cli.main(["identify", "--model", "greybox", "--data", str(camp), "--out",
+                     str(out / "m.json"), "--quiet", "--skip-bad-tests"])
+    cap = capsys.readouterr()
+    assert code == 0 and "Traceback" not in cap.err
+    said = [line for line in cap.err.splitlines() if line.startswith("left out")]
+    assert len(said) == 3 and "R16_001: CD is constant" in said[0] and "R16_009.zip" in said[1]
+    assert said[2].startswith("left out 2 of 5 test(s)")
+    model = json.loads((out / "m.json").read_text())
+    assert sorted(model["fitted_on"]["tests"]) == ["R16_003", "R16_005", "R16_007"]
+    assert sorted(Path(k).name for k in model["fitted_on"]["left_out"]) == ["R16_001",
+                                                                             "R16_009.zip"]
+    assert "(2 left out)" in cap.out
+
+    good = tmp_path / "good.json"
+    good.write_text(json.dumps(good_model))
+    code = cli.main(["evaluate", "--model", str(good), "--data", str(camp), "--out",
+                     str(out / "ev"), "--quiet", "--skip-bad-tests"])
+    cap = capsys.readouterr()
+    assert code == 0 and "left out 2 of 5 test(s)" in cap.err
+    fits = json.loads((out / "ev" / "fits.json").read_text())
+    assert sorted(fits["tests"]) == ["R16_003", "R16_005", "R16_007"]
+    assert len(fits["left_out"]) == 2 and "2 left out" in cap.out
+
+    every = tmp_path / "all-bad"
+    every.mkdir()
+    shutil.copy(cut, every / cut.name)
+    code = cli.main(["identify", "--model", "greybox", "--data", str(every), "--out",
+                     str(out / "m2.json"), "--quiet", "--skip-bad-tests"])
+    err = capsys.readouterr().err
+    assert code == 2 and "every one of the 1 test(s) is bad" in err and "Traceback" not in err

@@ -5,13 +5,17 @@ module's."""
 from __future__ import annotations
 
 import argparse
+import sys
 
 from ..data import (
     BUNDLED_NAME,
     ChannelCodes,
+    CrashDataError,
     CrashTest,
     bundled_campaign,
     check_distinct,
+    find_tests,
+    load_test,
     load_tests,
 )
 from ..data.crashtest import THESIS_WINDOW_S
@@ -44,6 +48,12 @@ def add_data_arguments(p: argparse.ArgumentParser, data: str | None) -> None:
                    help=f"chest deflection channel code (default {', '.join(codes.cd)})")
     g.add_argument("--counts-per-rev", type=int, metavar="N",
                    help="BRS counts per spindle revolution (default: from the test's comments)")
+    if data is not None:
+        g.add_argument("--skip-bad-tests", action="store_true",
+                       help="leave out each test that cannot be read or fitted (a damaged "
+                       "file, a dead channel, too short), name it and why on stderr and in "
+                       "the output's JSON, and go on with the rest (default: the first such "
+                       "test stops the run, exit 2)")
     start, end = THESIS_WINDOW_S
     g.add_argument("--window", nargs=2, type=non_negative, metavar=("START", "END"),
                    help=f"scoring window in s from time zero, at least {MIN_WINDOW_S:g} s "
@@ -75,8 +85,33 @@ def window(a: argparse.Namespace) -> tuple[float, float]:
     return (start, end)
 
 
-def load(a: argparse.Namespace) -> list[CrashTest]:
-    """The tests --data names, else the bundled campaign (each crash once)."""
-    tests = load_tests(a.data or [bundled_campaign()], channel_codes(a), a.counts_per_rev)
-    check_distinct(data=tests)
-    return tests
+def load(a: argparse.Namespace) -> tuple[list[CrashTest], dict[str, str]]:
+    """The tests --data names, else the bundled campaign (each crash once), and those left out
+    by --skip-bad-tests (path: why; each also said on stderr)."""
+    paths = a.data or [bundled_campaign()]
+    if not a.skip_bad_tests:
+        every = load_tests(paths, channel_codes(a), a.counts_per_rev)
+        check_distinct(data=every)
+        return every, {}
+    from ..ident.dataset import make_dataset
+
+    found = find_tests(paths)
+    tests: list[CrashTest] = []
+    left_out: dict[str, str] = {}
+    for p in found:
+        try:
+            t = load_test(p, channel_codes(a), a.counts_per_rev)
+            make_dataset([t], a.rate, window(a))  # what a fit or a score checks of one test
+        except CrashDataError as e:
+            left_out[str(p)] = str(e)
+            print(f"left out: {e}", file=sys.stderr)
+            continue
+        tests.append(t)
+    if not tests:
+        raise CrashDataError(f"every one of the {len(found)} test(s) is bad (each named above): "
+                             "nothing left to work on")
+    check_distinct(data=tests)  # one crash twice: which copy to keep, only the user knows
+    if left_out:
+        print(f"left out {len(left_out)} of {len(found)} test(s) (--skip-bad-tests; each named "
+              "above)", file=sys.stderr)
+    return tests, left_out

@@ -32,15 +32,16 @@ def _do_evaluate(a: argparse.Namespace) -> int:
     from ..model.modelfile import ModelFile
 
     out = options.out_folder(a.out)
-    tests = _data.load(a)
+    tests, left_out = _data.load(a)
     if a.model:
         mf = ModelFile.load(a.model)
         with options.staged(out) as tmp:  # without --window, the model's own window
             fits = evaluate_model(mf, tests, tmp, _data.window(a) if a.window else None,
                                   progress=Progress("evaluate", enabled=not a.quiet,
-                                                    every_s=0.0))
+                                                    every_s=0.0), left_out=left_out)
         f = fits.fit
-        print(f"{mf.kind} model {mf.name!r} on {len(tests)} tests:")
+        print(f"{mf.kind} model {mf.name!r} on {len(tests)} tests"
+              + (f" ({len(left_out)} left out, named in fits.json)" if left_out else "") + ":")
         for name, v in fits.tests.items():
             print(f"  {name:<12} CR {v.cr:6.1f} %  CD {v.cd:6.1f} %")
         print(f"  {'total':<12} CR {f.cr:6.1f} %  CD {f.cd:6.1f} %  TOT {f.total:.1f} %")
@@ -63,7 +64,8 @@ def _do_evaluate(a: argparse.Namespace) -> int:
         print(f"wrote {out / 'fits.json'} and plots in {out}")
         return 0
     with options.staged(out) as tmp:
-        result = thesis_comparison(tests, tmp, a.rate, _data.window(a), verbose=not a.quiet)
+        result = thesis_comparison(tests, tmp, a.rate, _data.window(a), verbose=not a.quiet,
+                                   left_out=left_out)
     print(format_tables(result))
     print(f"\nwrote {out / 'evaluation.json'}, models in {out / 'models'}, "
           f"plots in {out / 'plots'}")

@@ -42,7 +42,7 @@ def _do_identify(a: argparse.Namespace) -> int:
     from ..model.modelfile import ModelFile, ModelFileError
 
     out = options.out_file(a.out)
-    tests = _data.load(a)
+    tests, left_out = _data.load(a)
     data = make_dataset(tests, a.rate, _data.window(a))
     t0 = time.monotonic()
     mf = identify(a.model, data, nmax=a.nmax, order=a.order, m1_kg=a.m1,
@@ -52,9 +52,12 @@ def _do_identify(a: argparse.Namespace) -> int:
     except ModelFileError as e:
         raise ModelFileError(f"{e}; not written to {out} (fewer orders: --nmax, --order)"
                              ) from None
+    if left_out:
+        mf.fitted_on["left_out"] = left_out
     mf.save(out)
     f = mf.fits["fit"]
     print(f"{a.model} model on {len(tests)} tests at {a.rate:g} Hz "
+          + (f"({len(left_out)} left out) " if left_out else "") +
           f"({time.monotonic() - t0:.1f} s) -> {a.out}")
     print(f"fit on its estimation tests: CR {f['cr']:.1f} %  CD {f['cd']:.1f} %  "
           f"TOT {f['total']:.1f} %  (not a validation fit)")
