@@ -29,7 +29,8 @@ Per case the loop runs blind at its defaults on 6 estimation + 6 validation test
   and tests improved; "-" where nothing physical is expected). A miss whose truth fails is
   beyond any search over the library: the six estimation tests do not defend it;
 - at the end: how many cases are right, and how many named effects are there and not there,
-  and how many refused or tied effects are there and not there.
+  and how many refused or tied effects are there and not there; how many sensor corrections
+  were named where that output's transducer is not at fault (each makes its case wrong).
 
     python -m benchmarks.loop_heldout
         [--set a|b|...|z|aa|ab|ac|ad|ae|af|ag|ah|ai|aj|ak|al|am|an|ao|ap|aq|ar]
@@ -114,6 +115,14 @@ def _delays(case: Case, rate_hz: float) -> dict[str, float]:
     return out
 
 
+def wrong_sensors(expect_note: str | None, sensor: list[str]) -> list[str]:
+    """The outputs a sensor correction was named on whose transducer is not at fault: every
+    one but the transducer case's own output ("... on cd"). A sensor correction is a finding
+    about a transducer, so one named there makes the case wrong as a physical effect would."""
+    own = expect_note.rsplit(" ", 1)[-1] if expect_note else None
+    return [o for o in sensor if o != own]
+
+
 def run_case(case: Case, sets: Path, work: Path, workers: int | None) -> dict:
     est = load_tests([sets / case.name / "est"])
     val = load_tests([sets / case.name / "val"])
@@ -157,10 +166,14 @@ def run_case(case: Case, sets: Path, work: Path, workers: int | None) -> dict:
         output = case.expect_note.rsplit(" ", 1)[-1]  # "... on cd"
         right = right and (output in sensor or output in unexpl)
         right_judged = right_judged and (output in sensor or output in unexpl)
+    wrong_sensor = wrong_sensors(case.expect_note, sensor)
+    right = right and not wrong_sensor
+    right_judged = right_judged and not wrong_sensor
     row = {"case": case.name, "found": found, "expected": expected, "flagged": flagged,
            "rigs": every, "judged_rigs": judged, "expected_judged": as_judged,
            "right_judged": right_judged,
-           "sensor": sensor, "unexplained": unexpl, "right": right, "tied": tied,
+           "sensor": sensor, "wrong_sensor": wrong_sensor, "unexplained": unexpl,
+           "right": right, "tied": tied,
            "carried": carried, "refused": refused, "refused_unjudged": refused_unjudged,
            "before": r.baseline.fit.total, "after": r.final.fit.total,
            "seconds": seconds, "possible": [f"{p.kind}@{p.scope}" for p in r.possible]}
@@ -383,6 +396,8 @@ def main() -> None:
         where = "there" if there else "not there"
         print(f"named and {where}: {n_named}; refused by the validation tests and {where}: "
               f"{refused}; tied (not named) and {where}: {tied}", flush=True)
+    print("sensor corrections named where that output's transducer is not at fault: "
+          f"{sum(len(r['wrong_sensor']) for r in rows)}", flush=True)
 
 if __name__ == "__main__":
     main()

@@ -2118,3 +2118,16 @@ def test_the_heldout_benchmark_says_how_an_effect_was_named() -> None:
     assert row["told_by_validation"] and row["runner_up"] == "belt_stiffening@SLED"
     assert (row["tests_improved"], row["tests"], row["sign_test_p"]) == (5, 6, 0.109)
     assert row["ci95_points"] == [0.94, 6.58]
+
+
+def test_the_held_out_benchmark_counts_a_sensor_correction_where_no_transducer_is_at_fault():
+    """A sensor correction is a finding about a transducer: the held-out benchmark made a case
+    wrong for a physical effect named and not there, but not for a CR correction named on a
+    BRS encoder's fault (set AR's eccentric ring). Now it is counted, and the case is wrong."""
+    from benchmarks.heldout.cases_aq import UNEXPLAINED_CD
+    from benchmarks.loop_heldout import wrong_sensors
+
+    assert wrong_sensors("", ["cr"]) == ["cr"]  # a physical or clean case
+    assert wrong_sensors("", []) == []
+    assert wrong_sensors(UNEXPLAINED_CD, ["cd"]) == []  # the transducer case's own output
+    assert wrong_sensors(UNEXPLAINED_CD, ["cr", "cd"]) == ["cr"]
