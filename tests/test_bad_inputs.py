@@ -769,3 +769,30 @@ def test_skip_bad_tests_leaves_each_bad_one_out_named_and_goes_on(tmp_path, good
                      str(out / "m2.json"), "--quiet", "--skip-bad-tests"])
     err = capsys.readouterr().err
     assert code == 2 and "every one of the 1 test(s) is bad" in err and "Traceback" not in err
+
+
+def test_the_loop_skip_bad_tests_leaves_an_unreadable_file_out_and_reports_it(tmp_path,
+                                                                              capsys):
+    """One estimation file cut short among a campaign's: the loop stops on it by default (one
+    line, exit 2); with --skip-bad-tests it is named on stderr and under not_read in
+    report.json and report.md, and the loop runs on the rest."""
+    est = tmp_path / "est"
+    est.mkdir()
+    for name in ("R16_001", "R16_003", "R16_005", "R16_007"):
+        shutil.copy(bundled_campaign() / f"{name}.zip", est / f"{name}.zip")
+    cut = est / "R16_009.zip"
+    cut.write_bytes((bundled_campaign() / "R16_009.zip").read_bytes()[:3000])
+    out = tmp_path / "out"
+    argv = ["loop", "--estimate", str(est), "--validate", "campaign-a/R16_00[24]", "--out",
+            str(out), "--quiet", "--workers", "1"]
+    _expect_one_line_error(_exit_code(argv), capsys.readouterr().err, "R16_009.zip: not a")
+    assert not out.exists()
+    assert _exit_code([*argv, "--skip-bad-tests"]) == 0
+    cap = capsys.readouterr()
+    assert "left out 1 of 5 test(s)" in cap.err and "Traceback" not in cap.err
+    report = json.loads((out / "report.json").read_text())
+    assert [w["test"] for w in report["not_read"]] == [str(cut)]
+    assert "not a readable zip" in report["not_read"][0]["reason"]
+    assert report["estimation"] == ["R16_001", "R16_003", "R16_005", "R16_007"]
+    assert "## Test files not read (left out by --skip-bad-tests)" in (
+        out / "report.md").read_text()

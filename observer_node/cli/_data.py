@@ -6,6 +6,7 @@ from __future__ import annotations
 
 import argparse
 import sys
+from pathlib import Path
 
 from ..data import (
     BUNDLED_NAME,
@@ -28,9 +29,11 @@ RATE_HZ = 1000.0  # the DBC's sensor rate: one TunnelAccel frame, one tick per m
 MIN_WINDOW_S = 0.02  # a scoring window shorter than this holds too little of a crash to judge
 
 
-def add_data_arguments(p: argparse.ArgumentParser, data: str | None) -> None:
+def add_data_arguments(p: argparse.ArgumentParser, data: str | None, skip: bool = False
+                       ) -> None:
     """Options that say how to read crash tests; ``data``: "required", "optional" (default the
-    bundled campaign) or None (the command names its tests in other options)."""
+    bundled campaign) or None (the command names its tests in other options); ``skip``:
+    offer --skip-bad-tests without --data."""
     codes = ChannelCodes()
     g = p.add_argument_group("crash-test data")
     if data is not None:
@@ -48,7 +51,7 @@ def add_data_arguments(p: argparse.ArgumentParser, data: str | None) -> None:
                    help=f"chest deflection channel code (default {', '.join(codes.cd)})")
     g.add_argument("--counts-per-rev", type=int, metavar="N",
                    help="BRS counts per spindle revolution (default: from the test's comments)")
-    if data is not None:
+    if data is not None or skip:
         g.add_argument("--skip-bad-tests", action="store_true",
                        help="leave out each test that cannot be read or fitted (a damaged "
                        "file, a dead channel, too short), name it and why on stderr and in "
@@ -88,11 +91,19 @@ def window(a: argparse.Namespace) -> tuple[float, float]:
 def load(a: argparse.Namespace) -> tuple[list[CrashTest], dict[str, str]]:
     """The tests --data names, else the bundled campaign (each crash once), and those left out
     by --skip-bad-tests (path: why; each also said on stderr)."""
-    paths = a.data or [bundled_campaign()]
+    tests, left_out = load_from(a.data or [bundled_campaign()], a, fit_check=True)
+    check_distinct(data=tests)  # one crash twice: which copy to keep, only the user knows
+    return tests, left_out
+
+
+def load_from(paths: list[str | Path], a: argparse.Namespace, fit_check: bool
+              ) -> tuple[list[CrashTest], dict[str, str]]:
+    """The tests under ``paths``; with --skip-bad-tests, those that cannot be read (and, with
+    ``fit_check``, cannot be fitted or scored: a dead channel, too short) left out and
+    returned as path: why, each said on stderr and counted. Without it the first bad test
+    raises :class:`CrashDataError`."""
     if not a.skip_bad_tests:
-        every = load_tests(paths, channel_codes(a), a.counts_per_rev)
-        check_distinct(data=every)
-        return every, {}
+        return load_tests(paths, channel_codes(a), a.counts_per_rev), {}
     from ..ident.dataset import make_dataset
 
     found = find_tests(paths)
@@ -101,7 +112,8 @@ def load(a: argparse.Namespace) -> tuple[list[CrashTest], dict[str, str]]:
     for p in found:
         try:
             t = load_test(p, channel_codes(a), a.counts_per_rev)
-            make_dataset([t], a.rate, window(a))  # what a fit or a score checks of one test
+            if fit_check:
+                make_dataset([t], a.rate, window(a))  # what a fit or a score checks of a test
         except CrashDataError as e:
             left_out[str(p)] = str(e)
             print(f"left out: {e}", file=sys.stderr)
@@ -110,7 +122,6 @@ def load(a: argparse.Namespace) -> tuple[list[CrashTest], dict[str, str]]:
     if not tests:
         raise CrashDataError(f"every one of the {len(found)} test(s) is bad (each named above): "
                              "nothing left to work on")
-    check_distinct(data=tests)  # one crash twice: which copy to keep, only the user knows
     if left_out:
         print(f"left out {len(left_out)} of {len(found)} test(s) (--skip-bad-tests; each named "
               "above)", file=sys.stderr)

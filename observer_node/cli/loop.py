@@ -51,7 +51,7 @@ def add_subparser(subparsers: argparse._SubParsersAction[argparse.ArgumentParser
     s.add_argument("--allow-anywhere", action="store_true",
                    help="try effects on setups whose metadata rules them out too (an airbag "
                    "on a rig that says hard seat or no interior)")
-    _data.add_data_arguments(s, data=None)
+    _data.add_data_arguments(s, data=None, skip=True)
     _data.add_rate_argument(s)
     s.add_argument("--scheduler", metavar="ADDRESS",
                    help="run the refits on the Dask cluster at ADDRESS (tcp://HOST:8786); "
@@ -64,7 +64,7 @@ def add_subparser(subparsers: argparse._SubParsersAction[argparse.ArgumentParser
 
 
 def _do_loop(a: argparse.Namespace) -> int:
-    from ..data import check_distinct, load_tests
+    from ..data import check_distinct
     from ..data.setups import check_groups, parse_groups
     from ..loop.closed_loop import run_loop
     from ..loop.cluster import check_address
@@ -83,15 +83,17 @@ def _do_loop(a: argparse.Namespace) -> int:
     if a.workers is not None and a.scheduler:
         raise UsageError("--workers sets the local cluster's size; a cluster given by "
                          "--scheduler has the workers it has")
-    codes, cpr = _data.channel_codes(a), a.counts_per_rev
-    est = load_tests(a.estimate, codes, cpr)
-    val = load_tests(a.validate, codes, cpr)
+    # the loop screens a test's channels itself (left out with the fits with and without it);
+    # --skip-bad-tests leaves out here only what cannot be read
+    est, est_out = _data.load_from(a.estimate, a, fit_check=False)
+    val, val_out = _data.load_from(a.validate, a, fit_check=False)
     check_distinct(estimation=est, validation=val)
     check_groups(groups, [t.name for t in (*est, *val)])
     with options.staged(out) as tmp:  # an interrupted loop leaves an older report whole
         r = run_loop(est, val, tmp, a.rate, window_s, a.margin,
                      verbose=not a.quiet, groups=groups,
-                     anywhere=a.allow_anywhere, scheduler=a.scheduler, workers=a.workers)
+                     anywhere=a.allow_anywhere, scheduler=a.scheduler, workers=a.workers,
+                     not_read={**est_out, **val_out})
     print((out / "report.md").read_text())
     print(f"wrote {a.out}/report.json, report.md, model.json and plots "
           f"({r.seconds} s)")

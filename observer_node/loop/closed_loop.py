@@ -219,7 +219,8 @@ def run_loop(est_tests: list[CrashTest], val_tests: list[CrashTest], out: Path,
              margin: float = 1.0, top_k: int | None = None, max_effects: int = 4,
              verbose: bool = True, plots: bool = True, ratings: bool = True,
              groups: list[tuple[str, str]] | None = None, anywhere: bool = False,
-             scheduler: str | None = None, workers: int | None = None) -> LoopReport:
+             scheduler: str | None = None, workers: int | None = None,
+             not_read: dict[str, str] | None = None) -> LoopReport:
     """Run the loop and write report.json, report.md, model.json and (``plots``) the plots of
     the validation tests before and after, into ``out``; returns the report. ``ratings``:
     ISO/TS 18571 ratings beside the fits (when the optional package is installed).
@@ -229,18 +230,19 @@ def run_loop(est_tests: list[CrashTest], val_tests: list[CrashTest], out: Path,
     ``groups``: (setup name, test-name pattern) overrides of the setups the metadata gives;
     ``anywhere``: try effects on setups whose metadata rules them out, too. The refits run
     on Dask: the scheduler at ``scheduler``, else a local cluster of ``workers`` processes.
+    ``not_read``: test files the caller left out unread (path: why), kept in the report.
     Raises :class:`CrashDataError` for one crash given twice (a test would score the fit it
     chose) and for too few tests once the broken ones are left out."""
     check_distinct(estimation=est_tests, validation=val_tests)
     with cluster(scheduler, workers) as runner:
         return _run(est_tests, val_tests, out, rate_hz, window_s, margin, top_k, max_effects,
-                    verbose, plots, ratings, groups, anywhere, runner)
+                    verbose, plots, ratings, groups, anywhere, runner, not_read or {})
 
 
 def _run(est_tests: list[CrashTest], val_tests: list[CrashTest], out: Path, rate_hz: float,
          window_s: tuple[float, float], margin: float, top_k: int | None, max_effects: int,
          verbose: bool, plots: bool, ratings: bool, groups: list[tuple[str, str]] | None,
-         anywhere: bool, runner: Runner) -> LoopReport:
+         anywhere: bool, runner: Runner, not_read: dict[str, str]) -> LoopReport:
     t_start = time.monotonic()
     prog = Progress("loop", enabled=verbose)
     setups = assign_setups([*est_tests, *val_tests], groups)
@@ -295,6 +297,7 @@ def _run(est_tests: list[CrashTest], val_tests: list[CrashTest], out: Path, rate
         sensor_effects=st.sensors,
         unexplained=st.left_unexplained or ([] if st.sensors else unexplained(est, y_named)),
         warnings=broken, low_with_rig=scr.low, flagged_kept=scr.kept,
+        not_read=[BrokenTest(path, "file", why) for path, why in not_read.items()],
         left_out=_with_and_without(broken, base, effects, est_tests, val_tests, scr.est_kept,
                                    val, rate_hz, window_s),
         final=ModelFit(Fits(**fit3(final_val)), base, st.base_se),

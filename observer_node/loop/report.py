@@ -424,6 +424,9 @@ class LoopReport:
     # Tests flagged far below the others that could not be left out (too few would remain):
     # kept in the fits (absent from report.json when none)
     flagged_kept: list[BrokenTest] = field(default_factory=list)
+    # Test files left out unread by --skip-bad-tests, path and why (absent from report.json
+    # when none)
+    not_read: list[BrokenTest] = field(default_factory=list)
 
     def as_dict(self) -> dict[str, Any]:
         return {
@@ -439,6 +442,7 @@ class LoopReport:
                if self.low_with_rig else {}),
             **({"flagged_kept": [w.as_dict() for w in self.flagged_kept]}
                if self.flagged_kept else {}),
+            **({"not_read": [w.as_dict() for w in self.not_read]} if self.not_read else {}),
             "left_out": self.left_out.as_dict() if self.left_out is not None else {},
             "final": self.final.as_dict(),
             "setups": [s.as_dict() for s in self.setups],

@@ -227,6 +227,11 @@ def _kept_table(kept: list[BrokenTest], title: str, note: str, why: str) -> list
 def _markdown_findings(r: LoopReport) -> list[str]:
     """Warnings (broken tests), sensor effects, unexplained structure and possible effects."""
     lines: list[str] = []
+    if r.not_read:
+        lines += ["## Test files not read (left out by --skip-bad-tests)", "",
+                  "| file | why |", "|---|---|"]
+        lines += [f"| {w.test} | {w.reason} |" for w in r.not_read]
+        lines.append("")
     if r.warnings:
         lines += ["## Warnings: tests left out of the fits", "",
                   "| test | channel | why |", "|---|---|---|"]
