@@ -163,6 +163,32 @@ X's before it), with sets A-AR as the earlier sets:
    ...) in the order found, after the rest, the pairings of everything drawn before still taken
    (``REDRAWN``; a case with none free, an earlier set's, by the reuse above).
 
+Judged at the sizes by these words (written down with the sizes, after the draw, before any
+loop run; no rule changed, the rules above as they were committed before the first draw): no
+run-away at the first sizes before any cost; then the first sizes costed one at a time in
+``cases_as.py``'s order, none impossible: no switch was drawn, both delays (4.56 ms, 4.61; 2.74
+ms, 1.64) and the transducer error (cd_aa_filter, 42 Hz, 2.01) in their bands, each one-effect
+case in band (the chest's lock, 5.44; the squeeze-film damping, 3.89; the lumbar path, 3.89) or
+out of it with a next size to step to (the webbing's hysteresis, 6.22; the webbing's power,
+6.34; the fabric bag, 6.28; the encoder ring, 7.55); the two-effect case, the webbing's set on
+R16 (0.71) beside the webbing's power on SLED+FULL (1.3), the set alone in band (2.51), the
+power alone above it (6.35), the two together in band (3.93): not rule 4's case of each alone in
+band and the two together out, but set AP's (one alone out of the band with the other alone and
+the two together in it), so the power stepped by 1-2 alone (3.5 points' aim, as set AK judged),
+the set keeping its size, then the two together and each alone costed again; the set alone at
+the power's step is the same run as at the first sizes (its partner's size 0 either way, the
+same case, the same seed), its cost known, 2.51. Then the steps, each case's in
+``cases_as.py``'s order (the webbing's hysteresis 0.36, the webbing's power 0.72, the fabric bag
+0.47, the encoder ring 0.24, the two-effect case's power 0.72), each in band at its first step;
+none proved impossible, so ``REDRAWN`` stays empty and no seed after 54000 drew anything. None
+clipped; none a cost just past an edge. The belt's stiffening's one-effect case and the
+two-effect case's power both step to 0.72: each case is sized on its own (as set AK judged) and
+rule 1's stepping is off A-AR's values (the earlier sets'), not this set's, so the same size in
+two cases of AS is not stepped again. No two cases of AS run the same earlier pairing. Each
+costed size checked against the run-away limits, each pay-out against its rig's median over the
+set's other cases' tests at the first sizes (the sizes kept checked again against the final
+set); none ran away.
+
     python -m benchmarks.heldout.draw_as [--seed 54000]
 """
 
@@ -177,7 +203,10 @@ from .sets import before
 SEED = 54000
 # a case whose draw proved impossible, drawn again, whole, by the next seed's generator (one per
 # redraw, in this order, after the rest), the pairings of everything drawn before still taken:
-# none yet (the set not yet drawn)
+# none at the draw (every case, none free for its rigs, drew a pairing one of A-AR ran); none at
+# the sizes: every first size in band or stepped into it (the webbing's hysteresis, the webbing's
+# power, the fabric bag, the encoder ring, the two-effect case's power alone, each at its first
+# step), no size ran away (see ``cases_as.py``)
 REDRAWN: tuple[tuple[str, int], ...] = ()
 EARLIER = before("as")
 __all__ = ["BROKEN", "BRS_GAIN", "KINDS", "REDRAWN", "SEED", "TRANSDUCER", "draw", "forms",
