@@ -38,6 +38,7 @@ from benchmarks.heldout import (
     draw_ap,
     draw_aq,
     draw_ar,
+    draw_as,
     draw_v,
     draw_w,
     draw_x,
@@ -67,6 +68,7 @@ from benchmarks.heldout.cases_ao import BY_NAME_AO, ONE_PHYSICAL_AO
 from benchmarks.heldout.cases_ap import BY_NAME_AP, ONE_PHYSICAL_AP
 from benchmarks.heldout.cases_aq import BY_NAME_AQ, ONE_PHYSICAL_AQ
 from benchmarks.heldout.cases_ar import BY_NAME_AR, ONE_PHYSICAL_AR
+from benchmarks.heldout.cases_as import BY_NAME_AS, ONE_PHYSICAL_AS
 from benchmarks.heldout.cases_p import BY_NAME_P
 from benchmarks.heldout.cases_q import BY_NAME_Q
 from benchmarks.heldout.cases_r import BY_NAME_R
@@ -3926,9 +3928,10 @@ def set_aa(tmp_path_factory: pytest.TempPathFactory) -> Path:
 
 @pytest.mark.parametrize("letters",
                          ["x", "y", "z", "aa", "ab", "ac", "ad", "ae", "af", "ag", "ah",
-                          "ai", "aj", "ak", "al", "am", "an", "ao", "ap", "aq", "ar"])
+                          "ai", "aj", "ak", "al", "am", "an", "ao", "ap", "aq", "ar",
+                          "as"])
 def test_a_drawn_set_is_registered(letters: str, tmp_path: Path) -> None:
-    """Sets X-AR: each is its ``cases_<letters>.SET_<LETTERS>`` under its letters (either
+    """Sets X-AS: each is its ``cases_<letters>.SET_<LETTERS>`` under its letters (either
     case), for sets.select, make_sets and costs, after every set before it."""
     own = getattr(importlib.import_module(f"benchmarks.heldout.cases_{letters}"),
                   f"SET_{letters.upper()}")
@@ -3978,8 +3981,11 @@ def test_sets_before_are_names_not_letters() -> None:
     assert heldout_sets.before("ar") == (*after_aa, "ab", "ac", "ad", "ae", "af", "ag",
                                          "ah", "ai", "aj", "ak", "al", "am", "an", "ao",
                                          "ap", "aq")  # A-AQ
-    with pytest.raises(ValueError, match="unknown case set 'as'"):
-        heldout_sets.before("as")
+    assert heldout_sets.before("as") == (*after_aa, "ab", "ac", "ad", "ae", "af", "ag",
+                                         "ah", "ai", "aj", "ak", "al", "am", "an", "ao",
+                                         "ap", "aq", "ar")  # A-AR
+    with pytest.raises(ValueError, match="unknown case set 'at'"):
+        heldout_sets.before("at")
     # a draw after AA takes AA's pairings; at this seed, without AA one single draws one of them
     aa = {_pairing(c) for c in SET_AA}
 
@@ -5150,8 +5156,8 @@ def test_set_am_covers_the_general_list() -> None:
 
 
 # the drawn sets whose draw without set AL's reuse stops at the broken test (none free for it,
-# so no estimation test of its to break): set AQ's and set AR's
-STOPS_WITHOUT_REUSE = ("aq", "ar")
+# so no estimation test of its to break): set AQ's, set AR's and set AS's
+STOPS_WITHOUT_REUSE = ("aq", "ar", "as")
 
 
 def _follows_set_al_reuse(d: dict, drawn_by: ModuleType, seed: int, set_: str,
@@ -5159,11 +5165,11 @@ def _follows_set_al_reuse(d: dict, drawn_by: ModuleType, seed: int, set_: str,
                           redrawn: list[tuple[str, int]], before: list[cases.Case],
                           by_name: dict[str, cases.Case], reused_names: tuple[str, ...],
                           rejected: list[tuple]) -> None:
-    """What sets AM, AN, AO, AP, AQ and AR, drawn by set AL's process with its reuse, each assert
-    of their draw ``d``: reproducible from ``seed`` after sets A to the one before ``set_``; W's
-    pools; the singles, the rest and each pairing as drawn; the redraws in the order found; the
-    reused pairings those of ``reused_names``; the rejected draws (form or delay, rigs,
-    reused)."""
+    """What sets AM, AN, AO, AP, AQ, AR and AS, drawn by set AL's process with its reuse, each
+    assert of their draw ``d``: reproducible from ``seed`` after sets A to the one before
+    ``set_``; W's pools; the singles, the rest and each pairing as drawn; the redraws in the
+    order found; the reused pairings those of ``reused_names``; the rejected draws (form or
+    delay, rigs, reused)."""
     assert d == drawn_by.draw()  # reproducible from its seed
     two_letter = string.ascii_lowercase[:string.ascii_lowercase.index(set_[1])]
     earlier = (*string.ascii_lowercase, *(f"a{c}" for c in two_letter))
@@ -5708,6 +5714,94 @@ def test_set_ar_has_no_run_aways(set_ar: Path) -> None:
     _no_run_aways(SET_AR, set_ar)
 
 
+# ------------------------------------------------------------------ set AS (cases_as.py)
+
+SET_AS = heldout_sets.case_set("as")
+BEFORE_AS = _cases_of(heldout_sets.before("as"))
+# the broken test, the transducer error, and every physical case of one effect (its rigs moved,
+# the others untouched)
+WATCHED_AS = ("has_broken_cd_spikes", "has_cd_aa_filter", *ONE_PHYSICAL_AS)
+# the draws found impossible, drawn again by the next seeds in the order found (draw_as.REDRAWN)
+REDRAWN_AS: list[tuple[str, int]] = []
+# each rejected draw, in that order: its form (or delay, or forms), rigs and whether its pairing
+# was reused
+REJECTED_AS: list[tuple] = []
+# the two-effect case
+TWO_AS = "has_two_set_r16_power_sled_full"
+# the cases on an earlier set's pairing, in the draw's order (none free for their rigs:
+# set AL's reuse rule, taken by draw_as as it stands): every case of AS
+REUSED_AS = ("has_lock_r16_full", "has_squeeze_sled", "has_hysteresis_sled_full",
+             "has_power_full", "has_fabric_sled_full", "has_lumbar_all",
+             "has_eccentric_r16_full", TWO_AS, "has_pulse_late_4p56ms", "has_brs_late_2p74ms",
+             "has_cd_aa_filter", "has_broken_cd_spikes", "has_clean48", "has_clean96")
+
+
+@pytest.fixture(scope="module")
+def set_as(tmp_path_factory: pytest.TempPathFactory) -> Path:
+    return _generate(tmp_path_factory, "as", WATCHED_AS)
+
+
+def test_set_as_covers_the_general_list() -> None:
+    """Set AS as its brief asks: clean cases at 48 and 96 counts; each kind of the library a
+    loop can name, as physics, once in a case of its own; two effects of different kinds on
+    different rigs in one case; a broken estimation test; a transducer error on CD alone (as
+    drawn); a late pulse and a late BRS at delays in 1-5 ms no earlier set used on any input;
+    6 + 6 tests, every rig an estimation part holds held twice or more; an effect on some rigs
+    only rests on two estimation and two validation tests of them beside an estimation test of
+    a rig it spares."""
+    _covers_the_general_list(SET_AS, BEFORE_AS, "cd", ONE_PHYSICAL_AS, draw_as.KINDS)
+
+
+def test_set_as_follows_its_draw() -> None:
+    """Set AS's designer's choices are numpy's default_rng(54000)'s (``draw_as.py``; no draw
+    found impossible, ``REDRAWN`` empty), followed as drawn: each kind's form, rigs, counts and
+    mix; the two-effect case's kinds, forms, rigs, counts and mix; the delays, their counts and
+    mixes; the transducer error's output, form, counts and mix; the broken test's channel, form,
+    test, counts and mix; the clean cases' mixes. Set AR's process, no change: any case with no
+    pairing free for its rigs reuses one A-AR ran, among those its rules allow (every case of
+    AS); every other case takes a free one (run by no earlier set, nor drawn before it)."""
+    d = draw_as.draw(54000)
+    _follows_set_al_reuse(d, draw_as, 54000, "as", SET_AS, ONE_PHYSICAL_AS,
+                          REDRAWN_AS, BEFORE_AS, BY_NAME_AS, REUSED_AS, REJECTED_AS)
+    # no two of AS's cases ran the same pairing
+    assert len({_pairing(c) for c in SET_AS}) == len(SET_AS)
+
+
+def test_set_as_lab_side_is_as_drawn_and_unnamed() -> None:
+    """One broken estimation test, the only thing expected; one transducer error on CD on every
+    test, nothing physical named; AS's physics earlier sets' forms only."""
+    _lab_side_as_drawn(SET_AS, "cd")
+    assert {k for k in _keys(SET_AS) if physics.EFFECTS[k]} <= _keys(BEFORE_AS)
+
+
+@pytest.mark.parametrize("case", sorted(ONE_PHYSICAL_AS))
+def test_set_as_physics_moves_its_rigs_only(set_as: Path, case: str) -> None:
+    """Each physical case moves what its form moves on every test of its rigs (the chest's,
+    belt's, bag's and pelvis's forms CR and CD, the pulse untouched; the BRS's off-centre
+    encoder the BRS alone) and leaves the tests of a rig it spares untouched to the bit."""
+    _moves_its_rigs_only(set_as, BY_NAME_AS[case])
+
+
+def test_set_as_cd_spikes_only_at_the_spikes(set_as: Path) -> None:
+    """The broken test's CD spikes at the connector's six times, its twin's between them (set
+    D's form and check, at this set's height), its CR and pulse untouched; every other test
+    untouched."""
+    c = BY_NAME_AS["has_broken_cd_spikes"]
+    assert c.expect_broken == ("SLED_003",)
+    _cd_spikes_only_at_the_spikes(set_as, c)
+
+
+def test_set_as_aa_filter_delays_cd_only(set_as: Path) -> None:
+    """CD reads as its effect-free self through the causal filter (late by its group delay,
+    smoothed), every test (set L's form and check, at this set's corner); CR and the inputs
+    untouched."""
+    _aa_filter_delays_cd_only(set_as, BY_NAME_AS["has_cd_aa_filter"])
+
+
+def test_set_as_has_no_run_aways(set_as: Path) -> None:
+    _no_run_aways(SET_AS, set_as)
+
+
 def test_more_tests_doubles_the_estimation_tests_only(tmp_path: Path) -> None:
     """``more_tests``: K times each rig's estimation tests, the validation tests and the
     effects as written, another seed (new crashes), a name that says so; the broken test's name
@@ -5771,7 +5865,8 @@ DRAWN = {"x": (33000, ()), "y": (34000, ()), "z": (35000, (TWO_Z,)),
          "ag": (42000, (TWO_AG,)), "ah": (43000, (TWO_AH,)), "ai": (44000, (TWO_AI,)),
          "aj": (45000, (TWO_AJ,)), "ak": (46000, (TWO_AK,)), "al": (47000, REUSED_AL),
          "am": (48000, REUSED_AM), "an": (49000, REUSED_AN), "ao": (50000, REUSED_AO),
-         "ap": (51000, REUSED_AP), "aq": (52000, REUSED_AQ), "ar": (53000, REUSED_AR)}
+         "ap": (51000, REUSED_AP), "aq": (52000, REUSED_AQ), "ar": (53000, REUSED_AR),
+         "as": (54000, REUSED_AS)}
 # the drawn sets whose reused cases drew one earlier pairing twice, by name, a group a pairing
 SHARED = {"aq": SHARED_AQ, "ar": SHARED_AR}
 
