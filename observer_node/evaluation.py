@@ -5,13 +5,14 @@ from __future__ import annotations
 
 import json
 import re
+import sys
 from pathlib import Path
 from typing import Any
 
 import numpy as np
 
 from . import plots
-from .data import CrashTest
+from .data import CrashDataError, CrashTest
 from .data.crashtest import THESIS_WINDOW_S
 from .data.setups import assign_setups
 from .ident import arx, greybox, n4sid
@@ -38,6 +39,10 @@ THESIS_TABLES = {
 }
 THESIS_TABLE_NO = {"R16": "4.1", "SLED": "4.2", "FULL": "4.3"}
 MODELS = ("ARX Nmax=10", "ARX Nmax=6", "SS N=16", "SS N=7", "Grey-Box")
+
+
+NOT_COMPARED = ("needs an odd-numbered test to estimate on and an even-numbered one to "
+                "validate on: not compared")
 
 
 def split_halves(tests: list[CrashTest]) -> tuple[list[CrashTest], list[CrashTest]]:
@@ -82,11 +87,21 @@ def evaluate_model(mf: ModelFile, tests: list[CrashTest], out_dir: Path | None =
                    left_out: dict[str, str] | None = None) -> Scores:
     """Fits (eq. 3.15-3.18), injury criteria and ISO/TS 18571 ratings (see :func:`scores`)
     of a model on ``tests``; with ``out_dir``, plots and fits.json (with ``left_out``, the tests
-    left out as bad, path: why). For a model with effects
-    scoped to setups, the tests' setups are told from their metadata as the loop does."""
+    left out as bad, path: why). The tests' setups are told from their metadata as the loop
+    does (each test's ``setup`` set): for the per-setup fits, and for a model with effects
+    scoped to setups; tests of a setup such a model does not know are said on stderr and
+    listed in fits.json."""
     prog = progress or Progress("evaluate", enabled=False)
-    if mf.setups():
-        assign_setups(tests)
+    assign_setups(tests)  # as the loop tells them: the per-setup fits and scoped effects
+    scoped = mf.setups()
+    known = set(scoped) | set(mf.fitted_on.get("setups", []))
+    strangers = sorted({t.setup for t in tests} - known) if scoped else []
+    for setup in strangers:  # a scoped effect acts on no test there: said, not silent
+        names = [t.name for t in tests if t.setup == setup]
+        print(f"evaluate: {', '.join(names)}: setup {setup} (from the tests' metadata) is not "
+              f"one the model knows ({', '.join(sorted(known))}); its effects scoped to "
+              f"{', '.join(scoped)} act on none of them (rename the tests or check the model)",
+              file=sys.stderr)
     prog.update(f"simulating the model on {len(tests)} test(s)")
     data = dataset_for(mf, tests, window_s)
     y_hat = simulate_model(mf, data)
@@ -101,6 +116,7 @@ def evaluate_model(mf: ModelFile, tests: list[CrashTest], out_dir: Path | None =
                                                             strict=True))).items()}
         (out_dir / "fits.json").write_text(
             json.dumps({**fits.as_dict(), "setups": by_setup,
+                        **({"setups_unknown_to_the_model": strangers} if strangers else {}),
                         **({"left_out": left_out} if left_out else {})}, indent=1) + "\n")
         _plot_pair(out_dir, title or f"{mf.kind} {mf.name}", data, y_hat, fits, "fit")
     return fits
@@ -116,6 +132,12 @@ def _plot_pair(out_dir: Path, title: str, data: Dataset, y_hat: np.ndarray, fits
     ]
 
 
+def file_stem(setup: str) -> str:
+    """A setup's name as the start of a file name: letters and digits only, so that no name a
+    test's metadata gives can write outside the output folder."""
+    return re.sub(r"[^a-z0-9]+", "-", setup.lower()).strip("-") or "setup"
+
+
 def thesis_comparison(tests: list[CrashTest], out_dir: Path, rate_hz: float = 1000.0,
                       window_s: tuple[float, float] = THESIS_WINDOW_S,
                       verbose: bool = True, left_out: dict[str, str] | None = None) -> dict:
@@ -129,16 +151,27 @@ def thesis_comparison(tests: list[CrashTest], out_dir: Path, rate_hz: float = 10
     prog = Progress("evaluate", enabled=verbose)
     arx_orders: dict[int, arx.ArxOrders] = {}
     scans: dict[str, dict] = {}
+    # a setup without both an odd- and an even-numbered test has nothing to estimate on or to
+    # score on: said and kept in the result, never dropped in silence
+    alone = {s: [t.name for t in ts] for s, ts in setups.items()
+             if not all(split_halves(ts))}
+    for s, names in alone.items():
+        print(f"evaluate: setup {s} ({', '.join(names)}): {NOT_COMPARED}", file=sys.stderr)
+    setups = {s: ts for s, ts in setups.items() if s not in alone}
+    if not setups:
+        raise CrashDataError("no setup has tests to estimate on (odd-numbered) and to validate "
+                             "on (even-numbered): " + "; ".join(
+                                 f"{s}: {', '.join(n)}" for s, n in alone.items()))
     order_setup = "R16" if "R16" in setups else None
     result: dict = {"rate_hz": rate_hz, "window_s": list(window_s), "setups": {}}
     if left_out:  # the tests left out as bad (path: why), kept beside the result
         result["left_out"] = left_out
+    if alone:
+        result["not_compared"] = alone
     order = {"R16": 0, "SLED": 1, "FULL": 2}
     for setup in sorted(setups, key=lambda s: (order.get(s, 3), s)):
+        stem = file_stem(setup)
         est_tests, val_tests = split_halves(setups[setup])
-        if not est_tests or not val_tests:
-            prog.update(f"{setup}: needs at least two tests, skipped")
-            continue
         est = make_dataset(est_tests, rate_hz, window_s)
         val = make_dataset(val_tests, rate_hz, window_s)
         entry: dict = {"estimation": est.names, "validation": val.names, "models": {}}
@@ -157,15 +190,15 @@ def thesis_comparison(tests: list[CrashTest], out_dir: Path, rate_hz: float = 10
         for label, spec in specs.items():
             prog.update(f"{setup}: {label}")
             slug = re.sub(r"[^a-z0-9]+", "-", label.lower()).strip("-")
-            mf = identify(data=est, name=f"{setup.lower()}-{slug}", **spec)
-            mf.save(out_dir / "models" / f"{setup.lower()}-{slug}.json")
+            mf = identify(data=est, name=f"{stem}-{slug}", **spec)
+            mf.save(out_dir / "models" / f"{stem}-{slug}.json")
             y_hat = simulate_model(mf, val)
             fits = scores(val, y_hat)
             pngs = _plot_pair(out_dir / "plots", f"{setup} {label} (validation)", val, y_hat,
-                              fits, f"{setup.lower()}-{slug}")
+                              fits, f"{stem}-{slug}")
             entry["models"][label] = {
                 "validation": fits.as_dict(), "estimation_fit": mf.fits["fit"],
-                "model_file": f"models/{setup.lower()}-{slug}.json", "plots": pngs,
+                "model_file": f"models/{stem}-{slug}.json", "plots": pngs,
                 **MODEL_KINDS[mf.kind].summary(mf),
             }
         if setup in THESIS_TABLES:
@@ -194,10 +227,10 @@ def _order_scans(est: Dataset, val: Dataset, out_dir: Path, setup: str,
     ss_rows = n4sid.order_scan(est, val, range(1, 21), N4SID_BLOCK_ROWS, prog)
     plots_dir = out_dir / "plots"
     plots_dir.mkdir(parents=True, exist_ok=True)
-    plots.order_scan(plots_dir / f"{setup.lower()}-arx-nmax-scan.png",
+    plots.order_scan(plots_dir / f"{file_stem(setup)}-arx-nmax-scan.png",
                      f"{setup}: iterated ARX, fit_TOT against Nmax (Fig. 3.6)", "Nmax",
                      arx_rows, "nmax")
-    plots.order_scan(plots_dir / f"{setup.lower()}-n4sid-order-scan.png",
+    plots.order_scan(plots_dir / f"{file_stem(setup)}-n4sid-order-scan.png",
                      f"{setup}: N4SID, fit_TOT against order (Fig. 3.7)", "order N",
                      ss_rows, "order")
     return {"arx": arx_rows, "n4sid": ss_rows}
@@ -208,6 +241,8 @@ def format_tables(result: dict) -> str:
     lines = [f"Validation fit (eq. 3.15-3.18) at {result['rate_hz']:g} Hz, window "
              f"{result['window_s'][0]:g}..{result['window_s'][1]:g} s; "
              "thesis = Blåberg (2008) on its own data, for reference"]
+    for setup, names in result.get("not_compared", {}).items():
+        lines.append(f"{setup} setup ({', '.join(names)}): {NOT_COMPARED}")
     for setup, entry in result["setups"].items():
         no = THESIS_TABLE_NO.get(setup)
         lines.append("")

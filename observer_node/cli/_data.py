@@ -20,8 +20,9 @@ from ..data import (
     load_tests,
 )
 from ..data.crashtest import THESIS_WINDOW_S
+from ..data.isomme import MAX_COUNTS_PER_REV
 from ..errors import UsageError
-from ..options import non_negative, positive
+from ..options import int_in, non_negative, positive
 
 TESTS_HELP = (f"an ISO-MME test folder, .zip or .csv, a folder of them, or "
               f"{BUNDLED_NAME}[/PATTERN]")
@@ -49,7 +50,7 @@ def add_data_arguments(p: argparse.ArgumentParser, data: str | None, skip: bool 
                    help=f"chest acceleration channel code (default {', '.join(codes.cr)})")
     g.add_argument("--cd-code", action="append", metavar="CODE",
                    help=f"chest deflection channel code (default {', '.join(codes.cd)})")
-    g.add_argument("--counts-per-rev", type=int, metavar="N",
+    g.add_argument("--counts-per-rev", type=int_in(1, MAX_COUNTS_PER_REV), metavar="N",
                    help="BRS counts per spindle revolution (default: from the test's comments)")
     if data is not None or skip:
         g.add_argument("--skip-bad-tests", action="store_true",
@@ -82,21 +83,25 @@ def window(a: argparse.Namespace) -> tuple[float, float]:
     if not a.window:
         return THESIS_WINDOW_S
     start, end = a.window
-    if end - start < MIN_WINDOW_S:
+    if end - start < MIN_WINDOW_S - 1e-9:  # 0.03 - 0.01 is 0.0199999... in binary
         raise UsageError(f"--window {start:g} {end:g}: END must come at least {MIN_WINDOW_S:g} s "
                          "after START (a crash's chest response lasts about 0.1 s)")
     return (start, end)
 
 
-def load(a: argparse.Namespace) -> tuple[list[CrashTest], dict[str, str]]:
+def load(a: argparse.Namespace, rate_hz: float | None = None,
+         window_s: tuple[float, float] | None = None) -> tuple[list[CrashTest], dict[str, str]]:
     """The tests --data names, else the bundled campaign (each crash once), and those left out
-    by --skip-bad-tests (path: why; each also said on stderr)."""
-    tests, left_out = load_from(a.data or [bundled_campaign()], a, fit_check=True)
+    by --skip-bad-tests (path: why; each also said on stderr), checked at ``rate_hz`` and
+    ``window_s`` (default --rate and --window: a model file's own when it is scored)."""
+    tests, left_out = load_from(a.data or [bundled_campaign()], a, fit_check=True,
+                                rate_hz=rate_hz, window_s=window_s)
     check_distinct(data=tests)  # one crash twice: which copy to keep, only the user knows
     return tests, left_out
 
 
-def load_from(paths: list[str | Path], a: argparse.Namespace, fit_check: bool
+def load_from(paths: list[str | Path], a: argparse.Namespace, fit_check: bool,
+              rate_hz: float | None = None, window_s: tuple[float, float] | None = None
               ) -> tuple[list[CrashTest], dict[str, str]]:
     """The tests under ``paths``; with --skip-bad-tests, those that cannot be read (and, with
     ``fit_check``, cannot be fitted or scored: a dead channel, too short) left out and
@@ -113,10 +118,12 @@ def load_from(paths: list[str | Path], a: argparse.Namespace, fit_check: bool
         try:
             t = load_test(p, channel_codes(a), a.counts_per_rev)
             if fit_check:
-                make_dataset([t], a.rate, window(a))  # what a fit or a score checks of a test
+                # what a fit or a score checks of a test
+                make_dataset([t], rate_hz or a.rate, window_s or window(a))
         except CrashDataError as e:
             left_out[str(p)] = str(e)
-            print(f"left out: {e}", file=sys.stderr)
+            said = str(e) if str(p) in str(e) else f"{p}: {e}"  # each line names its file
+            print(f"left out: {said}", file=sys.stderr)
             continue
         tests.append(t)
     if not tests:

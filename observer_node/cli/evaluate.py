@@ -26,15 +26,18 @@ def add_subparser(subparsers: argparse._SubParsersAction[argparse.ArgumentParser
 
 def _do_evaluate(a: argparse.Namespace) -> int:
     from ..criteria import format_criteria
+    from ..data.crashtest import THESIS_WINDOW_S
     from ..evaluation import evaluate_model, format_tables, thesis_comparison
     from ..ident.progress import Progress
     from ..iso18571 import grade
     from ..model.modelfile import ModelFile
 
     out = options.out_folder(a.out)
-    tests, left_out = _data.load(a)
     if a.model:
         mf = ModelFile.load(a.model)
+        # the tests are checked as they will be scored: at the model's rate and window
+        tests, left_out = _data.load(a, mf.tick_rate_hz, _data.window(a) if a.window else
+                                     tuple(mf.fitted_on.get("window_s", THESIS_WINDOW_S)))
         with options.staged(out) as tmp:  # without --window, the model's own window
             fits = evaluate_model(mf, tests, tmp, _data.window(a) if a.window else None,
                                   progress=Progress("evaluate", enabled=not a.quiet,
@@ -63,6 +66,7 @@ def _do_evaluate(a: argparse.Namespace) -> int:
             print("\n(ISO/TS 18571 ratings: pip install 'chest-observer[iso18571]')")
         print(f"wrote {out / 'fits.json'} and plots in {out}")
         return 0
+    tests, left_out = _data.load(a)
     with options.staged(out) as tmp:
         result = thesis_comparison(tests, tmp, a.rate, _data.window(a), verbose=not a.quiet,
                                    left_out=left_out)

@@ -56,7 +56,8 @@ def _do_identify(a: argparse.Namespace) -> int:
         mf.fitted_on["left_out"] = left_out
     mf.save(out)
     f = mf.fits["fit"]
-    print(f"{a.model} model on {len(tests)} tests at {a.rate:g} Hz "
+    print(f"{a.model} model on {len(tests)} test{'' if len(tests) == 1 else 's'} at "
+          f"{a.rate:g} Hz "
           + (f"({len(left_out)} left out) " if left_out else "") +
           f"({time.monotonic() - t0:.1f} s) -> {a.out}")
     print(f"fit on its estimation tests: CR {f['cr']:.1f} %  CD {f['cd']:.1f} %  "

@@ -65,10 +65,24 @@ def _bundled(raw: str) -> list[Path] | None:
     return chosen
 
 
+TEST_SUFFIXES = (".zip", ".csv", ".mme")
+
+
 def _is_test(p: Path) -> bool:
-    if p.is_file():
-        return p.suffix.lower() in (".zip", ".csv", ".mme")
-    return any(c.suffix.lower() == ".mme" for c in p.iterdir() if c.is_file())
+    """A test's file by its name (a pipe or a broken link so named too: read, it is refused
+    by name), or an ISO-MME test folder: a .mme beside its channel list (``.chn``, in it or
+    in its Channel folder). A .mme alone in a folder of tests is a test of its own, not the
+    folder's (a template beside a campaign)."""
+    if not p.is_dir():
+        return p.suffix.lower() in TEST_SUFFIXES
+    try:
+        files = [c for c in p.iterdir() if c.is_file()]
+        if not any(c.suffix.lower() == ".mme" for c in files):
+            return False
+        return any(c.suffix.lower() == ".chn" for c in files) or any(
+            c.suffix.lower() == ".chn" for d in p.iterdir() if d.is_dir() for c in d.iterdir())
+    except OSError as e:
+        raise CrashDataError(f"{e.filename or p}: cannot read: {e.strerror or e}") from None
 
 
 def find_tests(paths: list[str | Path]) -> list[Path]:
@@ -87,6 +101,9 @@ def find_tests(paths: list[str | Path]) -> list[Path]:
         if _is_test(p):
             found.append(p)
             continue
+        if not p.is_dir():
+            raise CrashDataError(f"{p}: not a crash test (an ISO-MME folder, .zip, .csv or "
+                                 ".mme) nor a folder of them")
         inner = _tests_under(p)
         if not inner:
             raise CrashDataError(f"{p}: no crash tests in it or in its folders (ISO-MME "
@@ -107,7 +124,7 @@ def _tests_under(folder: Path, seen: set[Path] | None = None) -> list[Path]:
     found: list[Path] = []
     try:
         for c in sorted(folder.iterdir()):
-            if c.name.startswith("."):
+            if c.name.startswith(".") or c.name == "__MACOSX":  # hidden, or a Mac's litter
                 continue
             if _is_test(c):
                 found.append(c)
@@ -121,6 +138,9 @@ def _tests_under(folder: Path, seen: set[Path] | None = None) -> list[Path]:
 def load_test(path: str | Path, codes: ChannelCodes | None = None,
               counts_per_rev: int | None = None, require_outputs: bool = True) -> CrashTest:
     p = Path(path)
+    if not (p.is_file() or p.is_dir()):  # a pipe would block the read for ever
+        raise CrashDataError(f"{p}: " + ("a broken link" if p.is_symlink() else
+                                         "not a file (a pipe, socket or device)"))
     if p.suffix.lower() == ".csv":
         test = read_csv(p, counts_per_rev)
         if require_outputs and not test.has_outputs:

@@ -428,9 +428,11 @@ def read_isomme(
 
 
 def setup_of(name: str, mme: dict[str, str]) -> str:
-    """Setup family (R16, SLED, FULL, ...) from the test name prefix, else the test type."""
+    """Setup family (R16, SLED, FULL, ...) from the test name prefix when it is a word of
+    letters and digits (not a number, not a path: a setup names output files), else the test
+    type."""
     prefix = re.split(r"[_\-\s]", name)[0].upper()
-    if prefix and not prefix.isdigit():
+    if re.fullmatch(r"[A-Z0-9]+", prefix) and not prefix.isdigit():
         return prefix
     return (mme.get("Type of the test") or "UNKNOWN").upper()
 

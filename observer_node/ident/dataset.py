@@ -67,12 +67,16 @@ def make_dataset(tests: list[CrashTest], fs_hz: float = 1000.0,
         brss.append(r.brs[sl] * (2 * np.pi / t.counts_per_rev))
         assert r.cr_g is not None and r.cd_mm is not None  # resampled from t's outputs
         y = np.column_stack([r.cr_g[sl], r.cd_mm[sl]])
-        for label, out in zip(("CR", "CD"), y[i0:].T, strict=True):
-            if np.ptp(out) == 0:  # eq. 3.15 divides by its spread: every fit would be NaN
+        inputs = (("crash pulse", pulses[-1][i0:]), ("BRS", brss[-1][i0:]))
+        for label, out in (*inputs, *zip(("CR", "CD"), y[i0:].T, strict=True)):
+            # an output: eq. 3.15 divides by its spread, every fit would be NaN; an input: no
+            # crash drives the model, and a fit would keep its start values as a result
+            if np.ptp(out) == 0:
                 raise CrashDataError(
                     f"{t.source or t.name}: {label} is constant over the scoring window "
                     f"{window_s[0]:g}..{window_s[1]:g} s (a dead or disconnected channel): "
-                    f"no fit can be made or scored on it; leave the test out")
+                    f"no fit can be made or scored on it: leave the test out "
+                    "(--skip-bad-tests)")
         ys.append(y)
     return Dataset([t.name for t in tests], [t.setup for t in tests], fs_hz, np.array(pulses),
                    np.array(brss), np.array(ys), slice(i0, n), window_s)

@@ -19,6 +19,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ..data.crashtest import CrashDataError
 from ..model.modelfile import ModelFile
 from ..model.observer import simulate_ss
 from .dataset import Dataset
@@ -62,8 +63,11 @@ def _subspace(data: Dataset, i: int) -> tuple[np.ndarray, np.ndarray]:
     blocks: dict[str, list[np.ndarray]] = {"Up": [], "Uf": [], "Yp": [], "Yf": []}
     n = data.y.shape[1]
     cols = n - 2 * i + 1
-    if cols < 4 * i:
-        raise ValueError(f"too few samples per test ({n}) for {i} block rows")
+    if cols < 4 * i:  # fewer columns than rows: the projection is not determined
+        raise CrashDataError(
+            f"N4SID ({i} block rows) needs at least {6 * i - 1} ticks per test from time zero "
+            f"to the window's end; {data.window_s[1]:g} s at {data.fs_hz:g} Hz gives {n}: a "
+            "later --window end or a higher --rate")
     for k in range(data.n_tests):
         blocks["Up"].append(_hankel(u[k], i, 0, cols))
         blocks["Uf"].append(_hankel(u[k], i, i, cols))
