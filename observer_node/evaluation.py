@@ -145,6 +145,7 @@ def thesis_comparison(tests: list[CrashTest], out_dir: Path, rate_hz: float = 10
     other. ARX orders are searched on R16 estimation data (as the thesis did) when there is
     any, else per setup. Writes models, plots and evaluation.json to ``out_dir``."""
     out_dir.mkdir(parents=True, exist_ok=True)
+    assign_setups(tests)  # as the loop tells them, from the metadata: not by name alone
     setups: dict[str, list[CrashTest]] = {}
     for t in tests:
         setups.setdefault(t.setup, []).append(t)
