@@ -165,3 +165,12 @@ def test_evaluate_model_tells_setups_from_metadata_and_says_unknown_ones(tmp_pat
     err = capsys.readouterr().err
     assert "is not one the model knows (FULL, R16, SLED)" in err
     assert written["setups_unknown_to_the_model"] == sorted(set(setups.values()))
+
+
+def test_a_brs_in_counts_without_its_resolution_says_how_to_give_it() -> None:
+    """A .mme cut before its Comments line leaves a BRS in counts without counts/rev: the
+    message said only that it was unknown."""
+    t = dataclasses.replace(load_test(_zip("R16_001")), counts_per_rev=None)
+    with pytest.raises(CrashDataError, match=r"counts/rev of the BRS is unknown .*"
+                                             r"--counts-per-rev or in the \.mme Comments"):
+        make_dataset([t])

@@ -49,7 +49,9 @@ def make_dataset(tests: list[CrashTest], fs_hz: float = 1000.0,
         if not t.has_outputs:
             raise CrashDataError(f"{t.source or t.name}: identification needs CR and CD channels")
         if t.counts_per_rev is None:
-            raise CrashDataError(f"{t.source or t.name}: counts/rev of the BRS is unknown")
+            raise CrashDataError(f"{t.source or t.name}: counts/rev of the BRS is unknown "
+                                 "(its counts cannot be turned into an angle): give it with "
+                                 "--counts-per-rev or in the .mme Comments ('96 counts/rev')")
         if t.t0_s > start + 1e-9 or t.time_s[-1] < end - 1e-9:
             raise CrashDataError(
                 f"{t.source or t.name}: covers {t.t0_s:.3f}..{t.time_s[-1]:.3f} s, "
