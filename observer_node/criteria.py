@@ -141,13 +141,14 @@ def criteria_table(names: list[str], y: np.ndarray, y_hat: np.ndarray,
 
 def format_criteria(table: dict[str, CriteriaComparison], indent: str = "  ") -> str:
     """A text table: per test, each criterion estimated, measured, and the error."""
-    head = f"{indent}{'test':<12}" + "".join(
+    w = max([12, *map(len, table)])  # a long test name widens the column
+    head = f"{indent}{'test':<{w}}" + "".join(
         f"{LABELS[k] + ' [' + u + ']':>26}" for k, u in UNITS.items())
-    sub = f"{indent}{'':<12}" + "".join(f"{'est':>9}{'ref':>8}{'err':>9}" for _ in UNITS)
+    sub = f"{indent}{'':<{w}}" + "".join(f"{'est':>9}{'ref':>8}{'err':>9}" for _ in UNITS)
     lines = [head, sub]
     for name, comparison in table.items():
         c = comparison.as_dict()
-        lines.append(f"{indent}{name:<12}" + "".join(
+        lines.append(f"{indent}{name:<{w}}" + "".join(
             f"{c['estimate'][k]:>9.{p}f}{c['reference'][k]:>8.{p}f}{c['error'][k]:>+9.{p}f}"
             for k, p in (("cd_max_mm", 1), ("cr_3ms_g", 1), ("vc_max_m_s", 2))))
     return "\n".join(lines)

@@ -10,6 +10,13 @@ code that catches those still does.
 from __future__ import annotations
 
 
+def one_line(text: str) -> str:
+    """``text`` as one printable line: a control character (a newline or a carriage return in
+    a file's name, say) written as its escape, so that no name can forge a line of its own."""
+    return "".join(c if c.isprintable() else c.encode("unicode_escape").decode("ascii")
+                   for c in text)
+
+
 class ObserverError(Exception):
     """An error the command reports as one line; the message names the file or option."""
 

@@ -24,7 +24,7 @@ from collections import Counter
 from observer_node.dbc import Codec, fd_frame_time_s, frame_bits
 from observer_node.dbc.bus import add_bus_arguments, open_bus
 from observer_node.entry import stopped
-from observer_node.errors import ObserverError, UsageError
+from observer_node.errors import ObserverError, UsageError, one_line
 from observer_node.options import (
     OneLineParser,
     finite,
@@ -84,7 +84,7 @@ def _remap_table(pairs: list[tuple[int, int]]) -> dict[int, int]:
 
 
 def _warn(message: str) -> None:
-    print(f"crash-replay: warning: {message}", file=sys.stderr)
+    print(f"crash-replay: warning: {one_line(message)}", file=sys.stderr)
 
 
 def build_parser() -> argparse.ArgumentParser:
@@ -178,7 +178,7 @@ def main(argv: list[str] | None = None) -> int:
     try:
         return _play(a)
     except ObserverError as e:  # a source or bus that cannot be used: one line, no traceback
-        print(f"crash-replay: error: {e}", file=sys.stderr)
+        print(f"crash-replay: error: {one_line(str(e))}", file=sys.stderr)
         return e.exit_code
     except KeyboardInterrupt as e:  # reading sources or playing; SIGTERM too (the entry's)
         if sys.stderr.isatty():

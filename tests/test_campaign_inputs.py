@@ -174,3 +174,43 @@ def test_a_brs_in_counts_without_its_resolution_says_how_to_give_it() -> None:
     with pytest.raises(CrashDataError, match=r"counts/rev of the BRS is unknown .*"
                                              r"--counts-per-rev or in the \.mme Comments"):
         make_dataset([t])
+
+
+def test_a_file_name_cannot_forge_a_line_on_stderr(tmp_path, capsys):
+    """A newline in a file's name was printed as is: a bad test could write a line of its own,
+    'left out: ...' followed by whatever the name said."""
+    from observer_node.errors import one_line
+
+    assert one_line("a\nb\r\tc\x1b[2Jd\u2028e") == "a\\nb\\r\\tc\\x1b[2Jd\\u2028e"
+    camp = tmp_path / "campaign"
+    camp.mkdir()
+    for name in ("R16_001", "R16_003"):
+        shutil.copy(_zip(name), camp / f"{name}.zip")
+    (camp / "R16_005\nidentify: all 3 tests good.csv").write_text("not a test\n")
+    assert cli.main(["identify", "--model", "greybox", "--data", str(camp), "--out",
+                     str(tmp_path / "m.json"), "--quiet", "--skip-bad-tests"]) == 0
+    lines = capsys.readouterr().err.splitlines()
+    assert not any(line.startswith("identify: all") for line in lines), lines
+    assert any(line.startswith("left out: ") and "R16_005\\nidentify" in line for line in lines)
+
+
+def test_a_long_test_or_setup_name_widens_its_column(tmp_path, capsys):
+    """A setup or test name longer than twelve characters pushed its row's figures right."""
+    tests = [load_test(_zip(n)) for n in ("R16_001", "R16_003")]
+    model = tmp_path / "m.json"
+    identify("greybox", make_dataset(tests, 1000.0, (0.01, 0.18))).save(model)
+    data = tmp_path / "data"
+    data.mkdir()
+    long_name = "CAMPAIGN2019_FRONTAL_R16_002"
+    write_csv(dataclasses.replace(load_test(_zip("R16_002")), name=long_name,
+                                  setup="SLED_WITH_INTERIOR_2019"), data / "a.csv")
+    write_csv(load_test(_zip("R16_004")), data / "b.csv")
+    assert cli.main(["evaluate", "--model", str(model), "--data", str(data), "--out",
+                     str(tmp_path / "ev"), "--quiet"]) == 0
+    out = capsys.readouterr().out
+    fits, criteria = out.split("chest injury criteria")
+    rows = [line for line in fits.splitlines() if " CR " in line]
+    assert any(long_name in r for r in rows) and any("SLED_WITH_INTERIOR_2019" in r for r in rows)
+    assert len({r.index(" CR ") for r in rows}) == 1, out  # the figures in one column
+    table = criteria.split("\n\n")[0].splitlines()[1:]  # head, sub-head, a row per test
+    assert len(table) == 4 and len({len(r.rstrip()) for r in table[1:]}) == 1, out

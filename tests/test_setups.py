@@ -104,6 +104,11 @@ def test_names_without_a_separator_are_grouped_by_metadata_and_overridden_by_gro
     for t in tests:  # no metadata at all: one setup, not one per test
         t.meta = {}
     assert [s.name for s in assign_setups(tests)] == ["UNKNOWN"]
+    for t, rig in zip(tests, ["RIG A"] * 3 + ["CAR"] * 3, strict=True):
+        t.meta = {"setup": rig}  # a CSV's "# setup:" line: said by the file, not guessed
+    assert [(s.name, s.tests, s.how) for s in assign_setups(tests)] == [
+        ("RIG A", ["T01", "T02", "T03"], "the file's setup line"),
+        ("CAR", ["T04", "T05", "T06"], "the file's setup line")]
     with pytest.raises(CrashDataError, match="NAME=PATTERN"):
         parse_groups(["R16"])
 

@@ -30,7 +30,7 @@ import sys
 
 from .. import __version__
 from ..entry import stopped
-from ..errors import ObserverError
+from ..errors import ObserverError, one_line
 from ..options import OneLineParser
 from . import analyze, bench, evaluate, export, export_c, identify, loop, run, simulate
 
@@ -54,7 +54,7 @@ def main(argv: list[str] | None = None) -> int:
     try:
         return int(args.func(args) or 0)
     except ObserverError as e:  # bad input and the like: one line, never a traceback
-        print(f"observer-node: error: {e}", file=sys.stderr)
+        print(f"observer-node: error: {one_line(str(e))}", file=sys.stderr)
         return e.exit_code
     except KeyboardInterrupt as e:  # Ctrl-C, or SIGTERM as the entry point raises it
         return stopped("observer-node", e)
@@ -62,5 +62,5 @@ def main(argv: list[str] | None = None) -> int:
         return 0
     except OSError as e:  # a disk full, a folder that cannot be made: one line naming it
         where = f"{e.filename}: " if e.filename else ""
-        print(f"observer-node: error: {where}{e.strerror or e}", file=sys.stderr)
+        print(f"observer-node: error: {one_line(f'{where}{e.strerror or e}')}", file=sys.stderr)
         return 2

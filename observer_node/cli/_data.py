@@ -21,7 +21,7 @@ from ..data import (
 )
 from ..data.crashtest import THESIS_WINDOW_S
 from ..data.isomme import MAX_COUNTS_PER_REV
-from ..errors import UsageError
+from ..errors import UsageError, one_line
 from ..options import int_in, non_negative, positive
 
 TESTS_HELP = (f"an ISO-MME test folder, .zip or .csv, a folder of them, or "
@@ -123,7 +123,7 @@ def load_from(paths: list[str | Path], a: argparse.Namespace, fit_check: bool,
         except CrashDataError as e:
             left_out[str(p)] = str(e)
             said = str(e) if str(p) in str(e) else f"{p}: {e}"  # each line names its file
-            print(f"left out: {said}", file=sys.stderr)
+            print(f"left out: {one_line(said)}", file=sys.stderr)
             continue
         tests.append(t)
     if not tests:

@@ -45,14 +45,15 @@ def _do_evaluate(a: argparse.Namespace) -> int:
         f = fits.fit
         print(f"{mf.kind} model {mf.name!r} on {len(tests)} tests"
               + (f" ({len(left_out)} left out, named in fits.json)" if left_out else "") + ":")
-        for name, v in fits.tests.items():
-            print(f"  {name:<12} CR {v.cr:6.1f} %  CD {v.cd:6.1f} %")
-        print(f"  {'total':<12} CR {f.cr:6.1f} %  CD {f.cd:6.1f} %  TOT {f.total:.1f} %")
         setups = fits.by_group({t.name: t.setup for t in tests})
+        w = max([12, *map(len, [*fits.tests, *setups])])  # a long name widens the column
+        for name, v in fits.tests.items():
+            print(f"  {name:<{w}} CR {v.cr:6.1f} %  CD {v.cd:6.1f} %")
+        print(f"  {'total':<{w}} CR {f.cr:6.1f} %  CD {f.cd:6.1f} %  TOT {f.total:.1f} %")
         if len(setups) > 1:
             print("per setup:")
             for setup, (n, sf) in sorted(setups.items()):
-                print(f"  {setup:<12} CR {sf.cr:6.1f} %  CD {sf.cd:6.1f} %  TOT {sf.total:.1f} %"
+                print(f"  {setup:<{w}} CR {sf.cr:6.1f} %  CD {sf.cd:6.1f} %  TOT {sf.total:.1f} %"
                       f"  ({n} test{'' if n == 1 else 's'})")
         print("\nchest injury criteria, estimate vs measured (from t = 0):")
         print(format_criteria(fits.criteria))
@@ -60,7 +61,7 @@ def _do_evaluate(a: argparse.Namespace) -> int:
         if iso:
             print("\nISO/TS 18571 overall rating (0..1) on the fit window:")
             for name, r in iso.tests.items():
-                print(f"  {name:<12} CR {r.cr.overall:.3f} ({grade(r.cr.overall)})"
+                print(f"  {name:<{w}} CR {r.cr.overall:.3f} ({grade(r.cr.overall)})"
                       f"  CD {r.cd.overall:.3f} ({grade(r.cd.overall)})")
         else:
             print("\n(ISO/TS 18571 ratings: pip install 'chest-observer[iso18571]')")

@@ -10,8 +10,9 @@ The rule, in order:
    ``_`` or ``-``) all its tests share, when no other setup shares it (R16_001 -> R16), else
    after the fewest leading words (two at least) of its title that tell it apart
    (FULL-FRONTAL).
-3. A test with none of these keys (a CSV without a header) is grouped by its name prefix
-   when the name has one, else it joins setup UNKNOWN.
+3. A test with none of these keys whose file names its setup (a CSV's ``# setup:`` line)
+   joins that setup; one that names none (a CSV without a header) is grouped by its name
+   prefix when the name has one, else it joins setup UNKNOWN.
 
 A test the metadata puts with tests of another name (R16_005 among SLED_*: a copied ``.mme``)
 stays where the metadata says, and its setup names it (``named_elsewhere``) for the report to
@@ -41,7 +42,7 @@ class Setup:
 
     name: str
     tests: list[str]
-    how: str  # "--group PATTERN", "metadata: <key values>" or "name prefix"
+    how: str  # "--group PATTERN", "metadata: <key values>", the file's line or "name prefix"
     text: str = ""  # the metadata the placement rules read
     impossible: dict[str, str] = field(default_factory=dict)  # effect -> why not
     # tests the metadata put here though their name is that of another setup's tests (a
@@ -105,6 +106,9 @@ def assign_setups(tests: list[CrashTest], groups: list[tuple[str, str]] | None =
         elif any(values):
             key = ("meta", *values)
             how.setdefault(key, "metadata: " + "; ".join(v for v in raw if v))
+        elif t.meta.get("setup", "").strip():  # said by the file, not guessed from the name
+            key = ("file", t.meta["setup"].strip())
+            how[key] = "the file's setup line"
         else:
             key = ("prefix", _prefix(t.name) or "UNKNOWN")
             how[key] = "name prefix" if key[1] != "UNKNOWN" else "no metadata, no name prefix"
@@ -148,7 +152,7 @@ def _names(by_key: dict[tuple, list[CrashTest]]) -> dict[tuple, str]:
     names: dict[tuple, str] = {}
     prefixes: dict[tuple, str | None] = {}
     for key, members in by_key.items():
-        if key[0] in ("user", "prefix"):
+        if key[0] in ("user", "file", "prefix"):
             names[key] = key[1]
             continue
         p = {_prefix(t.name) for t in members}
