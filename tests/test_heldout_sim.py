@@ -5815,16 +5815,23 @@ BEFORE_AT = _cases_of(heldout_sets.before("at"))
 # the others untouched)
 WATCHED_AT = ("hat_broken_pulse_from", "hat_cr_damped", *ONE_PHYSICAL_AT)
 # the draws found impossible, drawn again by the next seeds in the order found (draw_at.REDRAWN)
-REDRAWN_AT: list[tuple[str, int]] = []
+REDRAWN_AT: list[tuple[str, int]] = [("pelvis_coupling", 55001), ("two", 55002),
+                                     ("belt_unloading", 55003), ("input_gain", 55004),
+                                     ("two", 55005), ("two", 55006)]
 # each rejected draw, in that order: its form (or delay, or forms), rigs and whether its pairing
 # was reused
-REJECTED_AT: list[tuple] = []
+REJECTED_AT: list[tuple] = [("pelvis_submarine", ("SLED",), True),
+                            (("airbag", "dring_capstan"), (("SLED",), ("FULL",)), True),
+                            ("webbing_slack", ("R16",), True), ("spool_buildup", ("SLED",), True),
+                            (("pelvis_submarine", "webbing_slack"), (("FULL",), ("SLED",)), True),
+                            (("rib_bumper", "webbing_slack"), (("R16", "SLED"), ("FULL",)),
+                             True)]
 # the two-effect case
-TWO_AT = "hat_two_airbag_sled_capstan_full"
+TWO_AT = "hat_two_hardening_full_dual_sled"
 # the cases on an earlier set's pairing, in the draw's order (none free for their rigs:
 # set AL's reuse rule, taken by draw_at as it stands): every case of AT
-REUSED_AT = ("hat_fung_all", "hat_loss_sled", "hat_slack_r16", "hat_knee_r16",
-             "hat_sealed_sled_full", "hat_submarine_sled", "hat_spool_sled", TWO_AT,
+REUSED_AT = ("hat_fung_all", "hat_loss_sled", "hat_set_sled", "hat_knee_r16",
+             "hat_sealed_sled_full", "hat_lumbar_r16_full", "hat_eccentric_sled", TWO_AT,
              "hat_pulse_late_4p78ms", "hat_brs_late_2p66ms", "hat_cr_damped",
              "hat_broken_pulse_from", "hat_clean48", "hat_clean96")
 
@@ -5846,13 +5853,14 @@ def test_set_at_covers_the_general_list() -> None:
 
 
 def test_set_at_follows_its_draw() -> None:
-    """Set AT's designer's choices are numpy's default_rng(55000)'s (``draw_at.py``; no draw
-    found impossible, ``REDRAWN`` empty), followed as drawn: each kind's form, rigs, counts and
-    mix; the two-effect case's kinds, forms, rigs, counts and mix; the delays, their counts and
-    mixes; the transducer error's output, form, counts and mix; the broken test's channel, form,
-    test, counts and mix; the clean cases' mixes. Set AS's process, no change: any case with no
-    pairing free for its rigs reuses one A-AS ran, among those its rules allow (every case of
-    AT); every other case takes a free one (run by no earlier set, nor drawn before it)."""
+    """Set AT's designer's choices are numpy's default_rng(55000)'s (``draw_at.py``; six draws
+    found impossible at the sizes, ``REDRAWN``), followed as drawn: each kind's form, rigs,
+    counts and mix; the two-effect case's kinds, forms, rigs, counts and mix; the delays, their
+    counts and mixes; the transducer error's output, form, counts and mix; the broken test's
+    channel, form, test, counts and mix; the clean cases' mixes. Set AS's process, no change:
+    any case with no pairing free for its rigs reuses one A-AS ran, among those its rules allow
+    (every case of AT); every other case takes a free one (run by no earlier set, nor drawn
+    before it)."""
     d = draw_at.draw(55000)
     _follows_set_al_reuse(d, draw_at, 55000, "at", SET_AT, ONE_PHYSICAL_AT,
                           REDRAWN_AT, BEFORE_AT, BY_NAME_AT, REUSED_AT, REJECTED_AT)
