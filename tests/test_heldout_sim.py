@@ -39,6 +39,7 @@ from benchmarks.heldout import (
     draw_aq,
     draw_ar,
     draw_as,
+    draw_at,
     draw_v,
     draw_w,
     draw_x,
@@ -69,6 +70,7 @@ from benchmarks.heldout.cases_ap import BY_NAME_AP, ONE_PHYSICAL_AP
 from benchmarks.heldout.cases_aq import BY_NAME_AQ, ONE_PHYSICAL_AQ
 from benchmarks.heldout.cases_ar import BY_NAME_AR, ONE_PHYSICAL_AR
 from benchmarks.heldout.cases_as import BY_NAME_AS, ONE_PHYSICAL_AS
+from benchmarks.heldout.cases_at import BY_NAME_AT, ONE_PHYSICAL_AT
 from benchmarks.heldout.cases_p import BY_NAME_P
 from benchmarks.heldout.cases_q import BY_NAME_Q
 from benchmarks.heldout.cases_r import BY_NAME_R
@@ -3929,9 +3931,9 @@ def set_aa(tmp_path_factory: pytest.TempPathFactory) -> Path:
 @pytest.mark.parametrize("letters",
                          ["x", "y", "z", "aa", "ab", "ac", "ad", "ae", "af", "ag", "ah",
                           "ai", "aj", "ak", "al", "am", "an", "ao", "ap", "aq", "ar",
-                          "as"])
+                          "as", "at"])
 def test_a_drawn_set_is_registered(letters: str, tmp_path: Path) -> None:
-    """Sets X-AS: each is its ``cases_<letters>.SET_<LETTERS>`` under its letters (either
+    """Sets X-AT: each is its ``cases_<letters>.SET_<LETTERS>`` under its letters (either
     case), for sets.select, make_sets and costs, after every set before it."""
     own = getattr(importlib.import_module(f"benchmarks.heldout.cases_{letters}"),
                   f"SET_{letters.upper()}")
@@ -3984,8 +3986,11 @@ def test_sets_before_are_names_not_letters() -> None:
     assert heldout_sets.before("as") == (*after_aa, "ab", "ac", "ad", "ae", "af", "ag",
                                          "ah", "ai", "aj", "ak", "al", "am", "an", "ao",
                                          "ap", "aq", "ar")  # A-AR
-    with pytest.raises(ValueError, match="unknown case set 'at'"):
-        heldout_sets.before("at")
+    assert heldout_sets.before("at") == (*after_aa, "ab", "ac", "ad", "ae", "af", "ag",
+                                         "ah", "ai", "aj", "ak", "al", "am", "an", "ao",
+                                         "ap", "aq", "ar", "as")  # A-AS
+    with pytest.raises(ValueError, match="unknown case set 'au'"):
+        heldout_sets.before("au")
     # a draw after AA takes AA's pairings; at this seed, without AA one single draws one of them
     aa = {_pairing(c) for c in SET_AA}
 
@@ -5156,8 +5161,8 @@ def test_set_am_covers_the_general_list() -> None:
 
 
 # the drawn sets whose draw without set AL's reuse stops at the broken test (none free for it,
-# so no estimation test of its to break): set AQ's, set AR's and set AS's
-STOPS_WITHOUT_REUSE = ("aq", "ar", "as")
+# so no estimation test of its to break): set AQ's, set AR's, set AS's and set AT's
+STOPS_WITHOUT_REUSE = ("aq", "ar", "as", "at")
 
 
 def _follows_set_al_reuse(d: dict, drawn_by: ModuleType, seed: int, set_: str,
@@ -5165,8 +5170,8 @@ def _follows_set_al_reuse(d: dict, drawn_by: ModuleType, seed: int, set_: str,
                           redrawn: list[tuple[str, int]], before: list[cases.Case],
                           by_name: dict[str, cases.Case], reused_names: tuple[str, ...],
                           rejected: list[tuple]) -> None:
-    """What sets AM, AN, AO, AP, AQ, AR and AS, drawn by set AL's process with its reuse, each
-    assert of their draw ``d``: reproducible from ``seed`` after sets A to the one before
+    """What sets AM, AN, AO, AP, AQ, AR, AS and AT, drawn by set AL's process with its reuse,
+    each assert of their draw ``d``: reproducible from ``seed`` after sets A to the one before
     ``set_``; W's pools; the singles, the rest and each pairing as drawn; the redraws in the
     order found; the reused pairings those of ``reused_names``; the rejected draws (form or
     delay, rigs, reused)."""
@@ -5802,6 +5807,113 @@ def test_set_as_has_no_run_aways(set_as: Path) -> None:
     _no_run_aways(SET_AS, set_as)
 
 
+# ------------------------------------------------------------------ set AT (cases_at.py)
+
+SET_AT = heldout_sets.case_set("at")
+BEFORE_AT = _cases_of(heldout_sets.before("at"))
+# the broken test, the transducer error, and every physical case of one effect (its rigs moved,
+# the others untouched)
+WATCHED_AT = ("hat_broken_pulse_from", "hat_cr_damped", *ONE_PHYSICAL_AT)
+# the draws found impossible, drawn again by the next seeds in the order found (draw_at.REDRAWN)
+REDRAWN_AT: list[tuple[str, int]] = [("pelvis_coupling", 55001), ("two", 55002),
+                                     ("belt_unloading", 55003), ("input_gain", 55004),
+                                     ("two", 55005), ("two", 55006)]
+# each rejected draw, in that order: its form (or delay, or forms), rigs and whether its pairing
+# was reused
+REJECTED_AT: list[tuple] = [("pelvis_submarine", ("SLED",), True),
+                            (("airbag", "dring_capstan"), (("SLED",), ("FULL",)), True),
+                            ("webbing_slack", ("R16",), True), ("spool_buildup", ("SLED",), True),
+                            (("pelvis_submarine", "webbing_slack"), (("FULL",), ("SLED",)), True),
+                            (("rib_bumper", "webbing_slack"), (("R16", "SLED"), ("FULL",)),
+                             True)]
+# the two-effect case
+TWO_AT = "hat_two_hardening_full_dual_sled"
+# the cases on an earlier set's pairing, in the draw's order (none free for their rigs:
+# set AL's reuse rule, taken by draw_at as it stands): every case of AT
+REUSED_AT = ("hat_fung_all", "hat_loss_sled", "hat_set_sled", "hat_knee_r16",
+             "hat_sealed_sled_full", "hat_lumbar_r16_full", "hat_eccentric_sled", TWO_AT,
+             "hat_pulse_late_4p78ms", "hat_brs_late_2p66ms", "hat_cr_damped",
+             "hat_broken_pulse_from", "hat_clean48", "hat_clean96")
+
+
+@pytest.fixture(scope="module")
+def set_at(tmp_path_factory: pytest.TempPathFactory) -> Path:
+    return _generate(tmp_path_factory, "at", WATCHED_AT)
+
+
+def test_set_at_covers_the_general_list() -> None:
+    """Set AT as its brief asks: clean cases at 48 and 96 counts; each kind of the library a
+    loop can name, as physics, once in a case of its own; two effects of different kinds on
+    different rigs in one case; a broken estimation test; a transducer error on CR alone (as
+    drawn); a late pulse and a late BRS at delays in 1-5 ms no earlier set used on any input;
+    6 + 6 tests, every rig an estimation part holds held twice or more; an effect on some rigs
+    only rests on two estimation and two validation tests of them beside an estimation test of
+    a rig it spares."""
+    _covers_the_general_list(SET_AT, BEFORE_AT, "cr", ONE_PHYSICAL_AT, draw_at.KINDS)
+
+
+def test_set_at_follows_its_draw() -> None:
+    """Set AT's designer's choices are numpy's default_rng(55000)'s (``draw_at.py``; six draws
+    found impossible at the sizes, ``REDRAWN``), followed as drawn: each kind's form, rigs,
+    counts and mix; the two-effect case's kinds, forms, rigs, counts and mix; the delays, their
+    counts and mixes; the transducer error's output, form, counts and mix; the broken test's
+    channel, form, test, counts and mix; the clean cases' mixes. Set AS's process, no change:
+    any case with no pairing free for its rigs reuses one A-AS ran, among those its rules allow
+    (every case of AT); every other case takes a free one (run by no earlier set, nor drawn
+    before it)."""
+    d = draw_at.draw(55000)
+    _follows_set_al_reuse(d, draw_at, 55000, "at", SET_AT, ONE_PHYSICAL_AT,
+                          REDRAWN_AT, BEFORE_AT, BY_NAME_AT, REUSED_AT, REJECTED_AT)
+    # no two of AT's cases ran the same pairing
+    assert len({_pairing(c) for c in SET_AT}) == len(SET_AT)
+
+
+def test_set_at_lab_side_is_as_drawn_and_unnamed() -> None:
+    """One broken estimation test, the only thing expected; one transducer error on CR on every
+    test, nothing physical named; AT's physics earlier sets' forms only."""
+    _lab_side_as_drawn(SET_AT, "cr")
+    assert {k for k in _keys(SET_AT) if physics.EFFECTS[k]} <= _keys(BEFORE_AT)
+
+
+@pytest.mark.parametrize("case", sorted(ONE_PHYSICAL_AT))
+def test_set_at_physics_moves_its_rigs_only(set_at: Path, case: str) -> None:
+    """Each physical case moves what its form moves on every test of its rigs (the chest's,
+    belt's, bag's, pelvis's and spool's forms CR and CD, the pulse untouched) and leaves the
+    tests of a rig it spares untouched to the bit."""
+    _moves_its_rigs_only(set_at, BY_NAME_AT[case])
+
+
+def test_set_at_pulse_from_is_the_other_tests_pulse(set_at: Path) -> None:
+    """The broken test's pulse is the crash of the test two places on in the case (R16_002, a
+    validation test; its own lab noise on it), far from its own (set K's form and check, at
+    this set's offset); its other channels and every other test untouched."""
+    c = BY_NAME_AT["hat_broken_pulse_from"]
+    assert c.expect_broken == ("FULL_005",)
+    (broken,) = c.expect_broken
+    est, val = cases.test_names(c)
+    assert [*est, *val][[*est, *val].index(broken) + 2] == "R16_002"
+    on, off = set_at / "on" / c.name, set_at / "off" / c.name
+    bad, own, donor = (_channel(on, broken, "pulse"), _channel(off, broken, "pulse"),
+                       _channel(off, "R16_002", "pulse"))
+    assert np.corrcoef(bad, donor)[0, 1] > 0.99
+    assert np.abs(bad - donor).max() < 5.0 < np.abs(bad - own).max()
+    for which in ("cr", "cd"):
+        assert np.array_equal(_channel(on, broken, which), _channel(off, broken, which))
+    assert np.array_equal(_brs(on, broken), _brs(off, broken))
+    _others_untouched(set_at, c.name, broken)
+
+
+def test_set_at_cr_damped_lags_cr_only(set_at: Path) -> None:
+    """CR reads its own signal through the damped element (within the CFC 180 filter and the
+    noise, which the element filters too), later at its peak (set O's check, at this set's
+    natural frequency), every test; CD, pulse and BRS untouched."""
+    _cr_damped_lags_cr_only(set_at, BY_NAME_AT["hat_cr_damped"])
+
+
+def test_set_at_has_no_run_aways(set_at: Path) -> None:
+    _no_run_aways(SET_AT, set_at)
+
+
 def test_more_tests_doubles_the_estimation_tests_only(tmp_path: Path) -> None:
     """``more_tests``: K times each rig's estimation tests, the validation tests and the
     effects as written, another seed (new crashes), a name that says so; the broken test's name
@@ -5866,7 +5978,7 @@ DRAWN = {"x": (33000, ()), "y": (34000, ()), "z": (35000, (TWO_Z,)),
          "aj": (45000, (TWO_AJ,)), "ak": (46000, (TWO_AK,)), "al": (47000, REUSED_AL),
          "am": (48000, REUSED_AM), "an": (49000, REUSED_AN), "ao": (50000, REUSED_AO),
          "ap": (51000, REUSED_AP), "aq": (52000, REUSED_AQ), "ar": (53000, REUSED_AR),
-         "as": (54000, REUSED_AS)}
+         "as": (54000, REUSED_AS), "at": (55000, REUSED_AT)}
 # the drawn sets whose reused cases drew one earlier pairing twice, by name, a group a pairing
 SHARED = {"aq": SHARED_AQ, "ar": SHARED_AR}
 

@@ -39,7 +39,8 @@ set AN by another engineer, its choices drawn, set AN's way), set AP (``cases_ap
 set AO by another engineer, its choices drawn, set AO's way), set AQ (``cases_aq``, written after
 set AP by another engineer, its choices drawn, set AP's way), set AR (``cases_ar``, written after
 set AQ by another engineer, its choices drawn, set AQ's way), set AS (``cases_as``, written after
-set AR by another engineer, its choices drawn, set AR's way)."""
+set AR by another engineer, its choices drawn, set AR's way), set AT (``cases_at``, written after
+set AS by another engineer, its choices drawn, set AS's way)."""
 
 from __future__ import annotations
 
@@ -63,6 +64,7 @@ from .cases_ap import SET_AP
 from .cases_aq import SET_AQ
 from .cases_ar import SET_AR
 from .cases_as import SET_AS
+from .cases_at import SET_AT
 from .cases_b import SET_B
 from .cases_c import SET_C
 from .cases_d import SET_D
@@ -99,7 +101,7 @@ _BY_NAME: dict[str, list[Case]] = {
     "af": SET_AF, "ag": SET_AG, "ah": SET_AH, "ai": SET_AI,
     "aj": SET_AJ, "ak": SET_AK, "al": SET_AL, "am": SET_AM,
     "an": SET_AN, "ao": SET_AO, "ap": SET_AP, "aq": SET_AQ, "ar": SET_AR,
-    "as": SET_AS}
+    "as": SET_AS, "at": SET_AT}
 SETS = tuple(_BY_NAME)
 
 
@@ -130,19 +132,21 @@ def before(name: str) -> tuple[str, ...]:
     ``"al"``, ``"am"``, ``"an"``, ``"ao"``, ``"ap"`` and ``"aq"``; before set AS, those,
     ``"aa"``, ``"ab"``, ``"ac"``, ``"ad"``, ``"ae"``, ``"af"``, ``"ag"``, ``"ah"``, ``"ai"``,
     ``"aj"``, ``"ak"``, ``"al"``, ``"am"``, ``"an"``, ``"ao"``, ``"ap"``, ``"aq"`` and
-    ``"ar"``); ValueError for an unknown name. Names, not letters: set AA is one set, not set A
-    twice."""
+    ``"ar"``; before set AT, those, ``"aa"``, ``"ab"``, ``"ac"``, ``"ad"``, ``"ae"``, ``"af"``,
+    ``"ag"``, ``"ah"``, ``"ai"``, ``"aj"``, ``"ak"``, ``"al"``, ``"am"``, ``"an"``, ``"ao"``,
+    ``"ap"``, ``"aq"``, ``"ar"`` and ``"as"``); ValueError for an unknown name. Names, not
+    letters: set AA is one set, not set A twice."""
     _known(name)
     return SETS[:SETS.index(name)]
 
 
 def case_set(name: str) -> list[Case]:
     """Set A (``cases``), or set B ... Z, AA, AB, AC, AD, AE, AF, AG, AH, AI, AJ, AK, AL, AM,
-    AN, AO, AP, AQ, AR, AS (``cases_b`` ... ``cases_z``, ``cases_aa``, ``cases_ab``,
+    AN, AO, AP, AQ, AR, AS, AT (``cases_b`` ... ``cases_z``, ``cases_aa``, ``cases_ab``,
     ``cases_ac``, ``cases_ad``, ``cases_ae``, ``cases_af``, ``cases_ag``, ``cases_ah``,
     ``cases_ai``, ``cases_aj``, ``cases_ak``, ``cases_al``, ``cases_am``, ``cases_an``,
-    ``cases_ao``, ``cases_ap``, ``cases_aq``, ``cases_ar``, ``cases_as``) by its lower-case
-    letters; ValueError for another name."""
+    ``cases_ao``, ``cases_ap``, ``cases_aq``, ``cases_ar``, ``cases_as``, ``cases_at``) by its
+    lower-case letters; ValueError for another name."""
     _known(name)
     return list(_BY_NAME[name])
 
