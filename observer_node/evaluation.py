@@ -15,6 +15,7 @@ from . import plots
 from .data import CrashDataError, CrashTest
 from .data.crashtest import THESIS_WINDOW_S
 from .data.setups import assign_setups
+from .errors import one_line
 from .ident import arx, greybox, n4sid
 from .ident.dataset import Dataset, make_dataset
 from .ident.kinds import IDENTIFY, N4SID_BLOCK_ROWS, IdentifyOptions
@@ -98,10 +99,10 @@ def evaluate_model(mf: ModelFile, tests: list[CrashTest], out_dir: Path | None =
     strangers = sorted({t.setup for t in tests} - known) if scoped else []
     for setup in strangers:  # a scoped effect acts on no test there: said, not silent
         names = [t.name for t in tests if t.setup == setup]
-        print(f"evaluate: {', '.join(names)}: setup {setup} (from the tests' metadata) is not "
-              f"one the model knows ({', '.join(sorted(known))}); its effects scoped to "
-              f"{', '.join(scoped)} act on none of them (rename the tests or check the model)",
-              file=sys.stderr)
+        print(one_line(f"evaluate: {', '.join(names)}: setup {setup} (from the tests' "
+                       f"metadata) is not one the model knows ({', '.join(sorted(known))}); "
+                       f"its effects scoped to {', '.join(scoped)} act on none of them "
+                       "(rename the tests or check the model)"), file=sys.stderr)
     prog.update(f"simulating the model on {len(tests)} test(s)")
     data = dataset_for(mf, tests, window_s)
     y_hat = simulate_model(mf, data)
@@ -111,9 +112,9 @@ def evaluate_model(mf: ModelFile, tests: list[CrashTest], out_dir: Path | None =
     if out_dir is not None:
         prog.update("drawing the plots")
         out_dir.mkdir(parents=True, exist_ok=True)
-        by_setup = {g: {"tests": n, **f.as_dict()}
-                    for g, (n, f) in fits.by_group(dict(zip(data.names, data.setups,
-                                                            strict=True))).items()}
+        group_of = dict(zip(data.names, data.setups, strict=True))
+        by_setup = {g: {"tests": n, "test_names": [t for t, s in group_of.items() if s == g],
+                        **f.as_dict()} for g, (n, f) in fits.by_group(group_of).items()}
         (out_dir / "fits.json").write_text(
             json.dumps({**fits.as_dict(), "setups": by_setup,
                         **({"setups_unknown_to_the_model": strangers} if strangers else {}),
@@ -134,8 +135,22 @@ def _plot_pair(out_dir: Path, title: str, data: Dataset, y_hat: np.ndarray, fits
 
 def file_stem(setup: str) -> str:
     """A setup's name as the start of a file name: letters and digits only, so that no name a
-    test's metadata gives can write outside the output folder."""
-    return re.sub(r"[^a-z0-9]+", "-", setup.lower()).strip("-") or "setup"
+    test's metadata gives can write outside the output folder, and at most 60 of them, so
+    that a long one still makes a file name."""
+    return re.sub(r"[^a-z0-9]+", "-", setup.lower()).strip("-")[:60].strip("-") or "setup"
+
+
+def file_stems(setups: list[str]) -> dict[str, str]:
+    """Each setup's :func:`file_stem`, those that would be the same ("Rig A" and "rig-a",
+    "SLED" and "sled", two names in other scripts) told apart by -2, -3, ... in order, so
+    that no setup's models and plots overwrite another's."""
+    out: dict[str, str] = {}
+    for setup in setups:
+        stem, n = file_stem(setup), 1
+        while (f"{stem}-{n}" if n > 1 else stem) in out.values():
+            n += 1
+        out[setup] = f"{stem}-{n}" if n > 1 else stem
+    return out
 
 
 def thesis_comparison(tests: list[CrashTest], out_dir: Path, rate_hz: float = 1000.0,
@@ -170,8 +185,8 @@ def thesis_comparison(tests: list[CrashTest], out_dir: Path, rate_hz: float = 10
     if alone:
         result["not_compared"] = alone
     order = {"R16": 0, "SLED": 1, "FULL": 2}
-    for setup in sorted(setups, key=lambda s: (order.get(s, 3), s)):
-        stem = file_stem(setup)
+    stems = file_stems(sorted(setups, key=lambda s: (order.get(s, 3), s)))
+    for setup, stem in stems.items():
         est_tests, val_tests = split_halves(setups[setup])
         est = make_dataset(est_tests, rate_hz, window_s)
         val = make_dataset(val_tests, rate_hz, window_s)
@@ -180,7 +195,7 @@ def thesis_comparison(tests: list[CrashTest], out_dir: Path, rate_hz: float = 10
             for nmax in (6, 10):
                 prog.update(f"{setup}: ARX order search Nmax={nmax}")
                 arx_orders[nmax], _ = arx.search_orders(est, nmax, progress=prog)
-            scans[setup] = _order_scans(est, val, out_dir, setup, prog)
+            scans[setup] = _order_scans(est, val, out_dir, setup, stem, prog)
         specs: dict[str, dict[str, Any]] = {
             "ARX Nmax=10": dict(kind="arx", nmax=10, orders=arx_orders[10]),
             "ARX Nmax=6": dict(kind="arx", nmax=6, orders=arx_orders[6]),
@@ -212,7 +227,7 @@ def thesis_comparison(tests: list[CrashTest], out_dir: Path, rate_hz: float = 10
     return result
 
 
-def _order_scans(est: Dataset, val: Dataset, out_dir: Path, setup: str,
+def _order_scans(est: Dataset, val: Dataset, out_dir: Path, setup: str, stem: str,
                  prog: Progress) -> dict:
     """Figures 3.6 (ARX fit against Nmax) and 3.7 (N4SID fit against order)."""
     arx_rows = []
@@ -228,10 +243,10 @@ def _order_scans(est: Dataset, val: Dataset, out_dir: Path, setup: str,
     ss_rows = n4sid.order_scan(est, val, range(1, 21), N4SID_BLOCK_ROWS, prog)
     plots_dir = out_dir / "plots"
     plots_dir.mkdir(parents=True, exist_ok=True)
-    plots.order_scan(plots_dir / f"{file_stem(setup)}-arx-nmax-scan.png",
+    plots.order_scan(plots_dir / f"{stem}-arx-nmax-scan.png",
                      f"{setup}: iterated ARX, fit_TOT against Nmax (Fig. 3.6)", "Nmax",
                      arx_rows, "nmax")
-    plots.order_scan(plots_dir / f"{file_stem(setup)}-n4sid-order-scan.png",
+    plots.order_scan(plots_dir / f"{stem}-n4sid-order-scan.png",
                      f"{setup}: N4SID, fit_TOT against order (Fig. 3.7)", "order N",
                      ss_rows, "order")
     return {"arx": arx_rows, "n4sid": ss_rows}

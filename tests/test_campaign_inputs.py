@@ -19,7 +19,7 @@ from observer_node import cli
 from observer_node.data import CrashDataError, bundled_campaign, find_tests, load_test
 from observer_node.data.csvio import write_csv
 from observer_node.data.isomme import setup_of
-from observer_node.evaluation import evaluate_model, file_stem, identify
+from observer_node.evaluation import evaluate_model, file_stem, file_stems, identify
 from observer_node.ident.dataset import make_dataset
 from observer_node.model.modelfile import ModelFile
 
@@ -161,6 +161,7 @@ def test_evaluate_model_tells_setups_from_metadata_and_says_unknown_ones(tmp_pat
     written = json.loads((tmp_path / "ev" / "fits.json").read_text())
     assert {k: v["tests"] for k, v in written["setups"].items()} == {
         setups["2019-001"]: 2, setups["2019-002"]: 2}
+    assert written["setups"][setups["2019-002"]]["test_names"] == ["2019-002", "2019-004"]
     assert fits.fit.total == pytest.approx(written["fit"]["total"])
     err = capsys.readouterr().err
     assert "is not one the model knows (FULL, R16, SLED)" in err
@@ -214,3 +215,60 @@ def test_a_long_test_or_setup_name_widens_its_column(tmp_path, capsys):
     assert len({r.index(" CR ") for r in rows}) == 1, out  # the figures in one column
     table = criteria.split("\n\n")[0].splitlines()[1:]  # head, sub-head, a row per test
     assert len(table) == 4 and len({len(r.rstrip()) for r in table[1:]}) == 1, out
+
+
+def test_setups_whose_file_names_would_clash_get_files_of_their_own() -> None:
+    """'SLED' and 'sled', 'Rig A' and 'rig-a', two names in other scripts made the same file
+    name: the second setup's models and plots overwrote the first's, evaluation.json pointing
+    both at one file. A 300-letter setup name failed to write its plots after the whole fit."""
+    names = ["Rig A", "rig-a", "\u5317\u4eac", "\u6771\u4eac", "setup-2", "L" * 300]
+    stems = file_stems(names)
+    assert len(set(stems.values())) == len(names)
+    assert stems["Rig A"] == "rig-a" and stems["rig-a"] == "rig-a-2"
+    assert all(len(s) <= 64 for s in stems.values())
+
+
+def _csv_with_head(tmp_path: Path, head: list[str], extra_row: str = "") -> Path:
+    src = tmp_path / "src.csv"
+    write_csv(load_test(_zip("R16_001")), src)
+    lines = src.read_text().splitlines()
+    body = [line for line in lines if not line.startswith("#")]
+    path = tmp_path / "R16_009.csv"
+    rows = [*head, body[0], body[1], *([extra_row] if extra_row else []), *body[2:]]
+    path.write_text("\n".join(rows) + "\n")
+    return path
+
+
+@pytest.mark.parametrize(("head", "row", "says"), [
+    (["# setup: SLED", "# setup: R16"], "", ":2: a second 'setup' line (the first is line 1)"),
+    (["# name: A", "# setup:   "], "", ":2: the 'setup' line gives no setup"),
+    (["# setup: R16"], "# setup: SLED", ":4: a comment line among the data"),
+])
+def test_a_csv_header_that_says_two_things_or_nothing_is_one_line(tmp_path, capsys, head, row,
+                                                                   says):
+    """Two setup lines: the last won, unsaid. An empty one: identify fitted the whole model,
+    then refused to write it ("fitted_on.setups[0] should be non-empty ... fewer orders").
+    A setup line among the data rows: '1 values, header has 5 columns'."""
+    path = _csv_with_head(tmp_path, head, row)
+    with pytest.raises(CrashDataError, match="R16_009.csv" + says.replace("(", r"\(")
+                       .replace(")", r"\)")):
+        load_test(path)
+    code = cli.main(["identify", "--model", "greybox", "--data", str(path), "--out",
+                     str(tmp_path / "m.json"), "--quiet"])
+    _one_line(code, capsys.readouterr().err, says)
+    assert not (tmp_path / "m.json").exists()
+
+
+def test_identify_tells_setups_as_evaluate_and_the_loop_do(tmp_path, capsys):
+    """identify wrote fitted_on.setups from each test's own setup (its name's prefix), evaluate
+    from the metadata: the same tests were R16 to one and ECE-R16 beside R16 to the other."""
+    data = tmp_path / "data"
+    data.mkdir()
+    for name in ("SLED_001", "SLED_003"):
+        shutil.copy(_zip(name), data / f"{name}.zip")
+    t = load_test(_zip("SLED_005"))
+    write_csv(dataclasses.replace(t, name="X_105", setup="sled"), data / "x.csv")
+    model = tmp_path / "m.json"
+    assert cli.main(["identify", "--model", "greybox", "--data", str(data), "--out",
+                     str(model), "--quiet"]) == 0
+    assert ModelFile.load(model).fitted_on["setups"] == ["SLED"]

@@ -89,7 +89,7 @@ def test_cli_identify_then_evaluate(tmp_path: Path, capsys):
     assert set(fits["tests"]) == {"R16_002"} and fits["fit"]["total"] > 50
     assert (out / "fit_cr.png").stat().st_size > 10_000
     assert "R16_002" in capsys.readouterr().out
-    assert fits["setups"] == {"R16": {"tests": 1, **fits["fit"]}}
+    assert fits["setups"] == {"R16": {"tests": 1, "test_names": ["R16_002"], **fits["fit"]}}
     # two setups: each one's fit over its own tests, printed and in fits.json
     out2 = tmp_path / "ev2"
     assert main(["evaluate", "--model", str(model), "--data", str(camp / "R16_004.zip"),

@@ -109,8 +109,27 @@ def test_names_without_a_separator_are_grouped_by_metadata_and_overridden_by_gro
     assert [(s.name, s.tests, s.how) for s in assign_setups(tests)] == [
         ("RIG A", ["T01", "T02", "T03"], "the file's setup line"),
         ("CAR", ["T04", "T05", "T06"], "the file's setup line")]
+    tests[3].meta = {"setup": "rig a"}  # one rig however its setup line is cased
+    assert [(s.name, s.tests) for s in assign_setups(tests)] == [
+        ("RIG A", ["T01", "T02", "T03", "T04"]), ("CAR", ["T05", "T06"])]
     with pytest.raises(CrashDataError, match="NAME=PATTERN"):
         parse_groups(["R16"])
+
+
+def test_a_csv_that_names_a_metadata_setup_joins_it_and_leaves_its_name_alone():
+    # a hostile analyst's SLED_101.csv beside the bundled SLED tests had moved them to a setup
+    # called SLED-TEST, where the model's SLED effects no longer acted, and lowered their fits
+    tests = load_tests(["campaign-a"])
+    sleds = [t.name for t in tests if t.name.startswith("SLED")]
+    extra = simulate_mixed({"SLED": 3}, 5, {"SLED": PlantConfig(noise=False)}, prefix="X")
+    for t, meta in zip(extra, [{"setup": "sled"}, {}, {"setup": "Rig B"}], strict=True):
+        t.meta = meta
+    extra[1].name = "SLED_101"  # no setup line: the name's prefix says SLED
+    setups = {s.name: s for s in assign_setups([*tests, *extra])}
+    assert set(setups) == {"FULL", "R16", "SLED", "Rig B"}
+    assert setups["SLED"].tests == [*sleds, extra[0].name, "SLED_101"]
+    assert "metadata" in setups["SLED"].how and setups["Rig B"].how == "the file's setup line"
+    assert [t.setup for t in extra] == ["SLED", "SLED", "Rig B"]
 
 
 def _inputs(n_tests: int = 2) -> tuple[np.ndarray, np.ndarray]:

@@ -36,6 +36,7 @@ def add_subparser(subparsers: argparse._SubParsersAction[argparse.ArgumentParser
 
 
 def _do_identify(a: argparse.Namespace) -> int:
+    from ..data.setups import assign_setups
     from ..evaluation import identify
     from ..ident.dataset import make_dataset
     from ..ident.progress import Progress
@@ -43,6 +44,7 @@ def _do_identify(a: argparse.Namespace) -> int:
 
     out = options.out_file(a.out)
     tests, left_out = _data.load(a)
+    assign_setups(tests)  # as evaluate and the loop tell them: one grouping in every command
     data = make_dataset(tests, a.rate, _data.window(a))
     t0 = time.monotonic()
     mf = identify(a.model, data, nmax=a.nmax, order=a.order, m1_kg=a.m1,
@@ -50,8 +52,8 @@ def _do_identify(a: argparse.Namespace) -> int:
     try:  # what run and evaluate would refuse is not written (an unstable or oversized model)
         ModelFile.from_dict(mf.to_dict(), f"the identified {a.model} model")
     except ModelFileError as e:
-        raise ModelFileError(f"{e}; not written to {out} (fewer orders: --nmax, --order)"
-                             ) from None
+        hint = " (fewer orders: --nmax, --order)" if a.model in ("arx", "n4sid") else ""
+        raise ModelFileError(f"{e}; not written to {out}{hint}") from None
     if left_out:
         mf.fitted_on["left_out"] = left_out
     mf.save(out)

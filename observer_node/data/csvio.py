@@ -61,11 +61,19 @@ def read_csv(path: str | Path, counts_per_rev: int | None = None) -> CrashTest:
     path = Path(path)
     lines = decode_text(path.read_bytes()).splitlines()
     meta: dict[str, str] = {}
+    said_at: dict[str, int] = {}
     k = 0
     while k < len(lines) and lines[k].lstrip().startswith("#"):
         if ":" in lines[k]:
             key, value = lines[k].lstrip("# ").split(":", 1)
-            meta[key.strip().lower()] = value.strip()
+            key = key.strip().lower()
+            if key in _ONCE and key in said_at:  # which one is meant, only the author knows
+                raise CrashDataError(f"{path}:{k + 1}: a second '{key}' line (the first is "
+                                     f"line {said_at[key]})")
+            if key in ("name", "setup") and not value.strip():
+                raise CrashDataError(f"{path}:{k + 1}: the '{key}' line gives no {key}")
+            said_at[key] = k + 1
+            meta[key] = value.strip()
         k += 1
     if k >= len(lines):
         raise CrashDataError(f"{path}: no header row")
@@ -86,6 +94,9 @@ def read_csv(path: str | Path, counts_per_rev: int | None = None) -> CrashTest:
     for j, line in enumerate(lines[k + 1:], start=header_line + 1):
         if not line.strip():
             continue
+        if line.lstrip().startswith("#"):
+            raise CrashDataError(f"{path}:{j}: a comment line among the data (comment lines, "
+                                 "such as '# setup:', go above the header row)")
         parts = line.split(",")
         if len(parts) != len(columns):
             raise CrashDataError(
@@ -135,6 +146,10 @@ def read_csv(path: str | Path, counts_per_rev: int | None = None) -> CrashTest:
                     if item.count("=") == 1),
         source=str(path), meta=meta,
     )
+
+
+#: header keys a test has one of: a second line giving one is refused, not read over the first
+_ONCE = frozenset({"name", "setup", "signs", "counts_per_rev", "velocity_ms", "status"})
 
 
 def _int(v: str | None) -> int | None:

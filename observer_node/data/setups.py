@@ -12,7 +12,10 @@ The rule, in order:
    (FULL-FRONTAL).
 3. A test with none of these keys whose file names its setup (a CSV's ``# setup:`` line)
    joins that setup; one that names none (a CSV without a header) is grouped by its name
-   prefix when the name has one, else it joins setup UNKNOWN.
+   prefix when the name has one, else it joins setup UNKNOWN. A setup so named is one
+   however cased ("SLED" and "sled"), and when a setup of rule 1 or 2 has that name (however
+   cased), the test joins it: a CSV that says SLED, or is named SLED_101, is a SLED test
+   beside the ``.mme`` ones, and does not push their setup to another name.
 
 A test the metadata puts with tests of another name (R16_005 among SLED_*: a copied ``.mme``)
 stays where the metadata says, and its setup names it (``named_elsewhere``) for the report to
@@ -94,6 +97,7 @@ def assign_setups(tests: list[CrashTest], groups: list[tuple[str, str]] | None =
     return the groups in order of first appearance."""
     by_key: dict[tuple, list[CrashTest]] = {}
     how: dict[tuple, str] = {}
+    said: list[tuple[tuple, CrashTest]] = []  # rule 3's tests, placed once the others are named
     for t in tests:
         user = next((n for n, pat in groups or [] if fnmatch.fnmatchcase(t.name, pat)), None)
         raw = tuple(t.meta.get(k, "").strip().upper() for k in KEYS)
@@ -107,13 +111,17 @@ def assign_setups(tests: list[CrashTest], groups: list[tuple[str, str]] | None =
             key = ("meta", *values)
             how.setdefault(key, "metadata: " + "; ".join(v for v in raw if v))
         elif t.meta.get("setup", "").strip():  # said by the file, not guessed from the name
-            key = ("file", t.meta["setup"].strip())
-            how[key] = "the file's setup line"
+            said.append((("file", t.meta["setup"].strip()), t))
+            continue
         else:
-            key = ("prefix", _prefix(t.name) or "UNKNOWN")
-            how[key] = "name prefix" if key[1] != "UNKNOWN" else "no metadata, no name prefix"
+            said.append((("prefix", _prefix(t.name) or "UNKNOWN"), t))
+            continue
         by_key.setdefault(key, []).append(t)
     names = _names(by_key)
+    _place_said(said, by_key, how, names)
+    pos = {id(t): i for i, t in enumerate(tests)}  # back in the order the tests came
+    by_key = {k: sorted(m, key=lambda t: pos[id(t)]) for k, m in
+              sorted(by_key.items(), key=lambda km: min(pos[id(t)] for t in km[1]))}
     out = []
     for key, members in by_key.items():
         text = " ".join(" ".join(t.meta.get(k, "") for k in (*KEYS, "Comments"))
@@ -126,6 +134,22 @@ def assign_setups(tests: list[CrashTest], groups: list[tuple[str, str]] | None =
         out.append(Setup(names[key], [t.name for t in members], how[key], text, impossible))
     _name_checks(out, by_key, names)
     return out
+
+
+def _place_said(said: list[tuple[tuple, CrashTest]], by_key: dict[tuple, list[CrashTest]],
+                how: dict[tuple, str], names: dict[tuple, str]) -> None:
+    """Rule 3: each test whose setup its file or name says joins the setup of rules 1-2 of
+    that name, however cased, else the first-seen spelling's own setup."""
+    by_name = {name.casefold(): key for key, name in names.items()}
+    for (kind, name), t in said:
+        key = by_name.get(name.casefold())
+        if key is None:
+            key = (kind, name)
+            by_name[name.casefold()] = key
+            names[key] = name
+            how[key] = ("the file's setup line" if kind == "file" else
+                        "name prefix" if name != "UNKNOWN" else "no metadata, no name prefix")
+        by_key.setdefault(key, []).append(t)
 
 
 def _name_checks(setups: list[Setup], by_key: dict[tuple, list[CrashTest]],
@@ -152,7 +176,7 @@ def _names(by_key: dict[tuple, list[CrashTest]]) -> dict[tuple, str]:
     names: dict[tuple, str] = {}
     prefixes: dict[tuple, str | None] = {}
     for key, members in by_key.items():
-        if key[0] in ("user", "file", "prefix"):
+        if key[0] == "user":
             names[key] = key[1]
             continue
         p = {_prefix(t.name) for t in members}
