@@ -5927,16 +5927,25 @@ BEFORE_AU = _cases_of(heldout_sets.before("au"))
 # the others untouched)
 WATCHED_AU = ("hau_broken_brs_swap", "hau_cd_slew", *ONE_PHYSICAL_AU)
 # the draws found impossible, drawn again by the next seeds in the order found (draw_au.REDRAWN)
-REDRAWN_AU: list[tuple[str, int]] = []
+REDRAWN_AU: list[tuple[str, int]] = [("belt_unloading", 56001), ("input_gain", 56002),
+                                     ("belt_unloading", 56003), ("belt_unloading", 56004),
+                                     ("input_gain", 56005), ("pelvis_coupling", 56006),
+                                     ("pelvis_coupling", 56007)]
 # each rejected draw, in that order: its form (or delay, or forms), rigs and whether its pairing
 # was reused
-REJECTED_AU: list[tuple] = []
+REJECTED_AU: list[tuple] = [("webbing_slack", ("SLED",), True), ("spool_buildup", ("R16",), True),
+                            ("dring_capstan", ("SLED",), True),
+                            ("dring_capstan", ("R16", "SLED", "FULL"), True),
+                            ("spool_buildup", ("R16", "SLED"), True),
+                            ("pelvis_submarine", ("R16", "FULL"), True),
+                            ("pelvis_submarine", ("FULL",), True)]
 # the two-effect case
 TWO_AU = "hau_two_power_r16_sled_lumbar_full"
 # the cases on an earlier set's pairing, in the draw's order (none free for their rigs:
 # set AL's reuse rule, taken by draw_au as it stands): every case of AU
-REUSED_AU = ("hau_bumper_all", "hau_valve_r16_full", "hau_slack_sled", "hau_power_r16_sled",
-             "hau_airbag_sled_full", "hau_submarine_r16_full", "hau_spool_r16", TWO_AU,
+REUSED_AU = ("hau_bumper_all", "hau_valve_r16_full", "hau_hysteresis_r16_full",
+             "hau_power_r16_sled", "hau_airbag_sled_full", "hau_pelvis_knee_r16_full",
+             "hau_eccentric_sled", TWO_AU,
              "hau_pulse_late_4p02ms", "hau_brs_late_4p48ms", "hau_cd_slew",
              "hau_broken_brs_swap", "hau_clean48", "hau_clean96")
 
@@ -5958,13 +5967,14 @@ def test_set_au_covers_the_general_list() -> None:
 
 
 def test_set_au_follows_its_draw() -> None:
-    """Set AU's designer's choices are numpy's default_rng(56000)'s (``draw_au.py``; no draw
-    found impossible, ``REDRAWN`` empty), followed as drawn: each kind's form, rigs, counts and
-    mix; the two-effect case's kinds, forms, rigs, counts and mix; the delays, their counts and
-    mixes; the transducer error's output, form, counts and mix; the broken test's channel, form,
-    test, counts and mix; the clean cases' mixes. Set AT's process, no change: any case with no
-    pairing free for its rigs reuses one A-AT ran, among those its rules allow (every case of
-    AU); every other case takes a free one (run by no earlier set, nor drawn before it)."""
+    """Set AU's designer's choices are numpy's default_rng(56000)'s (``draw_au.py``; seven draws
+    found impossible at the sizes, ``REDRAWN``), followed as drawn: each kind's form, rigs,
+    counts and mix; the two-effect case's kinds, forms, rigs, counts and mix; the delays, their
+    counts and mixes; the transducer error's output, form, counts and mix; the broken test's
+    channel, form, test, counts and mix; the clean cases' mixes. Set AT's process, no change:
+    any case with no pairing free for its rigs reuses one A-AT ran, among those its rules allow
+    (every case of AU); every other case takes a free one (run by no earlier set, nor drawn
+    before it)."""
     d = draw_au.draw(56000)
     _follows_set_al_reuse(d, draw_au, 56000, "au", SET_AU, ONE_PHYSICAL_AU,
                           REDRAWN_AU, BEFORE_AU, BY_NAME_AU, REUSED_AU, REJECTED_AU)
@@ -5982,7 +5992,7 @@ def test_set_au_lab_side_is_as_drawn_and_unnamed() -> None:
 @pytest.mark.parametrize("case", sorted(ONE_PHYSICAL_AU))
 def test_set_au_physics_moves_its_rigs_only(set_au: Path, case: str) -> None:
     """Each physical case moves what its form moves on every test of its rigs (the chest's,
-    belt's, bag's and pelvis's forms CR and CD, the spool's the BRS, the pulse untouched) and
+    belt's, bag's and pelvis's forms and the encoder ring CR and CD, the pulse untouched) and
     leaves the tests of a rig it spares untouched to the bit."""
     _moves_its_rigs_only(set_au, BY_NAME_AU[case])
 

@@ -183,6 +183,55 @@ set Z's, set Y's, set X's before it), with sets A-AT as the earlier sets:
    ...) in the order found, after the rest, the pairings of everything drawn before still taken
    (``REDRAWN``; a case with none free, an earlier set's, by the reuse above).
 
+Judged at the sizes by these words (written down with the sizes, after the draw, before any loop
+run; no rule changed, the rules above as they were committed before the first draw): no run-away at
+the first sizes before any cost (``test_set_au_has_no_run_aways``'s limits over the whole set). Then
+the first sizes costed one at a time in ``cases_au.py``'s order, two impossibilities among them, in
+that order: the belt's unloading's webbing slack on SLED, a switch (rule 3), 12.41, above the band;
+the input gain's spool build-up on R16 (0.014), 1.24, below the band, its next size by rule 2
+(0.040, not clipped) a run-away by the spool's radius (below zero within 7 rad of pay-out past
+0.0153 m per wrap), so impossible without costing that size, known at the cost before it (as set AI
+and set AQ judged): drawn again by 56001 and 56002. No other first size impossible: both delays
+(4.02 ms, 3.48; 4.48 ms, 3.22) and the transducer error (cd_slew, 0.71 mm/ms, 2.34) in their bands,
+the ribs' bumper (1.74) and the ribs' valve (3.87) in band, the webbing's power (6.50), the vented
+bag (7.48) and the lap belt's slip on R16+FULL (6300 N, 9.72) above it, each with a next size to
+step to; the broken test's BRS from six tests on, 5.88, not banded; the two-effect case, the
+webbing's power on R16+SLED (1.3) beside the lumbar path on FULL (0.59), the power alone 6.84, above
+the band, the lumbar path alone 5.28 and the two together 3.93 in it: set AP's case (as set AS
+judged), the power stepped by 1-2 alone, the lumbar path keeping its size, the lumbar path alone at
+the power's step the same run as at the first sizes, its cost known, 5.28. The redraws, after the
+rest, checked against the run-away limits at their first sizes in ``cases_au.py``'s order, each
+against the set at the first sizes with every rejected draw's tests replaced by its current
+redraw's, before any of them was costed: 56001's D-ring capstan on SLED (0.59) ran away (SLED_002
+paid out 11.2 deg against the set's other cases' SLED median 241.9): drawn again by 56003; 56002's
+spool build-up on R16+SLED (0.014) did not run away; 56003's D-ring capstan on every rig (0.59) ran
+away (R16_003 22.5 deg against 270.0, FULL_008 28.1 against 247.5): drawn again by 56004; 56004's
+webbing hysteresis on R16+FULL (0.64) did not run away; the two capstans costed for the record (as
+set AM and set AR judged), -0.18 and 0.32. Then the redraws costed at their first sizes in
+``cases_au.py``'s order: 56004's webbing hysteresis, 3.34, in band; 56002's spool build-up on
+R16+SLED, -0.33, at or below 0, its next size three times (0.042) a run-away by the spool's radius:
+impossible without costing that size, drawn again by 56005; 56005's encoder ring on SLED (0.52),
+checked against the run-away limits before it was costed (none ran away), 4.04, in band. Then the
+steps, each case's in ``cases_au.py``'s order: the webbing's power 0.71 (1.3 x 3.5 / 6.50 = 0.700,
+0.70, which A-AT used), 5.46, in band at its first step; the vented bag 0.29, 2.74, in band at its
+first step; the lap belt's slip, a slip force stepped as a form whose effect shrinks as its size
+grows though its cost grew (as set AG and set AM judged), 17000 N (16.61), 51000 N (clipped to three
+times; 17.10), 150000 N (clipped to three times, rounded after the clip; 17.16): four sizes, none in
+band, none a run-away: impossible (rule 2), drawn again by 56006, after the redraws' first costs
+(the order found); the two-effect case's power 0.67 (1.3 x 3.5 / 6.84 = 0.665, 0.67, not taken;
+0.665 is the cost as written, to two decimals, 6.84), the power alone 5.40, the two together 3.05,
+the lumbar path alone 5.28 (known): all three in band at its first step. 56006's lap belt's slip on
+FULL (6300 N), checked against the run-away limits before it was costed, ran away (FULL_004 paid out
+56.2 deg against the set's other cases' FULL median 262.5; costed for the record, 8.44): drawn again
+by 56007; 56007's knee bolster path on R16+FULL (0.17), checked likewise (none ran away), 7.22,
+above the band, stepped once: 0.17 x 3.5 / 7.22 = 0.0824, 0.082, 3.71, in band. None clipped save
+the lap belt's slip on R16+FULL; none a cost just past an edge. No two cases of AU run the same
+earlier pairing (56005's encoder ring runs set O's pairing, set AG's and set AT's too: the reuse's
+pool A-AT's). Each costed size checked against the run-away limits, each pay-out against its rig's
+median over the set's other cases' tests at the first sizes with the rejected draws' tests replaced
+by their redraws' then (the sizes kept checked again against the final set); none of the sizes kept
+or stepped ran away.
+
     python -m benchmarks.heldout.draw_au [--seed 56000]
 """
 
@@ -197,8 +246,21 @@ from .sets import before
 SEED = 56000
 # a case whose draw proved impossible, drawn again, whole, by the next seed's generator (one per
 # redraw, in this order, after the rest), the pairings of everything drawn before still taken:
-# none yet (the set not yet drawn)
-REDRAWN: tuple[tuple[str, int], ...] = ()
+# none at the draw (every case, none free for its rigs, drew a pairing one of A-AT ran); at the
+# sizes, seven, in the order found: the belt's unloading's first draw (webbing_slack on SLED, a
+# switch) cost 12.41, above the band; the input gain's (spool_buildup on R16) cost 1.24, its
+# next size (0.040) a run-away by the spool's radius; the belt's unloading's redraw
+# (dring_capstan on SLED) and its next (dring_capstan on every rig) ran away at their first
+# sizes; the input gain's redraw (spool_buildup on R16+SLED) cost -0.33, its next size (0.042,
+# three times) a run-away by the spool's radius; the pelvis's first draw (pelvis_submarine on
+# R16+FULL) above the band at all four of its sizes (9.72, 16.61, 17.10, 17.16); its redraw
+# (pelvis_submarine on FULL) ran away at its first size; webbing_hysteresis on R16+FULL, the
+# encoder ring on SLED and pelvis_knee on R16+FULL (its second size) came in band (see
+# ``cases_au.py``)
+REDRAWN: tuple[tuple[str, int], ...] = (("belt_unloading", 56001), ("input_gain", 56002),
+                                         ("belt_unloading", 56003), ("belt_unloading", 56004),
+                                         ("input_gain", 56005), ("pelvis_coupling", 56006),
+                                         ("pelvis_coupling", 56007))
 EARLIER = before("au")
 __all__ = ["BROKEN", "BRS_GAIN", "KINDS", "REDRAWN", "SEED", "TRANSDUCER", "draw", "forms",
            "scopes"]
