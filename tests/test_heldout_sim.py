@@ -40,6 +40,7 @@ from benchmarks.heldout import (
     draw_ar,
     draw_as,
     draw_at,
+    draw_au,
     draw_v,
     draw_w,
     draw_x,
@@ -71,6 +72,7 @@ from benchmarks.heldout.cases_aq import BY_NAME_AQ, ONE_PHYSICAL_AQ
 from benchmarks.heldout.cases_ar import BY_NAME_AR, ONE_PHYSICAL_AR
 from benchmarks.heldout.cases_as import BY_NAME_AS, ONE_PHYSICAL_AS
 from benchmarks.heldout.cases_at import BY_NAME_AT, ONE_PHYSICAL_AT
+from benchmarks.heldout.cases_au import BY_NAME_AU, ONE_PHYSICAL_AU
 from benchmarks.heldout.cases_p import BY_NAME_P
 from benchmarks.heldout.cases_q import BY_NAME_Q
 from benchmarks.heldout.cases_r import BY_NAME_R
@@ -3931,9 +3933,9 @@ def set_aa(tmp_path_factory: pytest.TempPathFactory) -> Path:
 @pytest.mark.parametrize("letters",
                          ["x", "y", "z", "aa", "ab", "ac", "ad", "ae", "af", "ag", "ah",
                           "ai", "aj", "ak", "al", "am", "an", "ao", "ap", "aq", "ar",
-                          "as", "at"])
+                          "as", "at", "au"])
 def test_a_drawn_set_is_registered(letters: str, tmp_path: Path) -> None:
-    """Sets X-AT: each is its ``cases_<letters>.SET_<LETTERS>`` under its letters (either
+    """Sets X-AU: each is its ``cases_<letters>.SET_<LETTERS>`` under its letters (either
     case), for sets.select, make_sets and costs, after every set before it."""
     own = getattr(importlib.import_module(f"benchmarks.heldout.cases_{letters}"),
                   f"SET_{letters.upper()}")
@@ -3989,8 +3991,11 @@ def test_sets_before_are_names_not_letters() -> None:
     assert heldout_sets.before("at") == (*after_aa, "ab", "ac", "ad", "ae", "af", "ag",
                                          "ah", "ai", "aj", "ak", "al", "am", "an", "ao",
                                          "ap", "aq", "ar", "as")  # A-AS
-    with pytest.raises(ValueError, match="unknown case set 'au'"):
-        heldout_sets.before("au")
+    assert heldout_sets.before("au") == (*after_aa, "ab", "ac", "ad", "ae", "af", "ag",
+                                         "ah", "ai", "aj", "ak", "al", "am", "an", "ao",
+                                         "ap", "aq", "ar", "as", "at")  # A-AT
+    with pytest.raises(ValueError, match="unknown case set 'av'"):
+        heldout_sets.before("av")
     # a draw after AA takes AA's pairings; at this seed, without AA one single draws one of them
     aa = {_pairing(c) for c in SET_AA}
 
@@ -5161,8 +5166,8 @@ def test_set_am_covers_the_general_list() -> None:
 
 
 # the drawn sets whose draw without set AL's reuse stops at the broken test (none free for it,
-# so no estimation test of its to break): set AQ's, set AR's, set AS's and set AT's
-STOPS_WITHOUT_REUSE = ("aq", "ar", "as", "at")
+# so no estimation test of its to break): set AQ's, set AR's, set AS's, set AT's and set AU's
+STOPS_WITHOUT_REUSE = ("aq", "ar", "as", "at", "au")
 
 
 def _follows_set_al_reuse(d: dict, drawn_by: ModuleType, seed: int, set_: str,
@@ -5170,10 +5175,10 @@ def _follows_set_al_reuse(d: dict, drawn_by: ModuleType, seed: int, set_: str,
                           redrawn: list[tuple[str, int]], before: list[cases.Case],
                           by_name: dict[str, cases.Case], reused_names: tuple[str, ...],
                           rejected: list[tuple]) -> None:
-    """What sets AM, AN, AO, AP, AQ, AR, AS and AT, drawn by set AL's process with its reuse,
-    each assert of their draw ``d``: reproducible from ``seed`` after sets A to the one before
-    ``set_``; W's pools; the singles, the rest and each pairing as drawn; the redraws in the
-    order found; the reused pairings those of ``reused_names``; the rejected draws (form or
+    """What sets AM, AN, AO, AP, AQ, AR, AS, AT and AU, drawn by set AL's process with its
+    reuse, each assert of their draw ``d``: reproducible from ``seed`` after sets A to the one
+    before ``set_``; W's pools; the singles, the rest and each pairing as drawn; the redraws in
+    the order found; the reused pairings those of ``reused_names``; the rejected draws (form or
     delay, rigs, reused)."""
     assert d == drawn_by.draw()  # reproducible from its seed
     two_letter = string.ascii_lowercase[:string.ascii_lowercase.index(set_[1])]
@@ -5914,6 +5919,121 @@ def test_set_at_has_no_run_aways(set_at: Path) -> None:
     _no_run_aways(SET_AT, set_at)
 
 
+# ------------------------------------------------------------------ set AU (cases_au.py)
+
+SET_AU = heldout_sets.case_set("au")
+BEFORE_AU = _cases_of(heldout_sets.before("au"))
+# the broken test, the transducer error, and every physical case of one effect (its rigs moved,
+# the others untouched)
+WATCHED_AU = ("hau_broken_brs_swap", "hau_cd_slew", *ONE_PHYSICAL_AU)
+# the draws found impossible, drawn again by the next seeds in the order found (draw_au.REDRAWN)
+REDRAWN_AU: list[tuple[str, int]] = [("belt_unloading", 56001), ("input_gain", 56002),
+                                     ("belt_unloading", 56003), ("belt_unloading", 56004),
+                                     ("input_gain", 56005), ("pelvis_coupling", 56006),
+                                     ("pelvis_coupling", 56007)]
+# each rejected draw, in that order: its form (or delay, or forms), rigs and whether its pairing
+# was reused
+REJECTED_AU: list[tuple] = [("webbing_slack", ("SLED",), True), ("spool_buildup", ("R16",), True),
+                            ("dring_capstan", ("SLED",), True),
+                            ("dring_capstan", ("R16", "SLED", "FULL"), True),
+                            ("spool_buildup", ("R16", "SLED"), True),
+                            ("pelvis_submarine", ("R16", "FULL"), True),
+                            ("pelvis_submarine", ("FULL",), True)]
+# the two-effect case
+TWO_AU = "hau_two_power_r16_sled_lumbar_full"
+# the cases on an earlier set's pairing, in the draw's order (none free for their rigs:
+# set AL's reuse rule, taken by draw_au as it stands): every case of AU
+REUSED_AU = ("hau_bumper_all", "hau_valve_r16_full", "hau_hysteresis_r16_full",
+             "hau_power_r16_sled", "hau_airbag_sled_full", "hau_pelvis_knee_r16_full",
+             "hau_eccentric_sled", TWO_AU,
+             "hau_pulse_late_4p02ms", "hau_brs_late_4p48ms", "hau_cd_slew",
+             "hau_broken_brs_swap", "hau_clean48", "hau_clean96")
+
+
+@pytest.fixture(scope="module")
+def set_au(tmp_path_factory: pytest.TempPathFactory) -> Path:
+    return _generate(tmp_path_factory, "au", WATCHED_AU)
+
+
+def test_set_au_covers_the_general_list() -> None:
+    """Set AU as its brief asks: clean cases at 48 and 96 counts; each kind of the library a
+    loop can name, as physics, once in a case of its own; two effects of different kinds on
+    different rigs in one case; a broken estimation test; a transducer error on CD alone (as
+    drawn); a late pulse and a late BRS at delays in 1-5 ms no earlier set used on any input;
+    6 + 6 tests, every rig an estimation part holds held twice or more; an effect on some rigs
+    only rests on two estimation and two validation tests of them beside an estimation test of
+    a rig it spares."""
+    _covers_the_general_list(SET_AU, BEFORE_AU, "cd", ONE_PHYSICAL_AU, draw_au.KINDS)
+
+
+def test_set_au_follows_its_draw() -> None:
+    """Set AU's designer's choices are numpy's default_rng(56000)'s (``draw_au.py``; seven draws
+    found impossible at the sizes, ``REDRAWN``), followed as drawn: each kind's form, rigs,
+    counts and mix; the two-effect case's kinds, forms, rigs, counts and mix; the delays, their
+    counts and mixes; the transducer error's output, form, counts and mix; the broken test's
+    channel, form, test, counts and mix; the clean cases' mixes. Set AT's process, no change:
+    any case with no pairing free for its rigs reuses one A-AT ran, among those its rules allow
+    (every case of AU); every other case takes a free one (run by no earlier set, nor drawn
+    before it)."""
+    d = draw_au.draw(56000)
+    _follows_set_al_reuse(d, draw_au, 56000, "au", SET_AU, ONE_PHYSICAL_AU,
+                          REDRAWN_AU, BEFORE_AU, BY_NAME_AU, REUSED_AU, REJECTED_AU)
+    # no two of AU's cases ran the same pairing
+    assert len({_pairing(c) for c in SET_AU}) == len(SET_AU)
+
+
+def test_set_au_lab_side_is_as_drawn_and_unnamed() -> None:
+    """One broken estimation test, the only thing expected; one transducer error on CD on every
+    test, nothing physical named; AU's physics earlier sets' forms only."""
+    _lab_side_as_drawn(SET_AU, "cd")
+    assert {k for k in _keys(SET_AU) if physics.EFFECTS[k]} <= _keys(BEFORE_AU)
+
+
+@pytest.mark.parametrize("case", sorted(ONE_PHYSICAL_AU))
+def test_set_au_physics_moves_its_rigs_only(set_au: Path, case: str) -> None:
+    """Each physical case moves what its form moves on every test of its rigs (the chest's,
+    belt's, bag's and pelvis's forms and the encoder ring CR and CD, the pulse untouched) and
+    leaves the tests of a rig it spares untouched to the bit."""
+    _moves_its_rigs_only(set_au, BY_NAME_AU[case])
+
+
+def test_set_au_brs_swap_reads_another_tests_spool(set_au: Path) -> None:
+    """The broken test's BRS channel is the test six places on's spool (R16_008, a validation
+    test; set J's check: a count or two apart, far from its own), its CR, CD and pulse
+    untouched; every other test untouched, the one whose spool it reads among them."""
+    c = BY_NAME_AU["hau_broken_brs_swap"]
+    (broken,), (e,) = c.expect_broken, c.effects
+    est, val = cases.test_names(c)
+    names = est + val
+    other = names[names.index(broken) + round(e.size)]
+    assert (broken, other) == ("FULL_003", "R16_008")
+    _brs_is_the_others(set_au, c, ((broken, other),))
+
+
+def test_set_au_cd_slew_lags_cd_only(set_au: Path) -> None:
+    """CD is its twin's through the slew-limited amplifier (within the noise, which is added
+    after it), every test, and moved by it in most (a slow chest's test hardly); CR, pulse and
+    BRS untouched (set R's check, at this set's rate)."""
+    c = BY_NAME_AU["hau_cd_slew"]
+    (e,) = c.effects
+    rate = e.size * 1e3 / physics.FS_HZ  # mm a sample
+    moved_far = seen = 0
+    for cd, cd0 in _cd_only(set_au / "on" / c.name, set_au / "off" / c.name):
+        inner = (_times(len(cd)) > 0.0) & (_times(len(cd)) < 0.17)
+        miss = np.abs(cd - lab.slew(cd0, rate))[inner].max()
+        moved = np.abs(cd - cd0).max()
+        assert miss < 0.3 and moved > 0.5, (miss, moved)
+        if moved > 1.5:
+            assert miss < 0.2 * moved, (miss, moved)
+            moved_far += 1
+        seen += 1
+    assert seen == 12 and moved_far >= 8
+
+
+def test_set_au_has_no_run_aways(set_au: Path) -> None:
+    _no_run_aways(SET_AU, set_au)
+
+
 def test_more_tests_doubles_the_estimation_tests_only(tmp_path: Path) -> None:
     """``more_tests``: K times each rig's estimation tests, the validation tests and the
     effects as written, another seed (new crashes), a name that says so; the broken test's name
@@ -5978,7 +6098,7 @@ DRAWN = {"x": (33000, ()), "y": (34000, ()), "z": (35000, (TWO_Z,)),
          "aj": (45000, (TWO_AJ,)), "ak": (46000, (TWO_AK,)), "al": (47000, REUSED_AL),
          "am": (48000, REUSED_AM), "an": (49000, REUSED_AN), "ao": (50000, REUSED_AO),
          "ap": (51000, REUSED_AP), "aq": (52000, REUSED_AQ), "ar": (53000, REUSED_AR),
-         "as": (54000, REUSED_AS), "at": (55000, REUSED_AT)}
+         "as": (54000, REUSED_AS), "at": (55000, REUSED_AT), "au": (56000, REUSED_AU)}
 # the drawn sets whose reused cases drew one earlier pairing twice, by name, a group a pairing
 SHARED = {"aq": SHARED_AQ, "ar": SHARED_AR}
 

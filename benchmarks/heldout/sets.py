@@ -40,7 +40,8 @@ set AO by another engineer, its choices drawn, set AO's way), set AQ (``cases_aq
 set AP by another engineer, its choices drawn, set AP's way), set AR (``cases_ar``, written after
 set AQ by another engineer, its choices drawn, set AQ's way), set AS (``cases_as``, written after
 set AR by another engineer, its choices drawn, set AR's way), set AT (``cases_at``, written after
-set AS by another engineer, its choices drawn, set AS's way)."""
+set AS by another engineer, its choices drawn, set AS's way), set AU (``cases_au``, written after
+set AT by another engineer, its choices drawn, set AT's way)."""
 
 from __future__ import annotations
 
@@ -65,6 +66,7 @@ from .cases_aq import SET_AQ
 from .cases_ar import SET_AR
 from .cases_as import SET_AS
 from .cases_at import SET_AT
+from .cases_au import SET_AU
 from .cases_b import SET_B
 from .cases_c import SET_C
 from .cases_d import SET_D
@@ -101,7 +103,7 @@ _BY_NAME: dict[str, list[Case]] = {
     "af": SET_AF, "ag": SET_AG, "ah": SET_AH, "ai": SET_AI,
     "aj": SET_AJ, "ak": SET_AK, "al": SET_AL, "am": SET_AM,
     "an": SET_AN, "ao": SET_AO, "ap": SET_AP, "aq": SET_AQ, "ar": SET_AR,
-    "as": SET_AS, "at": SET_AT}
+    "as": SET_AS, "at": SET_AT, "au": SET_AU}
 SETS = tuple(_BY_NAME)
 
 
@@ -134,19 +136,22 @@ def before(name: str) -> tuple[str, ...]:
     ``"aj"``, ``"ak"``, ``"al"``, ``"am"``, ``"an"``, ``"ao"``, ``"ap"``, ``"aq"`` and
     ``"ar"``; before set AT, those, ``"aa"``, ``"ab"``, ``"ac"``, ``"ad"``, ``"ae"``, ``"af"``,
     ``"ag"``, ``"ah"``, ``"ai"``, ``"aj"``, ``"ak"``, ``"al"``, ``"am"``, ``"an"``, ``"ao"``,
-    ``"ap"``, ``"aq"``, ``"ar"`` and ``"as"``); ValueError for an unknown name. Names, not
-    letters: set AA is one set, not set A twice."""
+    ``"ap"``, ``"aq"``, ``"ar"`` and ``"as"``; before set AU, those, ``"aa"``, ``"ab"``,
+    ``"ac"``, ``"ad"``, ``"ae"``, ``"af"``, ``"ag"``, ``"ah"``, ``"ai"``, ``"aj"``, ``"ak"``,
+    ``"al"``, ``"am"``, ``"an"``, ``"ao"``, ``"ap"``, ``"aq"``, ``"ar"``, ``"as"`` and
+    ``"at"``); ValueError for an unknown name. Names, not letters: set AA is one set, not set A
+    twice."""
     _known(name)
     return SETS[:SETS.index(name)]
 
 
 def case_set(name: str) -> list[Case]:
     """Set A (``cases``), or set B ... Z, AA, AB, AC, AD, AE, AF, AG, AH, AI, AJ, AK, AL, AM,
-    AN, AO, AP, AQ, AR, AS, AT (``cases_b`` ... ``cases_z``, ``cases_aa``, ``cases_ab``,
+    AN, AO, AP, AQ, AR, AS, AT, AU (``cases_b`` ... ``cases_z``, ``cases_aa``, ``cases_ab``,
     ``cases_ac``, ``cases_ad``, ``cases_ae``, ``cases_af``, ``cases_ag``, ``cases_ah``,
     ``cases_ai``, ``cases_aj``, ``cases_ak``, ``cases_al``, ``cases_am``, ``cases_an``,
-    ``cases_ao``, ``cases_ap``, ``cases_aq``, ``cases_ar``, ``cases_as``, ``cases_at``) by its
-    lower-case letters; ValueError for another name."""
+    ``cases_ao``, ``cases_ap``, ``cases_aq``, ``cases_ar``, ``cases_as``, ``cases_at``,
+    ``cases_au``) by its lower-case letters; ValueError for another name."""
     _known(name)
     return list(_BY_NAME[name])
 
