@@ -146,10 +146,12 @@ def file_stems(setups: list[str]) -> dict[str, str]:
     that no setup's models and plots overwrite another's."""
     out: dict[str, str] = {}
     for setup in setups:
-        stem, n = file_stem(setup), 1
-        while (f"{stem}-{n}" if n > 1 else stem) in out.values():
+        stem = cand = file_stem(setup)
+        n = 1
+        while cand in out.values():
             n += 1
-        out[setup] = f"{stem}-{n}" if n > 1 else stem
+            cand = f"{stem}-{n}"
+        out[setup] = cand
     return out
 
 
