@@ -166,13 +166,18 @@ def run_case(case: Case, sets: Path, work: Path, workers: int | None) -> dict:
         output = case.expect_note.rsplit(" ", 1)[-1]  # "... on cd"
         right = right and (output in sensor or output in unexpl)
         right_judged = right_judged and (output in sensor or output in unexpl)
+    # a rate limit read off a channel (.rate_limit) is a finding about a transducer too
+    rate_limited = [u.output for u in r.unexplained if u.shape == "rate_limit"]
     wrong_sensor = wrong_sensors(case.expect_note, sensor)
+    rate_limited_wrong = wrong_sensors(case.expect_note, rate_limited)
+    wrong_sensor += [f"{o} rate limit" for o in rate_limited_wrong]
     right = right and not wrong_sensor
     right_judged = right_judged and not wrong_sensor
     row = {"case": case.name, "found": found, "expected": expected, "flagged": flagged,
            "rigs": every, "judged_rigs": judged, "expected_judged": as_judged,
            "right_judged": right_judged,
            "sensor": sensor, "wrong_sensor": wrong_sensor, "unexplained": unexpl,
+           "rate_limited": rate_limited, "rate_limited_wrong": rate_limited_wrong,
            "right": right, "tied": tied,
            "carried": carried, "refused": refused, "refused_unjudged": refused_unjudged,
            "before": r.baseline.fit.total, "after": r.final.fit.total,
@@ -398,7 +403,14 @@ def main() -> None:
         print(f"named and {where}: {n_named}; refused by the validation tests and {where}: "
               f"{refused}; tied (not named) and {where}: {tied}", flush=True)
     print("sensor corrections named where that output's transducer is not at fault: "
-          f"{sum(len(r['wrong_sensor']) for r in rows)}", flush=True)
+          f"{sum(len(r['wrong_sensor']) - len(r.get('rate_limited_wrong', [])) for r in rows)}",
+          flush=True)
+    limits = [f"{r['case']} ({','.join(r['rate_limited'])})" for r in rows
+              if r.get("rate_limited")]
+    print(f"rate limits read off an output: {len(limits)}"
+          + (f" ({'; '.join(limits)})" if limits else "") + "; where that output's "
+          f"transducer is not at fault: {sum(len(r.get('rate_limited_wrong', [])) for r in rows)}",
+          flush=True)
 
 if __name__ == "__main__":
     main()

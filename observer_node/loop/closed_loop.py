@@ -56,8 +56,9 @@ from ..scores import scores
 from .analysis import correlation_tests
 from .belt_check import belt_pushes, slack_gains
 from .cluster import Runner, cluster
-from .diagnosis import FULLER, unexplained
+from .diagnosis import FULLER, Unexplained, unexplained
 from .evidence import SETUP_TOLERANCE, SIGN_P
+from .rate_limit import rate_limited_outputs
 from .refit import MAX_FOLDS, folds, model, refit, score
 from .report import (
     LeftOut,
@@ -289,13 +290,20 @@ def _run(est_tests: list[CrashTest], val_tests: list[CrashTest], out: Path, rate
     named_base, named_effects = st.named_model or (base, effects)
     y_named = model(named_base, named_effects, est).simulate(est.pulse_g, est.brs_rad)
     iso = {k: v.iso18571 for k, v in judged.items() if v.iso18571 is not None}
+    left = {b.test for b in broken}
+    limits = [Unexplained(r.output, r.setups, r.looks_like(), "rate_limit", {}, 0.0)
+              for r in rate_limited_outputs([t for t in [*est_tests, *val_tests]
+                                             if t.name not in left], window_s[1])]
+    for u in limits:
+        prog.update(f"warning: {u.looks_like}")
     report = LoopReport(
         baseline=ModelFit(Fits(**fit3(baseline_val)), gb.params, gb.std_err),
         effects=st.accepted,
         # by the gain as reported (rounded to 0.001 points): ties keep the order tried
         possible=sorted(st.possible, key=lambda p: -round(p.evidence.gain_points, 3)),
         sensor_effects=st.sensors,
-        unexplained=st.left_unexplained or ([] if st.sensors else unexplained(est, y_named)),
+        unexplained=[*limits, *(st.left_unexplained
+                                 or ([] if st.sensors else unexplained(est, y_named)))],
         warnings=broken, low_with_rig=scr.low, flagged_kept=scr.kept,
         not_read=[BrokenTest(path, "file", why) for path, why in not_read.items()],
         left_out=_with_and_without(broken, base, effects, est_tests, val_tests, scr.est_kept,

@@ -105,7 +105,7 @@ class Unexplained:
     output: str  # "cr" or "cd"
     setups: list[str]
     looks_like: str
-    shape: str  # a key of SHAPES
+    shape: str  # a key of SHAPES, or "rate_limit" (read off the channel: .rate_limit)
     gain_points: dict[str, float]
     other_output_gain_points: float
 

@@ -267,6 +267,10 @@ def _markdown_findings(r: LoopReport) -> list[str]:
                   "- not added to model.json: check the transducer's calibration",
                   *_other_transducer(s, named), ""]
     for u in r.unexplained:
+        if u.shape == "rate_limit":  # read off the recorded channel, not off a residual
+            lines += ["## Unexplained", "", f"- **{u.output.upper()}** on {', '.join(u.setups)}"
+                      f" is read through {u.looks_like}", ""]
+            continue
         gains = ", ".join(f"{k} {v:+.1f}" for k, v in u.gain_points.items())
         lines += ["## Unexplained", "",
                   f"- the residual of **{u.output.upper()}** on {', '.join(u.setups)} "
