@@ -16,7 +16,7 @@ import numpy as np
 import pytest
 
 from observer_node import cli
-from observer_node.data import CrashDataError, bundled_campaign, find_tests, load_test
+from observer_node.data import CrashDataError, bundled_campaign, find_tests, load_test, load_tests
 from observer_node.data.csvio import write_csv
 from observer_node.data.isomme import setup_of
 from observer_node.evaluation import evaluate_model, file_stem, file_stems, identify
@@ -272,3 +272,26 @@ def test_identify_tells_setups_as_evaluate_and_the_loop_do(tmp_path, capsys):
     assert cli.main(["identify", "--model", "greybox", "--data", str(data), "--out",
                      str(model), "--quiet"]) == 0
     assert ModelFile.load(model).fitted_on["setups"] == ["SLED"]
+
+
+def test_a_name_s_control_characters_reach_no_table_or_report(tmp_path, capsys):
+    """A test named with an ESC sequence and a tab (in its file's name or its name line) was
+    printed raw in evaluate's table: the ESC cleared the terminal, the tab broke the columns.
+    The name is kept as its escape from reading on, in every table, file and plot."""
+    tests = [load_test(_zip(n)) for n in ("R16_001", "R16_003")]
+    model = tmp_path / "m.json"
+    identify("greybox", make_dataset(tests, 1000.0, (0.01, 0.18))).save(model)
+    data = tmp_path / "data"
+    data.mkdir()
+    write_csv(dataclasses.replace(load_test(_zip("R16_002")), name="R16_002\x1b[2J\tX"),
+              data / "a.csv")
+    shutil.copy(_zip("R16_004"), data / "R16_004\x1b[31m.zip")
+    read = sorted(t.name for t in load_tests([data]))
+    assert read == ["R16_002\\x1b[2J\\tX", "R16_004"], read  # a zip's name is its .mme's
+    assert cli.main(["evaluate", "--model", str(model), "--data", str(data), "--out",
+                     str(tmp_path / "ev"), "--quiet"]) == 0
+    out = capsys.readouterr().out
+    assert "\x1b" not in out and "\t" not in out
+    assert "R16_002\\x1b[2J\\tX" in out
+    written = (tmp_path / "ev" / "fits.json").read_text()
+    assert "R16_002\\\\x1b[2J\\\\tX" in written  # the escape, itself escaped by JSON

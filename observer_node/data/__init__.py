@@ -6,6 +6,7 @@ import fnmatch
 import hashlib
 from pathlib import Path
 
+from ..errors import one_line
 from ..units import STANDARD_GRAVITY
 from .crashtest import (
     THESIS_WINDOW_S,
@@ -145,8 +146,12 @@ def load_test(path: str | Path, codes: ChannelCodes | None = None,
         test = read_csv(p, counts_per_rev)
         if require_outputs and not test.has_outputs:
             raise CrashDataError(f"{p}: needs cr and cd columns")
-        return test
-    return read_isomme(p, codes, counts_per_rev, require_outputs)
+    else:
+        test = read_isomme(p, codes, counts_per_rev, require_outputs)
+    # A name is printed in tables, reports and plots: a control character in a file's name
+    # (an ESC that clears the terminal, a newline that splits a row) is kept as its escape.
+    test.name = one_line(test.name)
+    return test
 
 
 def load_tests(paths: list[str | Path], codes: ChannelCodes | None = None,
