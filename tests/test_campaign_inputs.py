@@ -295,3 +295,19 @@ def test_a_name_s_control_characters_reach_no_table_or_report(tmp_path, capsys):
     assert "R16_002\\x1b[2J\\tX" in out
     written = (tmp_path / "ev" / "fits.json").read_text()
     assert "R16_002\\\\x1b[2J\\\\tX" in written  # the escape, itself escaped by JSON
+
+
+def test_a_grey_box_fit_whose_trial_step_runs_away_warns_nothing(tmp_path) -> None:
+    """identify on four simulated SLED CSVs (seed 2) printed numpy's overflow warnings: a
+    trial step made the chest unstable, which the fit refuses anyway."""
+    import warnings
+
+    from observer_node.ident.greybox import fit_greybox
+
+    assert cli.main(["simulate", "--out", str(tmp_path), "--setup", "SLED", "--count", "4",
+                     "--seed", "2", "--csv"]) == 0
+    data = make_dataset(load_tests([tmp_path]), 1000.0)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", RuntimeWarning)
+        fit = fit_greybox(data)
+    assert fit.fits.fit.total > 90.0

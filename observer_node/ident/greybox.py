@@ -73,8 +73,11 @@ def fit_greybox(data: Dataset, m1_kg: float = DEFAULT_M1_KG,
 
     def residual(theta: np.ndarray) -> np.ndarray:
         evals[0] += 1
-        y_hat = simulate(unpack(theta), data)[:, data.win]
-        r = ((y_hat - y) * scale[:, None, :]).ravel()
+        # a trial step may make the chest unstable: its run-away is refused below, quietly
+        # (numpy's overflow warnings said nothing to the user but alarm)
+        with np.errstate(over="ignore", invalid="ignore"):
+            y_hat = simulate(unpack(theta), data)[:, data.win]
+            r = ((y_hat - y) * scale[:, None, :]).ravel()
         if not np.all(np.isfinite(r)):
             return np.full(r.shape, 1e3)
         c = float(r @ r)
