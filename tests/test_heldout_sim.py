@@ -6048,20 +6048,24 @@ BEFORE_AV = _cases_of(heldout_sets.before("av"))
 # the others untouched)
 WATCHED_AV = ("hav_broken_cr_rail", "hav_cr_progressive", *ONE_PHYSICAL_AV)
 # the draws found impossible, drawn again by the next seeds in the order found (draw_av.REDRAWN)
-REDRAWN_AV: list[tuple[str, int]] = []
+REDRAWN_AV: list[tuple[str, int]] = [("two", 57001), ("brs_late", 57002), ("brs_late", 57003),
+                                     ("chest_stiffening", 57004)]
 # each rejected draw, in that order: its form (or delay, or forms), rigs and whether its pairing
 # was reused
-REJECTED_AV: list[tuple] = []
+REJECTED_AV: list[tuple] = [(("webbing_slack", "rib_valve"), (("FULL",), ("R16",)), True),
+                            (0.00115, None, True), (0.00164, None, True),
+                            ("rib_bumper", ("R16",), True)]
 # the two-effect case
-TWO_AV = "hav_two_slack_full_valve_r16"
+TWO_AV = "hav_two_fabric_sled_toe_r16_full"
 # the cases on an earlier set's pairing, in the draw's order (none free for their rigs:
 # set AL's reuse rule, taken by draw_av as it stands): every case of AV
-REUSED_AV = ("hav_bumper_r16", "hav_fluid_full", "hav_hysteresis_sled_full", "hav_power_sled",
-             "hav_airbag_sled_full", "hav_pelvis_knee_sled_full", "hav_eccentric_r16_sled",
-             TWO_AV, "hav_pulse_late_2p23ms", "hav_brs_late_1p15ms", "hav_cr_progressive",
-             "hav_broken_cr_rail", "hav_clean48", "hav_clean96")
-# two of them drew the same earlier pairing (the pool A-AU's, not narrowed by AV's own draws)
-SHARED_AV = (("hav_power_sled", "hav_pelvis_knee_sled_full"),)
+REUSED_AV = ("hav_hardening_r16_sled", "hav_fluid_full", "hav_hysteresis_sled_full",
+             "hav_power_sled", "hav_airbag_sled_full", "hav_pelvis_knee_sled_full",
+             "hav_eccentric_r16_sled", TWO_AV, "hav_pulse_late_2p23ms", "hav_brs_late_4p36ms",
+             "hav_cr_progressive", "hav_broken_cr_rail", "hav_clean48", "hav_clean96")
+# two pairs of them drew the same earlier pairing (the pool A-AU's, not narrowed by AV's own
+# draws)
+SHARED_AV = (("hav_power_sled", "hav_pelvis_knee_sled_full"), ("hav_airbag_sled_full", TWO_AV))
 
 
 @pytest.fixture(scope="module")
@@ -6081,20 +6085,22 @@ def test_set_av_covers_the_general_list() -> None:
 
 
 def test_set_av_follows_its_draw() -> None:
-    """Set AV's designer's choices are numpy's default_rng(57000)'s (``draw_av.py``; no draw
-    found impossible, ``REDRAWN`` empty), followed as drawn: each kind's form, rigs, counts and
-    mix; the two-effect case's kinds, forms, rigs, counts and mix; the delays, their counts and
-    mixes; the transducer error's output, form, counts and mix; the broken test's channel,
-    form, test, counts and mix; the clean cases' mixes. Set AU's process, no change: any case
-    with no pairing free for its rigs reuses one A-AU ran, among those its rules allow (every
-    case of AV); every other case takes a free one (run by no earlier set, nor drawn before
-    it)."""
+    """Set AV's designer's choices are numpy's default_rng(57000)'s (``draw_av.py``; four draws
+    found impossible at the sizes, ``REDRAWN``), followed as drawn: each kind's form, rigs,
+    counts and mix; the two-effect case's kinds, forms, rigs, counts and mix; the delays, their
+    counts and mixes; the transducer error's output, form, counts and mix; the broken test's
+    channel, form, test, counts and mix; the clean cases' mixes. Set AU's process, no change:
+    any case with no pairing free for its rigs reuses one A-AU ran, among those its rules allow
+    (every case of AV); every other case takes a free one (run by no earlier set, nor drawn
+    before it)."""
     d = draw_av.draw(57000)
     _follows_set_al_reuse(d, draw_av, 57000, "av", SET_AV, ONE_PHYSICAL_AV,
                           REDRAWN_AV, BEFORE_AV, BY_NAME_AV, REUSED_AV, REJECTED_AV)
-    # two of AV's draws ran the same earlier pairing (the pool is A-AU's, not narrowed by AV's)
+    # two pairs of AV's draws ran the same earlier pairing (the pool is A-AU's, not narrowed by
+    # AV's)
     for group in SHARED_AV:
         assert len({_pairing(BY_NAME_AV[n]) for n in group}) == 1
+    assert _pairing(BY_NAME_AV[TWO_AV]) == ((2, 2, 2), (4, 2, 0)) and d["two"]["reused"]
     assert len({_pairing(c) for c in SET_AV}) == len(SET_AV) - len(SHARED_AV)
 
 

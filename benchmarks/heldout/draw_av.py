@@ -191,6 +191,45 @@ set AA's, set Z's, set Y's, set X's before it), with sets A-AU as the earlier se
    ...) in the order found, after the rest, the pairings of everything drawn before still taken
    (``REDRAWN``; a case with none free, an earlier set's, by the reuse above).
 
+Judged at the sizes by these words (written down with the sizes, after the draw, before any loop
+run; no rule changed, the rules above as they were committed before the first draw): no run-away at
+the first sizes before any cost (``test_set_av_has_no_run_aways``'s limits over the whole set). Then
+the first sizes costed one at a time in ``cases_av.py``'s order, two impossibilities among them, in
+that order: the two-effect case, the webbing slack on FULL beside the ribs' valve on R16 (2300), the
+slack alone 13.50, a switch (rule 3) above the band, so impossible whatever the valve alone and the
+two together cost (as set AT judged: the two together costed for the record, 16.18; the valve alone
+not costed); the late BRS, 1.15 ms, 0.21, below the delay's 1 point (rule 3): drawn again by 57001
+and 57002. No other first size impossible: the encoder ring (0.53, 5.04), CR's progressive over-read
+(0.13, 3.10) and the late pulse (2.23 ms, 1.77) in their bands; the ribs' bumper on R16 (3.0e7,
+0.46) below the band, the ribs' fluid damping (2600, 9.03), the webbing's hysteresis (0.66, 7.12),
+the webbing's power (0.91, 6.03, a cost just past an edge, out of band as set AO judged), the vented
+bag (0.63, 8.89) and the knee bolster path (0.17, 6.95) above it, each with a next size to step to;
+the broken test's CR rail at 20 g, -0.97, not banded. The redraws, after the rest, checked against
+the run-away limits at their first sizes in ``cases_av.py``'s order, each against the set at the
+first sizes with every rejected draw's tests replaced by its redraw's, before any of them was costed
+(none ran away); then costed in that order: 57001's two-effect case, the fabric bag on SLED (0.84)
+beside the webbing's toe on R16+FULL (0.26), the two together 2.36, the bag alone 2.51, the toe
+alone 4.58, all three in band at the first sizes; 57002's late BRS, 1.64 ms, 0.13, below the delay's
+1 point: drawn again by 57003; 57003's late BRS, 4.36 ms, checked against the run-away limits before
+it was costed (none ran away), 4.56, in band. Then the steps, each case's in ``cases_av.py``'s
+order: the ribs' bumper, 3.0e7 x 3.5 / 0.46 = 2.3e8, clipped to three times, 9.0e7 (0.80); 9.0e7 x
+3.5 / 0.80 = 3.9e8, clipped, 2.7e8 (0.96); 2.7e8 x 3.5 / 0.96 = 9.8e8, clipped, 8.1e8 (1.04): four
+sizes, none in band, none a run-away: impossible (rule 2), known at the fourth size's cost, after
+the redraws' first costs (as set AU judged), drawn again by 57004; the ribs' fluid damping 1100
+(2600 x 3.5 / 9.03 = 1008, 1000, which A-AU used), 4.10; the webbing's hysteresis 0.32 (0.324),
+2.62; the webbing's power 0.53 (0.528), 4.45; the vented bag 0.26 (0.63 x 3.5 / 8.89 = 0.248, 0.25,
+which A-AU used), 3.65; the knee bolster path 0.087 (0.17 x 3.5 / 6.95 = 0.0856, 0.086, which A-AU
+used), 3.16: each in band at its first step. 57004's ribs' hardening on R16+SLED (1.7e8), checked
+against the run-away limits before it was costed (none ran away), 9.65, above the band, stepped
+once: 1.7e8 x 3.5 / 9.65 = 6.2e7 (not clipped), 4.92, in band. None clipped save the bumper's steps;
+one cost just past an edge (the webbing's power, 6.03, stepped). Two pairs of cases of AV run the
+same earlier pairing (the belt's stiffening and the pelvis, est 4/2/0, val 1/4/1; the vented bag and
+57001's two-effect case, est 2/2/2, val 4/2/0: the reuse's pool A-AU's, not narrowed by this set's
+draws), neither drawn again for it (as set AQ judged). Each costed size checked against the run-away
+limits, each pay-out against its rig's median over the set's other cases' tests at the first sizes
+with the rejected draws' tests replaced by their redraws' then (the sizes kept checked again against
+the final set); none of the sizes kept or stepped ran away.
+
     python -m benchmarks.heldout.draw_av [--seed 57000]
 """
 
@@ -205,8 +244,15 @@ from .sets import before
 SEED = 57000
 # a case whose draw proved impossible, drawn again, whole, by the next seed's generator (one per
 # redraw, in this order, after the rest), the pairings of everything drawn before still taken:
-# none yet (the set not yet drawn)
-REDRAWN: tuple[tuple[str, int], ...] = ()
+# none at the draw (every case, none free for its rigs, drew a pairing one of A-AU ran); at the
+# sizes, four, in the order found: the two-effect case's first draw (webbing_slack on FULL
+# beside rib_valve on R16), its switch alone 13.50, above the band; the late BRS's (1.15 ms)
+# cost 0.21, below the delay's 1 point; its redraw (1.64 ms) cost 0.13; the chest's
+# stiffening's first draw (rib_bumper on R16) below the band at all four of its sizes (0.46,
+# 0.80, 0.96, 1.04); airbag_fabric on SLED beside webbing_toe on R16+FULL, the late BRS at
+# 4.36 ms and rib_hardening on R16+SLED (its second size) came in band (see ``cases_av.py``)
+REDRAWN: tuple[tuple[str, int], ...] = (("two", 57001), ("brs_late", 57002),
+                                         ("brs_late", 57003), ("chest_stiffening", 57004))
 EARLIER = before("av")
 __all__ = ["BROKEN", "BRS_GAIN", "KINDS", "REDRAWN", "SEED", "TRANSDUCER", "draw", "forms",
            "scopes"]
