@@ -33,7 +33,7 @@ Per case the loop runs blind at its defaults on 6 estimation + 6 validation test
   were named where that output's transducer is not at fault (each makes its case wrong).
 
     python -m benchmarks.loop_heldout
-        [--set a|b|...|z|aa|ab|ac|ad|ae|af|ag|ah|ai|aj|ak|al|am|an|ao|ap|aq|ar|as|at|au]
+        [--set a|b|...|z|aa|ab|ac|ad|ae|af|ag|ah|ai|aj|ak|al|am|an|ao|ap|aq|ar|as|at|au|av]
         [--cases NAME ...] [--sets DIR] [--out DIR] [--workers N]
         [--json FILE] [--est-times K] [--new-crashes]
 """
@@ -318,12 +318,12 @@ def main() -> None:
                                  formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--set", dest="case_set", choices=SETS, default="a",
                     help="set A (cases.py, default), or B ... Z, AA, AB, AC, AD, AE, AF, AG, "
-                         "AH, AI, AJ, AK, AL, AM, AN, AO, AP, AQ, AR, AS, AT, AU (cases_b.py "
-                         "... cases_z.py, cases_aa.py, cases_ab.py, cases_ac.py, cases_ad.py, "
-                         "cases_ae.py, cases_af.py, cases_ag.py, cases_ah.py, cases_ai.py, "
-                         "cases_aj.py, cases_ak.py, cases_al.py, cases_am.py, cases_an.py, "
-                         "cases_ao.py, cases_ap.py, cases_aq.py, cases_ar.py, cases_as.py, "
-                         "cases_at.py, cases_au.py)")
+                         "AH, AI, AJ, AK, AL, AM, AN, AO, AP, AQ, AR, AS, AT, AU, AV "
+                         "(cases_b.py ... cases_z.py, cases_aa.py, cases_ab.py, cases_ac.py, "
+                         "cases_ad.py, cases_ae.py, cases_af.py, cases_ag.py, cases_ah.py, "
+                         "cases_ai.py, cases_aj.py, cases_ak.py, cases_al.py, cases_am.py, "
+                         "cases_an.py, cases_ao.py, cases_ap.py, cases_aq.py, cases_ar.py, "
+                         "cases_as.py, cases_at.py, cases_au.py, cases_av.py)")
     ap.add_argument("--cases", nargs="+", metavar="NAME", help="only these cases of the set")
     ap.add_argument("--sets", type=Path, help="the generated sets (default: generate them "
                     "into a temporary folder with benchmarks.heldout.make_sets)")

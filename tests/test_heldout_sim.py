@@ -41,6 +41,7 @@ from benchmarks.heldout import (
     draw_as,
     draw_at,
     draw_au,
+    draw_av,
     draw_v,
     draw_w,
     draw_x,
@@ -73,6 +74,7 @@ from benchmarks.heldout.cases_ar import BY_NAME_AR, ONE_PHYSICAL_AR
 from benchmarks.heldout.cases_as import BY_NAME_AS, ONE_PHYSICAL_AS
 from benchmarks.heldout.cases_at import BY_NAME_AT, ONE_PHYSICAL_AT
 from benchmarks.heldout.cases_au import BY_NAME_AU, ONE_PHYSICAL_AU
+from benchmarks.heldout.cases_av import BY_NAME_AV, ONE_PHYSICAL_AV
 from benchmarks.heldout.cases_p import BY_NAME_P
 from benchmarks.heldout.cases_q import BY_NAME_Q
 from benchmarks.heldout.cases_r import BY_NAME_R
@@ -3933,9 +3935,9 @@ def set_aa(tmp_path_factory: pytest.TempPathFactory) -> Path:
 @pytest.mark.parametrize("letters",
                          ["x", "y", "z", "aa", "ab", "ac", "ad", "ae", "af", "ag", "ah",
                           "ai", "aj", "ak", "al", "am", "an", "ao", "ap", "aq", "ar",
-                          "as", "at", "au"])
+                          "as", "at", "au", "av"])
 def test_a_drawn_set_is_registered(letters: str, tmp_path: Path) -> None:
-    """Sets X-AU: each is its ``cases_<letters>.SET_<LETTERS>`` under its letters (either
+    """Sets X-AV: each is its ``cases_<letters>.SET_<LETTERS>`` under its letters (either
     case), for sets.select, make_sets and costs, after every set before it."""
     own = getattr(importlib.import_module(f"benchmarks.heldout.cases_{letters}"),
                   f"SET_{letters.upper()}")
@@ -3994,8 +3996,11 @@ def test_sets_before_are_names_not_letters() -> None:
     assert heldout_sets.before("au") == (*after_aa, "ab", "ac", "ad", "ae", "af", "ag",
                                          "ah", "ai", "aj", "ak", "al", "am", "an", "ao",
                                          "ap", "aq", "ar", "as", "at")  # A-AT
-    with pytest.raises(ValueError, match="unknown case set 'av'"):
-        heldout_sets.before("av")
+    assert heldout_sets.before("av") == (*after_aa, "ab", "ac", "ad", "ae", "af", "ag",
+                                         "ah", "ai", "aj", "ak", "al", "am", "an", "ao",
+                                         "ap", "aq", "ar", "as", "at", "au")  # A-AU
+    with pytest.raises(ValueError, match="unknown case set 'aw'"):
+        heldout_sets.before("aw")
     # a draw after AA takes AA's pairings; at this seed, without AA one single draws one of them
     aa = {_pairing(c) for c in SET_AA}
 
@@ -5166,8 +5171,9 @@ def test_set_am_covers_the_general_list() -> None:
 
 
 # the drawn sets whose draw without set AL's reuse stops at the broken test (none free for it,
-# so no estimation test of its to break): set AQ's, set AR's, set AS's, set AT's and set AU's
-STOPS_WITHOUT_REUSE = ("aq", "ar", "as", "at", "au")
+# so no estimation test of its to break): set AQ's, set AR's, set AS's, set AT's, set AU's and
+# set AV's
+STOPS_WITHOUT_REUSE = ("aq", "ar", "as", "at", "au", "av")
 
 
 def _follows_set_al_reuse(d: dict, drawn_by: ModuleType, seed: int, set_: str,
@@ -5175,7 +5181,7 @@ def _follows_set_al_reuse(d: dict, drawn_by: ModuleType, seed: int, set_: str,
                           redrawn: list[tuple[str, int]], before: list[cases.Case],
                           by_name: dict[str, cases.Case], reused_names: tuple[str, ...],
                           rejected: list[tuple]) -> None:
-    """What sets AM, AN, AO, AP, AQ, AR, AS, AT and AU, drawn by set AL's process with its
+    """What sets AM, AN, AO, AP, AQ, AR, AS, AT, AU and AV, drawn by set AL's process with its
     reuse, each assert of their draw ``d``: reproducible from ``seed`` after sets A to the one
     before ``set_``; W's pools; the singles, the rest and each pairing as drawn; the redraws in
     the order found; the reused pairings those of ``reused_names``; the rejected draws (form or
@@ -6034,6 +6040,106 @@ def test_set_au_has_no_run_aways(set_au: Path) -> None:
     _no_run_aways(SET_AU, set_au)
 
 
+# ------------------------------------------------------------------ set AV (cases_av.py)
+
+SET_AV = heldout_sets.case_set("av")
+BEFORE_AV = _cases_of(heldout_sets.before("av"))
+# the broken test, the transducer error, and every physical case of one effect (its rigs moved,
+# the others untouched)
+WATCHED_AV = ("hav_broken_cr_rail", "hav_cr_progressive", *ONE_PHYSICAL_AV)
+# the draws found impossible, drawn again by the next seeds in the order found (draw_av.REDRAWN)
+REDRAWN_AV: list[tuple[str, int]] = [("two", 57001), ("brs_late", 57002), ("brs_late", 57003),
+                                     ("chest_stiffening", 57004)]
+# each rejected draw, in that order: its form (or delay, or forms), rigs and whether its pairing
+# was reused
+REJECTED_AV: list[tuple] = [(("webbing_slack", "rib_valve"), (("FULL",), ("R16",)), True),
+                            (0.00115, None, True), (0.00164, None, True),
+                            ("rib_bumper", ("R16",), True)]
+# the two-effect case
+TWO_AV = "hav_two_fabric_sled_toe_r16_full"
+# the cases on an earlier set's pairing, in the draw's order (none free for their rigs:
+# set AL's reuse rule, taken by draw_av as it stands): every case of AV
+REUSED_AV = ("hav_hardening_r16_sled", "hav_fluid_full", "hav_hysteresis_sled_full",
+             "hav_power_sled", "hav_airbag_sled_full", "hav_pelvis_knee_sled_full",
+             "hav_eccentric_r16_sled", TWO_AV, "hav_pulse_late_2p23ms", "hav_brs_late_4p36ms",
+             "hav_cr_progressive", "hav_broken_cr_rail", "hav_clean48", "hav_clean96")
+# two pairs of them drew the same earlier pairing (the pool A-AU's, not narrowed by AV's own
+# draws)
+SHARED_AV = (("hav_power_sled", "hav_pelvis_knee_sled_full"), ("hav_airbag_sled_full", TWO_AV))
+
+
+@pytest.fixture(scope="module")
+def set_av(tmp_path_factory: pytest.TempPathFactory) -> Path:
+    return _generate(tmp_path_factory, "av", WATCHED_AV)
+
+
+def test_set_av_covers_the_general_list() -> None:
+    """Set AV as its brief asks: clean cases at 48 and 96 counts; each kind of the library a
+    loop can name, as physics, once in a case of its own; two effects of different kinds on
+    different rigs in one case; a broken estimation test; a transducer error on CR alone (as
+    drawn); a late pulse and a late BRS at delays in 1-5 ms no earlier set used on any input;
+    6 + 6 tests, every rig an estimation part holds held twice or more; an effect on some rigs
+    only rests on two estimation and two validation tests of them beside an estimation test of
+    a rig it spares."""
+    _covers_the_general_list(SET_AV, BEFORE_AV, "cr", ONE_PHYSICAL_AV, draw_av.KINDS)
+
+
+def test_set_av_follows_its_draw() -> None:
+    """Set AV's designer's choices are numpy's default_rng(57000)'s (``draw_av.py``; four draws
+    found impossible at the sizes, ``REDRAWN``), followed as drawn: each kind's form, rigs,
+    counts and mix; the two-effect case's kinds, forms, rigs, counts and mix; the delays, their
+    counts and mixes; the transducer error's output, form, counts and mix; the broken test's
+    channel, form, test, counts and mix; the clean cases' mixes. Set AU's process, no change:
+    any case with no pairing free for its rigs reuses one A-AU ran, among those its rules allow
+    (every case of AV); every other case takes a free one (run by no earlier set, nor drawn
+    before it)."""
+    d = draw_av.draw(57000)
+    _follows_set_al_reuse(d, draw_av, 57000, "av", SET_AV, ONE_PHYSICAL_AV,
+                          REDRAWN_AV, BEFORE_AV, BY_NAME_AV, REUSED_AV, REJECTED_AV)
+    # two pairs of AV's draws ran the same earlier pairing (the pool is A-AU's, not narrowed by
+    # AV's)
+    for group in SHARED_AV:
+        assert len({_pairing(BY_NAME_AV[n]) for n in group}) == 1
+    assert _pairing(BY_NAME_AV[TWO_AV]) == ((2, 2, 2), (4, 2, 0)) and d["two"]["reused"]
+    assert len({_pairing(c) for c in SET_AV}) == len(SET_AV) - len(SHARED_AV)
+
+
+def test_set_av_lab_side_is_as_drawn_and_unnamed() -> None:
+    """One broken estimation test, the only thing expected; one transducer error on CR on every
+    test, nothing physical named; AV's physics earlier sets' forms only."""
+    _lab_side_as_drawn(SET_AV, "cr")
+    assert {k for k in _keys(SET_AV) if physics.EFFECTS[k]} <= _keys(BEFORE_AV)
+
+
+@pytest.mark.parametrize("case", sorted(ONE_PHYSICAL_AV))
+def test_set_av_physics_moves_its_rigs_only(set_av: Path, case: str) -> None:
+    """Each physical case moves what its form moves on every test of its rigs (the chest's,
+    belt's, bag's and pelvis's forms and the encoder ring CR and CD, the pulse untouched) and
+    leaves the tests of a rig it spares untouched to the bit."""
+    _moves_its_rigs_only(set_av, BY_NAME_AV[case])
+
+
+def test_set_av_cr_rail_clips_the_broken_tests_cr_only(set_av: Path) -> None:
+    """The broken test's CR is flat at the rail (through CFC 180) where its twin's passes it,
+    its twin's where the twin's stays well inside; its CD, pulse and BRS untouched; every other
+    test untouched (set V's check, at this set's rail)."""
+    _cr_rail_clips_the_broken_tests_cr_only(set_av, BY_NAME_AV["hav_broken_cr_rail"])
+
+
+def test_set_av_cr_progressive_over_reads_cr_only(set_av: Path) -> None:
+    """CR over-reads by the element's square law at its peak, right at small levels (set E's,
+    set Z's and set AB's check), every test; CD and the pulse untouched, the BRS too."""
+    c = BY_NAME_AV["hav_cr_progressive"]
+    assert _cr_over_reads(set_av, c) == 12
+    on, off = set_av / "on" / c.name, set_av / "off" / c.name
+    for folder in sorted(on.glob("*/*")):
+        assert np.array_equal(_brs(on, folder.name), _brs(off, folder.name))
+
+
+def test_set_av_has_no_run_aways(set_av: Path) -> None:
+    _no_run_aways(SET_AV, set_av)
+
+
 def test_more_tests_doubles_the_estimation_tests_only(tmp_path: Path) -> None:
     """``more_tests``: K times each rig's estimation tests, the validation tests and the
     effects as written, another seed (new crashes), a name that says so; the broken test's name
@@ -6098,9 +6204,10 @@ DRAWN = {"x": (33000, ()), "y": (34000, ()), "z": (35000, (TWO_Z,)),
          "aj": (45000, (TWO_AJ,)), "ak": (46000, (TWO_AK,)), "al": (47000, REUSED_AL),
          "am": (48000, REUSED_AM), "an": (49000, REUSED_AN), "ao": (50000, REUSED_AO),
          "ap": (51000, REUSED_AP), "aq": (52000, REUSED_AQ), "ar": (53000, REUSED_AR),
-         "as": (54000, REUSED_AS), "at": (55000, REUSED_AT), "au": (56000, REUSED_AU)}
+         "as": (54000, REUSED_AS), "at": (55000, REUSED_AT), "au": (56000, REUSED_AU),
+         "av": (57000, REUSED_AV)}
 # the drawn sets whose reused cases drew one earlier pairing twice, by name, a group a pairing
-SHARED = {"aq": SHARED_AQ, "ar": SHARED_AR}
+SHARED = {"aq": SHARED_AQ, "ar": SHARED_AR, "av": SHARED_AV}
 
 
 @pytest.mark.parametrize("letters", DRAWN)

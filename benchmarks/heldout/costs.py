@@ -3,7 +3,7 @@
 on each case, and on its twin with every effect off (same dummies, pulses and noise).
 
     python -m benchmarks.heldout.costs
-        [--set a|b|...|z|aa|ab|ac|ad|ae|af|ag|ah|ai|aj|ak|al|am|an|ao|ap|aq|ar|as|at|au]
+        [--set a|b|...|z|aa|ab|ac|ad|ae|af|ag|ah|ai|aj|ak|al|am|an|ao|ap|aq|ar|as|at|au|av]
         [--case NAME ...] [--work DIR]
 
 About 40 s per case on this machine (two identifications, two evaluations).

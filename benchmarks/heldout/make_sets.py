@@ -3,7 +3,7 @@ DIR/<case>/truth.json (the case, the expected verdict, the true parameters of ev
 Deterministic from each case's seed.
 
     python -m benchmarks.heldout.make_sets --out DIR
-        [--set a|b|...|z|aa|ab|ac|ad|ae|af|ag|ah|ai|aj|ak|al|am|an|ao|ap|aq|ar|as|at|au]
+        [--set a|b|...|z|aa|ab|ac|ad|ae|af|ag|ah|ai|aj|ak|al|am|an|ao|ap|aq|ar|as|at|au|av]
         [--case NAME ...] [--est-times K] [--new-crashes] [--no-effects]
 """
 
@@ -97,8 +97,8 @@ def main(argv: list[str] | None = None) -> int:
                          "(cases_ak.py), set AL (cases_al.py), set AM (cases_am.py), set AN "
                          "(cases_an.py), set AO (cases_ao.py), set AP (cases_ap.py), set AQ "
                          "(cases_aq.py), set AR (cases_ar.py), set AS (cases_as.py), set AT "
-                         "(cases_at.py) or set AU (cases_au.py, held out from the loop's "
-                         "engineers)")
+                         "(cases_at.py), set AU (cases_au.py) or set AV (cases_av.py, held out "
+                         "from the loop's engineers)")
     ap.add_argument("--case", action="append", metavar="NAME",
                     help="only this case of the set (repeatable); default all, in set A: "
                          + ", ".join(c.name for c in CASES))

@@ -41,7 +41,8 @@ set AP by another engineer, its choices drawn, set AP's way), set AR (``cases_ar
 set AQ by another engineer, its choices drawn, set AQ's way), set AS (``cases_as``, written after
 set AR by another engineer, its choices drawn, set AR's way), set AT (``cases_at``, written after
 set AS by another engineer, its choices drawn, set AS's way), set AU (``cases_au``, written after
-set AT by another engineer, its choices drawn, set AT's way)."""
+set AT by another engineer, its choices drawn, set AT's way), set AV (``cases_av``, written after
+set AU by another engineer, its choices drawn, set AU's way)."""
 
 from __future__ import annotations
 
@@ -67,6 +68,7 @@ from .cases_ar import SET_AR
 from .cases_as import SET_AS
 from .cases_at import SET_AT
 from .cases_au import SET_AU
+from .cases_av import SET_AV
 from .cases_b import SET_B
 from .cases_c import SET_C
 from .cases_d import SET_D
@@ -103,7 +105,7 @@ _BY_NAME: dict[str, list[Case]] = {
     "af": SET_AF, "ag": SET_AG, "ah": SET_AH, "ai": SET_AI,
     "aj": SET_AJ, "ak": SET_AK, "al": SET_AL, "am": SET_AM,
     "an": SET_AN, "ao": SET_AO, "ap": SET_AP, "aq": SET_AQ, "ar": SET_AR,
-    "as": SET_AS, "at": SET_AT, "au": SET_AU}
+    "as": SET_AS, "at": SET_AT, "au": SET_AU, "av": SET_AV}
 SETS = tuple(_BY_NAME)
 
 
@@ -139,19 +141,22 @@ def before(name: str) -> tuple[str, ...]:
     ``"ap"``, ``"aq"``, ``"ar"`` and ``"as"``; before set AU, those, ``"aa"``, ``"ab"``,
     ``"ac"``, ``"ad"``, ``"ae"``, ``"af"``, ``"ag"``, ``"ah"``, ``"ai"``, ``"aj"``, ``"ak"``,
     ``"al"``, ``"am"``, ``"an"``, ``"ao"``, ``"ap"``, ``"aq"``, ``"ar"``, ``"as"`` and
-    ``"at"``); ValueError for an unknown name. Names, not letters: set AA is one set, not set A
-    twice."""
+    ``"at"``; before set AV, those, ``"aa"``, ``"ab"``, ``"ac"``, ``"ad"``, ``"ae"``, ``"af"``,
+    ``"ag"``, ``"ah"``, ``"ai"``, ``"aj"``, ``"ak"``, ``"al"``, ``"am"``, ``"an"``, ``"ao"``,
+    ``"ap"``, ``"aq"``, ``"ar"``, ``"as"``, ``"at"`` and ``"au"``); ValueError for an unknown
+    name. Names, not letters: set AA is one set, not set A twice."""
     _known(name)
     return SETS[:SETS.index(name)]
 
 
 def case_set(name: str) -> list[Case]:
     """Set A (``cases``), or set B ... Z, AA, AB, AC, AD, AE, AF, AG, AH, AI, AJ, AK, AL, AM,
-    AN, AO, AP, AQ, AR, AS, AT, AU (``cases_b`` ... ``cases_z``, ``cases_aa``, ``cases_ab``,
-    ``cases_ac``, ``cases_ad``, ``cases_ae``, ``cases_af``, ``cases_ag``, ``cases_ah``,
-    ``cases_ai``, ``cases_aj``, ``cases_ak``, ``cases_al``, ``cases_am``, ``cases_an``,
-    ``cases_ao``, ``cases_ap``, ``cases_aq``, ``cases_ar``, ``cases_as``, ``cases_at``,
-    ``cases_au``) by its lower-case letters; ValueError for another name."""
+    AN, AO, AP, AQ, AR, AS, AT, AU, AV (``cases_b`` ... ``cases_z``, ``cases_aa``,
+    ``cases_ab``, ``cases_ac``, ``cases_ad``, ``cases_ae``, ``cases_af``, ``cases_ag``,
+    ``cases_ah``, ``cases_ai``, ``cases_aj``, ``cases_ak``, ``cases_al``, ``cases_am``,
+    ``cases_an``, ``cases_ao``, ``cases_ap``, ``cases_aq``, ``cases_ar``, ``cases_as``,
+    ``cases_at``, ``cases_au``, ``cases_av``) by its lower-case letters; ValueError for another
+    name."""
     _known(name)
     return list(_BY_NAME[name])
 
