@@ -30,6 +30,14 @@ class Progress:
             sys.stderr.write(line + "\n")
         sys.stderr.flush()
 
+    def note(self, text: str) -> None:
+        """A line that stays (a warning): never throttled, never overwritten."""
+        if not self.enabled:
+            return
+        line = f"{self.label}: {text}"
+        sys.stderr.write(("\r\033[K" if self.tty else "") + line + "\n")
+        sys.stderr.flush()
+
     def done(self, text: str = "done") -> None:
         if not self.enabled:
             return

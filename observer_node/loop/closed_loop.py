@@ -78,6 +78,10 @@ from .screening import (
     residual_outliers,
 )
 
+# Kinds whose force grows with the chest's rate: a rate cap they make reads as a slow
+# transducer's (a hostile review's damped chest at 1 kHz)
+RATE_KINDS = frozenset({"chest_rate_damping"})
+
 # A rig with fewer estimation tests than this is not judged: with one test, an effect there
 # cannot be told from that test's scatter, and no fold both fits and scores the rig (set L: a
 # chest stiffening on R16 and SLED was named on all three rigs, FULL holding one estimation
@@ -291,11 +295,17 @@ def _run(est_tests: list[CrashTest], val_tests: list[CrashTest], out: Path, rate
     y_named = model(named_base, named_effects, est).simulate(est.pulse_g, est.brs_rad)
     iso = {k: v.iso18571 for k, v in judged.items() if v.iso18571 is not None}
     left = {b.test for b in broken}
-    limits = [Unexplained(r.output, r.setups, r.looks_like(), "rate_limit", {}, 0.0)
+    # a chest whose damping grows with its rate caps that rate as a slow transducer does
+    rate_named = sorted({e["kind"] for e in named_effects if e["kind"] in RATE_KINDS})
+    limits = [Unexplained(r.output, r.setups, r.looks_like() + (
+                  f"; or a chest whose damping caps its rate ({', '.join(rate_named)} is "
+                  "named): check the transducer's slew rate before taking either"
+                  if rate_named else ": not the chest's physics, and the fit on that output "
+                  "is the transducer's too"), "rate_limit", {}, 0.0, r.reading())
               for r in rate_limited_outputs([t for t in [*est_tests, *val_tests]
                                              if t.name not in left], window_s[1])]
     for u in limits:
-        prog.update(f"warning: {u.looks_like}")
+        prog.note(f"warning: {u.output.upper()} on {', '.join(u.setups)}: {u.looks_like}")
     report = LoopReport(
         baseline=ModelFit(Fits(**fit3(baseline_val)), gb.params, gb.std_err),
         effects=st.accepted,

@@ -108,10 +108,14 @@ class Unexplained:
     shape: str  # a key of SHAPES, or "rate_limit" (read off the channel: .rate_limit)
     gain_points: dict[str, float]
     other_output_gain_points: float
+    reading: dict[str, Any] | None = None  # a rate limit's figures (.rate_limit), no gains
 
     def as_dict(self) -> dict[str, Any]:
-        return {"output": self.output, "setups": self.setups, "looks_like": self.looks_like,
-                "shape": self.shape, "gain_points": self.gain_points,
+        head = {"output": self.output, "setups": self.setups, "looks_like": self.looks_like,
+                "shape": self.shape}
+        if self.reading is not None:  # read off the channel: no correction was fitted
+            return {**head, "rate_limit": self.reading}
+        return {**head, "gain_points": self.gain_points,
                 "other_output_gain_points": self.other_output_gain_points}
 
 

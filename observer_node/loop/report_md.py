@@ -269,7 +269,7 @@ def _markdown_findings(r: LoopReport) -> list[str]:
     for u in r.unexplained:
         if u.shape == "rate_limit":  # read off the recorded channel, not off a residual
             lines += ["## Unexplained", "", f"- **{u.output.upper()}** on {', '.join(u.setups)}"
-                      f" is read through {u.looks_like}", ""]
+                      f": {u.looks_like}", ""]
             continue
         gains = ", ".join(f"{k} {v:+.1f}" for k, v in u.gain_points.items())
         lines += ["## Unexplained", "",
